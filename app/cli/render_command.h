@@ -1,0 +1,13 @@
+// `glint render SCENE -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]`: renders a
+// scene file headless (OSMesa, or the CPU reference) and writes the image.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace glint {
+
+// Returns the process exit code: 0 written, 2 bad arguments or input, or failure to render.
+int runRenderCommand(const std::vector<std::string>& arguments);
+
+}  // namespace glint

@@ -1,0 +1,90 @@
+// glint: the command-line front. `glint render …` renders headless; `glint [SCENE]` opens the
+// editor, or, with no display, renders the scene headless and says where the image went.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/headless.h"
+#include "cli/render_command.h"
+#include "editor/editor.h"
+#include "scene/scene_json.h"
+
+namespace {
+
+constexpr const char* kUsage =
+    "Glint " GLINT_VERSION ": a material editor for physically based shading.\n"
+    "\n"
+    "usage:\n"
+    "  glint [SCENE.json]          open the editor (the default scene when no file is given)\n"
+    "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
+    "                              render headless (no display needed)\n"
+    "  glint --help | --version\n"
+    "\n"
+    "With no display, `glint [SCENE]` renders the scene headless to glint-<name>.png.\n";
+
+// No window could be opened: render the scene offscreen instead and say where it went.
+int renderWithoutDisplay(const glint::Scene& scene, const std::string& sceneName, const std::string& reason) {
+    const std::string output = "glint-" + sceneName + ".png";
+    auto headless = glint::HeadlessRenderer::create();
+    if (!headless) {
+        std::fprintf(stderr, "glint: %s\n", headless.error().format().c_str());
+        return 2;
+    }
+    auto images = (*headless)->render(scene, scene.width, scene.height);
+    if (!images) {
+        std::fprintf(stderr, "glint: %s\n", images.error().format().c_str());
+        return 2;
+    }
+    if (glint::Status written = glint::writeRenderedImage(*images, output); !written) {
+        std::fprintf(stderr, "glint: %s\n", written.error().format().c_str());
+        return 2;
+    }
+    std::printf("glint: no display (%s).\nglint: rendered the %s scene headless (%dx%d, %s) to %s\n",
+                reason.c_str(), sceneName.c_str(), scene.width, scene.height,
+                (*headless)->renderer().description().c_str(),
+                std::filesystem::absolute(output).string().c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> arguments(argv + 1, argv + argc);
+    if (!arguments.empty() && arguments[0] == "render")
+        return glint::runRenderCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {
+        std::printf("%s", kUsage);
+        return 0;
+    }
+    if (!arguments.empty() && arguments[0] == "--version") {
+        std::printf("glint %s\n", GLINT_VERSION);
+        return 0;
+    }
+    if (arguments.size() > 1 || (!arguments.empty() && arguments[0].rfind("-", 0) == 0)) {
+        std::fprintf(stderr, "glint: unexpected arguments\n%s", kUsage);
+        return 2;
+    }
+
+    glint::Scene scene = glint::defaultScene();
+    std::string scenePath, sceneName = "default";
+    if (!arguments.empty()) {
+        scenePath = arguments[0];
+        auto loaded = glint::loadScene(scenePath);
+        if (!loaded) {
+            std::fprintf(stderr, "glint: %s\n", loaded.error().format().c_str());
+            return 2;
+        }
+        scene = std::move(*loaded);
+        sceneName = std::filesystem::path(scenePath).stem().string();
+    }
+
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!display || !*display) && (!wayland || !*wayland))
+        return renderWithoutDisplay(scene, sceneName, "DISPLAY is not set");
+    auto platform = glint::GlfwPlatform::create(1280, 800, "Glint — " + sceneName);
+    if (!platform) return renderWithoutDisplay(scene, sceneName, platform.error().message);
+    return glint::runEditor(std::move(*platform), std::move(scene), scenePath);
+}

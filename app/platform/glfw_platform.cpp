@@ -1,0 +1,55 @@
+// GLFW window platform (see glfw_platform.h).
+#include "platform/glfw_platform.h"
+
+#include <GLFW/glfw3.h>
+
+namespace glint {
+namespace {
+
+std::string lastGlfwError() {
+    const char* description = nullptr;
+    glfwGetError(&description);
+    return description ? description : "unknown GLFW error";
+}
+
+}  // namespace
+
+Result<std::unique_ptr<GlfwPlatform>> GlfwPlatform::create(int width, int height, const std::string& title) {
+    if (!glfwInit()) return makeError("cannot open a window: " + lastGlfwError());
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!window) {
+        const std::string reason = lastGlfwError();
+        glfwTerminate();
+        return makeError("cannot open an OpenGL 4.1 core window: " + reason);
+    }
+    std::unique_ptr<GlfwPlatform> platform(new GlfwPlatform());
+    platform->window_ = window;
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    return platform;
+}
+
+GlfwPlatform::~GlfwPlatform() {
+    if (window_) glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+GetProcAddress GlfwPlatform::procAddressLoader() const { return reinterpret_cast<GetProcAddress>(&glfwGetProcAddress); }
+
+void GlfwPlatform::makeCurrent() {
+    if (glfwGetCurrentContext() != window_) glfwMakeContextCurrent(window_);
+}
+
+glm::ivec2 GlfwPlatform::framebufferSize() const {
+    glm::ivec2 size;
+    glfwGetFramebufferSize(window_, &size.x, &size.y);
+    return size;
+}
+
+void GlfwPlatform::present() { glfwSwapBuffers(window_); }
+
+}  // namespace glint

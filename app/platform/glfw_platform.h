@@ -1,0 +1,34 @@
+// GlfwPlatform: a window with an OpenGL 4.1 core context from GLFW (GLX under X11/Xvfb).
+// It owns the window; the editor asks it for input and events through window().
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "gl/platform.h"
+#include "util/diagnostic.h"
+
+struct GLFWwindow;
+
+namespace glint {
+
+class GlfwPlatform final : public GlPlatform {
+public:
+    // Fails (with GLFW's reason) when there is no display or no GL 4.1 core.
+    static Result<std::unique_ptr<GlfwPlatform>> create(int width, int height, const std::string& title);
+    ~GlfwPlatform() override;
+
+    GetProcAddress procAddressLoader() const override;
+    void makeCurrent() override;
+    glm::ivec2 framebufferSize() const override;
+    void present() override;
+    const char* name() const override { return "GLFW window"; }
+
+    GLFWwindow* window() const { return window_; }
+
+private:
+    GlfwPlatform() = default;
+    GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace glint

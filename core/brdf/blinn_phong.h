@@ -1,0 +1,76 @@
+// Blinn-Phong: a diffuse Lambert term plus the specular lobe (N·H)^n around the halfway
+// vector (Blinn 1977), in the four BRDF forms of the shading lectures.
+// CPU reference; its GLSL twin is shaders/brdf/blinn_phong.glsl.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+
+// How the lobe k_s·cos^n δ (δ = angle between N and H) becomes a BRDF.
+enum class BlinnForm {
+    Lecture = 0,     // k_s·cos^n δ / cos θ'       (θ' to the light; not reciprocal)
+    MaxCosine = 1,   // k_s·cos^n δ / max(cos θ, cos θ')   (reciprocal repair)
+    HalfVector = 2,  // k_s·cos^n δ / |L+V|²       (reciprocal repair)
+    Normalized = 3,  // k_s·(n+8)/(8π)·cos^n δ     (energy-normalised; Akenine-Möller et al.)
+};
+
+inline constexpr EnumOption kBlinnFormOptions[] = {
+    {"lecture", "k_s cos^n δ / cos θ' (lecture)"},
+    {"max_cosine", "k_s cos^n δ / max(cos θ, cos θ')"},
+    {"half_vector", "k_s cos^n δ / |L+V|²"},
+    {"normalized", "k_s (n+8)/8π cos^n δ"},
+};
+
+struct BlinnPhongParams {
+    glm::vec3 diffuseAlbedo;  // ρ_d of the Lambert term
+    glm::vec3 specular;       // k_s: white for dielectrics, coloured for metals
+    float exponent;           // n: sharpness of the lobe
+    BlinnForm form;
+};
+
+inline constexpr ParamSpec kBlinnPhongTable[] = {
+    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.5f, 0.1f, 0.1f},
+     .help = "Lambert term ρ_d/π"},
+    {.name = "specular", .label = "Specular k_s", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.04f, 0.04f, 0.04f},
+     .help = "Specular strength; white for dielectrics, coloured for metals"},
+    {.name = "exponent", .label = "Exponent n", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 10000, .validMin = 0, .validMax = kUnbounded, .defaultValue = {64, 0, 0},
+     .scale = ParamScale::Log, .help = "Sharpness of the highlight, cos^n δ"},
+    {.name = "form", .label = "BRDF form", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 3, .validMin = 0, .validMax = 3, .defaultValue = {3, 0, 0},
+     .options = kBlinnFormOptions, .help = "How the lobe is made a BRDF"},
+};
+
+inline BlinnPhongParams unpackBlinnPhong(const float* v) {
+    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], static_cast<BlinnForm>(static_cast<int>(v[7]))};
+}
+
+// f_r = ρ_d/π + specular form (see BlinnForm), zero below the horizon.
+inline glm::vec3 evalBlinnPhong(const BlinnPhongParams& p, glm::vec3 wi, glm::vec3 wo,
+                                const ShadingFrame& frame) {
+    const float cosIn = frame.cosTheta(wi);
+    const float cosOut = frame.cosTheta(wo);
+    if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 sum = wi + wo;
+    const glm::vec3 halfway = glm::normalize(sum);
+    const float lobe = std::pow(std::max(frame.cosTheta(halfway), 0.0f), p.exponent);
+    float specularScale = 0.0f;
+    switch (p.form) {
+        case BlinnForm::Lecture: specularScale = lobe / cosIn; break;
+        case BlinnForm::MaxCosine: specularScale = lobe / std::max(cosIn, cosOut); break;
+        case BlinnForm::HalfVector: specularScale = lobe / glm::dot(sum, sum); break;
+        case BlinnForm::Normalized: specularScale = lobe * (p.exponent + 8.0f) / (8.0f * kPi); break;
+    }
+    return p.diffuseAlbedo * kInvPi + p.specular * specularScale;
+}
+
+}  // namespace glint

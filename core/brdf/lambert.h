@@ -1,0 +1,31 @@
+// Lambert: the ideal diffuse reflector, f_r = ρ/π with albedo ρ ∈ [0,1] per channel.
+// CPU reference; its GLSL twin is shaders/brdf/lambert.glsl.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+
+struct LambertParams {
+    glm::vec3 albedo;  // ρ: reflected flux / incident flux, per channel
+};
+
+inline constexpr ParamSpec kLambertTable[] = {
+    {.name = "albedo", .label = "Albedo ρ", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.5f, 0.5f, 0.5f},
+     .help = "Fraction of incident flux reflected; f_r = ρ/π"},
+};
+
+inline LambertParams unpackLambert(const float* v) { return {{v[0], v[1], v[2]}}; }
+
+// f_r = ρ/π [1/sr], independent of direction (Lambert 1760).
+inline glm::vec3 evalLambert(const LambertParams& p, glm::vec3 /*wi*/, glm::vec3 /*wo*/,
+                             const ShadingFrame& /*frame*/) {
+    return p.albedo * kInvPi;
+}
+
+}  // namespace glint

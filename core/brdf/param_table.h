@@ -1,0 +1,68 @@
+// ParamSpec: the one declaration of a BRDF parameter (name, label, unit, ranges, default,
+// scale, kind). The table drives the ImGui panel, the JSON reader and writer, the uniform
+// packing and the documentation. It holds no values; ParamValues does.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace glint {
+
+enum class ParamKind { Scalar, Color, Bool, Enum };
+enum class ParamScale { Linear, Log };
+
+struct EnumOption {
+    const char* id;     // as written in files
+    const char* label;  // as shown in the panel
+};
+
+struct ParamSpec {
+    const char* name;   // key in files and in GLSL (snake_case)
+    const char* label;  // shown in the panel
+    const char* unit;   // "" when dimensionless
+    ParamKind kind = ParamKind::Scalar;
+    float sliderMin = 0.0f;  // the slider's range...
+    float sliderMax = 1.0f;
+    float validMin = 0.0f;   // ...and what files and typed values may hold (may be wider)
+    float validMax = 1.0f;
+    std::array<float, 3> defaultValue{0, 0, 0};
+    ParamScale scale = ParamScale::Linear;
+    std::span<const EnumOption> options{};  // Enum only
+    const char* help = "";
+};
+
+inline constexpr float kUnbounded = std::numeric_limits<float>::infinity();
+
+// Floats one parameter occupies in the packed value array.
+constexpr int componentCount(ParamKind kind) { return kind == ParamKind::Color ? 3 : 1; }
+
+// Offset of each parameter in the packed array, and the total.
+inline int packedSize(std::span<const ParamSpec> table) {
+    int size = 0;
+    for (const ParamSpec& spec : table) size += componentCount(spec.kind);
+    return size;
+}
+inline int packedOffset(std::span<const ParamSpec> table, int paramIndex) {
+    int offset = 0;
+    for (int i = 0; i < paramIndex; ++i) offset += componentCount(table[i].kind);
+    return offset;
+}
+
+// The table's defaults, packed.
+inline std::vector<float> defaultValues(std::span<const ParamSpec> table) {
+    std::vector<float> values;
+    for (const ParamSpec& spec : table)
+        for (int c = 0; c < componentCount(spec.kind); ++c) values.push_back(spec.defaultValue[c]);
+    return values;
+}
+
+inline int findParam(std::span<const ParamSpec> table, std::string_view name) {
+    for (size_t i = 0; i < table.size(); ++i)
+        if (name == table[i].name) return static_cast<int>(i);
+    return -1;
+}
+
+}  // namespace glint

@@ -1,0 +1,37 @@
+// GL loading and error checks (see gl_loader.h).
+#include "gl/gl_loader.h"
+
+#include <glad/gl.h>
+
+namespace glint {
+
+Status loadGlFunctions(const GlPlatform& platform) {
+    const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(platform.procAddressLoader()));
+    if (version == 0) return makeError(std::string("could not load OpenGL functions through ") + platform.name());
+    const int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
+    if (major < 4 || (major == 4 && minor < 1))
+        return makeError("OpenGL 4.1 core is needed; " + std::string(platform.name()) + " gives " +
+                         std::to_string(major) + "." + std::to_string(minor));
+    return success();
+}
+
+std::string glDescription() {
+    auto text = [](GLenum name) {
+        const GLubyte* value = glGetString(name);
+        return value ? std::string(reinterpret_cast<const char*>(value)) : std::string("?");
+    };
+    return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
+}
+
+Status takeGlErrors(const char* where) {
+    std::string codes;
+    for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "0x%04X", error);
+        codes += std::string(codes.empty() ? "" : ", ") + hex;
+    }
+    if (codes.empty()) return success();
+    return makeError(std::string("OpenGL error ") + codes + " in " + where);
+}
+
+}  // namespace glint

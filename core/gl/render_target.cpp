@@ -1,0 +1,45 @@
+// Framebuffer objects (see render_target.h).
+#include "gl/render_target.h"
+
+#include "util/diagnostic.h"
+
+namespace glint {
+
+void RenderTarget::release() {
+    if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+    if (colorTexture_) glDeleteTextures(1, &colorTexture_);
+    if (colorRenderbuffer_) glDeleteRenderbuffers(1, &colorRenderbuffer_);
+    if (depthRenderbuffer_) glDeleteRenderbuffers(1, &depthRenderbuffer_);
+    framebuffer_ = colorTexture_ = colorRenderbuffer_ = depthRenderbuffer_ = 0;
+}
+
+void RenderTarget::ensure(int width, int height, int samples) {
+    if (framebuffer_ && width == width_ && height == height_ && samples == samples_) return;
+    release();
+    width_ = width, height_ = height, samples_ = samples;
+    glGenFramebuffers(1, &framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    if (samples == 1) {
+        glGenTextures(1, &colorTexture_);
+        glBindTexture(GL_TEXTURE_2D, colorTexture_);
+        glTexStorage2D(GL_TEXTURE_2D, 1, colorFormat_, width, height);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTexture_, 0);
+    } else {
+        glGenRenderbuffers(1, &colorRenderbuffer_);
+        glBindRenderbuffer(GL_RENDERBUFFER, colorRenderbuffer_);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat_, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRenderbuffer_);
+    }
+    if (withDepth_) {
+        glGenRenderbuffers(1, &depthRenderbuffer_);
+        glBindRenderbuffer(GL_RENDERBUFFER, depthRenderbuffer_);
+        if (samples == 1) glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        else glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRenderbuffer_);
+    }
+    GLINT_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+}
+
+}  // namespace glint

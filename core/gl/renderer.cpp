@@ -1,0 +1,330 @@
+// The OpenGL renderer (see renderer.h).
+// Sections: creation · programs · meshes · per-frame uniforms · drawing · display · readback.
+#include "gl/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "geometry/mesh.h"
+#include "gl/gl_loader.h"
+#include "gl/material_glsl.h"
+#include "gl/uniform_blocks.h"
+#include "math/constants.h"
+
+namespace glint {
+namespace {
+
+// The proxy mesh drawn for an analytic sphere: a fixed tessellation, enlarged so that it
+// circumscribes the sphere (each face's circumcircle spans at most π/S + π/R radians).
+constexpr int kProxySegments = 48, kProxyRings = 24;
+const float kProxyScale = 1.001f / std::cos(kPi / kProxySegments + kPi / kProxyRings);
+
+bool sameShape(const Shape& a, const Shape& b) {
+    if (a.index() != b.index()) return false;
+    if (const auto* sphere = std::get_if<SphereShape>(&a)) {
+        const auto& other = std::get<SphereShape>(b);
+        return sphere->center == other.center && sphere->radius == other.radius;
+    }
+    const auto& plane = std::get<PlaneShape>(a);
+    const auto& other = std::get<PlaneShape>(b);
+    return plane.center == other.center && plane.normal == other.normal && plane.size == other.size;
+}
+
+}  // namespace
+
+// --- creation -------------------------------------------------------------------------------
+
+Renderer::Renderer(GlPlatform& platform, ShaderSources sources) : platform_(platform), sources_(std::move(sources)) {}
+
+Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderSources sources) {
+    platform.makeCurrent();
+    if (Status loaded = loadGlFunctions(platform); !loaded) return loaded.error();
+    std::unique_ptr<Renderer> renderer(new Renderer(platform, std::move(sources)));
+    renderer->description_ = glDescription();
+    auto program = ShaderProgram::build(renderer->sources_, "fullscreen.vert", "display.frag");
+    if (!program) return program.error();
+    renderer->displayProgram_ = std::move(*program);
+    renderer->displayFiles_ = {"fullscreen.vert", "display.frag"};
+    renderer->displayBuiltAt_ = renderer->newestModification(renderer->displayFiles_);
+    glGenBuffers(3, renderer->uniformBuffers_);
+    const GLsizeiptr sizes[3] = {sizeof(FrameBlockStd140), sizeof(LightBlockStd140), sizeof(MaterialBlockStd140)};
+    for (int i = 0; i < 3; ++i) {
+        glBindBuffer(GL_UNIFORM_BUFFER, renderer->uniformBuffers_[i]);
+        glBufferData(GL_UNIFORM_BUFFER, sizes[i], nullptr, GL_DYNAMIC_DRAW);
+        glBindBufferBase(GL_UNIFORM_BUFFER, i, renderer->uniformBuffers_[i]);
+    }
+    glGenVertexArrays(1, &renderer->emptyVertexArray_);
+    if (Status errors = takeGlErrors("renderer creation"); !errors) return errors.error();
+    return renderer;
+}
+
+Renderer::~Renderer() {
+    platform_.makeCurrent();
+    for (GpuMesh& mesh : meshes_) {
+        glDeleteVertexArrays(1, &mesh.vertexArray);
+        glDeleteBuffers(1, &mesh.vertexBuffer);
+        glDeleteBuffers(1, &mesh.indexBuffer);
+    }
+    glDeleteBuffers(3, uniformBuffers_);
+    glDeleteVertexArrays(1, &emptyVertexArray_);
+}
+
+// --- programs -------------------------------------------------------------------------------
+
+long long Renderer::newestModification(const std::vector<std::string>& files) const {
+    long long newest = 0;
+    for (const std::string& file : files) newest = std::max(newest, sources_.modificationTime(file));
+    return newest;
+}
+
+Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples) const {
+    const ModelInfo& info = modelInfo(model);
+    const std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
+    const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info)}};
+    auto program = ShaderProgram::build(sources_, "surface.vert", "surface.frag", prelude, generated);
+    if (!program) return program.error();
+    program->bindBlock("FrameBlock", kFrameBinding);
+    program->bindBlock("LightBlock", kLightBinding);
+    program->bindBlock("MaterialBlock", kMaterialBinding);
+    SurfaceProgram entry{std::move(*program), {"surface.vert"}, 0};
+    if (auto assembled = assembleShader(sources_, "surface.frag", prelude, generated))
+        entry.files.insert(entry.files.end(), assembled->files.begin(), assembled->files.end());
+    entry.builtAt = newestModification(entry.files);
+    return entry;
+}
+
+Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples) {
+    const auto key = std::make_pair(model, samples);
+    if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end())
+        return &found->second.program;
+    auto built = buildSurfaceProgram(model, samples);
+    if (!built) return built.error();
+    return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
+}
+
+bool Renderer::reloadChangedShaders() {
+    if (!sources_.readsFromDisk()) return false;
+    bool changed = false;
+    std::string error;
+    // A program whose files changed is rebuilt; when that fails, the last good one stays.
+    for (auto& [key, entry] : surfacePrograms_) {
+        const long long newest = newestModification(entry.files);
+        if (newest <= entry.builtAt) continue;
+        changed = true;
+        entry.builtAt = newest;
+        if (auto rebuilt = buildSurfaceProgram(key.first, key.second)) entry = std::move(*rebuilt);
+        else error = rebuilt.error().format();
+    }
+    const long long newestDisplay = newestModification(displayFiles_);
+    if (newestDisplay > displayBuiltAt_) {
+        changed = true;
+        displayBuiltAt_ = newestDisplay;
+        if (auto program = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag"))
+            displayProgram_ = std::move(*program);
+        else error = program.error().format();
+    }
+    if (changed) shaderError_ = error;
+    return changed;
+}
+
+// --- meshes ---------------------------------------------------------------------------------
+
+const Renderer::GpuMesh& Renderer::meshFor(size_t objectIndex, const Shape& shape) {
+    if (meshes_.size() <= objectIndex) meshes_.resize(objectIndex + 1);
+    GpuMesh& gpu = meshes_[objectIndex];
+    if (gpu.vertexArray && sameShape(gpu.shape, shape)) return gpu;
+    Mesh mesh;
+    if (const auto* sphere = std::get_if<SphereShape>(&shape))
+        mesh = makeUvSphere(sphere->center, sphere->radius * kProxyScale, kProxySegments, kProxyRings);
+    else {
+        const auto& plane = std::get<PlaneShape>(shape);
+        mesh = makePlane(plane.center, plane.normal, plane.size);
+    }
+    if (!gpu.vertexArray) {
+        glGenVertexArrays(1, &gpu.vertexArray);
+        glGenBuffers(1, &gpu.vertexBuffer);
+        glGenBuffers(1, &gpu.indexBuffer);
+    }
+    glBindVertexArray(gpu.vertexArray);
+    glBindBuffer(GL_ARRAY_BUFFER, gpu.vertexBuffer);
+    glBufferData(GL_ARRAY_BUFFER, mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indexBuffer);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glBindVertexArray(0);
+    gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+    gpu.shape = shape;
+    return gpu;
+}
+
+// --- per-frame uniforms ---------------------------------------------------------------------
+
+void Renderer::uploadFrame(const Scene& scene, int width, int height) {
+    FrameBlockStd140 frame{};
+    frame.viewProjection = scene.camera.viewProjection(static_cast<float>(width) / height);
+    frame.inverseViewProjection = glm::inverse(frame.viewProjection);
+    frame.viewportSize = {width, height, 0, 0};
+    frame.background = glm::vec4(scene.background, 1.0f);
+    LightBlockStd140 lights{};
+    int count = 0;
+    for (const Light& light : scene.lights) {
+        if (!light.enabled || count == kMaxLights) continue;
+        GpuLightStd140& gpu = lights.lights[count++];
+        if (light.type == LightType::Directional) {
+            gpu.position = glm::vec4(-glm::normalize(light.direction), 0.0f);
+            gpu.emission = glm::vec4(light.color * light.irradiance, 0.0f);
+        } else {
+            gpu.position = glm::vec4(light.position, 1.0f);
+            gpu.emission = glm::vec4(light.color * (light.power / (4.0f * kPi)), 0.0f);  // I = Φ/4π
+        }
+    }
+    frame.lightCount = {count, 0, 0, 0};
+    glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kFrameBinding]);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof frame, &frame);
+    glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kLightBinding]);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof lights, &lights);
+}
+
+// --- drawing --------------------------------------------------------------------------------
+
+Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
+    platform_.makeCurrent();
+    GLINT_CHECK(width > 0 && height > 0);
+    const int samples = std::max(1, scene.msaaSamples);
+    radianceTarget_.ensure(width, height, 1);
+    RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
+    if (samples > 1) multisampleTarget_.ensure(width, height, samples);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
+    glViewport(0, 0, width, height);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    if (samples > 1) glEnable(GL_MULTISAMPLE);
+    const float clearColor[4] = {scene.background.r, scene.background.g, scene.background.b, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, clearColor);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    uploadFrame(scene, width, height);
+
+    std::vector<float> sampleOffsets;
+    for (int i = 0; i < samples && samples > 1; ++i) {
+        float position[2];
+        glGetMultisamplefv(GL_SAMPLE_POSITION, i, position);
+        sampleOffsets.insert(sampleOffsets.end(), position, position + 2);
+    }
+
+    Status result = success();
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const Material& material = scene.materials.at(object.materialIndex);
+        auto program = surfaceProgram(material.model, samples);
+        if (!program) {
+            shaderError_ = program.error().format();
+            result = program.error();
+            continue;
+        }
+        const ShaderProgram& shader = **program;
+        glUseProgram(shader.id());
+        MaterialBlockStd140 materialBlock{};
+        std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
+                    materialBlock.values);
+        glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kMaterialBinding]);
+        glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
+        const auto* sphere = std::get_if<SphereShape>(&object.shape);
+        glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
+        if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
+        if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
+        const GpuMesh& mesh = meshFor(i, object.shape);
+        glBindVertexArray(mesh.vertexArray);
+        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glBindVertexArray(0);
+    if (samples > 1) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    if (result) shaderError_.clear();
+    if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
+    return result;
+}
+
+// --- display --------------------------------------------------------------------------------
+
+namespace {
+
+void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint vertexArray,
+                    const DisplaySettings& display, glm::ivec2 sourceOffset) {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(program.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, radianceTexture);
+    glUniform1i(program.uniform("radiance"), 0);
+    glUniform2i(program.uniform("sourceOffset"), sourceOffset.x, sourceOffset.y);
+    glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
+    glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
+    glUniform1f(program.uniform("gamma"), display.gamma);
+    glBindVertexArray(vertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+}
+
+}  // namespace
+
+void Renderer::displayOffscreen(const DisplaySettings& display) {
+    platform_.makeCurrent();
+    displayTarget_.ensure(radianceTarget_.width(), radianceTarget_.height(), 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
+    glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
+    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0});
+}
+
+void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft) {
+    platform_.makeCurrent();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width(), radianceTarget_.height());
+    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft);
+}
+
+// --- readback -------------------------------------------------------------------------------
+
+namespace {
+
+template <class Pixel>
+void readFlipped(GLuint framebuffer, int width, int height, GLenum type, std::vector<Pixel>& pixels) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    std::vector<Pixel> bottomUp(static_cast<size_t>(width) * height * 3);
+    glReadPixels(0, 0, width, height, GL_RGB, type, bottomUp.data());
+    const size_t rowLength = static_cast<size_t>(width) * 3;
+    pixels.resize(bottomUp.size());
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&pixels[y * rowLength], &bottomUp[(height - 1 - y) * rowLength], rowLength * sizeof(Pixel));
+}
+
+}  // namespace
+
+RadianceImage Renderer::readRadiance() const {
+    platform_.makeCurrent();
+    RadianceImage image(radianceTarget_.width(), radianceTarget_.height());
+    readFlipped(radianceTarget_.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
+    return image;
+}
+
+DisplayImage Renderer::readDisplay() const {
+    platform_.makeCurrent();
+    DisplayImage image(displayTarget_.width(), displayTarget_.height());
+    readFlipped(displayTarget_.framebuffer(), image.width, image.height, GL_UNSIGNED_BYTE, image.pixels);
+    return image;
+}
+
+}  // namespace glint

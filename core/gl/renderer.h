@@ -1,0 +1,81 @@
+// Renderer: draws a Scene with OpenGL 4.1 core into its own floating-point framebuffer
+// (radiance, W/(sr·m²)), then runs the display pass into an 8-bit target or onto the screen.
+// It never creates a context: it is handed a GlPlatform that is already current.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/platform.h"
+#include "gl/render_target.h"
+#include "gl/shader_program.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace glint {
+
+class Renderer {
+public:
+    // Loads GL through the platform and builds the display program.
+    static Result<std::unique_ptr<Renderer>> create(GlPlatform& platform, ShaderSources sources = ShaderSources());
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Draws the scene's radiance at width×height (MSAA per scene.msaaSamples). A shader that
+    // fails to compile is reported and the model's last good program, if any, is used.
+    Status renderRadiance(const Scene& scene, int width, int height);
+    // Display pass into the offscreen 8-bit target (same size as the last radiance render).
+    void displayOffscreen(const DisplaySettings& display);
+    // Display pass into the default framebuffer, at the given lower-left corner.
+    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft);
+
+    RadianceImage readRadiance() const;  // top row first
+    DisplayImage readDisplay() const;    // top row first
+
+    // Shaders on disk that changed since they were compiled are rebuilt on the next render.
+    // Returns true when something changed (so the caller redraws).
+    bool reloadChangedShaders();
+    // The last shader error (empty when all compiled), for the UI.
+    const std::string& shaderError() const { return shaderError_; }
+    const std::string& description() const { return description_; }
+    const ShaderSources& sources() const { return sources_; }
+
+private:
+    struct GpuMesh {
+        GLuint vertexArray = 0, vertexBuffer = 0, indexBuffer = 0;
+        GLsizei indexCount = 0;
+        Shape shape;
+    };
+    struct SurfaceProgram {
+        ShaderProgram program;
+        std::vector<std::string> files;
+        long long builtAt = 0;  // newest modification time of its files when built
+    };
+
+    Renderer(GlPlatform& platform, ShaderSources sources);
+    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples) const;
+    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples);
+    const GpuMesh& meshFor(size_t objectIndex, const Shape& shape);
+    void uploadFrame(const Scene& scene, int width, int height);
+    long long newestModification(const std::vector<std::string>& files) const;
+
+    GlPlatform& platform_;
+    ShaderSources sources_;
+    std::string description_;
+    std::string shaderError_;
+    std::map<std::pair<BrdfModel, int>, SurfaceProgram> surfacePrograms_;
+    ShaderProgram displayProgram_;
+    std::vector<std::string> displayFiles_;
+    long long displayBuiltAt_ = 0;
+    GLuint uniformBuffers_[3] = {0, 0, 0};
+    GLuint emptyVertexArray_ = 0;
+    std::vector<GpuMesh> meshes_;
+    RenderTarget multisampleTarget_{GL_RGBA32F, true};
+    RenderTarget radianceTarget_{GL_RGBA32F, true};
+    RenderTarget displayTarget_{GL_RGBA8, false};
+};
+
+}  // namespace glint

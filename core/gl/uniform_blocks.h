@@ -1,0 +1,39 @@
+// C++ mirrors of the std140 uniform blocks in shaders/common/uniforms.glsl, size-checked
+// (after Filament's UibStructs.h). Change both together.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace glint {
+
+struct alignas(16) FrameBlockStd140 {
+    glm::mat4 viewProjection;
+    glm::mat4 inverseViewProjection;
+    glm::vec4 viewportSize;
+    glm::vec4 background;
+    glm::ivec4 lightCount;
+};
+static_assert(sizeof(FrameBlockStd140) == 2 * 64 + 3 * 16, "FrameBlock std140 layout");
+
+struct GpuLightStd140 {
+    glm::vec4 position;  // w = 1 point, w = 0 directional (xyz towards the light)
+    glm::vec4 emission;  // rgb: E⊥ [W/m²] (directional) or intensity Φ/4π [W/sr] (point)
+};
+static_assert(sizeof(GpuLightStd140) == 32, "GpuLight std140 layout");
+
+struct LightBlockStd140 {
+    GpuLightStd140 lights[kMaxLights];
+};
+static_assert(sizeof(LightBlockStd140) == kMaxLights * 32, "LightBlock std140 layout");
+
+inline constexpr int kMaterialBlockFloats = 32;
+struct MaterialBlockStd140 {
+    float values[kMaterialBlockFloats];  // vec4 materialValues[8]
+};
+static_assert(sizeof(MaterialBlockStd140) == 128, "MaterialBlock std140 layout");
+
+enum UniformBinding { kFrameBinding = 0, kLightBinding = 1, kMaterialBinding = 2 };
+
+}  // namespace glint

@@ -1,0 +1,80 @@
+// Image files through OpenImageIO (see image_io.h).
+#include "image/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <cctype>
+
+namespace glint {
+namespace {
+
+std::string extensionOf(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
+    std::string extension = path.substr(dot + 1);
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension;
+}
+
+template <class Pixel>
+Status writeImage(const std::string& path, int width, int height, const Pixel* pixels, OIIO::TypeDesc type) {
+    auto output = OIIO::ImageOutput::create(path);
+    if (!output) return makeError("cannot write this image format: " + OIIO::geterror(), {path});
+    OIIO::ImageSpec spec(width, height, 3, type);
+    if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
+    if (!output->open(path, spec)) return makeError("cannot write: " + output->geterror(), {path});
+    if (!output->write_image(type, pixels) || !output->close())
+        return makeError("write failed: " + output->geterror(), {path});
+    return success();
+}
+
+template <class Pixel>
+Result<std::vector<Pixel>> readImage(const std::string& path, OIIO::TypeDesc type, int& width, int& height) {
+    auto input = OIIO::ImageInput::open(path);
+    if (!input) return makeError("cannot read image: " + OIIO::geterror(), {path});
+    const OIIO::ImageSpec& spec = input->spec();
+    width = spec.width;
+    height = spec.height;
+    if (width <= 0 || height <= 0 || spec.nchannels < 1)
+        return makeError("image has no pixels", {path});
+    std::vector<Pixel> all(static_cast<size_t>(width) * height * spec.nchannels);
+    if (!input->read_image(0, 0, 0, spec.nchannels, type, all.data()))
+        return makeError("cannot read image: " + input->geterror(), {path});
+    std::vector<Pixel> rgb(static_cast<size_t>(width) * height * 3);
+    for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i)
+        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = all[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+    return rgb;
+}
+
+}  // namespace
+
+bool isFloatImagePath(const std::string& path) {
+    const std::string extension = extensionOf(path);
+    return extension == "exr" || extension == "hdr";
+}
+
+Status writeRadianceImage(const RadianceImage& image, const std::string& path) {
+    return writeImage(path, image.width, image.height, image.pixels.data(), OIIO::TypeDesc::FLOAT);
+}
+
+Status writeDisplayImage(const DisplayImage& image, const std::string& path) {
+    return writeImage(path, image.width, image.height, image.pixels.data(), OIIO::TypeDesc::UINT8);
+}
+
+Result<RadianceImage> readRadianceImage(const std::string& path) {
+    RadianceImage image;
+    auto pixels = readImage<float>(path, OIIO::TypeDesc::FLOAT, image.width, image.height);
+    if (!pixels) return pixels.error();
+    image.pixels = std::move(*pixels);
+    return image;
+}
+
+Result<DisplayImage> readDisplayImage(const std::string& path) {
+    DisplayImage image;
+    auto pixels = readImage<uint8_t>(path, OIIO::TypeDesc::UINT8, image.width, image.height);
+    if (!pixels) return pixels.error();
+    image.pixels = std::move(*pixels);
+    return image;
+}
+
+}  // namespace glint

@@ -1,0 +1,20 @@
+// Image files through OpenImageIO: EXR keeps linear radiance as float; PNG (and other 8-bit
+// formats) hold display-encoded values. Errors name the file.
+#pragma once
+
+#include <string>
+
+#include "image/image.h"
+#include "util/diagnostic.h"
+
+namespace glint {
+
+Status writeRadianceImage(const RadianceImage& image, const std::string& path);
+Status writeDisplayImage(const DisplayImage& image, const std::string& path);
+Result<RadianceImage> readRadianceImage(const std::string& path);
+Result<DisplayImage> readDisplayImage(const std::string& path);
+
+// True when the path's extension names a float format (.exr, .hdr).
+bool isFloatImagePath(const std::string& path);
+
+}  // namespace glint

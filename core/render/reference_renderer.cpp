@@ -1,0 +1,99 @@
+// CPU reference renderer (see reference_renderer.h).
+#include "render/reference_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include "math/frame.h"
+
+namespace glint {
+namespace {
+
+// Ray-sphere: |o + t·d - c|² = r² with |d| = 1; the nearest t > 0.
+std::optional<float> intersectSphere(const SphereShape& sphere, const Ray& ray) {
+    const glm::vec3 offset = ray.origin - sphere.center;
+    const float b = glm::dot(offset, ray.direction);
+    const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
+    const float discriminant = b * b - c;
+    if (discriminant < 0.0f) return std::nullopt;
+    const float root = std::sqrt(discriminant);
+    const float nearT = -b - root;
+    if (nearT > 0.0f) return nearT;
+    const float farT = -b + root;
+    if (farT > 0.0f) return farT;
+    return std::nullopt;
+}
+
+// Ray-rectangle: the plane through the centre, then the rectangle's extent in its own frame.
+std::optional<float> intersectPlane(const PlaneShape& plane, const Ray& ray) {
+    const float denominator = glm::dot(plane.normal, ray.direction);
+    if (std::abs(denominator) < 1e-8f) return std::nullopt;
+    const float t = glm::dot(plane.center - ray.origin, plane.normal) / denominator;
+    if (t <= 0.0f) return std::nullopt;
+    const ShadingFrame frame = ShadingFrame::fromNormal(plane.normal);
+    const glm::vec3 local = frame.toLocal(ray.origin + t * ray.direction - plane.center);
+    if (std::abs(local.x) > 0.5f * plane.size.x || std::abs(local.y) > 0.5f * plane.size.y) return std::nullopt;
+    return t;
+}
+
+}  // namespace
+
+std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
+    std::optional<SurfaceHit> nearest;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Shape& shape = scene.objects[i].shape;
+        std::optional<float> t;
+        if (const auto* sphere = std::get_if<SphereShape>(&shape)) t = intersectSphere(*sphere, ray);
+        else t = intersectPlane(std::get<PlaneShape>(shape), ray);
+        if (!t || (nearest && *t >= nearest->distance)) continue;
+        const glm::vec3 position = ray.origin + *t * ray.direction;
+        glm::vec3 normal;
+        if (const auto* sphere = std::get_if<SphereShape>(&shape)) normal = (position - sphere->center) / sphere->radius;
+        else normal = std::get<PlaneShape>(shape).normal;
+        if (glm::dot(normal, ray.direction) > 0.0f) normal = -normal;  // surfaces are two-sided
+        nearest = SurfaceHit{*t, position, glm::normalize(normal), static_cast<int>(i)};
+    }
+    return nearest;
+}
+
+glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer) {
+    const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
+    const ShadingFrame frame = ShadingFrame::fromNormal(hit.normal);
+    glm::vec3 radiance(0.0f);
+    for (const Light& light : scene.lights) {
+        if (!light.enabled) continue;
+        const LightArrival arrival = lightArrival(light, hit.position);
+        const float cosTheta = frame.cosTheta(arrival.towardsLight);
+        if (cosTheta <= 0.0f) continue;
+        // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i.
+        radiance += evalBrdf(material.model, material.values, arrival.towardsLight, towardsViewer, frame) *
+                    arrival.normalIrradiance * cosTheta;
+    }
+    return radiance;
+}
+
+RadianceImage renderReference(const Scene& scene, int width, int height) {
+    if (width <= 0 || height <= 0) width = scene.width, height = scene.height;
+    RadianceImage image(width, height);
+    const glm::mat4 inverseViewProjection =
+        glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
+    auto renderRows = [&](int firstRow, int rowStep) {
+        for (int y = firstRow; y < height; y += rowStep) {
+            for (int x = 0; x < width; ++x) {
+                const Ray ray = primaryRay(inverseViewProjection, x + 0.5f, y + 0.5f, width, height);
+                const auto hit = intersectScene(scene, ray);
+                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : scene.background);
+            }
+        }
+    };
+    const int threadCount = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+    std::vector<std::thread> threads;
+    for (int t = 1; t < threadCount; ++t) threads.emplace_back(renderRows, t, threadCount);
+    renderRows(0, threadCount);
+    for (std::thread& thread : threads) thread.join();
+    return image;
+}
+
+}  // namespace glint

@@ -1,0 +1,30 @@
+// The CPU reference renderer: ray-casts the analytic scene (exact spheres and planes), one ray
+// through each pixel centre, and evaluates the same BRDFs and lights as the GPU into linear
+// radiance. It is the ground truth the GL renderer is tested against; it is not fast.
+#pragma once
+
+#include <optional>
+
+#include "camera/camera.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace glint {
+
+struct SurfaceHit {
+    float distance;       // along the ray [m]
+    glm::vec3 position;
+    glm::vec3 normal;     // unit, facing the ray's origin
+    int objectIndex;
+};
+
+// Nearest intersection of a ray with the scene's objects, if any.
+std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray);
+
+// Outgoing radiance [W/(sr·m²)] at a hit towards `towardsViewer`: Σ f_r·E⊥·cos θ over the lights.
+glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer);
+
+// Renders the whole scene at width×height (the scene's own size when zero).
+RadianceImage renderReference(const Scene& scene, int width = 0, int height = 0);
+
+}  // namespace glint

@@ -1,0 +1,74 @@
+// Scene: everything a picture depends on: camera, lights, materials, objects, background,
+// display chain and output size. Plain data; loading and saving live in scene_json.h,
+// drawing in the CPU reference (render/) and the GL renderer (core/gl).
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "brdf/model_registry.h"
+#include "camera/camera.h"
+#include "light/light.h"
+
+namespace glint {
+
+inline constexpr int kSceneFormatVersion = 1;
+inline constexpr int kMaxLights = 16;
+
+struct Material {
+    std::string name;
+    BrdfModel model = BrdfModel::Lambert;
+    std::vector<float> values;  // packed per the model's parameter table
+
+    static Material withDefaults(std::string name, BrdfModel model);
+};
+
+struct SphereShape {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+    int segments = 64;  // tessellation of the proxy mesh around the pole axis
+    int rings = 32;     // ...and from pole to pole
+};
+
+struct PlaneShape {
+    glm::vec3 center{0, -1, 0};
+    glm::vec3 normal{0, 1, 0};
+    glm::vec2 size{6, 6};  // [m]
+};
+
+using Shape = std::variant<SphereShape, PlaneShape>;
+
+struct SceneObject {
+    std::string name;
+    Shape shape;
+    int materialIndex = 0;  // into Scene::materials
+};
+
+enum class Transfer { Srgb, Gamma };
+
+// The display chain: exposure → clamp → sRGB or gamma encoding → 8-bit quantisation.
+struct DisplaySettings {
+    float exposureStops = 0.0f;  // radiance is multiplied by 2^exposureStops
+    Transfer transfer = Transfer::Srgb;
+    float gamma = 2.2f;  // used when transfer == Gamma
+};
+
+struct Scene {
+    Camera camera;
+    std::vector<Light> lights;
+    std::vector<Material> materials;
+    std::vector<SceneObject> objects;
+    glm::vec3 background{0.0f};  // radiance [W/(sr·m²)] seen where no object is hit
+    DisplaySettings display;
+    int width = 960;   // output size in pixels
+    int height = 720;
+    int msaaSamples = 1;  // 1 = off
+};
+
+// The scene Glint opens with no file: a sphere on a plane under a key and a fill light.
+Scene defaultScene();
+
+}  // namespace glint

@@ -1,0 +1,326 @@
+// Scene and material JSON, version 1 (see scene_json.h and docs/scene-format.md).
+// Sections: format header · materials · lights · objects · camera/display · writers.
+#include "scene/scene_json.h"
+
+#include <array>
+
+#include "scene/json_object_reader.h"
+#include "util/file_io.h"
+
+namespace glint {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kSceneFormat = "glint-scene";
+constexpr const char* kMaterialFormat = "glint-material";
+
+// --- format header -------------------------------------------------------------------------
+
+void readHeader(ObjectReader& root, const char* expectedFormat) {
+    const std::string format = root.requiredString("format");
+    if (format != expectedFormat)
+        root.fail("format", "expected \"" + std::string(expectedFormat) + "\", found \"" + format + "\"");
+    const int version = root.integer("version", -1, 1, 1'000'000);
+    if (version < 0) root.failHere("the file needs a \"version\" (this Glint writes version " +
+                                   std::to_string(kSceneFormatVersion) + ")");
+    if (version > kSceneFormatVersion)
+        root.fail("version", "the file is version " + std::to_string(version) +
+                                 ", written by a newer Glint; this one reads up to version " +
+                                 std::to_string(kSceneFormatVersion));
+    // Older versions would be migrated here, one step at a time; version 1 is the first.
+}
+
+// --- materials ------------------------------------------------------------------------------
+
+constexpr const char* kMaterialReservedKeys[] = {"name", "model", "format", "version"};
+
+Material readMaterial(ObjectReader& reader) {
+    Material material;
+    material.name = reader.string("name", "material");
+    const std::string modelId = reader.requiredString("model");
+    const auto model = findModel(modelId);
+    if (!model) {
+        std::string list;
+        for (const ModelInfo& info : allModels()) list += std::string(list.empty() ? "" : ", ") + info.id;
+        reader.fail("model", "unknown model '" + modelId + "' (known models: " + list + ")");
+    }
+    material.model = *model;
+    const auto table = modelInfo(*model).params;
+    material.values = defaultValues(table);
+    for (size_t i = 0; i < table.size(); ++i) {
+        const ParamSpec& spec = table[i];
+        float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
+        const Bounds bounds = Bounds::between(spec.validMin, spec.validMax == kUnbounded
+                                                                 ? std::numeric_limits<double>::max()
+                                                                 : spec.validMax);
+        switch (spec.kind) {
+            case ParamKind::Scalar: value[0] = static_cast<float>(reader.number(spec.name, value[0], bounds)); break;
+            case ParamKind::Color: {
+                // A colour may be written as [r, g, b] or as one grey number.
+                if (reader.has(spec.name) && reader.take(spec.name).is_number()) {
+                    const float grey = static_cast<float>(reader.number(spec.name, 0, bounds));
+                    value[0] = value[1] = value[2] = grey;
+                } else {
+                    const glm::vec3 color = reader.vec3(spec.name, {value[0], value[1], value[2]}, bounds);
+                    value[0] = color.r, value[1] = color.g, value[2] = color.b;
+                }
+                break;
+            }
+            case ParamKind::Bool: value[0] = reader.boolean(spec.name, value[0] != 0.0f) ? 1.0f : 0.0f; break;
+            case ParamKind::Enum: {
+                std::vector<const char*> ids;
+                for (const EnumOption& option : spec.options) ids.push_back(option.id);
+                value[0] = static_cast<float>(reader.choice(spec.name, ids, static_cast<int>(value[0])));
+                break;
+            }
+        }
+    }
+    reader.rejectUnknownKeys(kMaterialReservedKeys);
+    return material;
+}
+
+json materialBody(const Material& material) {
+    json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
+    const auto table = modelInfo(material.model).params;
+    for (size_t i = 0; i < table.size(); ++i) {
+        const ParamSpec& spec = table[i];
+        const float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
+        switch (spec.kind) {
+            case ParamKind::Scalar: out[spec.name] = value[0]; break;
+            case ParamKind::Color: out[spec.name] = {value[0], value[1], value[2]}; break;
+            case ParamKind::Bool: out[spec.name] = value[0] != 0.0f; break;
+            case ParamKind::Enum: out[spec.name] = spec.options[static_cast<int>(value[0])].id; break;
+        }
+    }
+    return out;
+}
+
+// --- lights ---------------------------------------------------------------------------------
+
+constexpr const char* kLightTypes[] = {"directional", "point"};
+
+Light readLight(ObjectReader& reader) {
+    Light light;
+    if (!reader.has("type")) reader.failHere("a light needs the key 'type' (directional or point)");
+    light.type = static_cast<LightType>(reader.choice("type", kLightTypes, 0));
+    light.name = reader.string("name", kLightTypes[static_cast<int>(light.type)]);
+    light.enabled = reader.boolean("enabled", true);
+    light.color = reader.vec3("color", light.color, Bounds::nonNegative());
+    if (light.type == LightType::Directional) {
+        light.irradiance = static_cast<float>(reader.number("irradiance", light.irradiance, Bounds::nonNegative()));
+        light.direction = reader.vec3("direction", light.direction);
+        if (glm::length(light.direction) < 1e-6f) reader.fail("direction", "must not be the zero vector");
+        light.direction = glm::normalize(light.direction);
+    } else {
+        light.power = static_cast<float>(reader.number("power", light.power, Bounds::nonNegative()));
+        light.position = reader.vec3("position", light.position);
+    }
+    reader.rejectUnknownKeys();
+    return light;
+}
+
+json lightToJson(const Light& light) {
+    json out = {{"name", light.name},
+                {"type", kLightTypes[static_cast<int>(light.type)]},
+                {"enabled", light.enabled},
+                {"color", {light.color.r, light.color.g, light.color.b}}};
+    if (light.type == LightType::Directional) {
+        out["irradiance"] = light.irradiance;
+        out["direction"] = {light.direction.x, light.direction.y, light.direction.z};
+    } else {
+        out["power"] = light.power;
+        out["position"] = {light.position.x, light.position.y, light.position.z};
+    }
+    return out;
+}
+
+// --- objects --------------------------------------------------------------------------------
+
+constexpr const char* kShapes[] = {"sphere", "plane"};
+
+SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materials) {
+    SceneObject object;
+    if (!reader.has("shape")) reader.failHere("an object needs the key 'shape' (sphere or plane)");
+    const int shape = reader.choice("shape", kShapes, 0);
+    object.name = reader.string("name", kShapes[shape]);
+    if (shape == 0) {
+        SphereShape sphere;
+        sphere.center = reader.vec3("center", sphere.center);
+        sphere.radius = static_cast<float>(reader.number("radius", sphere.radius, Bounds::positive()));
+        sphere.segments = reader.integer("segments", sphere.segments, 3, 1024);
+        sphere.rings = reader.integer("rings", sphere.rings, 2, 512);
+        object.shape = sphere;
+    } else {
+        PlaneShape plane;
+        plane.center = reader.vec3("center", plane.center);
+        plane.normal = reader.vec3("normal", plane.normal);
+        if (glm::length(plane.normal) < 1e-6f) reader.fail("normal", "must not be the zero vector");
+        plane.normal = glm::normalize(plane.normal);
+        plane.size = reader.vec2("size", plane.size, Bounds::positive());
+        object.shape = plane;
+    }
+    const std::string materialName = reader.requiredString("material");
+    object.materialIndex = -1;
+    for (size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].name == materialName) object.materialIndex = static_cast<int>(i);
+    if (object.materialIndex < 0) reader.fail("material", "no material named '" + materialName + "' in \"materials\"");
+    reader.rejectUnknownKeys();
+    return object;
+}
+
+json objectToJson(const SceneObject& object, const std::vector<Material>& materials) {
+    json out = {{"name", object.name}};
+    if (const auto* sphere = std::get_if<SphereShape>(&object.shape)) {
+        out["shape"] = "sphere";
+        out["center"] = {sphere->center.x, sphere->center.y, sphere->center.z};
+        out["radius"] = sphere->radius;
+        out["segments"] = sphere->segments;
+        out["rings"] = sphere->rings;
+    } else {
+        const auto& plane = std::get<PlaneShape>(object.shape);
+        out["shape"] = "plane";
+        out["center"] = {plane.center.x, plane.center.y, plane.center.z};
+        out["normal"] = {plane.normal.x, plane.normal.y, plane.normal.z};
+        out["size"] = {plane.size.x, plane.size.y};
+    }
+    out["material"] = materials.at(object.materialIndex).name;
+    return out;
+}
+
+// --- camera, display, output ----------------------------------------------------------------
+
+constexpr const char* kProjections[] = {"perspective", "orthographic"};
+constexpr const char* kTransfers[] = {"srgb", "gamma"};
+
+Camera readCamera(ObjectReader& reader) {
+    Camera camera;
+    camera.projection = static_cast<Projection>(reader.choice("projection", kProjections, 0));
+    camera.position = reader.vec3("position", camera.position);
+    camera.target = reader.vec3("target", camera.target);
+    camera.up = reader.vec3("up", camera.up);
+    camera.verticalFovDegrees = static_cast<float>(reader.number("fov_degrees", camera.verticalFovDegrees, {0.0, 179.0, true}));
+    camera.orthoHeight = static_cast<float>(reader.number("ortho_height", camera.orthoHeight, Bounds::positive()));
+    camera.nearPlane = static_cast<float>(reader.number("near", camera.nearPlane, Bounds::positive()));
+    camera.farPlane = static_cast<float>(reader.number("far", camera.farPlane, Bounds::positive()));
+    if (camera.farPlane <= camera.nearPlane) reader.fail("far", "must be greater than near");
+    const glm::vec3 forward = camera.target - camera.position;
+    if (glm::length(forward) < 1e-6f) reader.fail("target", "must differ from the camera position");
+    if (glm::length(glm::cross(forward, camera.up)) < 1e-6f * glm::length(forward))
+        reader.fail("up", "must not be parallel to the viewing direction");
+    reader.rejectUnknownKeys();
+    return camera;
+}
+
+Scene readScene(const JsonDocument& document) {
+    ObjectReader root = readRoot(document, "scene");
+    readHeader(root, kSceneFormat);
+    Scene scene;
+    if (root.has("output")) {
+        ObjectReader output = root.object("output");
+        scene.width = output.integer("width", scene.width, 1, 16384);
+        scene.height = output.integer("height", scene.height, 1, 16384);
+        scene.msaaSamples = output.integer("msaa", scene.msaaSamples, 1, 16);
+        output.rejectUnknownKeys();
+    }
+    if (root.has("camera")) {
+        ObjectReader camera = root.object("camera");
+        scene.camera = readCamera(camera);
+    }
+    scene.background = root.vec3("background", scene.background, Bounds::nonNegative());
+    if (root.has("display")) {
+        ObjectReader display = root.object("display");
+        scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
+        scene.display.transfer = static_cast<Transfer>(display.choice("transfer", kTransfers, 0));
+        scene.display.gamma = static_cast<float>(display.number("gamma", scene.display.gamma, Bounds::between(0.1, 10)));
+        display.rejectUnknownKeys();
+    }
+    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader));
+    for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
+    if (scene.lights.size() > static_cast<size_t>(kMaxLights))
+        root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
+    for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials));
+    root.rejectUnknownKeys();
+    return scene;
+}
+
+json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+// --- writers and entry points ---------------------------------------------------------------
+
+Result<Scene> parseScene(const std::string& text, const std::string& file) {
+    auto document = JsonDocument::parse(text, file);
+    if (!document) return document.error();
+    try {
+        return readScene(*document);
+    } catch (const JsonReadError& error) {
+        return error.diagnostic;
+    }
+}
+
+Result<Scene> loadScene(const std::string& path) {
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    return parseScene(*text, path);
+}
+
+json sceneToJson(const Scene& scene) {
+    json out = {{"format", kSceneFormat}, {"version", kSceneFormatVersion}};
+    out["output"] = {{"width", scene.width}, {"height", scene.height}, {"msaa", scene.msaaSamples}};
+    const Camera& camera = scene.camera;
+    out["camera"] = {{"projection", kProjections[static_cast<int>(camera.projection)]},
+                     {"position", vec3Json(camera.position)},
+                     {"target", vec3Json(camera.target)},
+                     {"up", vec3Json(camera.up)},
+                     {"fov_degrees", camera.verticalFovDegrees},
+                     {"ortho_height", camera.orthoHeight},
+                     {"near", camera.nearPlane},
+                     {"far", camera.farPlane}};
+    out["background"] = vec3Json(scene.background);
+    out["display"] = {{"exposure", scene.display.exposureStops},
+                      {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
+                      {"gamma", scene.display.gamma}};
+    out["materials"] = json::array();
+    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material));
+    out["lights"] = json::array();
+    for (const Light& light : scene.lights) out["lights"].push_back(lightToJson(light));
+    out["objects"] = json::array();
+    for (const SceneObject& object : scene.objects) out["objects"].push_back(objectToJson(object, scene.materials));
+    return out;
+}
+
+Status saveScene(const Scene& scene, const std::string& path) {
+    return writeFileAtomically(path, sceneToJson(scene).dump(2) + "\n");
+}
+
+Result<Material> parseMaterial(const std::string& text, const std::string& file) {
+    auto document = JsonDocument::parse(text, file);
+    if (!document) return document.error();
+    try {
+        ObjectReader root = readRoot(*document, "material");
+        readHeader(root, kMaterialFormat);
+        return readMaterial(root);
+    } catch (const JsonReadError& error) {
+        return error.diagnostic;
+    }
+}
+
+Result<Material> loadMaterial(const std::string& path) {
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    return parseMaterial(*text, path);
+}
+
+json materialToJson(const Material& material) {
+    json out = {{"format", kMaterialFormat}, {"version", kSceneFormatVersion}};
+    out.update(materialBody(material));
+    return out;
+}
+
+Status saveMaterial(const Material& material, const std::string& path) {
+    return writeFileAtomically(path, materialToJson(material).dump(2) + "\n");
+}
+
+}  // namespace glint

@@ -1,0 +1,14 @@
+// Whole-file reads and atomic writes, with user-facing errors. Saves never leave a half-written
+// file behind: they write a temporary file beside the target, then rename it over the target.
+#pragma once
+
+#include <string>
+
+#include "util/diagnostic.h"
+
+namespace glint {
+
+Result<std::string> readTextFile(const std::string& path);
+Status writeFileAtomically(const std::string& path, const std::string& contents);
+
+}  // namespace glint

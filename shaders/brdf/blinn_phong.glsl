@@ -1,0 +1,18 @@
+// Blinn-Phong in the four BRDF forms of the lectures. GLSL twin of core/brdf/blinn_phong.h;
+// MaterialParams is generated from the parameter table
+// (fields: diffuse_albedo, specular, exponent, form).
+
+vec3 evalBlinnPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    float cosIn = cosTheta(frame, wi);
+    float cosOut = cosTheta(frame, wo);
+    if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
+    vec3 sum = wi + wo;
+    vec3 halfway = normalize(sum);
+    float lobe = pow(max(cosTheta(frame, halfway), 0.0), p.exponent);
+    float specularScale;
+    if (p.form == 0) specularScale = lobe / cosIn;                             // lecture
+    else if (p.form == 1) specularScale = lobe / max(cosIn, cosOut);           // max-Blinn
+    else if (p.form == 2) specularScale = lobe / dot(sum, sum);                // |L+V|²
+    else specularScale = lobe * (p.exponent + 8.0) / (8.0 * PI);               // normalised
+    return p.diffuse_albedo * INV_PI + p.specular * specularScale;
+}

@@ -1,0 +1,6 @@
+// Lambert: f_r = ρ/π. GLSL twin of core/brdf/lambert.h; MaterialParams is generated from the
+// parameter table (fields: albedo).
+
+vec3 evalLambert(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    return p.albedo * INV_PI;
+}

@@ -1,0 +1,40 @@
+// Shading frame and primary rays: the GLSL twins of core/math/frame.h and core/camera/camera.h.
+
+const float PI = 3.14159265358979323846;
+const float INV_PI = 1.0 / PI;
+
+struct ShadingFrame {
+    vec3 tangent;
+    vec3 bitangent;
+    vec3 normal;
+};
+
+// Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017.
+ShadingFrame frameFromNormal(vec3 n) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = n.x * n.y * a;
+    ShadingFrame frame;
+    frame.tangent = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    frame.bitangent = vec3(b, s + n.y * n.y * a, -n.y);
+    frame.normal = n;
+    return frame;
+}
+
+float cosTheta(ShadingFrame frame, vec3 w) { return dot(w, frame.normal); }
+
+struct Ray {
+    vec3 origin;
+    vec3 direction;
+};
+
+// The ray through a point in window coordinates (gl_FragCoord.xy), by unprojection.
+Ray primaryRay(vec2 windowPoint) {
+    vec2 ndc = 2.0 * windowPoint / viewportSize.xy - 1.0;
+    vec4 nearPoint = inverseViewProjection * vec4(ndc, -1.0, 1.0);
+    vec4 farPoint = inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    Ray ray;
+    ray.origin = nearPoint.xyz / nearPoint.w;
+    ray.direction = normalize(farPoint.xyz / farPoint.w - ray.origin);
+    return ray;
+}

@@ -1,0 +1,24 @@
+#version 410 core
+// The display pass: radiance → exposure → clamp → sRGB or gamma → 8-bit quantisation.
+// GLSL twin of core/display/display_chain.h.
+
+uniform sampler2D radiance;   // linear float, same size as the output
+uniform ivec2 sourceOffset;   // where the viewport's lower-left pixel reads from
+uniform float exposureScale;  // 2^EV
+uniform int transfer;         // 0: sRGB, 1: gamma
+uniform float gamma;
+
+out vec4 outColor;
+
+float encodeSrgb(float linear) {
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+void main() {
+    vec3 value = texelFetch(radiance, ivec2(gl_FragCoord.xy) - sourceOffset, 0).rgb;
+    vec3 exposed = clamp(value * exposureScale, 0.0, 1.0);
+    vec3 encoded = transfer == 0
+        ? vec3(encodeSrgb(exposed.r), encodeSrgb(exposed.g), encodeSrgb(exposed.b))
+        : pow(exposed, vec3(1.0 / gamma));
+    outColor = vec4(floor(encoded * 255.0 + 0.5) / 255.0, 1.0);
+}

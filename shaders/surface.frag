@@ -1,0 +1,84 @@
+#version 410 core
+// Surface fragment shader: finds the exact surface point under the pixel (analytic sphere, or
+// the interpolated point of a planar mesh), then sums f_r · E⊥ · cos θ over the lights.
+// generated/material.glsl is made per model from its parameter table (MaterialParams,
+// loadMaterialParams(), the model's GLSL twin and GLINT_EVAL_BRDF); the prelude defines
+// GLINT_MSAA_SAMPLES when rendering multisampled.
+#include "common/uniforms.glsl"
+#include "common/frame.glsl"
+#include "common/lights.glsl"
+#include "generated/material.glsl"
+
+const int SHAPE_MESH = 0;
+const int SHAPE_SPHERE = 1;
+
+uniform int shapeKind;
+uniform vec4 sphere;  // xyz: centre, w: radius
+#ifdef GLINT_MSAA_SAMPLES
+uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the pixel, [0,1)²
+#endif
+
+in vec3 worldPosition;
+in vec3 worldNormal;
+out vec4 outRadiance;
+
+// Nearest t > 0 with |o + t·d − c| = r, or -1.
+float intersectSphere(Ray ray) {
+    vec3 offset = ray.origin - sphere.xyz;
+    float b = dot(offset, ray.direction);
+    float c = dot(offset, offset) - sphere.w * sphere.w;
+    float discriminant = b * b - c;
+    if (discriminant < 0.0) return -1.0;
+    float root = sqrt(discriminant);
+    if (-b - root > 0.0) return -b - root;
+    if (-b + root > 0.0) return -b + root;
+    return -1.0;
+}
+
+vec3 shade(vec3 position, vec3 normal, vec3 towardsViewer) {
+    MaterialParams params = loadMaterialParams();
+    ShadingFrame frame = frameFromNormal(normal);
+    vec3 radiance = vec3(0.0);
+    for (int i = 0; i < lightCount.x; ++i) {
+        LightArrival arrival = lightArrival(lights[i], position);
+        float cosIn = cosTheta(frame, arrival.towardsLight);
+        if (cosIn <= 0.0) continue;
+        // L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i for each delta light.
+        radiance += GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) *
+                    arrival.normalIrradiance * cosIn;
+    }
+    return radiance;
+}
+
+void main() {
+    Ray ray = primaryRay(gl_FragCoord.xy);
+    vec3 position = worldPosition;
+    vec3 normal = normalize(worldNormal);
+    float depth = gl_FragCoord.z;
+    if (shapeKind == SHAPE_SPHERE) {
+        float t = intersectSphere(ray);
+#ifdef GLINT_MSAA_SAMPLES
+        // Coverage from the analytic silhouette, sample by sample.
+        int mask = 0;
+        for (int i = 0; i < GLINT_MSAA_SAMPLES; ++i) {
+            Ray sampleRay = primaryRay(floor(gl_FragCoord.xy) + sampleOffsets[i]);
+            float sampleT = intersectSphere(sampleRay);
+            if (sampleT > 0.0) {
+                mask |= 1 << i;
+                if (t < 0.0) { ray = sampleRay; t = sampleT; }
+            }
+        }
+        if (mask == 0) discard;
+        gl_SampleMask[0] = mask;
+#else
+        if (t < 0.0) discard;
+#endif
+        position = ray.origin + t * ray.direction;
+        normal = (position - sphere.xyz) / sphere.w;
+        vec4 clip = viewProjection * vec4(position, 1.0);
+        depth = 0.5 * (clip.z / clip.w) + 0.5;
+    }
+    if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
+    gl_FragDepth = depth;
+    outRadiance = vec4(shade(position, normalize(normal), -ray.direction), 1.0);
+}

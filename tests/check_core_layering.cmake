@@ -1,0 +1,12 @@
+# Fails when a file in core/ (outside core/gl, the renderer) includes GL, GLFW or ImGui headers.
+file(GLOB_RECURSE core_files "${CORE_DIR}/*.h" "${CORE_DIR}/*.cpp")
+foreach(file ${core_files})
+  if(file MATCHES "/core/gl/")
+    continue()
+  endif()
+  file(STRINGS "${file}" offending REGEX "#[ \t]*include[ \t]*[<\"](glad/|GL/|GLFW/|imgui)")
+  if(offending)
+    message(FATAL_ERROR "${file} includes a GL/window/UI header: ${offending}")
+  endif()
+endforeach()
+message(STATUS "core/ has no GL, GLFW or ImGui includes")

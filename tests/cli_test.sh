@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# `glint render` on good and bad input: bad input must exit with code 2 and a message naming
+# the file and the line or key; nothing may crash. usage: cli_test.sh GLINT OUTPUT_DIR
+set -u
+glint=$1
+out=$2
+rm -rf "$out" && mkdir -p "$out"
+failures=0
+here=$(cd "$(dirname "$0")" && pwd)
+
+# expect_error NAME EXPECTED_REGEX -- ARGS...: exit code 2 and stderr matching the regex.
+expect_error() {
+  local name=$1 pattern=$2
+  shift 3
+  "$glint" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr"
+  local code=$?
+  if [[ $code -ne 2 ]]; then
+    echo "FAIL $name: exit code $code, expected 2"; cat "$out/$name.stderr"; failures=$((failures + 1)); return
+  fi
+  if ! grep -Eq -- "$pattern" "$out/$name.stderr"; then
+    echo "FAIL $name: message does not match /$pattern/:"; cat "$out/$name.stderr"; failures=$((failures + 1)); return
+  fi
+  echo "ok   $name: $(head -n 1 "$out/$name.stderr")"
+}
+
+scene() {  # scene NAME LIGHT_JSON: writes a scene whose light (line 4) is LIGHT_JSON
+  cat >"$out/$1.json" <<JSON
+{
+  "format": "glint-scene", "version": 1,
+  "lights": [
+    $2
+  ],
+  "materials": [{"name": "m", "model": "lambert"}],
+  "objects": [{"shape": "sphere", "material": "m"}]
+}
+JSON
+}
+
+expect_error missing_file "/no/such/scene.json: cannot open" -- render /no/such/scene.json -o "$out/x.png"
+printf '{\n  "format": "glint-scene",\n  "version": 1\n  "lights": []\n}\n' >"$out/invalid.json"
+expect_error invalid_json "invalid\.json:4:[0-9]+: invalid JSON" -- render "$out/invalid.json" -o "$out/x.png"
+scene unknown_key '{"type": "point", "power": 10, "watts": 5}'
+expect_error unknown_key "unknown_key\.json:4:[0-9]+: .*'watts': unknown key" -- render "$out/unknown_key.json" -o "$out/x.png"
+scene wrong_type '{"type": "point", "power": [10]}'
+expect_error wrong_type "wrong_type\.json:4:[0-9]+: .*'power': expected a number" -- render "$out/wrong_type.json" -o "$out/x.png"
+scene negative '{"type": "directional", "irradiance": -3.14}'
+expect_error negative_irradiance "negative\.json:4:[0-9]+: .*'irradiance': -3\.14 is out of range" -- render "$out/negative.json" -o "$out/x.png"
+scene nan '{"type": "directional", "irradiance": NaN}'
+expect_error nan "nan\.json:4:[0-9]+: invalid JSON" -- render "$out/nan.json" -o "$out/x.png"
+scene unknown_type '{"type": "laser"}'
+expect_error unknown_light_type "unknown_type\.json:4:[0-9]+: .*unknown value 'laser'" -- render "$out/unknown_type.json" -o "$out/x.png"
+mkdir -p "$out/a_directory.json"
+expect_error directory "is a directory" -- render "$out/a_directory.json" -o "$out/x.png"
+expect_error no_output "no output file" -- render "$here/scenes/lambert_sun.json"
+expect_error bad_size "--size needs" -- render "$here/scenes/lambert_sun.json" -o "$out/x.png" --size 12by7
+expect_error unwritable "cannot write|could not open" -- render "$here/scenes/lambert_sun.json" -o "/no/such/dir/x.png"
+expect_error unknown_option "unknown option --frobnicate" -- render "$here/scenes/lambert_sun.json" --frobnicate
+expect_error editor_bad_scene "invalid\.json:4:" -- "$out/invalid.json"
+
+# Good input: both outputs, the requested size, exit code 0.
+if "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.png" --size 100x60 &&
+   "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.exr" &&
+   [[ $(od -An -tu1 -j16 -N8 "$out/sun.png" | tr -s ' ') == " 0 0 0 100 0 0 0 60" ]] &&
+   [[ $(head -c 4 "$out/sun.exr" | od -An -tx1 | tr -d ' ') == "762f3101" ]]; then
+  echo "ok   render: PNG 100x60 and EXR written"
+else
+  echo "FAIL render: good input did not produce the images"; failures=$((failures + 1))
+fi
+# No display: plain `glint` renders the default scene headless and says where it went.
+if (cd "$out" && DISPLAY= "$glint" >"$out/nodisplay.stdout") && grep -q "glint-default.png" "$out/nodisplay.stdout" &&
+   [[ -s "$out/glint-default.png" ]]; then
+  echo "ok   no display: $(tail -n 1 "$out/nodisplay.stdout")"
+else
+  echo "FAIL no display: no headless image"; failures=$((failures + 1))
+fi
+
+echo "$((15 - failures)) passed, $failures failed"
+[[ $failures -eq 0 ]]

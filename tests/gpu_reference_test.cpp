@@ -1,0 +1,114 @@
+// The OpenGL renderer (through OSMesa) against the radiometry and against the CPU reference,
+// pixel by pixel on linear float output: the test that keeps the GLSL twins honest.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+
+#include "display/display_chain.h"
+#include "gl/gl_loader.h"
+#include "gpu_test_support.h"
+#include "image/image_io.h"
+#include "test_support.h"
+
+namespace glint {
+namespace {
+
+TEST(GpuRenderer, LambertSunMatchesTheRadiometry) {
+    const Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    auto images = test::sharedHeadless().render(scene, 256, 256);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    // Through the EXR file, as a user would read it.
+    const std::string path = test::outputDirectory("gpu") + "/lambert_sun.exr";
+    ASSERT_TRUE(writeRenderedImage(*images, path).ok());
+    auto exr = readRadianceImage(path);
+    ASSERT_TRUE(exr.ok()) << exr.error().format();
+    EXPECT_NEAR(exr->at(128, 128).r, 0.5f, 1e-3f);
+    const float pixelSize = 2.2f / 256.0f;
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x) {
+            const float px = -1.1f + (x + 0.5f) * pixelSize, py = 1.1f - (y + 0.5f) * pixelSize;
+            const float r2 = px * px + py * py;
+            if (r2 > 0.95f * 0.95f) continue;
+            ASSERT_NEAR(exr->at(x, y).g, 0.5f * std::sqrt(1.0f - r2), 1e-4f) << x << "," << y;
+        }
+}
+
+TEST(GpuRenderer, LambertSunMatchesTheCpuReference) {
+    const Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    auto images = test::sharedHeadless().render(scene, 256, 256);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    const auto agreement = test::compareWithReference(scene, images->radiance);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 60000);
+    EXPECT_LT(agreement.excluded, 3000);
+}
+
+TEST(GpuRenderer, BlinnPhongPointLightMatchesTheCpuReference) {
+    const Scene scene = test::loadTestScene("scenes/blinn_point.json");
+    auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    const auto agreement = test::compareWithReference(scene, images->radiance);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 40000);
+}
+
+TEST(GpuRenderer, EveryBlinnFormMatchesTheCpuReference) {
+    Scene scene = test::loadTestScene("scenes/blinn_point.json");
+    for (float form = 0; form < 4; ++form) {
+        scene.materials[0].values[7] = form;
+        scene.materials[1].values[7] = form;
+        auto images = test::sharedHeadless().render(scene, 128, 96);
+        ASSERT_TRUE(images.ok()) << images.error().format();
+        const auto agreement = test::compareWithReference(scene, images->radiance);
+        EXPECT_EQ(agreement.disagreeing, 0) << "form " << form << ": " << agreement.firstDisagreement;
+    }
+}
+
+TEST(GpuRenderer, PngMatchesTheCpuDisplayChain) {
+    Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    scene.display.exposureStops = 0.5f;
+    auto images = test::sharedHeadless().render(scene, 64, 64);
+    ASSERT_TRUE(images.ok());
+    const DisplayImage cpu = applyDisplayChain(images->radiance, scene.display);
+    int worst = 0;
+    for (size_t i = 0; i < cpu.pixels.size(); ++i) worst = std::max(worst, std::abs(cpu.pixels[i] - images->display.pixels[i]));
+    EXPECT_LE(worst, 1) << "the display pass is the twin of display_chain.h";
+}
+
+TEST(GpuRenderer, MsaaSmoothsTheSilhouette) {
+    Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    scene.msaaSamples = 4;
+    auto images = test::sharedHeadless().render(scene, 64, 64);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    std::set<int> silhouetteLevels;
+    for (int x = 0; x < 64; ++x) silhouetteLevels.insert(images->display.pixels[(32 * 64 + x) * 3]);
+    // With 4 samples, edge pixels take partial-coverage values; the interior is unchanged.
+    Scene single = scene;
+    single.msaaSamples = 1;
+    auto reference = test::sharedHeadless().render(single, 64, 64);
+    ASSERT_TRUE(reference.ok());
+    EXPECT_NEAR(images->radiance.at(32, 32).r, reference->radiance.at(32, 32).r, 1e-6f);
+    long differing = 0;
+    for (size_t i = 0; i < images->display.pixels.size(); ++i) differing += images->display.pixels[i] != reference->display.pixels[i];
+    EXPECT_GT(differing, 30) << "edge pixels blend with the background";
+    EXPECT_TRUE(takeGlErrors("msaa test").ok());
+}
+
+TEST(GpuRenderer, ShaderErrorsNameTheFileAndLine) {
+    const std::string directory = test::outputDirectory("broken_shaders");
+    std::filesystem::copy(std::string(GLINT_TEST_DATA_DIR) + "/../shaders", directory,
+                          std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(directory + "/brdf/lambert.glsl") << "// broken on purpose\n\nvec3 evalLambert(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {\n    return undefinedThing;\n}\n";
+    auto platform = OsMesaPlatform::create();
+    ASSERT_TRUE(platform.ok());
+    auto renderer = Renderer::create(**platform, ShaderSources(directory));
+    ASSERT_TRUE(renderer.ok()) << renderer.error().format();
+    const Status status = (*renderer)->renderRadiance(test::loadTestScene("scenes/lambert_sun.json"), 16, 16);
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().message.find("brdf/lambert.glsl:4:"), std::string::npos) << status.error().format();
+    EXPECT_NE((*renderer)->shaderError().find("undefinedThing"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace glint

@@ -1,0 +1,99 @@
+"""Helpers for GUI tests: a private Xvfb server, the editor's window, real input through
+xdotool, and screenshots read from xwd's format (standard library only; run with
+/usr/bin/python3). Nothing here knows about Glint's panels."""
+import os
+import struct
+import subprocess
+import time
+import zlib
+
+
+class XServer:
+    """An Xvfb server on a free display number, stopped on exit."""
+
+    def __init__(self, width=1280, height=800):
+        read_end, write_end = os.pipe()
+        self.process = subprocess.Popen(
+            ["Xvfb", "-displayfd", str(write_end), "-screen", "0", f"{width}x{height}x24", "-nolisten", "tcp"],
+            pass_fds=[write_end], stderr=subprocess.DEVNULL)
+        os.close(write_end)
+        with os.fdopen(read_end) as reader:
+            number = reader.readline().strip()
+        if not number:
+            raise RuntimeError("Xvfb did not start")
+        self.display = ":" + number
+        self.env = dict(os.environ, DISPLAY=self.display)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.process.terminate()
+        self.process.wait(timeout=10)
+
+    def run(self, *args, check=True):
+        return subprocess.run(list(args), env=self.env, check=check, capture_output=True, text=True)
+
+    def find_window(self, name, timeout=30.0):
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            found = self.run("xdotool", "search", "--name", name, check=False).stdout.split()
+            if found:
+                return found[0]
+            time.sleep(0.2)
+        raise RuntimeError(f"no window named {name!r} appeared in {timeout} s")
+
+    def screenshot(self, window="root"):
+        """Returns (width, height, pixels) with pixels a bytes object of RGB triples."""
+        target = ["-root"] if window == "root" else ["-id", window]
+        data = subprocess.run(["xwd", "-silent", *target], env=self.env, check=True, capture_output=True).stdout
+        return parse_xwd(data)
+
+
+def parse_xwd(data):
+    """Decodes a 24/32-bit TrueColor XWD image (X11 Window Dump, big-endian header)."""
+    header = struct.unpack(">25I", data[:100])
+    header_size, width, height = header[0], header[4], header[5]
+    byte_order, bits_per_pixel, bytes_per_line = header[7], header[11], header[12]
+    red_mask, green_mask, blue_mask = header[14], header[15], header[16]
+    colors_in_file = header[19]  # XWDColor entries (12 bytes each) between header and pixels
+    offset = header_size + colors_in_file * 12
+    if bits_per_pixel != 32:
+        raise ValueError(f"unsupported XWD depth {bits_per_pixel}")
+    pixels = bytearray(width * height * 3)
+    order = "<" if byte_order == 0 else ">"
+
+    def shift(mask):
+        return (mask & -mask).bit_length() - 1
+
+    shifts = [shift(m) for m in (red_mask, green_mask, blue_mask)]
+    for y in range(height):
+        row = struct.unpack_from(f"{order}{width}I", data, offset + y * bytes_per_line)
+        for x, value in enumerate(row):
+            i = (y * width + x) * 3
+            pixels[i] = (value >> shifts[0]) & 0xFF
+            pixels[i + 1] = (value >> shifts[1]) & 0xFF
+            pixels[i + 2] = (value >> shifts[2]) & 0xFF
+    return width, height, bytes(pixels)
+
+
+def pixel(image, x, y):
+    width, _, pixels = image
+    i = (y * width + x) * 3
+    return pixels[i], pixels[i + 1], pixels[i + 2]
+
+
+def write_png(image, path):
+    """Saves a screenshot as an 8-bit RGB PNG, for a person to look at."""
+    width, height, pixels = image
+    stride = width * 3
+    raw = b"".join(b"\x00" + pixels[y * stride:(y + 1) * stride] for y in range(height))
+
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+
+    with open(path, "wb") as out:
+        out.write(b"\x89PNG\r\n\x1a\n")
+        out.write(chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)))
+        out.write(chunk(b"IDAT", zlib.compress(raw, 6)))
+        out.write(chunk(b"IEND", b""))

@@ -1,0 +1,78 @@
+// The CPU reference renderer against the radiometry worked by hand: a Lambert sphere (ρ = 0.5)
+// under a directional light of irradiance π W/m² seen along the light has L = ρ/π·π·n_z = 0.5·n_z.
+#include <gtest/gtest.h>
+
+#include "display/display_chain.h"
+#include "render/reference_renderer.h"
+#include "test_support.h"
+
+namespace glint {
+namespace {
+
+TEST(ReferenceRenderer, LambertSunRadianceIsHalfNz) {
+    const Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    const RadianceImage image = renderReference(scene);
+    ASSERT_EQ(image.width, 256);
+    // The centre pixel is (127.5 + 0.5 …): the pixel whose centre is nearest the sphere's apex.
+    EXPECT_NEAR(image.at(128, 128).g, 0.5f, 1e-3f);
+    const float pixelSize = 2.2f / 256.0f;
+    int checked = 0;
+    for (int y = 0; y < 256; ++y) {
+        for (int x = 0; x < 256; ++x) {
+            const float px = -1.1f + (x + 0.5f) * pixelSize, py = 1.1f - (y + 0.5f) * pixelSize;
+            const float r2 = px * px + py * py;
+            if (r2 > 0.95f * 0.95f) continue;  // well inside the disc
+            const float nz = std::sqrt(1.0f - r2);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.at(x, y)[c], 0.5f * nz, 1e-4f) << x << "," << y;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 38000);
+    EXPECT_EQ(image.at(2, 2), glm::vec3(0.0f)) << "black background";
+}
+
+TEST(ReferenceRenderer, PointLightFollowsTheInverseSquareLaw) {
+    Scene scene;
+    scene.materials = {Material::withDefaults("white", BrdfModel::Lambert)};
+    scene.materials[0].values = {1, 1, 1};
+    scene.objects.push_back({"floor", PlaneShape{{0, 0, 0}, {0, 1, 0}, {100, 100}}, 0});
+    Light bulb;
+    bulb.type = LightType::Point;
+    bulb.power = 4.0f * kPi * 10.0f;  // intensity 10 W/sr
+    bulb.position = {0, 2, 0};
+    scene.lights = {bulb};
+    const Ray down{{0, 1, 0}, {0, -1, 0}};
+    const auto hit = intersectScene(scene, down);
+    ASSERT_TRUE(hit.has_value());
+    // E = I/d² · cos θ = 10/4 · 1; L = ρ/π · E.
+    EXPECT_NEAR(shadeHit(scene, *hit, {0, 1, 0}).r, 2.5f / kPi, 1e-5f);
+    const Ray slanted{{2, 1, 0}, {0, -1, 0}};
+    const auto offAxis = intersectScene(scene, slanted);
+    ASSERT_TRUE(offAxis.has_value());
+    // d² = 8, cos θ = 2/√8.
+    EXPECT_NEAR(shadeHit(scene, *offAxis, {0, 1, 0}).r, 10.0f / 8.0f * (2.0f / std::sqrt(8.0f)) / kPi, 1e-5f);
+}
+
+TEST(ReferenceRenderer, DisabledLightsAndLightsBehindAddNothing) {
+    Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    scene.lights[0].enabled = false;
+    EXPECT_EQ(renderReference(scene, 16, 16).at(8, 8), glm::vec3(0.0f));
+    scene.lights[0].enabled = true;
+    scene.lights[0].direction = {0, 0, 1};  // shining from behind the sphere
+    EXPECT_EQ(renderReference(scene, 16, 16).at(8, 8), glm::vec3(0.0f));
+}
+
+TEST(DisplayChain, SrgbAndGammaAndExposure) {
+    DisplaySettings display;
+    EXPECT_EQ(quantize8(encodeForDisplay(0.0f, display)), 0);
+    EXPECT_EQ(quantize8(encodeForDisplay(1.0f, display)), 255);
+    EXPECT_EQ(quantize8(encodeForDisplay(0.5f, display)), 188);  // sRGB(0.5) = 0.7354
+    EXPECT_EQ(quantize8(encodeForDisplay(7.0f, display)), 255);  // clamped
+    display.exposureStops = -1.0f;
+    EXPECT_EQ(quantize8(encodeForDisplay(1.0f, display)), 188);
+    display = {0.0f, Transfer::Gamma, 2.2f};
+    EXPECT_EQ(quantize8(encodeForDisplay(0.5f, display)), 186);  // 0.5^(1/2.2) = 0.7297
+}
+
+}  // namespace
+}  // namespace glint

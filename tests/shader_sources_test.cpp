@@ -1,0 +1,70 @@
+// The shader #include preprocessor, #line bookkeeping, error-log mapping and the GLSL generated
+// from a parameter table. No GL context needed.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "gl/material_glsl.h"
+#include "gl/shader_sources.h"
+#include "test_support.h"
+
+namespace glint {
+namespace {
+
+void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+TEST(ShaderSources, IncludesOnceAndKeepsLineNumbers) {
+    const std::string directory = test::outputDirectory("shader_sources");
+    std::filesystem::create_directories(directory + "/common");
+    writeFile(directory + "/main.frag", "#version 410 core\n#include \"common/a.glsl\"\n#include \"common/a.glsl\"\nvoid main() {}\n");
+    writeFile(directory + "/common/a.glsl", "float a() { return 1.0; }\n");
+    auto assembled = assembleShader(ShaderSources(directory), "main.frag", "#define X 1\n");
+    ASSERT_TRUE(assembled.ok()) << assembled.error().format();
+    EXPECT_EQ(assembled->files, (std::vector<std::string>{"main.frag", "<generated prelude>", "common/a.glsl"}));
+    EXPECT_EQ(assembled->text,
+              "#version 410 core\n#line 1 1\n#define X 1\n#line 2 0\n#line 1 2\nfloat a() { return 1.0; }\n"
+              "#line 3 0\n#line 4 0\nvoid main() {}\n");
+}
+
+TEST(ShaderSources, MissingIncludeNamesTheIncludingLine) {
+    const std::string directory = test::outputDirectory("shader_sources_missing");
+    writeFile(directory + "/main.frag", "#version 410 core\n\n#include \"nope.glsl\"\n");
+    auto assembled = assembleShader(ShaderSources(directory), "main.frag");
+    ASSERT_FALSE(assembled.ok());
+    EXPECT_EQ(assembled.error().where.file, "main.frag");
+    EXPECT_EQ(assembled.error().where.line, 3);
+}
+
+TEST(ShaderSources, GeneratedFilesAreIncludable) {
+    auto assembled = assembleShader(ShaderSources(), "surface.frag", "",
+                                    {{"generated/material.glsl", generateMaterialGlsl(modelInfo(BrdfModel::Lambert))}});
+    ASSERT_TRUE(assembled.ok()) << assembled.error().format();
+    EXPECT_NE(assembled->text.find("vec3 evalLambert"), std::string::npos);
+    EXPECT_NE(assembled->text.find("#define GLINT_EVAL_BRDF evalLambert"), std::string::npos);
+}
+
+TEST(ShaderSources, EmbeddedCopiesMatchTheSourceTree) {
+    for (const EmbeddedShader& shader : embeddedShaders()) {
+        auto onDisk = ShaderSources(std::string(GLINT_TEST_DATA_DIR) + "/../shaders").read(shader.path);
+        ASSERT_TRUE(onDisk.ok()) << shader.path;
+        EXPECT_EQ(*onDisk, shader.source) << shader.path;
+    }
+    EXPECT_GE(embeddedShaders().size(), 8u);
+}
+
+TEST(ShaderSources, MapsMesaAndNvidiaLogs) {
+    const std::vector<std::string> files = {"surface.frag", "brdf/lambert.glsl"};
+    EXPECT_EQ(mapCompileLog("1:7(12): error: `foo' undeclared\n", files), "brdf/lambert.glsl:7:12: error: `foo' undeclared\n");
+    EXPECT_EQ(mapCompileLog("0(3) : error C1008: undefined variable\n", files), "surface.frag:3: error C1008: undefined variable\n");
+}
+
+TEST(MaterialGlsl, FollowsTheParameterTable) {
+    const std::string glsl = generateMaterialGlsl(modelInfo(BrdfModel::BlinnPhong));
+    EXPECT_NE(glsl.find("vec3 diffuse_albedo;"), std::string::npos);
+    EXPECT_NE(glsl.find("p.specular = vec3(materialValue(3), materialValue(4), materialValue(5));"), std::string::npos);
+    EXPECT_NE(glsl.find("p.exponent = materialValue(6);"), std::string::npos);
+    EXPECT_NE(glsl.find("p.form = int(materialValue(7) + 0.5);"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace glint

@@ -1,0 +1,78 @@
+// Snapshot tests: headless renders compared with golden PNGs through OpenImageIO, with the
+// tolerance of DESIGN.md. On failure the actual, expected and ×16 difference images are written
+// beside the test's output. Goldens change only with GLINT_UPDATE_GOLDENS=1.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "gpu_test_support.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
+#include "test_support.h"
+
+namespace glint {
+namespace {
+
+bool updatingGoldens() {
+    const char* update = std::getenv("GLINT_UPDATE_GOLDENS");
+    return update && std::string(update) == "1";
+}
+
+void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
+    const std::string golden = test::dataPath("goldens/" + name + ".png");
+    if (updatingGoldens()) {
+        ASSERT_TRUE(writeDisplayImage(actual, golden).ok());
+        std::printf("updated golden %s\n", golden.c_str());
+        return;
+    }
+    auto expected = readDisplayImage(golden);
+    ASSERT_TRUE(expected.ok()) << expected.error().format() << " (create it with GLINT_UPDATE_GOLDENS=1)";
+    const CompareResult result = compareImages(actual, *expected);
+    if (!result.passed) {
+        const std::string directory = test::outputDirectory("snapshots");
+        (void)writeDisplayImage(actual, directory + "/" + name + ".actual.png");
+        (void)writeDisplayImage(*expected, directory + "/" + name + ".expected.png");
+        if (result.sizesMatch) (void)writeDisplayImage(differenceImage(actual, *expected), directory + "/" + name + ".diff.png");
+        ADD_FAILURE() << name << ": " << result.summary() << "; images written to " << directory;
+    }
+}
+
+TEST(Snapshot, LambertSun) {
+    auto images = test::sharedHeadless().render(test::loadTestScene("scenes/lambert_sun.json"), 256, 256);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    expectMatchesGolden("lambert_sun", images->display);
+}
+
+TEST(Snapshot, BlinnPointLight) {
+    const Scene scene = test::loadTestScene("scenes/blinn_point.json");
+    auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    expectMatchesGolden("blinn_point", images->display);
+}
+
+TEST(Snapshot, DefaultScene) {
+    const Scene scene = defaultScene();
+    auto images = test::sharedHeadless().render(scene, 320, 240);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    expectMatchesGolden("default_scene", images->display);
+}
+
+TEST(ImageCompare, ToleranceFollowsTheDesign) {
+    DisplayImage expected(100, 100), actual(100, 100);
+    EXPECT_TRUE(compareImages(actual, expected).passed);
+    actual.pixels[0] = 5;  // at the tolerance: not a failing pixel
+    EXPECT_EQ(compareImages(actual, expected).failingPixels, 0);
+    actual.pixels[0] = 6;  // 1 of 10,000 pixels = 0.01% ≤ 0.1%
+    EXPECT_EQ(compareImages(actual, expected).failingPixels, 1);
+    EXPECT_TRUE(compareImages(actual, expected).passed);
+    for (int i = 0; i < 11; ++i) actual.pixels[i * 3 + 1] = 40;  // 11 pixels = 0.11%
+    const CompareResult result = compareImages(actual, expected);
+    EXPECT_FALSE(result.passed);
+    EXPECT_EQ(result.maxChannelDifference, 40);
+    EXPECT_EQ(differenceImage(actual, expected).pixels[1], 255);
+    EXPECT_EQ(differenceImage(actual, expected).pixels[0], 96);
+    EXPECT_FALSE(compareImages(DisplayImage(10, 10), expected).passed);
+}
+
+}  // namespace
+}  // namespace glint
