@@ -8,6 +8,7 @@
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "generated/material.glsl"
+#include "common/shading.glsl"
 
 const int SHAPE_MESH = 0;
 const int SHAPE_SPHERE = 1;
@@ -33,21 +34,6 @@ float intersectSphere(Ray ray) {
     if (-b - root > 0.0) return -b - root;
     if (-b + root > 0.0) return -b + root;
     return -1.0;
-}
-
-vec3 shade(vec3 position, vec3 normal, vec3 towardsViewer) {
-    MaterialParams params = loadMaterialParams();
-    ShadingFrame frame = frameFromNormal(normal);
-    vec3 radiance = vec3(0.0);
-    for (int i = 0; i < lightCount.x; ++i) {
-        LightArrival arrival = lightArrival(lights[i], position);
-        float cosIn = cosTheta(frame, arrival.towardsLight);
-        if (cosIn <= 0.0) continue;
-        // L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i for each delta light.
-        radiance += GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) *
-                    arrival.normalIrradiance * cosIn;
-    }
-    return radiance;
 }
 
 void main() {
@@ -80,5 +66,5 @@ void main() {
     }
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
     gl_FragDepth = depth;
-    outRadiance = vec4(shade(position, normalize(normal), -ray.direction), 1.0);
+    outRadiance = vec4(shadeSurface(position, frameFromNormal(normalize(normal)), -ray.direction), 1.0);
 }

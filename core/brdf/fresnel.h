@@ -1,0 +1,72 @@
+// Fresnel reflectance: the exact equations for a dielectric interface (s and p polarisation,
+// unpolarised mean, total internal reflection) and for a conductor with a complex index n + iκ,
+// F0 from (n, κ), and Schlick's approximation. Relative indices: η = η_transmitted / η_incident.
+// GLSL twin: shaders/brdf/fresnel.glsl. After pbrt-v4 (FrDielectric, FrComplex).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include <glm/glm.hpp>
+
+namespace glint {
+
+struct Polarised {
+    float s;  // R_s: electric field perpendicular to the plane of incidence
+    float p;  // R_p: parallel
+    float unpolarised() const { return 0.5f * (s + p); }
+};
+
+// Exact dielectric Fresnel for cos θ_i ∈ [0,1] and relative index η > 0. Snell: sin θ_t =
+// sin θ_i / η; when that exceeds 1 the light is totally internally reflected (R_s = R_p = 1).
+inline Polarised fresnelDielectricPolarised(float cosIncident, float eta) {
+    cosIncident = std::clamp(cosIncident, 0.0f, 1.0f);
+    const float sin2Transmitted = (1.0f - cosIncident * cosIncident) / (eta * eta);
+    if (sin2Transmitted >= 1.0f) return {1.0f, 1.0f};
+    const float cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
+    const float rs = (cosIncident - eta * cosTransmitted) / (cosIncident + eta * cosTransmitted);
+    const float rp = (eta * cosIncident - cosTransmitted) / (eta * cosIncident + cosTransmitted);
+    return {rs * rs, rp * rp};
+}
+
+inline float fresnelDielectric(float cosIncident, float eta) {
+    return fresnelDielectricPolarised(cosIncident, eta).unpolarised();
+}
+
+// Conductor: complex relative index η = n + iκ; the same equations in complex arithmetic.
+inline Polarised fresnelConductorPolarised(float cosIncident, float n, float k) {
+    using Complex = std::complex<float>;
+    cosIncident = std::clamp(cosIncident, 0.0f, 1.0f);
+    const Complex eta(n, k);
+    const Complex sin2Transmitted = (1.0f - cosIncident * cosIncident) / (eta * eta);
+    const Complex cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
+    const Complex rs = (cosIncident - eta * cosTransmitted) / (cosIncident + eta * cosTransmitted);
+    const Complex rp = (eta * cosIncident - cosTransmitted) / (eta * cosIncident + cosTransmitted);
+    return {std::norm(rs), std::norm(rp)};
+}
+
+inline glm::vec3 fresnelConductor(float cosIncident, glm::vec3 n, glm::vec3 k) {
+    return {fresnelConductorPolarised(cosIncident, n.x, k.x).unpolarised(),
+            fresnelConductorPolarised(cosIncident, n.y, k.y).unpolarised(),
+            fresnelConductorPolarised(cosIncident, n.z, k.z).unpolarised()};
+}
+
+// Reflectance at normal incidence: F0 = ((n−1)² + κ²) / ((n+1)² + κ²), per channel.
+inline glm::vec3 fresnelF0(glm::vec3 n, glm::vec3 k) {
+    return ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);
+}
+
+// Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", 1994:
+// F ≈ F0 + (1 − F0)(1 − cos θ)^5.
+inline glm::vec3 fresnelSchlick(glm::vec3 f0, float cosIncident) {
+    const float m = std::clamp(1.0f - cosIncident, 0.0f, 1.0f);
+    const float m2 = m * m;
+    return f0 + (1.0f - f0) * (m2 * m2 * m);
+}
+
+// Brewster's angle, where R_p = 0: tan θ_B = η. Critical angle (η < 1): sin θ_c = η.
+inline float brewsterAngle(float eta) { return std::atan(eta); }
+inline float criticalAngle(float eta) { return eta < 1.0f ? std::asin(eta) : NAN; }
+
+}  // namespace glint

@@ -1,0 +1,63 @@
+// Fresnel: known values of the exact equations (glass at normal incidence, Brewster's angle,
+// total internal reflection, conductors) and Schlick's error against them.
+#include <gtest/gtest.h>
+
+#include "brdf/fresnel.h"
+
+namespace glint {
+namespace {
+
+TEST(Fresnel, GlassAtNormalIncidenceIsFourPercent) {
+    EXPECT_NEAR(fresnelDielectric(1.0f, 1.5f), 0.04f, 1e-6f);
+    EXPECT_NEAR(fresnelF0(glm::vec3(1.5f), glm::vec3(0.0f)).r, 0.04f, 1e-6f);
+    EXPECT_NEAR(fresnelDielectric(0.0f, 1.5f), 1.0f, 1e-6f) << "grazing incidence reflects everything";
+}
+
+TEST(Fresnel, ParallelPolarisationVanishesAtBrewstersAngle) {
+    for (float eta : {1.333f, 1.5f, 2.42f}) {
+        const Polarised at = fresnelDielectricPolarised(std::cos(brewsterAngle(eta)), eta);
+        EXPECT_NEAR(at.p, 0.0f, 1e-6f) << eta;
+        EXPECT_GT(at.s, 0.01f);
+    }
+}
+
+TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
+    const float eta = 1.0f / 1.5f;  // from glass into air
+    const float critical = criticalAngle(eta);
+    EXPECT_NEAR(critical, std::asin(1.0f / 1.5f), 1e-6f);
+    EXPECT_LT(fresnelDielectric(std::cos(critical - 0.01f), eta), 1.0f);
+    EXPECT_EQ(fresnelDielectric(std::cos(critical + 0.001f), eta), 1.0f);
+    EXPECT_EQ(fresnelDielectric(std::cos(1.5f), eta), 1.0f);
+    EXPECT_TRUE(std::isnan(criticalAngle(1.5f))) << "no critical angle entering a denser medium";
+}
+
+TEST(Fresnel, ConductorWithZeroExtinctionIsADielectric) {
+    for (float cosine : {1.0f, 0.7f, 0.3f, 0.05f})
+        EXPECT_NEAR(fresnelConductorPolarised(cosine, 1.5f, 0.0f).unpolarised(), fresnelDielectric(cosine, 1.5f), 1e-5f);
+}
+
+TEST(Fresnel, ConductorMatchesF0AtNormalIncidence) {
+    const glm::vec3 n(0.18f, 0.42f, 1.37f), k(3.42f, 2.35f, 1.77f);  // gold, approximately
+    const glm::vec3 exact = fresnelConductor(1.0f, n, k);
+    const glm::vec3 f0 = fresnelF0(n, k);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(exact[c], f0[c], 1e-5f);
+    EXPECT_NEAR(fresnelConductor(0.0f, n, k).r, 1.0f, 1e-5f);
+}
+
+TEST(Fresnel, SchlickStaysWithinItsKnownErrorForDielectrics) {
+    // Schlick's largest error against the exact unpolarised curve, entering from air, lies near
+    // grazing incidence: measured here as 0.059 for water, 0.036 for glass, 0.032 for n = 1.7.
+    const std::pair<float, float> knownError[] = {{1.333f, 0.06f}, {1.5f, 0.04f}, {1.7f, 0.035f}};
+    for (const auto& [eta, bound] : knownError) {
+        const glm::vec3 f0 = fresnelF0(glm::vec3(eta), glm::vec3(0.0f));
+        float worst = 0.0f;
+        for (int i = 0; i <= 900; ++i) {
+            const float cosine = std::cos(i * 0.1f * 3.14159265f / 180.0f);
+            worst = std::max(worst, std::abs(fresnelSchlick(f0, cosine).r - fresnelDielectric(cosine, eta)));
+        }
+        EXPECT_LT(worst, bound) << eta;
+    }
+}
+
+}  // namespace
+}  // namespace glint
