@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "math/frame.h"
+#include "render/specular_transport.h"
 
 namespace glint {
 namespace {
@@ -71,6 +72,16 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         radiance += evalBrdf(material.model, material.values, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosTheta;
     }
+    // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
+    glm::vec3 ambient(0.0f);
+    for (const Light& light : scene.lights) ambient += ambientRadiance(light);
+    radiance += ambientReflectance(material.model, material.values, towardsViewer, frame) * ambient;
+    // Delta lobes (mirror, glass), traced against the background only.
+    const Shape& shape = scene.objects.at(hit.objectIndex).shape;
+    std::optional<SphereGeometry> sphere;
+    if (const auto* sphereShape = std::get_if<SphereShape>(&shape)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
+    radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
+                              hit.position, hit.normal, towardsViewer);
     return radiance;
 }
 
@@ -84,7 +95,7 @@ RadianceImage renderReference(const Scene& scene, int width, int height) {
             for (int x = 0; x < width; ++x) {
                 const Ray ray = primaryRay(inverseViewProjection, x + 0.5f, y + 0.5f, width, height);
                 const auto hit = intersectScene(scene, ray);
-                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : scene.background);
+                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : backgroundRadiance(scene.background, ray.direction));
             }
         }
     };

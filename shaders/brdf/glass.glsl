@@ -1,0 +1,12 @@
+// Glass: GLSL twin of core/brdf/glass.h (fields: ior, absorption, transparency, transmission).
+// Both lobes are traced by traceGlass() in common/specular_transport.glsl, through the sphere
+// being drawn (common/shape.glsl) or as a thin pane on a plane.
+
+vec3 evalGlass(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    return vec3(0.0);
+}
+
+vec3 transportGlass(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
+    return traceGlass(p.ior, p.transparency == 1, p.transmission, p.absorption, shapeKind == SHAPE_SPHERE, sphere,
+                      position, frame.normal, towardsViewer);
+}

@@ -1,0 +1,64 @@
+// Specular transport of mirror and glass, traced analytically: GLSL twin of
+// core/render/specular_transport.h (see there for the physics and the limits: secondary rays
+// see only the background). Needs background.glsl and brdf/fresnel.glsl.
+#include "brdf/fresnel.glsl"
+
+const int MAX_INTERNAL_BOUNCES = 6;  // kMaxInternalBounces
+
+vec3 reflectDirection(vec3 incoming, vec3 normal) {
+    return incoming - 2.0 * dot(incoming, normal) * normal;
+}
+
+vec3 refractDirection(vec3 incoming, vec3 normal, float etaRatio) {
+    float cosIncident = -dot(incoming, normal);
+    float sin2Transmitted = etaRatio * etaRatio * (1.0 - cosIncident * cosIncident);
+    float cosTransmitted = sqrt(max(0.0, 1.0 - sin2Transmitted));
+    return etaRatio * incoming + (etaRatio * cosIncident - cosTransmitted) * normal;
+}
+
+float sphereExitDistance(vec4 sphereGeometry, vec3 origin, vec3 direction) {
+    vec3 offset = origin - sphereGeometry.xyz;
+    float b = dot(offset, direction);
+    float c = dot(offset, offset) - sphereGeometry.w * sphereGeometry.w;
+    return -b + sqrt(max(0.0, b * b - c));
+}
+
+vec3 traceMirror(vec3 eta, vec3 kappa, vec3 normal, vec3 towardsViewer) {
+    float cosOut = dot(normal, towardsViewer);
+    return fresnelConductor(cosOut, eta, kappa) * backgroundRadiance(reflectDirection(-towardsViewer, normal));
+}
+
+float glassReflectance(bool classic, float transmission, float cosIncident, float eta) {
+    float fresnel = fresnelDielectric(cosIncident, eta);
+    if (!classic || fresnel >= 1.0) return fresnel;
+    return 1.0 - transmission;
+}
+
+// isSphere false: a thin pane (see the C++ twin).
+vec3 traceGlass(float ior, bool classic, float transmission, vec3 absorption, bool isSphere, vec4 sphereGeometry,
+                vec3 position, vec3 normal, vec3 towardsViewer) {
+    vec3 incoming = -towardsViewer;
+    float entryReflectance = glassReflectance(classic, transmission, dot(normal, towardsViewer), ior);
+    vec3 radiance = entryReflectance * backgroundRadiance(reflectDirection(incoming, normal));
+    if (!isSphere) {
+        float paneTransmittance = (1.0 - entryReflectance) * (1.0 - entryReflectance);
+        return radiance + paneTransmittance * backgroundRadiance(incoming);
+    }
+    vec3 throughput = vec3((1.0 - entryReflectance) * ior * ior);
+    vec3 direction = refractDirection(incoming, normal, 1.0 / ior);
+    vec3 origin = position;
+    for (int bounce = 0; bounce < MAX_INTERNAL_BOUNCES; ++bounce) {
+        float chord = sphereExitDistance(sphereGeometry, origin, direction);
+        origin += chord * direction;
+        throughput *= exp(-absorption * chord);  // Beer-Lambert
+        vec3 inwardNormal = (sphereGeometry.xyz - origin) / sphereGeometry.w;
+        float exitReflectance = glassReflectance(classic, transmission, -dot(direction, inwardNormal), 1.0 / ior);
+        if (exitReflectance < 1.0) {
+            vec3 leaving = refractDirection(direction, inwardNormal, ior);
+            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * backgroundRadiance(leaving);
+        }
+        throughput *= exitReflectance;
+        direction = reflectDirection(direction, inwardNormal);
+    }
+    return radiance;
+}
