@@ -81,7 +81,7 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     std::optional<SphereGeometry> sphere;
     if (const auto* sphereShape = std::get_if<SphereShape>(&shape)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
     radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
-                              hit.position, hit.normal, towardsViewer);
+                              hit.position, hit.normal, towardsViewer, hit.distance);
     return radiance;
 }
 

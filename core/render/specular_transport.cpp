@@ -8,7 +8,8 @@
 namespace glint {
 
 glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Background& background,
-                        const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer) {
+                        const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer,
+                        float viewerDistance) {
     switch (model) {
         case BrdfModel::Mirror: {
             const MirrorParams mirror = unpackMirror(values.data());
@@ -17,7 +18,8 @@ glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Ba
         case BrdfModel::Glass: {
             const GlassParams glass = unpackGlass(values.data());
             const GlassInterface glassInterface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
-            return traceGlass(glassInterface, glass.absorption, background, sphere, position, normal, towardsViewer);
+            return traceGlass(glassInterface, glass.absorption, background, sphere, position, normal, towardsViewer,
+                              viewerDistance);
         }
         default: return glm::vec3(0.0f);  // no delta lobes (ModelInfo::glslTransport == nullptr)
     }

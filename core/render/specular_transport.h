@@ -74,31 +74,16 @@ inline float glassReflectance(const GlassInterface& glass, float cosIncident, fl
     return 1.0f - glass.transmission;
 }
 
-// Glass seen from outside at a point with unit normal `normal` (facing the viewer). On a sphere
-// the refracted ray crosses it, losing e^(−σ·d) over each chord d, and at each exit splits into
-// a ray that leaves (seeing the background) and one reflected inside, for kMaxInternalBounces.
-// On a plane (sphere == nullptr) the glass is a thin pane: the transmitted ray leaves unbent
-// through two interfaces, weighted (1 − F)², with no absorption and no reflections inside.
-// Radiance is scaled by (η_t/η_i)² at each refraction (radiance/η² is invariant, Veach 1997
-// §5.2); for a path that enters and leaves into air the factors cancel exactly.
-inline glm::vec3 traceGlass(const GlassInterface& glass, glm::vec3 absorption, const Background& background,
-                            const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal,
-                            glm::vec3 towardsViewer) {
-    const glm::vec3 incoming = -towardsViewer;
-    const float entryReflectance = glassReflectance(glass, glm::dot(normal, towardsViewer), glass.ior);
-    glm::vec3 radiance = entryReflectance * backgroundRadiance(background, reflectDirection(incoming, normal));
-    if (!sphere) {
-        const float paneTransmittance = (1.0f - entryReflectance) * (1.0f - entryReflectance);
-        return radiance + paneTransmittance * backgroundRadiance(background, incoming);
-    }
-    glm::vec3 throughput = glm::vec3((1.0f - entryReflectance) * glass.ior * glass.ior);
-    glm::vec3 direction = refractDirection(incoming, normal, 1.0f / glass.ior);
-    glm::vec3 origin = position;
+// A ray inside a glass sphere arriving at the wall point `origin` with direction `direction`
+// and throughput `throughput` (absorption so far included): at each wall it splits into the part
+// that leaves (Fresnel 1 − F, radiance scaled by 1/η², seeing the background) and the part
+// reflected inside (F; 1 under total internal reflection), for kMaxInternalBounces walls.
+inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorption, const Background& background,
+                                   const SphereGeometry& sphere, glm::vec3 origin, glm::vec3 direction,
+                                   glm::vec3 throughput) {
+    glm::vec3 radiance(0.0f);
     for (int bounce = 0; bounce < kMaxInternalBounces; ++bounce) {
-        const float chord = sphereExitDistance(*sphere, origin, direction);
-        origin += chord * direction;
-        throughput *= glm::exp(-absorption * chord);  // Beer-Lambert
-        const glm::vec3 inwardNormal = (sphere->center - origin) / sphere->radius;
+        const glm::vec3 inwardNormal = (sphere.center - origin) / sphere.radius;
         const float exitReflectance = glassReflectance(glass, -glm::dot(direction, inwardNormal), 1.0f / glass.ior);
         if (exitReflectance < 1.0f) {
             const glm::vec3 leaving = refractDirection(direction, inwardNormal, glass.ior);
@@ -107,13 +92,47 @@ inline glm::vec3 traceGlass(const GlassInterface& glass, glm::vec3 absorption, c
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);
+        const float chord = sphereExitDistance(sphere, origin, direction);
+        origin += chord * direction;
+        throughput *= glm::exp(-absorption * chord);  // Beer-Lambert
     }
     return radiance;
+}
+
+// Glass at a point with unit normal `normal` (facing the viewer, who is `viewerDistance` [m]
+// away). Seen from outside a sphere, the ray reflects and refracts; the refracted ray crosses the
+// sphere, losing e^(−σ·d) over each chord d, and at each exit splits into a ray that leaves
+// (seeing the background) and one reflected inside, for kMaxInternalBounces. A viewer inside
+// the sphere (normal pointing inwards) starts at that split, after e^(−σ·viewerDistance); beyond
+// the critical angle the wall reflects totally, and such a ray circles inside for ever: black.
+// On a plane (sphere == nullptr) the glass is a thin pane: the transmitted ray leaves unbent
+// through two interfaces, weighted (1 − F)², with no absorption and no reflections inside.
+// Radiance is scaled by (η_t/η_i)² at each refraction (radiance/η² is invariant, Veach 1997
+// §5.2); for a path that enters and leaves into air the factors cancel exactly.
+inline glm::vec3 traceGlass(const GlassInterface& glass, glm::vec3 absorption, const Background& background,
+                            const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal,
+                            glm::vec3 towardsViewer, float viewerDistance) {
+    const glm::vec3 incoming = -towardsViewer;
+    if (sphere && glm::dot(normal, position - sphere->center) < 0.0f)
+        return traceInsideSphere(glass, absorption, background, *sphere, position, incoming,
+                                 glm::exp(-absorption * viewerDistance));
+    const float entryReflectance = glassReflectance(glass, glm::dot(normal, towardsViewer), glass.ior);
+    glm::vec3 radiance = entryReflectance * backgroundRadiance(background, reflectDirection(incoming, normal));
+    if (!sphere) {
+        const float paneTransmittance = (1.0f - entryReflectance) * (1.0f - entryReflectance);
+        return radiance + paneTransmittance * backgroundRadiance(background, incoming);
+    }
+    const glm::vec3 refracted = refractDirection(incoming, normal, 1.0f / glass.ior);
+    const float chord = sphereExitDistance(*sphere, position, refracted);
+    const glm::vec3 throughput = (1.0f - entryReflectance) * glass.ior * glass.ior * glm::exp(-absorption * chord);
+    return radiance + traceInsideSphere(glass, absorption, background, *sphere, position + chord * refracted, refracted,
+                                        throughput);
 }
 
 // The specular-transport hook of the model registry (ModelInfo::glslTransport): the radiance
 // its traced delta lobes send towards the viewer; zero for models without one.
 glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Background& background,
-                        const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer);
+                        const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer,
+                        float viewerDistance);
 
 }  // namespace glint

@@ -34,23 +34,11 @@ float glassReflectance(bool classic, float transmission, float cosIncident, floa
     return 1.0 - transmission;
 }
 
-// isSphere false: a thin pane (see the C++ twin).
-vec3 traceGlass(float ior, bool classic, float transmission, vec3 absorption, bool isSphere, vec4 sphereGeometry,
-                vec3 position, vec3 normal, vec3 towardsViewer) {
-    vec3 incoming = -towardsViewer;
-    float entryReflectance = glassReflectance(classic, transmission, dot(normal, towardsViewer), ior);
-    vec3 radiance = entryReflectance * backgroundRadiance(reflectDirection(incoming, normal));
-    if (!isSphere) {
-        float paneTransmittance = (1.0 - entryReflectance) * (1.0 - entryReflectance);
-        return radiance + paneTransmittance * backgroundRadiance(incoming);
-    }
-    vec3 throughput = vec3((1.0 - entryReflectance) * ior * ior);
-    vec3 direction = refractDirection(incoming, normal, 1.0 / ior);
-    vec3 origin = position;
+// A ray inside the glass sphere at the wall point `origin` (see traceInsideSphere in the twin).
+vec3 traceInsideSphere(float ior, bool classic, float transmission, vec3 absorption, vec4 sphereGeometry,
+                       vec3 origin, vec3 direction, vec3 throughput) {
+    vec3 radiance = vec3(0.0);
     for (int bounce = 0; bounce < MAX_INTERNAL_BOUNCES; ++bounce) {
-        float chord = sphereExitDistance(sphereGeometry, origin, direction);
-        origin += chord * direction;
-        throughput *= exp(-absorption * chord);  // Beer-Lambert
         vec3 inwardNormal = (sphereGeometry.xyz - origin) / sphereGeometry.w;
         float exitReflectance = glassReflectance(classic, transmission, -dot(direction, inwardNormal), 1.0 / ior);
         if (exitReflectance < 1.0) {
@@ -59,6 +47,29 @@ vec3 traceGlass(float ior, bool classic, float transmission, vec3 absorption, bo
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);
+        float chord = sphereExitDistance(sphereGeometry, origin, direction);
+        origin += chord * direction;
+        throughput *= exp(-absorption * chord);  // Beer-Lambert
     }
     return radiance;
+}
+
+// isSphere false: a thin pane (see the C++ twin); a viewer inside the sphere starts at the wall.
+vec3 traceGlass(float ior, bool classic, float transmission, vec3 absorption, bool isSphere, vec4 sphereGeometry,
+                vec3 position, vec3 normal, vec3 towardsViewer, float viewerDistance) {
+    vec3 incoming = -towardsViewer;
+    if (isSphere && dot(normal, position - sphereGeometry.xyz) < 0.0)
+        return traceInsideSphere(ior, classic, transmission, absorption, sphereGeometry, position, incoming,
+                                 exp(-absorption * viewerDistance));
+    float entryReflectance = glassReflectance(classic, transmission, dot(normal, towardsViewer), ior);
+    vec3 radiance = entryReflectance * backgroundRadiance(reflectDirection(incoming, normal));
+    if (!isSphere) {
+        float paneTransmittance = (1.0 - entryReflectance) * (1.0 - entryReflectance);
+        return radiance + paneTransmittance * backgroundRadiance(incoming);
+    }
+    vec3 refracted = refractDirection(incoming, normal, 1.0 / ior);
+    float chord = sphereExitDistance(sphereGeometry, position, refracted);
+    vec3 throughput = (1.0 - entryReflectance) * ior * ior * exp(-absorption * chord);
+    return radiance + traceInsideSphere(ior, classic, transmission, absorption, sphereGeometry,
+                                        position + chord * refracted, refracted, throughput);
 }
