@@ -9,15 +9,12 @@
 
 namespace glint {
 
-// Luminous efficacy of the convention: 683 lm/W (the SI definition of the candela, at 540 THz).
-inline constexpr float kLumensPerWatt = 683.0f;
-
 // Relative luminance Y of a linear Rec. 709 colour (ITU-R BT.709): white (1,1,1) has Y = 1.
 inline float relativeLuminance(glm::vec3 linearRgb) {
     return 0.2126f * linearRgb.r + 0.7152f * linearRgb.g + 0.0722f * linearRgb.b;
 }
 
-// Each: 683 lm/W × the radiometric quantity weighted by Y of its linear-RGB colour, so that
+// Each: kLumensPerWatt = 683 lm/W (math/constants.h) × the radiometric quantity weighted by Y of its linear-RGB colour, so that
 // 1 W of white light is 683 lm. `rgb` is the per-channel radiometric value (colour × amount).
 inline float luminousFlux(glm::vec3 radiantPowerRgb) { return kLumensPerWatt * relativeLuminance(radiantPowerRgb); }      // lm
 inline float illuminance(glm::vec3 irradianceRgb) { return kLumensPerWatt * relativeLuminance(irradianceRgb); }          // lx = lm/m²
