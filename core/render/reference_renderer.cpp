@@ -12,17 +12,20 @@
 namespace glint {
 namespace {
 
-// Ray-sphere: |o + t·d - c|² = r² with |d| = 1; the nearest t > 0.
+// Ray-sphere: |o + t·d - c|² = r² with |d| = 1; the nearest t > 0. The discriminant is taken
+// as r² − |l|², l the offset's part perpendicular to the ray, and the near root as c/q: the
+// stable forms of Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray
+// Tracing Gems, 2019, ch. 7 (near grazing, b² − c cancels and GPU and CPU would disagree).
 std::optional<float> intersectSphere(const SphereShape& sphere, const Ray& ray) {
     const glm::vec3 offset = ray.origin - sphere.center;
     const float b = glm::dot(offset, ray.direction);
-    const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
-    const float discriminant = b * b - c;
+    const glm::vec3 perpendicular = offset - b * ray.direction;
+    const float discriminant = sphere.radius * sphere.radius - glm::dot(perpendicular, perpendicular);
     if (discriminant < 0.0f) return std::nullopt;
-    const float root = std::sqrt(discriminant);
-    const float nearT = -b - root;
+    const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
+    const float q = -b - std::copysign(std::sqrt(discriminant), b);
+    const float nearT = std::min(c / q, q), farT = std::max(c / q, q);
     if (nearT > 0.0f) return nearT;
-    const float farT = -b + root;
     if (farT > 0.0f) return farT;
     return std::nullopt;
 }

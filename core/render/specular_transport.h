@@ -45,12 +45,13 @@ inline glm::vec3 refractDirection(glm::vec3 incoming, glm::vec3 normal, float et
     return etaRatio * incoming + (etaRatio * cosIncident - cosTransmitted) * normal;
 }
 
-// The far root t of |o + t·d − c| = r for a ray starting inside (or on) the sphere.
+// The far root t of |o + t·d − c| = r for a ray starting inside (or on) the sphere, with the
+// discriminant r² − |l|² of Haines et al. (Ray Tracing Gems, 2019, ch. 7).
 inline float sphereExitDistance(const SphereGeometry& sphere, glm::vec3 origin, glm::vec3 direction) {
     const glm::vec3 offset = origin - sphere.center;
     const float b = glm::dot(offset, direction);
-    const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
-    return -b + std::sqrt(std::max(0.0f, b * b - c));
+    const glm::vec3 perpendicular = offset - b * direction;
+    return -b + std::sqrt(std::max(0.0f, sphere.radius * sphere.radius - glm::dot(perpendicular, perpendicular)));
 }
 
 // Ideal conductor mirror: L_o = F(θ_o; n + iκ) · L_background(reflected direction).

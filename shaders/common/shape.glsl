@@ -7,15 +7,18 @@ const int SHAPE_SPHERE = 1;
 uniform int shapeKind;
 uniform vec4 sphere;  // xyz: centre, w: radius
 
-// Nearest t > 0 with |o + t·d − c| = r, or -1.
+// Nearest t > 0 with |o + t·d − c| = r, or -1: the stable forms of Haines et al. (Ray Tracing
+// Gems, 2019, ch. 7), as intersectSphere() in core/render/reference_renderer.cpp.
 float intersectSphere(Ray ray) {
     vec3 offset = ray.origin - sphere.xyz;
     float b = dot(offset, ray.direction);
-    float c = dot(offset, offset) - sphere.w * sphere.w;
-    float discriminant = b * b - c;
+    vec3 perpendicular = offset - b * ray.direction;
+    float discriminant = sphere.w * sphere.w - dot(perpendicular, perpendicular);
     if (discriminant < 0.0) return -1.0;
-    float root = sqrt(discriminant);
-    if (-b - root > 0.0) return -b - root;
-    if (-b + root > 0.0) return -b + root;
+    float c = dot(offset, offset) - sphere.w * sphere.w;
+    float q = -b - (b < 0.0 ? -1.0 : 1.0) * sqrt(discriminant);
+    float nearT = min(c / q, q), farT = max(c / q, q);
+    if (nearT > 0.0) return nearT;
+    if (farT > 0.0) return farT;
     return -1.0;
 }

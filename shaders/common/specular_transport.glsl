@@ -19,8 +19,8 @@ vec3 refractDirection(vec3 incoming, vec3 normal, float etaRatio) {
 float sphereExitDistance(vec4 sphereGeometry, vec3 origin, vec3 direction) {
     vec3 offset = origin - sphereGeometry.xyz;
     float b = dot(offset, direction);
-    float c = dot(offset, offset) - sphereGeometry.w * sphereGeometry.w;
-    return -b + sqrt(max(0.0, b * b - c));
+    vec3 perpendicular = offset - b * direction;
+    return -b + sqrt(max(0.0, sphereGeometry.w * sphereGeometry.w - dot(perpendicular, perpendicular)));
 }
 
 vec3 traceMirror(vec3 eta, vec3 kappa, vec3 normal, vec3 towardsViewer) {
