@@ -50,6 +50,20 @@ TEST(Snapshot, BlinnPointLight) {
     expectMatchesGolden("blinn_point", images->display);
 }
 
+TEST(Snapshot, SpotLights) {
+    const Scene scene = test::loadTestScene("scenes/spot_light.json");
+    auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    expectMatchesGolden("spot_light", images->display);
+}
+
+TEST(Snapshot, GlassAndMirrorUnderTheSky) {
+    const Scene scene = test::loadTestScene("scenes/glass_sphere.json");
+    auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    expectMatchesGolden("glass_sphere", images->display);
+}
+
 TEST(Snapshot, DefaultScene) {
     const Scene scene = defaultScene();
     auto images = test::sharedHeadless().render(scene, 320, 240);
