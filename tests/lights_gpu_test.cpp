@@ -25,6 +25,14 @@ void expectAgreement(const Scene& scene, int width, int height, long minimumComp
     EXPECT_GT(agreement.compared, minimumCompared);
 }
 
+Light ambientLight(float radiance, glm::vec3 color) {
+    Light ambient;
+    ambient.type = LightType::Ambient;
+    ambient.ambientRadiance = radiance;
+    ambient.color = color;
+    return ambient;
+}
+
 Background skyBackground() {
     Background sky;
     sky.kind = BackgroundKind::Sky;
@@ -37,11 +45,7 @@ TEST(GpuLights, SpotLightsMatchTheCpuReference) {
 
 TEST(GpuLights, AmbientLightMatchesTheCpuReference) {
     Scene scene = test::loadTestScene("scenes/blinn_point.json");
-    Light ambient;
-    ambient.type = LightType::Ambient;
-    ambient.ambientRadiance = 0.3f;
-    ambient.color = {0.8f, 0.9f, 1.0f};
-    scene.lights.push_back(ambient);
+    scene.lights.push_back(ambientLight(0.3f, {0.8f, 0.9f, 1.0f}));
     expectAgreement(scene, 128, 96, 9000);
 }
 
@@ -99,10 +103,7 @@ TEST(GpuLights, AmbientAloneWhitesOutALambertSphere) {
     // The lecture's white-out: under uniform radiance L_a alone a Lambert sphere reflects ρ·L_a
     // everywhere, with no shading left to show its shape.
     Scene scene = test::loadTestScene("scenes/lambert_sun.json");
-    Light ambient;
-    ambient.type = LightType::Ambient;
-    ambient.ambientRadiance = 0.8f;
-    ambient.color = {1.0f, 0.5f, 0.25f};
+    const Light ambient = ambientLight(0.8f, {1.0f, 0.5f, 0.25f});
     scene.lights = {ambient};
     const glm::vec3 albedo{scene.materials[0].values[0], scene.materials[0].values[1], scene.materials[0].values[2]};
     const RadianceImage gpu = renderGpu(scene, 64, 64);
