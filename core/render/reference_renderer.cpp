@@ -67,7 +67,7 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     const ShadingFrame frame = ShadingFrame::fromNormal(hit.normal);
     glm::vec3 radiance(0.0f);
     for (const Light& light : scene.lights) {
-        if (!light.enabled) continue;
+        if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below
         const LightArrival arrival = lightArrival(light, hit.position);
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f) continue;
