@@ -50,8 +50,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     auto background = renderer->buildBackgroundProgram();
     if (!background) return background.error();
     renderer->backgroundProgram_ = std::move(*background);
-    renderer->backgroundFiles_ = {"fullscreen.vert", "background.frag", "common/uniforms.glsl", "common/frame.glsl",
-                                  "common/background.glsl"};
+    renderer->backgroundFiles_ = {"fullscreen.vert"};
+    if (auto assembled = assembleShader(renderer->sources_, "background.frag"))
+        renderer->backgroundFiles_.insert(renderer->backgroundFiles_.end(), assembled->files.begin(), assembled->files.end());
     renderer->backgroundBuiltAt_ = renderer->newestModification(renderer->backgroundFiles_);
     glGenBuffers(3, renderer->uniformBuffers_);
     const GLsizeiptr sizes[3] = {sizeof(FrameBlockStd140), sizeof(LightBlockStd140), sizeof(MaterialBlockStd140)};
