@@ -28,7 +28,8 @@ inline constexpr ParamSpec kMirrorTable[] = {
      .help = "Imaginary part κ of n + iκ; 0 for a dielectric"},
     {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0, 0, 0},
-     .help = "Optional small Lambert part, lit by the lights and the ambient light"},
+     .help = "Optional small Lambert part, lit by the lights and the ambient light; added to the mirror "
+             "lobe, not balanced against it (F + ρ_d may exceed 1)"},
 };
 
 inline MirrorParams unpackMirror(const float* v) {

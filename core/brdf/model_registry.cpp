@@ -18,7 +18,7 @@ constexpr ModelInfo kModels[] = {
      "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977",
      "ambientReflectanceBlinnPhong"},
     {BrdfModel::Mirror, "mirror", "Mirror (conductor Fresnel)", "brdf/mirror.glsl", "evalMirror", kMirrorTable,
-     true, true, "A. Fresnel (1823); complex index after Born & Wolf, Principles of Optics, §14.2",
+     true, false, "A. Fresnel (1823); complex index after Born & Wolf, Principles of Optics, §14.2",
      "ambientReflectanceMirror", "transportMirror"},
     {BrdfModel::Glass, "glass", "Glass (dielectric)", "brdf/glass.glsl", "evalGlass", kGlassTable, true, true,
      "Snell's law and Fresnel (1823); transparency after Hearn & Baker, Computer Graphics, §14.5", nullptr,
