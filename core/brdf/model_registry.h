@@ -14,7 +14,7 @@
 
 namespace glint {
 
-enum class BrdfModel { Lambert, BlinnPhong };
+enum class BrdfModel { Lambert, BlinnPhong, OrenNayar, Phong, CookTorrance, GgxAnisotropic, Ward, Retroreflective };
 
 struct ModelInfo {
     BrdfModel model;
@@ -38,7 +38,7 @@ glm::vec3 evalBrdf(BrdfModel model, std::span<const float> values, glm::vec3 wi,
                    const ShadingFrame& frame);
 
 // Whether one form of a model breaks a claim its table makes for the model as a whole:
-// e.g. Blinn-Phong's lecture form is not reciprocal. Property tests use this.
+// e.g. the lecture forms of Blinn-Phong and Phong are not reciprocal. Property tests use this.
 bool isReciprocal(BrdfModel model, std::span<const float> values);
 
 }  // namespace glint
