@@ -131,6 +131,38 @@ TEST(SceneJsonErrors, UnknownModelAndOutOfRangeParameter) {
     EXPECT_NE(outOfRange.error().message.find("albedo[1]"), std::string::npos) << outOfRange.error().format();
 }
 
+TEST(SceneJsonErrors, IndexOfRefractionMustBePositive) {
+    const auto material = [](const std::string& ior) {
+        return parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"cook_torrance\",\n \"ior\": " + ior + "}",
+                             "metal.json");
+    };
+    for (const std::string bad : {"0", "-1.5", "[1.5, 0, 1.5]", "[1.5, 1.5, -0.2]"}) {
+        auto result = material(bad);
+        ASSERT_FALSE(result.ok()) << bad;
+        EXPECT_EQ(result.error().where.file, "metal.json");
+        EXPECT_EQ(result.error().where.line, 3) << bad;
+        EXPECT_NE(result.error().message.find("'ior"), std::string::npos) << result.error().format();
+        EXPECT_NE(result.error().message.find("greater than 0"), std::string::npos) << result.error().format();
+    }
+    EXPECT_FALSE(material("NaN").ok());
+    EXPECT_NE(material("NaN").error().message.find("invalid JSON"), std::string::npos) << material("NaN").error().format();
+    auto good = material("[0.18, 0.42, 1.37]");
+    ASSERT_TRUE(good.ok()) << good.error().format();
+    EXPECT_FLOAT_EQ(good->values[4], 0.42f);
+    auto negativeExtinction = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"cook_torrance\",\n \"extinction\": -1}", "metal.json");
+    ASSERT_FALSE(negativeExtinction.ok());
+    EXPECT_NE(negativeExtinction.error().message.find("'extinction'"), std::string::npos) << negativeExtinction.error().format();
+    auto badEnum = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"cook_torrance\",\n \"distribution\": \"phong\"}", "metal.json");
+    ASSERT_FALSE(badEnum.ok());
+    EXPECT_NE(badEnum.error().message.find("beckmann"), std::string::npos) << badEnum.error().format();
+    auto noModel = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"ior\": 1.5}", "metal.json");
+    ASSERT_FALSE(noModel.ok());
+    EXPECT_NE(noModel.error().message.find("'model'"), std::string::npos) << noModel.error().format();
+    auto roughnessZero = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"ward\",\n \"roughness_x\": 0}", "w.json");
+    ASSERT_FALSE(roughnessZero.ok());
+    EXPECT_NE(roughnessZero.error().message.find("'roughness_x'"), std::string::npos) << roughnessZero.error().format();
+}
+
 TEST(SceneJsonErrors, VersionAndFormat) {
     EXPECT_NE(expectError(R"({"format": "glint-scene"})").message.find("version"), std::string::npos);
     EXPECT_NE(expectError(R"({"format": "glint-scene", "version": 7})").message.find("newer Glint"), std::string::npos);
