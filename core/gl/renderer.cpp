@@ -242,12 +242,17 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const auto* sphere = std::get_if<SphereShape>(&object.shape);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
+        // The proxy sphere's back faces would shade the same front hit a second time (gl_FragDepth
+        // disables early depth rejection): cull them. Planes are two-sided and keep both faces.
+        if (sphere) glEnable(GL_CULL_FACE);
+        else glDisable(GL_CULL_FACE);
         if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
         const GpuMesh& mesh = meshFor(i, object.shape);
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
     if (samples > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
