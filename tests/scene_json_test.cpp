@@ -131,36 +131,37 @@ TEST(SceneJsonErrors, UnknownModelAndOutOfRangeParameter) {
     EXPECT_NE(outOfRange.error().message.find("albedo[1]"), std::string::npos) << outOfRange.error().format();
 }
 
+// A material file whose third line holds `body` (after "model": ...).
+Result<Material> materialFile(const std::string& model, const std::string& body) {
+    return parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"" + model + "\",\n " + body + "}",
+                         "metal.json");
+}
+
+// The file is refused with a message that names it, the line (the body's by default) and `expected`.
+void expectRefused(const Result<Material>& result, const std::string& expected, int line = 3) {
+    ASSERT_FALSE(result.ok()) << expected;
+    EXPECT_EQ(result.error().where.file, "metal.json");
+    EXPECT_EQ(result.error().where.line, line) << result.error().format();
+    EXPECT_NE(result.error().message.find(expected), std::string::npos) << result.error().format();
+}
+
 TEST(SceneJsonErrors, IndexOfRefractionMustBePositive) {
-    const auto material = [](const std::string& ior) {
-        return parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"cook_torrance\",\n \"ior\": " + ior + "}",
-                             "metal.json");
-    };
     for (const std::string bad : {"0", "-1.5", "[1.5, 0, 1.5]", "[1.5, 1.5, -0.2]"}) {
-        auto result = material(bad);
-        ASSERT_FALSE(result.ok()) << bad;
-        EXPECT_EQ(result.error().where.file, "metal.json");
-        EXPECT_EQ(result.error().where.line, 3) << bad;
-        EXPECT_NE(result.error().message.find("'ior"), std::string::npos) << result.error().format();
-        EXPECT_NE(result.error().message.find("greater than 0"), std::string::npos) << result.error().format();
+        const auto result = materialFile("cook_torrance", "\"ior\": " + bad);
+        expectRefused(result, "'ior");
+        expectRefused(result, "greater than 0");
     }
-    EXPECT_FALSE(material("NaN").ok());
-    EXPECT_NE(material("NaN").error().message.find("invalid JSON"), std::string::npos) << material("NaN").error().format();
-    auto good = material("[0.18, 0.42, 1.37]");
+    expectRefused(materialFile("cook_torrance", "\"ior\": NaN"), "invalid JSON");
+    expectRefused(materialFile("cook_torrance", "\"extinction\": -1"), "'extinction'");
+    expectRefused(materialFile("cook_torrance", "\"distribution\": \"phong\""), "beckmann");
+    expectRefused(materialFile("ward", "\"roughness_x\": 0"), "'roughness_x'");
+    expectRefused(materialFile("moonlight", "\"ior\": 1.5"), "unknown model 'moonlight'", 2);
+    auto good = materialFile("cook_torrance", "\"ior\": [0.18, 0.42, 1.37]");
     ASSERT_TRUE(good.ok()) << good.error().format();
     EXPECT_FLOAT_EQ(good->values[4], 0.42f);
-    auto negativeExtinction = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"cook_torrance\",\n \"extinction\": -1}", "metal.json");
-    ASSERT_FALSE(negativeExtinction.ok());
-    EXPECT_NE(negativeExtinction.error().message.find("'extinction'"), std::string::npos) << negativeExtinction.error().format();
-    auto badEnum = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"cook_torrance\",\n \"distribution\": \"phong\"}", "metal.json");
-    ASSERT_FALSE(badEnum.ok());
-    EXPECT_NE(badEnum.error().message.find("beckmann"), std::string::npos) << badEnum.error().format();
     auto noModel = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"ior\": 1.5}", "metal.json");
     ASSERT_FALSE(noModel.ok());
     EXPECT_NE(noModel.error().message.find("'model'"), std::string::npos) << noModel.error().format();
-    auto roughnessZero = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"ward\",\n \"roughness_x\": 0}", "w.json");
-    ASSERT_FALSE(roughnessZero.ok());
-    EXPECT_NE(roughnessZero.error().message.find("'roughness_x'"), std::string::npos) << roughnessZero.error().format();
 }
 
 TEST(SceneJsonErrors, VersionAndFormat) {
