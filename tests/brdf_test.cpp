@@ -450,5 +450,54 @@ TEST(BrdfProperties, LimbDarkeningLaws) {
     for (float theta : {0.0f, 0.8f}) EXPECT_LE(directionalAlbedo(info, vest, viewAt(theta)).r, 1.0f + 2e-3f);
 }
 
+// Ambient reflectance k_a: every model but glass has the hook; k_a is never more than the
+// model's whole directional albedo (the hooks leave out only non-negative lobes), except for
+// Oren-Nayar, whose k_a = ρ differs from its qualitative albedo by a few percent either way.
+TEST(BrdfAmbient, EveryHookIsAtMostTheDirectionalAlbedo) {
+    std::mt19937 random(11);
+    for (const ModelInfo& info : allModels()) {
+        EXPECT_EQ(info.glslAmbient == nullptr, info.model == BrdfModel::Glass) << info.id;
+        for (int trial = 0; trial < 3; ++trial) {
+            const auto values = randomValues(info, random);
+            for (float theta : {0.0f, 0.7f, 1.3f}) {
+                const glm::vec3 ka = ambientReflectance(info.model, values, viewAt(theta), {});
+                ASSERT_TRUE(ka.r >= 0 && ka.g >= 0 && ka.b >= 0 && std::isfinite(ka.r + ka.g + ka.b)) << info.id;
+                if (info.model == BrdfModel::OrenNayar) continue;
+                const glm::vec3 albedo = directionalAlbedo(info, values, viewAt(theta));
+                for (int c = 0; c < 3; ++c) EXPECT_LE(ka[c], albedo[c] * 1.01f + 1e-3f) << info.id << " θ " << theta;
+            }
+        }
+    }
+    EXPECT_EQ(ambientReflectance(BrdfModel::Retroreflective, defaultValues(kRetroreflectiveTable), viewAt(2.0f), {}),
+              glm::vec3(0.0f));  // seen from below the horizon
+}
+
+// Where the hook is the exact albedo: the diffuse-only forms of each model.
+TEST(BrdfAmbient, HooksAreExactForDiffuseOnlyForms) {
+    const glm::vec3 rho(0.2f, 0.5f, 0.9f);
+    const std::vector<std::pair<BrdfModel, std::vector<float>>> diffuseOnly = {
+        {BrdfModel::OrenNayar, valuesOf(BrdfModel::OrenNayar, {{"albedo", rho}, {"roughness", glm::vec3(0)}})},
+        {BrdfModel::Phong, valuesOf(BrdfModel::Phong, {{"diffuse_albedo", rho}, {"specular", glm::vec3(0)}})},
+        {BrdfModel::Ward, valuesOf(BrdfModel::Ward, {{"diffuse_albedo", rho}, {"specular", glm::vec3(0)}})},
+        {BrdfModel::CookTorrance, valuesOf(BrdfModel::CookTorrance, {{"diffuse_albedo", rho}, {"ior", glm::vec3(1)},
+                                   {"extinction", glm::vec3(0)}, {"fresnel", glm::vec3(1)}})},  // F(n = 1) = 0
+        {BrdfModel::GgxAnisotropic, valuesOf(BrdfModel::GgxAnisotropic, {{"diffuse_albedo", rho}, {"ior", glm::vec3(1)},
+                                     {"extinction", glm::vec3(0)}, {"fresnel", glm::vec3(1)}})},
+        {BrdfModel::Retroreflective, valuesOf(BrdfModel::Retroreflective, {{"albedo", rho}, {"limb_darkening", glm::vec3(0)},
+                                      {"minnaert_k", glm::vec3(0.6f)}})},
+        {BrdfModel::Retroreflective, valuesOf(BrdfModel::Retroreflective, {{"albedo", rho}, {"limb_darkening", glm::vec3(0)},
+                                      {"minnaert_k", glm::vec3(1.7f)}})},
+        {BrdfModel::Retroreflective, valuesOf(BrdfModel::Retroreflective, {{"albedo", rho}, {"limb_darkening", glm::vec3(1)}})},
+    };
+    for (const auto& [model, values] : diffuseOnly) {
+        for (float theta : {0.0f, 0.8f, 1.3f}) {
+            const glm::vec3 ka = ambientReflectance(model, values, viewAt(theta), {});
+            const glm::vec3 albedo = directionalAlbedo(modelInfo(model), values, viewAt(theta));
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(ka[c], albedo[c], 3e-3f * albedo[c] + 1e-5f) << modelInfo(model).id << " θ " << theta;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace glint

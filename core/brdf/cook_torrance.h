@@ -92,4 +92,12 @@ inline glm::vec3 evalCookTorrance(const CookTorranceParams& p, glm::vec3 wi, glm
     return p.diffuseAlbedo * kInvPi + fresnel * cookTorranceSpecular(p, wi, wo, frame);
 }
 
+// Ambient reflectance k_a: the diffuse albedo ρ_d, exact for the added Lambert term. The
+// microfacet lobe's albedo has no closed form (it needs a fitted table or a sampled integral,
+// which the two twins could not share exactly), so it is left out, as in the lecture's k_a = k_d.
+inline glm::vec3 ambientReflectanceCookTorrance(const CookTorranceParams& p, glm::vec3 /*wo*/,
+                                                const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
+}
+
 }  // namespace glint

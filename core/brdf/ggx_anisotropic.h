@@ -67,4 +67,11 @@ inline glm::vec3 evalGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 wi,
     return p.diffuseAlbedo * kInvPi + fresnel * ggxAnisotropicSpecular(p, wi, wo, frame);
 }
 
+// Ambient reflectance k_a: the diffuse albedo ρ_d (the microfacet lobe's share is left out; see
+// ambientReflectanceCookTorrance).
+inline glm::vec3 ambientReflectanceGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 /*wo*/,
+                                                  const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
+}
+
 }  // namespace glint
