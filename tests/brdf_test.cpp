@@ -126,6 +126,19 @@ TEST(BrdfRegistry, TablesAreConsistent) {
                 EXPECT_GE(spec.defaultValue[c], spec.validMin);
                 EXPECT_LE(spec.defaultValue[c], spec.validMax);
             }
+            // A colour is a reflectance in [0, 1] (the panel shows an sRGB picker); a per-channel
+            // quantity that may leave [0, 1] (an index, an absorption) must be PerChannel.
+            if (spec.kind == ParamKind::Color) {
+                EXPECT_EQ(spec.validMin, 0.0f);
+                EXPECT_EQ(spec.validMax, 1.0f);
+            }
+        }
+        // Every model names the complex index n + iκ the same way: per-channel `ior` and `extinction`.
+        const int extinction = findParam(info.params, "extinction");
+        if (extinction >= 0) {
+            ASSERT_GE(findParam(info.params, "ior"), 0);
+            EXPECT_EQ(info.params[findParam(info.params, "ior")].kind, ParamKind::PerChannel);
+            EXPECT_EQ(info.params[extinction].kind, ParamKind::PerChannel);
         }
     }
     EXPECT_FALSE(findModel("no_such_model").has_value());
@@ -300,7 +313,7 @@ TEST(BrdfProperties, MirrorWithADiffusePartReflectsMoreThanItReceives) {
     // part adds ρ_d on top: aluminium (F ≈ 0.91 at normal incidence) with ρ_d = 0.5 gives > 1.
     const std::vector<float> values = valuesOf(BrdfModel::Mirror, {{"diffuse_albedo", glm::vec3(0.5f)}});
     const MirrorParams mirror = unpackMirror(values.data());
-    const glm::vec3 lobe = fresnelConductor(1.0f, mirror.eta, mirror.kappa);
+    const glm::vec3 lobe = fresnelConductor(1.0f, mirror.ior, mirror.extinction);
     const BrdfFunction brdf = [&](glm::vec3 wi, glm::vec3 wo) { return evalBrdf(BrdfModel::Mirror, values, wi, wo, {}); };
     const glm::vec3 diffuse = directionalAlbedoAroundMirror(brdf, viewAt(0.0f));
     EXPECT_NEAR(diffuse.g, 0.5f, 1e-3f);
