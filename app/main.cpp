@@ -8,6 +8,8 @@
 
 #include "cli/headless.h"
 #include "cli/render_command.h"
+#include "cli/snapshot_command.h"
+#include "cli/thumbnails_command.h"
 #include "editor/editor.h"
 #include "scene/scene_json.h"
 
@@ -20,6 +22,10 @@ constexpr const char* kUsage =
     "  glint [SCENE.json]          open the editor (the default scene when no file is given)\n"
     "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
     "                              render headless (no display needed)\n"
+    "  glint snapshot SUITE [--out DIR] [--update] [--update-case NAME] [--jobs N] [--shard I/N]\n"
+    "                              compare a suite of scenes and materials with their goldens\n"
+    "  glint thumbnails DIR -o OUTDIR [--size N] [--jobs N]\n"
+    "                              one thumbnail per material and a labelled contact sheet\n"
     "  glint --help | --version\n"
     "\n"
     "With no display, `glint [SCENE]` renders the scene headless to glint-<name>.png.\n";
@@ -54,6 +60,10 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 1, argv + argc);
     if (!arguments.empty() && arguments[0] == "render")
         return glint::runRenderCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "snapshot")
+        return glint::runSnapshotCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "thumbnails")
+        return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {
         std::printf("%s", kUsage);
         return 0;

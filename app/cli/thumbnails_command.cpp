@@ -1,0 +1,147 @@
+// `glint thumbnails` (see thumbnails_command.h).
+#include "cli/thumbnails_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <regex>
+
+#include "cli/render_pool.h"
+#include "image/contact_sheet.h"
+#include "image/image_io.h"
+#include "snapshot/case_source.h"
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kUsage =
+    "usage: glint thumbnails DIR -o OUTDIR [--size N] [--jobs N] [--columns N]\n"
+    "  DIR          material files (\"format\": \"glint-material\", shown on the preview stage) and scene files\n"
+    "  -o OUTDIR    receives NAME.png for each file and contact_sheet.png with every thumbnail labelled\n"
+    "  --size N     thumbnail size, N×N pixels (default 256)\n"
+    "  --jobs N     render on N threads, each with its own OSMesa context (default 1)\n"
+    "  --columns N  thumbnails per row of the contact sheet (default: about square)\n";
+
+constexpr const char* kContactSheetName = "contact_sheet.png";
+
+int usageError(const std::string& message) {
+    std::fprintf(stderr, "glint thumbnails: %s\n%s", message.c_str(), kUsage);
+    return 2;
+}
+
+struct Thumbnail {
+    std::string name;
+    std::optional<DisplayImage> image;  // empty when the file could not be rendered
+    std::string error;
+};
+
+bool readCount(const std::string* value, int low, int high, int& out) {
+    if (!value || !std::regex_match(*value, std::regex("[0-9]{1,5}"))) return false;
+    out = std::stoi(*value);
+    return out >= low && out <= high;
+}
+
+}  // namespace
+
+int runThumbnailsCommand(const std::vector<std::string>& arguments) {
+    std::string inputDirectory, outputDirectory;
+    int size = 256, jobs = 1, columns = 0;
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& argument = arguments[i];
+        auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
+        if (argument == "-h" || argument == "--help") {
+            std::printf("%s", kUsage);
+            return 0;
+        } else if (argument == "-o" || argument == "--output") {
+            const std::string* value = next();
+            if (!value) return usageError("-o needs a directory");
+            outputDirectory = *value;
+        } else if (argument == "--size") {
+            if (!readCount(next(), 8, 4096, size)) return usageError("--size needs a number of pixels from 8 to 4096");
+        } else if (argument == "--jobs" || argument == "-j") {
+            if (!readCount(next(), 1, 999, jobs)) return usageError("--jobs needs a number from 1 to 999");
+        } else if (argument == "--columns") {
+            if (!readCount(next(), 1, 1000, columns)) return usageError("--columns needs a number from 1 to 1000");
+        } else if (!argument.empty() && argument[0] == '-') {
+            return usageError("unknown option " + argument);
+        } else if (inputDirectory.empty()) {
+            inputDirectory = argument;
+        } else {
+            return usageError("one directory at a time (got " + inputDirectory + " and " + argument + ")");
+        }
+    }
+    if (inputDirectory.empty()) return usageError("no directory of materials given");
+    if (outputDirectory.empty()) return usageError("no output directory given (-o OUTDIR)");
+
+    auto files = listJsonFiles(inputDirectory);
+    if (!files) {
+        std::fprintf(stderr, "glint thumbnails: %s\n", files.error().format().c_str());
+        return 2;
+    }
+    if (files->empty()) {
+        std::fprintf(stderr, "glint thumbnails: %s: no *.json material or scene files\n", inputDirectory.c_str());
+        return 2;
+    }
+    auto font = LabelFont::load();
+    if (!font) {
+        std::fprintf(stderr, "glint thumbnails: %s\n", font.error().format().c_str());
+        return 2;
+    }
+    std::error_code error;
+    fs::create_directories(outputDirectory, error);
+    if (error) {
+        std::fprintf(stderr, "glint thumbnails: cannot create %s: %s\n", outputDirectory.c_str(), error.message().c_str());
+        return 2;
+    }
+
+    std::vector<Thumbnail> thumbnails(files->size());
+    const Status rendered = renderInParallel(jobs, files->size(), [&](HeadlessRenderer& headless, size_t index) {
+        const std::string& file = (*files)[index];
+        Thumbnail& thumbnail = thumbnails[index];
+        thumbnail.name = fs::path(file).stem().string();
+        auto scene = loadRenderable(file, size, size);
+        if (!scene) {
+            thumbnail.error = scene.error().format();
+            return;
+        }
+        auto images = headless.render(*scene, size, size);
+        if (!images) {
+            thumbnail.error = file + ": render failed: " + images.error().format();
+            return;
+        }
+        if (Status written = writeDisplayImage(images->display, (fs::path(outputDirectory) / (thumbnail.name + ".png")).string()); !written) {
+            thumbnail.error = written.error().format();
+            return;
+        }
+        thumbnail.image = std::move(images->display);
+    });
+    if (!rendered) {
+        std::fprintf(stderr, "glint thumbnails: %s\n", rendered.error().format().c_str());
+        return 2;
+    }
+
+    std::vector<LabelledImage> sheetEntries;
+    int failed = 0;
+    for (const Thumbnail& thumbnail : thumbnails) {
+        if (thumbnail.image) {
+            sheetEntries.push_back({thumbnail.name, &*thumbnail.image});
+        } else {
+            std::fprintf(stderr, "glint thumbnails: %s\n", thumbnail.error.c_str());
+            ++failed;
+        }
+    }
+    const std::string sheetPath = (fs::path(outputDirectory) / kContactSheetName).string();
+    if (!sheetEntries.empty()) {
+        if (Status written = writeDisplayImage(contactSheet(sheetEntries, columns, *font), sheetPath); !written) {
+            std::fprintf(stderr, "glint thumbnails: %s\n", written.error().format().c_str());
+            return 2;
+        }
+    }
+    std::printf("%zu thumbnails (%dx%d) and %s written to %s; %d files could not be rendered\n", sheetEntries.size(), size, size,
+                sheetEntries.empty() ? "no contact sheet" : kContactSheetName, outputDirectory.c_str(), failed);
+    return failed == 0 ? 0 : 1;
+}
+
+}  // namespace glint
