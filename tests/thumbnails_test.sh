@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `glint thumbnails` from the outside: one PNG per material at the asked size, a labelled contact
-# sheet, a bad file reported while the rest are rendered, same bytes with --jobs 2, bad arguments.
+# sheet, a bad file reported while the rest are rendered, same bytes with --jobs 2 and from
+# `glint render MATERIAL`, bad arguments.
 # usage: thumbnails_test.sh GLINT OUTPUT_DIR
 set -u
 glint=$(realpath "$1")
@@ -24,6 +25,9 @@ expect "thumbnails have the asked size" test "$($tools size "$out/thumbs/clay.pn
 expect "the contact sheet is written" test -s "$out/thumbs/contact_sheet.png"
 expect "the contact sheet holds a 2x2 grid with label rows" test "$($tools size "$out/thumbs/contact_sheet.png")" = "216x246"
 expect "the summary says what happened" grep -q "^3 thumbnails (96x96) and contact_sheet.png written" "$out/thumbs.stdout"
+
+"$glint" render "$out/materials/clay.json" -o "$out/clay_render.png" --size 96x96
+expect "glint render of a material file gives the same bytes as its thumbnail" cmp -s "$out/clay_render.png" "$out/thumbs/clay.png"
 
 rm "$out/materials/unknown_model.json"
 "$glint" thumbnails "$out/materials" -o "$out/thumbs_jobs2" --size 96 --jobs 2 >/dev/null 2>&1
