@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 
 #include "image/contact_sheet.h"
@@ -206,6 +207,17 @@ TEST(TextLabel, DrawsLegibleCoverageWithinTheImage) {
     for (int y = 0; y < 20; ++y)
         for (int x = 41; x < 100; ++x) EXPECT_EQ(narrow.pixels[(y * 100 + x) * 3], 0) << x << "," << y;
     EXPECT_FALSE(LabelFont::load("/no/such/font.ttf").ok());
+    EXPECT_FALSE(LabelFont::load(test::dataPath("scenes/lambert_sun.json")).ok());  // not a font
+}
+
+TEST(TextLabel, ACopyOutlivesItsOriginal) {
+    std::optional<LabelFont> copy;
+    {
+        auto font = LabelFont::load();
+        ASSERT_TRUE(font.ok());
+        copy = *font;
+    }
+    EXPECT_GT(copy->measure("Glint", 16), 0);
 }
 
 TEST(ContactSheet, GridWithLabelSpace) {

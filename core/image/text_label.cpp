@@ -35,17 +35,19 @@ std::vector<int> decodeUtf8(const std::string& text) {
 Result<LabelFont> LabelFont::load(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return makeError("cannot open the font (is fonts-dejavu-core installed?)", {path});
-    LabelFont font;
-    font.data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    font.info_.resize(sizeof(stbtt_fontinfo));
-    auto* info = reinterpret_cast<stbtt_fontinfo*>(font.info_.data());
-    if (font.data_.empty() || !stbtt_InitFont(info, font.data_.data(), stbtt_GetFontOffsetForIndex(font.data_.data(), 0)))
+    auto data = std::make_shared<const std::vector<unsigned char>>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    auto info = std::make_shared<stbtt_fontinfo>();
+    if (data->size() < 12 || stbtt_GetFontOffsetForIndex(data->data(), 0) < 0 ||
+        !stbtt_InitFont(info.get(), data->data(), stbtt_GetFontOffsetForIndex(data->data(), 0)))
         return makeError("not a TrueType font", {path});
+    LabelFont font;
+    font.data_ = std::move(data);
+    font.info_ = std::move(info);
     return font;
 }
 
 int LabelFont::measure(const std::string& text, float pixelHeight) const {
-    const auto* info = reinterpret_cast<const stbtt_fontinfo*>(info_.data());
+    const stbtt_fontinfo* info = info_.get();
     const float scale = stbtt_ScaleForPixelHeight(info, pixelHeight);
     float width = 0.0f;
     const std::vector<int> codepoints = decodeUtf8(text);
@@ -69,7 +71,7 @@ void LabelFont::draw(DisplayImage& image, int left, int top, const std::string& 
         }
         shown += "…";
     }
-    const auto* info = reinterpret_cast<const stbtt_fontinfo*>(info_.data());
+    const stbtt_fontinfo* info = info_.get();
     const float scale = stbtt_ScaleForPixelHeight(info, pixelHeight);
     int ascent = 0, descent = 0, lineGap = 0;
     stbtt_GetFontVMetrics(info, &ascent, &descent, &lineGap);

@@ -2,6 +2,7 @@
 // pixels), for contact sheets. One line of UTF-8 text; no shaping, wrapping or GL.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,8 @@
 
 #include "image/image.h"
 #include "util/diagnostic.h"
+
+struct stbtt_fontinfo;
 
 namespace glint {
 
@@ -27,8 +30,10 @@ public:
               int maxWidth) const;
 
 private:
-    std::vector<unsigned char> data_;  // the font file; stb_truetype reads it in place
-    std::vector<unsigned char> info_;  // an stbtt_fontinfo, kept opaque so this header needs no stb
+    // The font file and stb_truetype's view into it (which points into the file's bytes);
+    // shared, so copies of a LabelFont stay valid.
+    std::shared_ptr<const std::vector<unsigned char>> data_;
+    std::shared_ptr<stbtt_fontinfo> info_;
 };
 
 }  // namespace glint
