@@ -143,12 +143,13 @@ TEST(SnapshotReport, EscapesMarkupAndCountsOutcomes) {
     CaseResult passed, failed, broken;
     passed.name = "p", passed.outcome = CaseOutcome::Passed;
     failed.name = "f", failed.outcome = CaseOutcome::Failed, failed.message = "x < y";
+    failed.actualImage = "images/f.actual.png";  // no golden: neither expected nor difference
     broken.name = "b", broken.outcome = CaseOutcome::Error, broken.message = "bad & worse";
     report.cases = {broken, failed, passed};
     EXPECT_EQ(report.summaryLine(), "1 passed, 1 failed, 1 error");
     const std::string junit = junitReport(report);
     EXPECT_NE(junit.find("tests=\"3\" failures=\"1\" errors=\"1\""), std::string::npos);
-    EXPECT_NE(junit.find("<failure message=\"x &lt; y\">"), std::string::npos);
+    EXPECT_NE(junit.find("<failure message=\"x &lt; y\">actual: images/f.actual.png</failure>"), std::string::npos) << junit;
     EXPECT_NE(junit.find("<error message=\"bad &amp; worse\">"), std::string::npos);
     const std::string html = htmlReport(report);
     EXPECT_LT(html.find("id=\"f\""), html.find("id=\"b\""));  // failures first, then errors, then passes

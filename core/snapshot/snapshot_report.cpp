@@ -140,9 +140,12 @@ std::string junitReport(const SnapshotReport& report) {
         if (result.outcome != CaseOutcome::Passed) {
             const char* element = result.outcome == CaseOutcome::Failed ? "failure" : "error";
             xml += std::string("      <") + element + " message=\"" + escapeMarkup(result.message) + "\">";
-            if (!result.actualImage.empty())
-                xml += "actual: " + escapeMarkup(result.actualImage) + "\nexpected: " + escapeMarkup(result.expectedImage) +
-                       "\ndifference: " + escapeMarkup(result.diffImage);
+            // The images written for this case, relative to the report directory.
+            std::string images;
+            for (const auto& [label, path] : {std::pair{"actual", &result.actualImage}, std::pair{"expected", &result.expectedImage},
+                                              std::pair{"difference", &result.diffImage}})
+                if (!path->empty()) images += std::string(images.empty() ? "" : "\n") + label + ": " + escapeMarkup(*path);
+            xml += images;
             xml += std::string("</") + element + ">\n";
         }
         if (!result.goldenWritten.empty()) xml += "      <system-out>golden written: " + escapeMarkup(result.goldenWritten) + "</system-out>\n";
