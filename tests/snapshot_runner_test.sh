@@ -114,6 +114,12 @@ expect "an unknown manifest key exits with 2" test "$(code bad_manifest)" -eq 2
 expect "an unknown manifest key is located" grep -q "snapshot.json:3:32: tolerance 'percent': unknown key" "$out/bad_manifest.stderr"
 snapshot bad_shard "$passing" --shard 2/2
 expect "a bad --shard exits with 2" test "$(code bad_shard)" -eq 2
+snapshot bad_option "$passing" --frobnicate
+expect "an unknown option exits with 2 and names it" grep -q "unknown option --frobnicate" "$out/bad_option.stderr"
+snapshot two_suites "$passing" "$mixed"
+expect "two suites exit with 2" grep -q "one suite at a time" "$out/two_suites.stderr"
+snapshot bad_jobs "$passing" --jobs 0
+expect "--jobs 0 exits with 2" test "$(code bad_jobs)" -eq 2
 snapshot bad_update "$passing" --out "$out/report_bad_update" --update-case nobody
 expect "--update-case of an unknown case exits with 2" test "$(code bad_update)" -eq 2
 # A goldens "directory" that is a file, and a case file that is a directory: failed / errored cases, the run goes on.

@@ -8,6 +8,7 @@
 #include <regex>
 #include <set>
 
+#include "cli/command_options.h"
 #include "cli/render_pool.h"
 #include "image/image_io.h"
 #include "snapshot/case_source.h"
@@ -150,41 +151,32 @@ int suiteFailure(SnapshotReport& report, const std::string& message, const Snaps
 
 int runSnapshotCommand(const std::vector<std::string>& arguments) {
     SnapshotOptions options;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& argument = arguments[i];
-        auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
-        if (argument == "-h" || argument == "--help") {
-            std::printf("%s", kUsage);
-            return 0;
-        } else if (argument == "--out" || argument == "-o") {
-            const std::string* value = next();
-            if (!value) return usageError("--out needs a directory");
-            options.outputDirectory = *value;
-        } else if (argument == "--update") {
-            options.updateFailing = true;
-        } else if (argument == "--update-case") {
-            const std::string* value = next();
-            if (!value) return usageError("--update-case needs a case name");
-            options.updateNamed.insert(*value);
-        } else if (argument == "--jobs" || argument == "-j") {
-            const std::string* value = next();
-            if (!value || !std::regex_match(*value, std::regex("[1-9][0-9]{0,2}"))) return usageError("--jobs needs a number from 1 to 999");
-            options.jobs = std::stoi(*value);
-        } else if (argument == "--shard") {
-            const std::string* value = next();
-            if (!value) return usageError("--shard needs I/N");
-            auto shard = parseShard(*value);
-            if (!shard) return usageError(shard.error().message);
-            options.shard = *shard;
-            options.sharded = true;
-        } else if (!argument.empty() && argument[0] == '-') {
-            return usageError("unknown option " + argument);
-        } else if (options.suitePath.empty()) {
-            options.suitePath = argument;
-        } else {
-            return usageError("one suite at a time (got " + options.suitePath + " and " + argument + ")");
-        }
+    const std::vector<CommandOption> known = {
+        {{"-o", "--out"}, "a directory", [&](const std::string& value) { options.outputDirectory = value; return std::string(); }},
+        {{"--update"}, "", [&](const std::string&) { options.updateFailing = true; return std::string(); }},
+        {{"--update-case"}, "a case name", [&](const std::string& value) { options.updateNamed.insert(value); return std::string(); }},
+        {{"-j", "--jobs"}, "a number from 1 to 999",
+         [&](const std::string& value) {
+             if (!std::regex_match(value, std::regex("[1-9][0-9]{0,2}"))) return std::string("--jobs needs a number from 1 to 999");
+             options.jobs = std::stoi(value);
+             return std::string();
+         }},
+        {{"--shard"}, "I/N",
+         [&](const std::string& value) {
+             auto shard = parseShard(value);
+             if (!shard) return shard.error().message;
+             options.shard = *shard;
+             options.sharded = true;
+             return std::string();
+         }},
+    };
+    auto parsed = parseCommandOptions(arguments, known, "suite");
+    if (!parsed) return usageError(parsed.error().message);
+    if (parsed->help) {
+        std::printf("%s", kUsage);
+        return 0;
     }
+    if (!parsed->positionals.empty()) options.suitePath = parsed->positionals[0];
     if (options.suitePath.empty()) return usageError("no suite directory or manifest given");
 
     SnapshotReport report;

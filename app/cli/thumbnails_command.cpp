@@ -6,6 +6,7 @@
 #include <optional>
 #include <regex>
 
+#include "cli/command_options.h"
 #include "cli/render_pool.h"
 #include "image/contact_sheet.h"
 #include "image/image_io.h"
@@ -37,41 +38,32 @@ struct Thumbnail {
     std::string error;
 };
 
-bool readCount(const std::string* value, int low, int high, int& out) {
-    if (!value || !std::regex_match(*value, std::regex("[0-9]{1,5}"))) return false;
-    out = std::stoi(*value);
-    return out >= low && out <= high;
-}
-
 }  // namespace
 
 int runThumbnailsCommand(const std::vector<std::string>& arguments) {
     std::string inputDirectory, outputDirectory;
     int size = 256, jobs = 1, columns = 0;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& argument = arguments[i];
-        auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
-        if (argument == "-h" || argument == "--help") {
-            std::printf("%s", kUsage);
-            return 0;
-        } else if (argument == "-o" || argument == "--output") {
-            const std::string* value = next();
-            if (!value) return usageError("-o needs a directory");
-            outputDirectory = *value;
-        } else if (argument == "--size") {
-            if (!readCount(next(), 8, 4096, size)) return usageError("--size needs a number of pixels from 8 to 4096");
-        } else if (argument == "--jobs" || argument == "-j") {
-            if (!readCount(next(), 1, 999, jobs)) return usageError("--jobs needs a number from 1 to 999");
-        } else if (argument == "--columns") {
-            if (!readCount(next(), 1, 1000, columns)) return usageError("--columns needs a number from 1 to 1000");
-        } else if (!argument.empty() && argument[0] == '-') {
-            return usageError("unknown option " + argument);
-        } else if (inputDirectory.empty()) {
-            inputDirectory = argument;
-        } else {
-            return usageError("one directory at a time (got " + inputDirectory + " and " + argument + ")");
-        }
+    // A whole number in [low, high] from `value`, or the message that refuses it.
+    auto count = [](int& out, int low, int high, const std::string& message) {
+        return [&out, low, high, message](const std::string& value) {
+            if (!std::regex_match(value, std::regex("[0-9]{1,5}")) || std::stoi(value) < low || std::stoi(value) > high) return message;
+            out = std::stoi(value);
+            return std::string();
+        };
+    };
+    const std::vector<CommandOption> known = {
+        {{"-o", "--output"}, "a directory", [&](const std::string& value) { outputDirectory = value; return std::string(); }},
+        {{"--size"}, "a number of pixels", count(size, 8, 4096, "--size needs a number of pixels from 8 to 4096")},
+        {{"-j", "--jobs"}, "a number", count(jobs, 1, 999, "--jobs needs a number from 1 to 999")},
+        {{"--columns"}, "a number", count(columns, 1, 1000, "--columns needs a number from 1 to 1000")},
+    };
+    auto parsed = parseCommandOptions(arguments, known, "directory");
+    if (!parsed) return usageError(parsed.error().message);
+    if (parsed->help) {
+        std::printf("%s", kUsage);
+        return 0;
     }
+    if (!parsed->positionals.empty()) inputDirectory = parsed->positionals[0];
     if (inputDirectory.empty()) return usageError("no directory of materials given");
     if (outputDirectory.empty()) return usageError("no output directory given (-o OUTDIR)");
 
