@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `glint thumbnails` from the outside: one PNG per material at the asked size, a labelled contact
-# sheet, a bad file reported while the rest are rendered, same bytes with --jobs 2 and from
-# `glint render MATERIAL`, bad arguments.
+# sheet, a bad file reported while the rest are rendered, same bytes with --jobs 2, the same
+# pixels as the snapshot runner's render, bad arguments.
 # usage: thumbnails_test.sh GLINT OUTPUT_DIR
 set -u
 glint=$(realpath "$1")
@@ -26,8 +26,18 @@ expect "the contact sheet is written" test -s "$out/thumbs/contact_sheet.png"
 expect "the contact sheet holds a 2x2 grid with label rows" test "$($tools size "$out/thumbs/contact_sheet.png")" = "216x246"
 expect "the summary says what happened" grep -q "^3 thumbnails (96x96) and contact_sheet.png written" "$out/thumbs.stdout"
 
+# `glint render MATERIAL`, `glint thumbnails` and `glint snapshot` give the same pixels (PNG bytes
+# differ: thumbnails use faster compression): a suite whose two goldens are the render and the
+# thumbnail, compared with zero tolerance.
 "$glint" render "$out/materials/clay.json" -o "$out/clay_render.png" --size 96x96
-expect "glint render of a material file gives the same bytes as its thumbnail" cmp -s "$out/clay_render.png" "$out/thumbs/clay.png"
+mkdir -p "$out/same/goldens" && cp "$out/materials/clay.json" "$out/same/"
+cp "$out/clay_render.png" "$out/same/goldens/via_render.png" && cp "$out/thumbs/clay.png" "$out/same/goldens/via_thumbnails.png"
+cat >"$out/same/snapshot.json" <<'JSON'
+{ "format": "glint-snapshot-suite", "version": 1, "width": 96, "height": 96, "tolerance": { "channel": 0, "failing_percent": 0 },
+  "cases": [ { "file": "clay.json", "name": "via_render" }, { "file": "clay.json", "name": "via_thumbnails" } ] }
+JSON
+"$glint" snapshot "$out/same" --out "$out/same_report" >"$out/same.stdout" 2>&1
+expect "a material: glint render, thumbnails and snapshot give the same pixels" grep -qx "2 passed, 0 failed, 0 errors" "$out/same.stdout"
 
 rm "$out/materials/unknown_model.json"
 "$glint" thumbnails "$out/materials" -o "$out/thumbs_jobs2" --size 96 --jobs 2 >/dev/null 2>&1

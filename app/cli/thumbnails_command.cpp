@@ -26,6 +26,9 @@ constexpr const char* kUsage =
     "  --columns N  thumbnails per row of the contact sheet (default: about square)\n";
 
 constexpr const char* kContactSheetName = "contact_sheet.png";
+// zlib level 1 for thumbnails and the sheet: about 40% larger files than the default 6, written
+// about 4x faster (compression was most of the time of a 256×256 thumbnail).
+constexpr int kThumbnailPngCompression = 1;
 
 int usageError(const std::string& message) {
     std::fprintf(stderr, "glint thumbnails: %s\n%s", message.c_str(), kUsage);
@@ -103,7 +106,8 @@ int runThumbnailsCommand(const std::vector<std::string>& arguments) {
             thumbnail.error = file + ": render failed: " + images.error().format();
             return;
         }
-        if (Status written = writeDisplayImage(images->display, (fs::path(outputDirectory) / (thumbnail.name + ".png")).string()); !written) {
+        if (Status written = writeDisplayImage(images->display, (fs::path(outputDirectory) / (thumbnail.name + ".png")).string(),
+                                             kThumbnailPngCompression); !written) {
             thumbnail.error = written.error().format();
             return;
         }
@@ -126,7 +130,7 @@ int runThumbnailsCommand(const std::vector<std::string>& arguments) {
     }
     const std::string sheetPath = (fs::path(outputDirectory) / kContactSheetName).string();
     if (!sheetEntries.empty()) {
-        if (Status written = writeDisplayImage(contactSheet(sheetEntries, columns, *font), sheetPath); !written) {
+        if (Status written = writeDisplayImage(contactSheet(sheetEntries, columns, *font), sheetPath, kThumbnailPngCompression); !written) {
             std::fprintf(stderr, "glint thumbnails: %s\n", written.error().format().c_str());
             return 2;
         }
