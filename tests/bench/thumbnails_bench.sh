@@ -21,21 +21,17 @@ for i in $(seq 0 99); do
   fi >"$work/materials/material_$(printf %03d "$i").json"
 done
 
-seconds() { date +%s.%N; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+TIMEFORMAT='%R %U %S'  # bash's `time`: wall, user and system seconds (children included)
 
-run_thumbnails() {  # run_thumbnails JOBS → seconds
-  local start; start=$(seconds)
-  "$glint" thumbnails "$work/materials" -o "$work/thumbs_$1" --jobs "$1" >/dev/null
-  echo "$(seconds) - $start" | bc -l
+run_thumbnails() {  # run_thumbnails JOBS → "wall user system"
+  { time "$glint" thumbnails "$work/materials" -o "$work/thumbs_$1" --jobs "$1" >/dev/null; } 2>&1
 }
-run_processes() {  # 100 × glint render → seconds
-  local start; start=$(seconds)
+run_processes() {  # 100 × glint render → "wall user system"
   mkdir -p "$work/processes"
-  for material in "$work"/materials/*.json; do
-    "$glint" render "$material" -o "$work/processes/$(basename "$material" .json).png"
-  done
-  echo "$(seconds) - $start" | bc -l
+  { time for material in "$work"/materials/*.json; do
+      "$glint" render "$material" -o "$work/processes/$(basename "$material" .json).png"
+    done; } 2>&1
 }
 
 one=() two=() many=()
@@ -44,11 +40,17 @@ for _ in $(seq "$runs"); do
   two+=("$(run_thumbnails 2)")
   many+=("$(run_processes)")
 done
-t1=$(printf '%s\n' "${one[@]}" | median)
-t2=$(printf '%s\n' "${two[@]}" | median)
-tp=$(printf '%s\n' "${many[@]}" | median)
-echo "runs: $runs (median); machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
-printf 'glint thumbnails --jobs 1: %6.2f s  %6.1f thumbnails/s   (runs: %s)\n' "$t1" "$(echo "100 / $t1" | bc -l)" "${one[*]}"
-printf 'glint thumbnails --jobs 2: %6.2f s  %6.1f thumbnails/s   (runs: %s)\n' "$t2" "$(echo "100 / $t2" | bc -l)" "${two[*]}"
-printf '100 x glint render:        %6.2f s  %6.1f thumbnails/s   (runs: %s)\n' "$tp" "$(echo "100 / $tp" | bc -l)" "${many[*]}"
-printf 'one process (--jobs 1) is %.1fx faster than a process per image\n' "$(echo "$tp / $t1" | bc -l)"
+wall() { printf '%s\n' "$@" | cut -d' ' -f1 | median; }
+cpu() { printf '%s\n' "$@" | awk '{ print $2 + $3 }' | median; }
+echo "runs: $runs (medians); machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+report() {  # report LABEL TIMES...
+  local label=$1; shift
+  local w c; w=$(wall "$@"); c=$(cpu "$@")
+  printf '%-27s %6.2f s wall = %5.1f thumbnails/s; %6.2f s CPU = %5.1f ms CPU per thumbnail   (wall: %s)\n' \
+    "$label" "$w" "$(echo "100 / $w" | bc -l)" "$c" "$(echo "10 * $c" | bc -l)" "$(printf '%s\n' "$@" | cut -d' ' -f1 | tr '\n' ' ')"
+}
+report "glint thumbnails --jobs 1:" "${one[@]}"
+report "glint thumbnails --jobs 2:" "${two[@]}"
+report "100 x glint render:" "${many[@]}"
+printf 'one process (--jobs 1) is %.1fx faster (wall) and uses %.1fx less CPU than a process per image\n' \
+  "$(echo "$(wall "${many[@]}") / $(wall "${one[@]}")" | bc -l)" "$(echo "$(cpu "${many[@]}") / $(cpu "${one[@]}")" | bc -l)"
