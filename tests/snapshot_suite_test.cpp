@@ -171,8 +171,9 @@ TEST(PreviewStage, SphereOnAPlaneUnderThreeLights) {
     EXPECT_TRUE(std::holds_alternative<SphereShape>(stage.objects[0].shape));
     EXPECT_EQ(stage.materials[stage.objects[0].materialIndex].name, "gold");
     EXPECT_TRUE(std::holds_alternative<PlaneShape>(stage.objects[1].shape));
-    EXPECT_GT(stage.background.r, 0.0f);
-    EXPECT_EQ(stage.background.r, stage.background.b);  // neutral
+    EXPECT_EQ(stage.background.kind, BackgroundKind::Constant);
+    EXPECT_GT(stage.background.color.r, 0.0f);
+    EXPECT_EQ(stage.background.color.r, stage.background.color.b);  // neutral
 }
 
 TEST(CaseSource, MaterialsGoOnTheStageAndOtherFormatsAreRefused) {

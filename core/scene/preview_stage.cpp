@@ -12,7 +12,7 @@ Scene previewStage(const Material& material, int width, int height) {
     scene.camera.position = {0.0f, 0.8f, 4.3f};
     scene.camera.target = {0.0f, -0.12f, 0.0f};
     scene.camera.verticalFovDegrees = 36.0f;
-    scene.background = {0.18f, 0.18f, 0.18f};  // neutral mid grey (sRGB ≈ 118/255)
+    scene.background.color = {0.18f, 0.18f, 0.18f};  // neutral mid grey (sRGB ≈ 118/255)
 
     Material floor = Material::withDefaults("preview floor", BrdfModel::Lambert);
     floor.values = {0.3f, 0.3f, 0.3f};
