@@ -1,5 +1,5 @@
-// The standard preview stage (see preview_stage.h). Light levels are chosen so that a
-// white Lambert sphere (albedo 1) peaks just below 1 W/(sr·m²) and nothing clips at exposure 0.
+// The standard preview stage (see preview_stage.h). Light levels keep a white Lambert sphere
+// (albedo 1) below 1 W/(sr·m²), so nothing clips at exposure 0: L = ρ/π·ΣE ≤ (1.6 + 0.58 + 0.8)/π ≈ 0.95.
 #include "scene/preview_stage.h"
 
 namespace glint {
@@ -27,7 +27,7 @@ Scene previewStage(const Material& material, int width, int height) {
     key.type = LightType::Directional;
     key.direction = glm::normalize(glm::vec3(0.6f, -1.0f, -0.7f));
     key.irradiance = 1.6f;
-    Light fill;  // a soft point light on the right: Φ = 40 W at about 3.3 m gives E⊥ ≈ 0.3 W/m²
+    Light fill;  // a point light on the right: Φ = 40 W gives E⊥ = Φ/(4πd²) ≈ 0.3 W/m² at the centre (d ≈ 3.35 m), ≤ 0.58 on the sphere
     fill.name = "fill";
     fill.type = LightType::Point;
     fill.position = {2.4f, 0.8f, 2.2f};
