@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/headless.h"
+#include "cli/presets_command.h"
 #include "cli/render_command.h"
 #include "cli/snapshot_command.h"
 #include "cli/thumbnails_command.h"
@@ -26,6 +27,8 @@ constexpr const char* kUsage =
     "                              compare a suite of scenes and materials with their goldens\n"
     "  glint thumbnails DIR -o OUTDIR [--size N] [--jobs N]\n"
     "                              one thumbnail per material and a labelled contact sheet\n"
+    "  glint presets [NAME -o FILE.json]\n"
+    "                              list the material presets, or write one as a material file\n"
     "  glint --help | --version\n"
     "\n"
     "With no display, `glint [SCENE]` renders the scene headless to glint-<name>.png.\n";
@@ -64,6 +67,8 @@ int main(int argc, char** argv) {
         return glint::runSnapshotCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "thumbnails")
         return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "presets")
+        return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {
         std::printf("%s", kUsage);
         return 0;

@@ -1,6 +1,7 @@
 // Material panel generated from the parameter table (see material_panel.h).
 #include "editor/material_panel.h"
 
+#include <algorithm>
 #include <imgui.h>
 #include <string>
 
@@ -26,6 +27,18 @@ bool drawParam(const ParamSpec& spec, float* value) {
             break;
         }
         case ParamKind::Color: {
+            if (spec.validMax > 1.0f) {
+                // Not a colour but a per-channel quantity (an index of refraction): linear numbers.
+                float edited[3] = {value[0], value[1], value[2]};
+                if (ImGui::DragFloat3(spec.label, edited, 0.005f, spec.sliderMin, spec.sliderMax, "%.4g")) {
+                    bool valid = true;
+                    for (float channel : edited)
+                        valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
+                                 channel <= spec.validMax;
+                    if (valid) std::copy(edited, edited + 3, value), changed = true;
+                }
+                break;
+            }
             float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
             if (ImGui::ColorEdit3(spec.label, encoded, ImGuiColorEditFlags_Float)) {
                 for (int c = 0; c < 3; ++c) value[c] = std::clamp(decodeSrgb(encoded[c]), spec.validMin, spec.validMax);
