@@ -2,6 +2,9 @@
 #include "editor/material_panel.h"
 
 #include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "editor/color_space.h"
@@ -9,7 +12,16 @@
 namespace glint {
 namespace {
 
-bool drawParam(const ParamSpec& spec, float* value) {
+std::string formatRange(const ParamSpec& spec) {
+    char text[96];
+    if (spec.validMax == kUnbounded) std::snprintf(text, sizeof text, "at least %g", spec.validMin);
+    else std::snprintf(text, sizeof text, "between %g and %g", spec.validMin, spec.validMax);
+    return text;
+}
+
+// Typed values beyond the slider are kept when the table's valid range allows them, and refused
+// with a message in `refusal` when it does not (never clamped silently).
+bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
     bool changed = false;
     ImGui::PushID(spec.name);
     switch (spec.kind) {
@@ -21,15 +33,31 @@ bool drawParam(const ParamSpec& spec, float* value) {
             float edited = *value;
             if (ImGui::SliderFloat(spec.label, &edited, spec.sliderMin, spec.sliderMax, format.c_str(), flags)) {
                 // Ctrl+click typing may go past the slider but never past the valid range.
-                if (edited >= spec.validMin && edited <= spec.validMax) *value = edited, changed = true;
+                if (edited >= spec.validMin && edited <= spec.validMax) {
+                    *value = edited, changed = true;
+                    refusal.clear();
+                } else {
+                    refusal = std::string(spec.label) + ": " + std::to_string(edited) + " refused; it must be " + formatRange(spec);
+                }
             }
             break;
         }
         case ParamKind::Color: {
             float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
             if (ImGui::ColorEdit3(spec.label, encoded, ImGuiColorEditFlags_Float)) {
-                for (int c = 0; c < 3; ++c) value[c] = std::clamp(decodeSrgb(encoded[c]), spec.validMin, spec.validMax);
-                changed = true;
+                float linear[3];
+                bool valid = true;
+                for (int c = 0; c < 3; ++c) {
+                    linear[c] = decodeSrgb(encoded[c]);
+                    valid = valid && linear[c] >= spec.validMin && linear[c] <= spec.validMax;
+                }
+                if (valid) {
+                    std::copy(linear, linear + 3, value);
+                    changed = true;
+                    refusal.clear();
+                } else {
+                    refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
+                }
             }
             break;
         }
@@ -66,7 +94,7 @@ bool drawParam(const ParamSpec& spec, float* value) {
 
 }  // namespace
 
-bool drawMaterialPanel(Material& material) {
+bool drawMaterialPanel(Material& material, std::string& refusal) {
     bool changed = false;
     const ModelInfo& current = modelInfo(material.model);
     if (ImGui::BeginCombo("Model", current.label)) {
@@ -81,7 +109,7 @@ bool drawMaterialPanel(Material& material) {
     }
     const auto table = modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i)
-        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)));
+        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
     if (material.model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
         ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,

@@ -1,0 +1,38 @@
+// The display section: exposure (stops), the transfer function (sRGB or a pure gamma), and the
+// background radiance. Each change goes through the edit API.
+#include <imgui.h>
+
+#include "editor/color_space.h"
+#include "editor/panels/panels.h"
+
+namespace glint {
+
+void drawDisplaySection(EditorState& state) {
+    const Scene& scene = state.session.scene();
+    DisplaySettings display = scene.display;
+    bool changed = false;
+    changed |= ImGui::SliderFloat("Exposure", &display.exposureStops, -10.0f, 10.0f, "%+.2f EV");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance is multiplied by 2^EV before encoding");
+    int transfer = display.transfer == Transfer::Srgb ? 0 : 1;
+    if (ImGui::Combo("Encoding", &transfer, "sRGB\0gamma\0")) {
+        display.transfer = transfer == 0 ? Transfer::Srgb : Transfer::Gamma;
+        changed = true;
+    }
+    if (display.transfer == Transfer::Gamma) {
+        float gamma = display.gamma;
+        if (ImGui::SliderFloat("Gamma", &gamma, 1.0f, 3.0f, "%.2f")) {
+            if (gamma > 0.0f && std::isfinite(gamma)) display.gamma = gamma, changed = true;
+        }
+    }
+    if (changed) state.session.change("Edit display").display = display;
+
+    glm::vec3 background = scene.background;
+    float encoded[3] = {encodeSrgb(background.r), encodeSrgb(background.g), encodeSrgb(background.b)};
+    if (ImGui::ColorEdit3("Background", encoded, ImGuiColorEditFlags_Float)) {
+        for (int c = 0; c < 3; ++c) background[c] = decodeSrgb(std::max(encoded[c], 0.0f));
+        state.session.change("Edit background").background = background;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance seen where no object is hit (shown sRGB-encoded)");
+}
+
+}  // namespace glint
