@@ -19,6 +19,7 @@
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
 #include "editor/document.h"
+#include "editor/key_events.h"
 #include "editor/panels/panels.h"
 #include "editor/shortcuts.h"
 #include "geometry/mesh.h"
@@ -36,7 +37,10 @@ std::vector<std::string> gDroppedPaths;
 void noteCursor(GLFWwindow*, double, double) { gEventSeen = true; }
 void noteButton(GLFWwindow*, int, int, int) { gEventSeen = true; }
 void noteScroll(GLFWwindow*, double, double) { gEventSeen = true; }
-void noteKey(GLFWwindow*, int, int, int, int) { gEventSeen = true; }
+void noteKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) recordKeyPress(key, mods);
+    gEventSeen = true;
+}
 void noteChar(GLFWwindow*, unsigned int) { gEventSeen = true; }
 void noteSize(GLFWwindow*, int, int) { gEventSeen = true; }
 void noteRefresh(GLFWwindow*) { gEventSeen = true; }
@@ -220,6 +224,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         platform->present();
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
+        clearKeyPresses();
         framesToDraw = gEventSeen ? 3 : framesToDraw - 1;
     }
 

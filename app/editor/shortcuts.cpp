@@ -6,6 +6,7 @@
 
 #include "editor/camera_actions.h"
 #include "editor/document.h"
+#include "editor/key_events.h"
 
 namespace glint {
 namespace {
@@ -29,8 +30,8 @@ constexpr Shortcut kShortcuts[] = {
     {"Ctrl+click a slider", "type a value"},
 };
 
-bool pressed(int key) { return ImGui::IsKeyPressed(key, /*repeat=*/false); }
-bool repeated(int key) { return ImGui::IsKeyPressed(key, /*repeat=*/true); }
+constexpr int kCtrl = GLFW_MOD_CONTROL;
+constexpr int kCtrlShift = GLFW_MOD_CONTROL | GLFW_MOD_SHIFT;
 
 }  // namespace
 
@@ -40,26 +41,22 @@ void handleShortcuts(EditorState& state) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput) return;
     const bool modal = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
-    if (pressed(GLFW_KEY_F1)) state.showHelp = !state.showHelp;
+    if (keyPressed(GLFW_KEY_F1)) state.showHelp = !state.showHelp;
     if (modal) return;  // dialogs take their own keys (Enter, Escape)
-    if (io.KeyCtrl) {
-        if (repeated(GLFW_KEY_Z) && !io.KeyShift && state.session.undo()) state.statusMessage = "Undone";
-        if ((repeated(GLFW_KEY_Z) && io.KeyShift) || repeated(GLFW_KEY_Y))
-            if (state.session.redo()) state.statusMessage = "Redone";
-        if (pressed(GLFW_KEY_S)) {
-            if (io.KeyShift) requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, state.session.path());
-            else saveScene(state);
-        }
-        if (pressed(GLFW_KEY_O)) requestFileBrowser(state.fileBrowser, FilePurpose::OpenScene, state.session.path());
-        if (pressed(GLFW_KEY_N)) guardUnsavedChanges(state, "starting a new scene", newScene);
-        if (pressed(GLFW_KEY_Q)) requestQuit(state);
-        return;
-    }
+    if (keyPressed(GLFW_KEY_Z, kCtrl) && state.session.undo()) state.statusMessage = "Undone";
+    if ((keyPressed(GLFW_KEY_Z, kCtrlShift) || keyPressed(GLFW_KEY_Y, kCtrl)) && state.session.redo())
+        state.statusMessage = "Redone";
+    if (keyPressed(GLFW_KEY_S, kCtrl)) saveScene(state);
+    if (keyPressed(GLFW_KEY_S, kCtrlShift))
+        requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, state.session.path());
+    if (keyPressed(GLFW_KEY_O, kCtrl)) requestFileBrowser(state.fileBrowser, FilePurpose::OpenScene, state.session.path());
+    if (keyPressed(GLFW_KEY_N, kCtrl)) guardUnsavedChanges(state, "starting a new scene", newScene);
+    if (keyPressed(GLFW_KEY_Q, kCtrl)) requestQuit(state);
     if (io.WantCaptureKeyboard) return;
-    if (pressed(GLFW_KEY_F)) frameSelected(state);
-    if (pressed(GLFW_KEY_HOME)) resetView(state);
-    if (pressed(GLFW_KEY_P)) toggleProjection(state);
-    if (pressed(GLFW_KEY_F12)) requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
+    if (keyPressed(GLFW_KEY_F)) frameSelected(state);
+    if (keyPressed(GLFW_KEY_HOME)) resetView(state);
+    if (keyPressed(GLFW_KEY_P)) toggleProjection(state);
+    if (keyPressed(GLFW_KEY_F12)) requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
 }
 
 }  // namespace glint

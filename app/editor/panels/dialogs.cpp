@@ -1,12 +1,16 @@
 // Modal dialogs: "unsaved changes" (Save / Don't save / Cancel), errors (file:line from the
 // Diagnostic), the recovery offer at start, the file browser's result, and the help window (F1)
 // listing every shortcut.
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
 #include <imgui.h>
 
 #include "editor/document.h"
+#include "editor/key_events.h"
 #include "editor/panels/panels.h"
 #include "editor/shortcuts.h"
 
@@ -28,7 +32,7 @@ void drawUnsavedPrompt(EditorState& state) {
     ImGui::Text("Save changes to %s before %s?", path.empty() ? "the untitled scene" : path.c_str(),
                 state.actionAfterPromptName.c_str());
     ImGui::Spacing();
-    if (ImGui::Button("Save")) {
+    if (ImGui::Button("Save (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) {
         ImGui::CloseCurrentPopup();
         if (path.empty()) {
             state.continueAfterSaveAs = true;
@@ -38,12 +42,12 @@ void drawUnsavedPrompt(EditorState& state) {
         }
     }
     ImGui::SameLine();
-    if (ImGui::Button("Don't save")) {
+    if (ImGui::Button("Don't save (N)") || takeKeyPress(GLFW_KEY_N)) {
         ImGui::CloseCurrentPopup();
         runActionAfterPrompt(state);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape)) {
+    if (ImGui::Button("Cancel (Esc)") || takeKeyPress(GLFW_KEY_ESCAPE)) {
         ImGui::CloseCurrentPopup();
         state.actionAfterPrompt = nullptr;
         state.pendingOpenPath.clear();
@@ -52,14 +56,17 @@ void drawUnsavedPrompt(EditorState& state) {
 }
 
 void drawErrorModal(EditorState& state) {
-    if (!state.errorMessage.empty() && !ImGui::IsPopupOpen("Error")) ImGui::OpenPopup("Error");
+    if (!state.errorMessage.empty() && !ImGui::IsPopupOpen("Error")) {
+        ImGui::OpenPopup("Error");
+        std::fprintf(stderr, "glint: %s\n", state.errorMessage.c_str());  // the log keeps what the modal says
+    }
     centreNextWindow();
     ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(900, 600));
     if (!ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
     ImGui::TextUnformatted(state.errorMessage.c_str());
     ImGui::PopTextWrapPos();
-    if (ImGui::Button("OK") || ImGui::IsKeyPressed(ImGuiKey_Enter) || ImGui::IsKeyPressed(ImGuiKey_Escape)) {
+    if (ImGui::Button("OK") || takeKeyPress(GLFW_KEY_ENTER) || takeKeyPress(GLFW_KEY_ESCAPE)) {
         state.errorMessage.clear();
         ImGui::CloseCurrentPopup();
     }
@@ -77,7 +84,7 @@ void drawRecoveryOffer(EditorState& state) {
     ImGui::BulletText("%zu objects, %zu lights", work.scene.objects.size(), work.scene.lights.size());
     ImGui::TextDisabled("from %s", state.recoveryOfferPath.c_str());
     ImGui::Spacing();
-    if (ImGui::Button("Recover")) {
+    if (ImGui::Button("Recover (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) {
         state.session.replace(work.scene, work.scenePath, /*dirty=*/true);
         state.selectedObject = 0;
         state.selectedLight = 0;

@@ -5,8 +5,11 @@
 #include <filesystem>
 #include <system_error>
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
+
+#include "editor/key_events.h"
 
 namespace glint {
 namespace {
@@ -147,9 +150,9 @@ std::optional<std::string> drawFileBrowser(FileBrowser& browser) {
     const bool entered = ImGui::InputText("##path", &browser.typedPath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     const bool pressed = ImGui::Button(purposeSaves(browser.purpose) ? "Save" : "Open");
-    if (entered || pressed) chosen = confirm(browser);
+    if (entered || pressed || takeKeyPress(GLFW_KEY_ENTER) || takeKeyPress(GLFW_KEY_KP_ENTER)) chosen = confirm(browser);
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGuiKey_Escape)) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Cancel") || takeKeyPress(GLFW_KEY_ESCAPE)) ImGui::CloseCurrentPopup();
     if (!browser.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", browser.error.c_str());
     if (chosen) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();

@@ -1,0 +1,254 @@
+"""GUI tests of the editor under Xvfb, driven with real input (xdotool) and checked in
+screenshots. One scenario per ctest entry:
+  undo         drag a material slider (the sphere changes), Ctrl+Z (it is back), Ctrl+Shift+Z,
+               add a light and undo it; closing with unsaved changes asks first (N = don't save)
+  save_reopen  edit, add a light, Ctrl+S through the file browser, reopen the file: same picture;
+               Ctrl+S again saves to the same path without asking
+  recovery     edit, wait for autosave, kill -9; the next start offers the work (Enter = recover)
+               and the picture shows the edit
+  corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
+               naming file:line, the work and its undo history untouched
+usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_test_support import XServer, pixel, region_difference, write_png  # noqa: E402
+
+# Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
+# left, material column 360 px on the right, status bar at the bottom).
+VIEWPORT = (340, 40, 910, 760)
+SPHERE_CENTRE = (625, 375)
+BACKGROUND_SPOT = (350, 60)         # dark background inside the viewport, above the floor
+EXPONENT_SLIDER = (1018, 198)        # Blinn-Phong exponent n (64) in the material column
+ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
+
+
+class Editor:
+    def __init__(self, x, glint, output, state_dir, args=(), env=None):
+        self.x = x
+        environment = dict(x.env, GLINT_STATE_DIR=state_dir, GLINT_GUI_FAILURE_DIR=output)
+        environment.update(env or {})
+        self.process = subprocess.Popen([glint, *args], env=environment, cwd=output, stdout=subprocess.PIPE,
+                                        stderr=subprocess.STDOUT, text=True)
+        self.window = x.find_window("Glint")
+        self.log = ""
+
+    def wait_exit(self, timeout=20):
+        code = self.process.wait(timeout=timeout)
+        self.log = self.process.communicate()[0]
+        return code
+
+    def kill(self):
+        if self.process.poll() is None:
+            self.process.kill()
+            self.log = self.process.communicate()[0]
+
+
+def lit_sphere(shot):
+    red = pixel(shot, *SPHERE_CENTRE)
+    return red[0] > 80 and red[0] > red[1] + 30
+
+
+def differs(reference, threshold=1.0):
+    return lambda shot: region_difference(shot, reference, VIEWPORT) > threshold
+
+
+def matches(reference, threshold=0.3):
+    return lambda shot: region_difference(shot, reference, VIEWPORT) < threshold
+
+
+def modal_shown(reference):
+    """ImGui lightens everything behind a modal; the dark background shows it."""
+    return lambda shot: sum(pixel(shot, *BACKGROUND_SPOT)) > sum(pixel(reference, *BACKGROUND_SPOT)) + 60
+
+
+def save(shot, output, name):
+    write_png(shot, os.path.join(output, name + ".png"))
+
+
+def close_window(x, editor):
+    subprocess.run([os.environ["GLINT_X11_CLOSE"], editor.window], env=x.env, check=True)
+
+
+def type_path(x, path):
+    """The file browser's path field has the keyboard focus: replace its text and confirm."""
+    time.sleep(0.5)
+    x.key("ctrl+a")
+    x.type_text(path)
+    x.key("Return")
+
+
+# --- scenarios ----------------------------------------------------------------------------------
+
+def scenario_undo(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        save(base, output, "undo_0_start")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        edited = x.wait_for(differs(base), "the sphere to change after the slider drag")
+        time.sleep(0.5)
+        edited = x.screenshot()
+        save(edited, output, "undo_1_dragged")
+        x.key("ctrl+z")
+        save(x.wait_for(matches(base), "Ctrl+Z to bring the sphere back (one drag = one step)"), output, "undo_2_undone")
+        x.key("ctrl+shift+z")
+        x.wait_for(matches(edited), "Ctrl+Shift+Z to redo the drag")
+        x.click(*ADD_POINT_LIGHT)
+        lit = x.wait_for(differs(edited), "a new point light to change the picture")
+        save(lit, output, "undo_3_light_added")
+        x.key("ctrl+z")
+        x.wait_for(matches(edited), "Ctrl+Z to remove the added light")
+        # Unsaved changes: a close request asks first and the editor stays open.
+        close_window(x, editor)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt")
+        time.sleep(0.5)
+        assert editor.process.poll() is None, "the editor closed without asking about unsaved changes"
+        x.key("n")  # Don't save
+        code = editor.wait_exit()
+        assert code == 0, f"editor exited with {code}"
+        print("ok: drag changed the sphere, undo/redo restored it, added light undone, close asked first")
+    finally:
+        editor.kill()
+
+
+def scenario_save_reopen(x, glint, output, state):
+    path = os.path.join(output, "saved_scene.json")
+    if os.path.exists(path):
+        os.remove(path)
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        x.click(*ADD_POINT_LIGHT)
+        time.sleep(1.0)
+        before_save = x.screenshot()
+        save(before_save, output, "save_1_before")
+        x.key("ctrl+s")  # untitled: the file browser asks for a name
+        type_path(x, path)
+        deadline = time.time() + 20
+        while not os.path.exists(path) and time.time() < deadline:
+            time.sleep(0.2)
+        assert os.path.exists(path), "Ctrl+S did not write the scene"
+        with open(path) as saved:
+            scene = json.load(saved)
+        assert len(scene["lights"]) == 3, f"expected 3 lights in the saved scene, found {len(scene['lights'])}"
+        exponent = scene["materials"][0]["exponent"]
+        assert exponent < 60, f"the dragged exponent was not saved: {exponent}"
+        close_window(x, editor)  # saved: no prompt
+        assert editor.wait_exit() == 0
+    finally:
+        editor.kill()
+
+    editor = Editor(x, glint, output, state, args=[path])
+    try:
+        reopened = x.wait_for(matches(before_save, 0.5), "the reopened scene to look as it did when saved")
+        save(reopened, output, "save_2_reopened")
+        first_write = os.stat(path).st_mtime_ns
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] + 60, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(reopened), "the second drag to show")
+        time.sleep(0.3)
+        x.key("ctrl+s")  # the scene has a path now: no dialog
+        deadline = time.time() + 20
+        while os.stat(path).st_mtime_ns == first_write and time.time() < deadline:
+            time.sleep(0.2)
+        with open(path) as saved:
+            second = json.load(saved)["materials"][0]["exponent"]
+        assert second > exponent, f"Ctrl+S did not save the second edit ({second} vs {exponent})"
+        close_window(x, editor)
+        assert editor.wait_exit() == 0
+        print(f"ok: saved through the file browser (exponent {exponent:.3g}, 3 lights), reopened identical, re-saved {second:.3g}")
+    finally:
+        editor.kill()
+
+
+def scenario_recovery(x, glint, output, state):
+    recovery = os.path.join(state, "recovery.json")
+    editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"})
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        time.sleep(0.5)
+        edited = x.screenshot()
+        deadline = time.time() + 15
+        while not os.path.exists(recovery) and time.time() < deadline:
+            time.sleep(0.2)
+        assert os.path.exists(recovery), "autosave wrote no recovery file"
+        editor.process.send_signal(signal.SIGKILL)
+        editor.process.wait(timeout=10)
+    finally:
+        editor.kill()
+
+    editor = Editor(x, glint, output, state)
+    try:
+        offer = x.wait_for(modal_shown(base), "the offer to recover the unsaved work")
+        save(offer, output, "recovery_1_offer")
+        x.key("Return")  # Recover
+        recovered = x.wait_for(matches(edited, 0.5), "the recovered scene to show the edit")
+        save(recovered, output, "recovery_2_recovered")
+        # Recovered work counts as unsaved: closing asks, and "don't save" leaves no recovery file.
+        close_window(x, editor)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt for recovered work")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        assert not os.path.exists(recovery), "a clean exit must remove the recovery file"
+        print("ok: kill -9 after an edit, the next start offered the work and restored the edit")
+    finally:
+        editor.kill()
+
+
+def scenario_corrupt_open(x, glint, output, state):
+    corrupt = os.path.join(output, "corrupt_scene.json")
+    with open(corrupt, "w") as out:
+        out.write('{\n  "format": "glint-scene",\n  "version": 1,\n  "lights": [{"type": "point", "power": -5}]\n}\n')
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        time.sleep(0.5)
+        edited = x.screenshot()
+        x.key("ctrl+o")
+        type_path(x, corrupt)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt before opening")
+        time.sleep(0.3)
+        x.key("n")  # don't save: open the other scene (which will fail)
+        time.sleep(0.5)
+        error = x.wait_for(modal_shown(edited), "the error dialog")
+        save(error, output, "corrupt_1_error")
+        x.key("Return")  # OK
+        x.wait_for(matches(edited), "the edited scene to stay on screen")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "the undo history to survive the failed open")
+        x.key("ctrl+shift+z")
+        close_window(x, editor)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt (the work is still unsaved)")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        assert "corrupt_scene.json:4:" in editor.log, f"the error should name file:line, log was:\n{editor.log}"
+        print("ok: corrupt scene refused with", [l for l in editor.log.splitlines() if "corrupt_scene" in l][0])
+    finally:
+        editor.kill()
+
+
+def main():
+    glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
+    output = os.path.join(output, scenario)
+    os.makedirs(output, exist_ok=True)
+    os.environ["GLINT_GUI_FAILURE_DIR"] = output
+    state = os.path.join(output, "state")
+    shutil.rmtree(state, ignore_errors=True)
+    with XServer(1280, 800) as x:
+        globals()["scenario_" + scenario](x, glint, output, state)
+
+
+if __name__ == "__main__":
+    main()
