@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The README's two commands: installs what is missing (Debian packages), configures and builds
 # Glint, then either runs the editor (`run`, with any arguments passed on to glint) or the
-# whole test suite (`test`). Idempotent and quick when everything is already there.
+# whole test suite (`test`): the normal build, the headless suite again under AddressSanitizer
+# + UndefinedBehaviorSanitizer, and the fuzz targets on their corpus. Idempotent; quick when
+# everything is already there.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${GLINT_BUILD_DIR:-$root/build}"
@@ -9,13 +11,45 @@ mode=${1:-}
 [[ $mode == run || $mode == test ]] || { echo "usage: $0 run [glint arguments…] | test" >&2; exit 2; }
 shift
 
-"$root/third_party/install-deps.sh"
-if [[ ! -f "$build/build.ninja" ]]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-fi
-cmake --build "$build"
+# configure_and_build DIR [CMAKE ARGS…]: configures once, then builds incrementally.
+configure_and_build() {
+  local dir=$1
+  shift
+  [[ -f "$dir/build.ninja" ]] || cmake -S "$root" -B "$dir" -G Ninja "$@"
+  cmake --build "$dir"
+}
 
-case $mode in
-  run) exec "$build/app/glint" "$@" ;;
-  test) cd "$build" && exec ctest --output-on-failure --timeout 300 ;;
-esac
+"$root/third_party/install-deps.sh"
+configure_and_build "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+[[ $mode == run ]] && exec "$build/app/glint" "$@"
+
+# test: each suite's ctest summary is collected, then one closing line for all of them.
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+suite_failed=0
+run_suite() {  # run_suite NAME DIR [CTEST ARGS…]
+  local name=$1 dir=$2
+  shift 2
+  echo "=== $name ==="
+  (cd "$dir" && ctest --output-on-failure --timeout 300 "$@") 2>&1 | tee "$logs/$name.log" || suite_failed=1
+}
+run_suite tests "$build"
+
+configure_and_build "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Debug -DGLINT_SANITIZE=ON
+ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$root/tests/sanitizer/lsan.supp" \
+UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_suite sanitizers "$root/build-sanitize" -LE gui
+
+CC=clang-14 CXX=clang++-14 configure_and_build "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLINT_FUZZ=ON
+run_suite fuzz "$root/build-fuzz"
+
+total_passed=0 total_failed=0
+for log in "$logs"/*.log; do
+  summary=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1) || true
+  if [[ -z $summary ]]; then suite_failed=1; echo "glint: $(basename "$log" .log) printed no summary"; continue; fi
+  failed=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$summary")
+  total=$(sed -E 's/.* failed out of ([0-9]+).*/\1/' <<<"$summary")
+  total_passed=$((total_passed + total - failed))
+  total_failed=$((total_failed + failed))
+done
+echo "tests: $total_passed passed, $total_failed failed"
+[[ $suite_failed -eq 0 && $total_failed -eq 0 ]]

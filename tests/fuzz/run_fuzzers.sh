@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Runs every fuzz target for a while (default 300 s each) on a copy of its corpus, and copies
+# any crashing input into the checked-in corpus as a regression file.
+# usage: tests/fuzz/run_fuzzers.sh [SECONDS_PER_TARGET]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+seconds=${1:-300}
+build="$root/build-fuzz"
+if [[ ! -f "$build/build.ninja" ]]; then
+  CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -G Ninja -DGLINT_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+fi
+cmake --build "$build"
+status=0
+for corpus in "$root"/tests/fuzz/corpus/*/; do
+  target=$(basename "$corpus")
+  work=$(mktemp -d)
+  cp "$corpus"* "$work"/
+  echo "fuzz_$target: ${seconds} s"
+  if ! (cd "$work" && "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
+          -rss_limit_mb=2048 "$work" >"$work/log" 2>&1); then
+    status=1
+    for crash in "$work"/crash-* "$work"/timeout-* "$work"/leak-*; do
+      [[ -e $crash ]] && cp "$crash" "$corpus/regression-$(basename "$crash")" && echo "  kept $(basename "$crash") in the corpus"
+    done
+    tail -n 30 "$work/log"
+  fi
+  rm -rf "$work"
+done
+exit $status
