@@ -272,6 +272,7 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
     glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
     glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
     glUniform1f(program.uniform("gamma"), display.gamma);
+    glUniform1i(program.uniform("toneMap"), static_cast<int>(display.toneMap));
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

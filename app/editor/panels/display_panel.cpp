@@ -1,4 +1,4 @@
-// The display section: exposure (stops), the transfer function (sRGB or a pure gamma), and the
+// The display section: exposure (stops), tone map (none, Reinhard, ACES filmic), the transfer function (sRGB or a pure gamma), and the
 // background radiance. Each change goes through the edit API.
 #include <imgui.h>
 
@@ -13,6 +13,13 @@ void drawDisplaySection(EditorState& state) {
     bool changed = false;
     changed |= ImGui::SliderFloat("Exposure", &display.exposureStops, -10.0f, 10.0f, "%+.2f EV");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance is multiplied by 2^EV before encoding");
+    int toneMap = static_cast<int>(display.toneMap);
+    if (ImGui::Combo("Tone map", &toneMap, "none (clip)\0Reinhard\0ACES filmic\0")) {
+        display.toneMap = static_cast<ToneMap>(toneMap);
+        changed = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("none: values above 1 clip · Reinhard: x/(1+x) · ACES filmic: Narkowicz's 2015 fit");
     int transfer = display.transfer == Transfer::Srgb ? 0 : 1;
     if (ImGui::Combo("Encoding", &transfer, "sRGB\0gamma\0")) {
         display.transfer = transfer == 0 ? Transfer::Srgb : Transfer::Gamma;

@@ -18,6 +18,7 @@ void drawMaterialColumn(EditorState& state, float top, float height, float windo
 void drawObjectSection(EditorState& state);
 void drawLightsSection(EditorState& state);
 void drawDisplaySection(EditorState& state);
+void drawCameraSection(EditorState& state);
 
 // Modals: unsaved changes, errors, recovery offer; the help window (F1); the file browser.
 void drawDialogs(EditorState& state);

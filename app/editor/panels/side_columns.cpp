@@ -1,5 +1,5 @@
 // The two side columns the viewport shows between: the scene column on the left (lights,
-// display) and the material column on the right (object, material). Both are fixed to the
+// display, camera) and the material column on the right (object, material). Both are fixed to the
 // window edge, resizable by their inner edge and collapsible (title bar arrow or View menu).
 #include <imgui.h>
 
@@ -24,6 +24,7 @@ void drawScenePanel(EditorState& state, float top, float height) {
         pushPanelItemWidth();
         if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) drawLightsSection(state);
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
+        if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCameraSection(state);
         ImGui::PopItemWidth();
     }
     ImGui::End();
