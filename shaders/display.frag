@@ -4,6 +4,7 @@
 
 uniform sampler2D radiance;   // linear float, same size as the output
 uniform ivec2 sourceOffset;   // where the viewport's lower-left pixel reads from
+uniform int pixelScale;       // screen pixels per radiance pixel along each axis (1 = full resolution)
 uniform float exposureScale;  // 2^EV
 uniform int transfer;         // 0: sRGB, 1: gamma
 uniform float gamma;
@@ -22,7 +23,7 @@ vec3 applyToneMap(vec3 exposed) {
 }
 
 void main() {
-    vec3 value = texelFetch(radiance, ivec2(gl_FragCoord.xy) - sourceOffset, 0).rgb;
+    vec3 value = texelFetch(radiance, (ivec2(gl_FragCoord.xy) - sourceOffset) / pixelScale, 0).rgb;
     vec3 exposed = clamp(applyToneMap(max(value * exposureScale, 0.0)), 0.0, 1.0);
     vec3 encoded = transfer == 0
         ? vec3(encodeSrgb(exposed.r), encodeSrgb(exposed.g), encodeSrgb(exposed.b))

@@ -11,7 +11,9 @@
 #include <imgui_impl_opengl3.h>
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <variant>
@@ -110,6 +112,13 @@ void saveScreenshot(EditorState& state, Renderer& renderer) {
     else state.statusMessage = "Screenshot " + state.screenshotPath;
 }
 
+// Downscale factor for previews during a gesture so a frame stays near 33 ms (cost ∝ pixels).
+int previewScale(double fullResolutionMilliseconds) {
+    constexpr double kFrameBudgetMilliseconds = 33.0;
+    if (fullResolutionMilliseconds <= kFrameBudgetMilliseconds) return 1;
+    return std::clamp(static_cast<int>(std::ceil(std::sqrt(fullResolutionMilliseconds / kFrameBudgetMilliseconds))), 2, 4);
+}
+
 double autosaveIntervalSeconds() {
     if (const char* text = std::getenv("GLINT_AUTOSAVE_SECONDS")) {
         const double seconds = std::atof(text);
@@ -138,6 +147,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     if (!scenePath.empty()) noteRecentFile(state.settings, state.session.path());
     startRecovery(state);
     const double autosaveInterval = autosaveIntervalSeconds();
+    // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
+    const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -152,6 +163,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
 
     glm::ivec2 renderedSize{0, 0};
     std::uint64_t renderedRevision = ~0ull;
+    int renderedScale = 1;
+    double fullResolutionMilliseconds = 0.0;
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     while (!state.quitNow) {
@@ -159,6 +172,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         if (framesToDraw > 0) glfwPollEvents();
         else if (secondsToAutosave < 1e8) glfwWaitEventsTimeout(std::max(secondsToAutosave, 0.01));
         else glfwWaitEvents();
+        const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
         if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
         if (gCloseRequested) {
             gCloseRequested = false;
@@ -190,7 +204,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         viewport.height = std::max(1.0f, columnHeight);
         const bool cameraDrag = handleViewportInput(state, viewport);
         // A slider, colour picker or camera drag is one undo step, closed when it ends.
-        state.session.settle(ImGui::IsAnyItemActive() || cameraDrag);
+        const bool gesture = ImGui::IsAnyItemActive() || cameraDrag;
+        state.session.settle(gesture);
         ImGui::Render();
 
         // Window (ImGui) pixels to framebuffer pixels (HiDPI).
@@ -199,16 +214,26 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
                                         std::max(1, static_cast<int>(viewport.height * pixelScale))};
         const glm::ivec2 viewportLowerLeft{static_cast<int>(viewport.x * pixelScale),
                                            static_cast<int>(statusHeight * pixelScale)};
-        if (viewportPixels != renderedSize || state.session.revision() != renderedRevision) {
+        // While a gesture changes the scene, a frame that would take longer than 33 ms is drawn
+        // at reduced resolution; the full-resolution frame follows when the gesture ends.
+        const int wantedScale = gesture ? previewScale(fullResolutionMilliseconds) : 1;
+        const bool changed = state.session.revision() != renderedRevision;
+        const bool renderedThisFrame = viewportPixels != renderedSize || changed || (!gesture && renderedScale != 1);
+        if (renderedThisFrame) {
+            const int scale = changed ? wantedScale : 1;
+            const glm::ivec2 renderPixels = (viewportPixels + scale - 1) / scale;
             const auto start = std::chrono::steady_clock::now();
-            if (Status status = renderer.renderRadiance(state.session.scene(), viewportPixels.x, viewportPixels.y); !status)
+            if (Status status = renderer.renderRadiance(state.session.scene(), renderPixels.x, renderPixels.y); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
             state.lastRenderMilliseconds =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            if (scale == 1) fullResolutionMilliseconds = state.lastRenderMilliseconds;
+            state.previewScale = scale;
             state.triangleCount = triangleCount(state.session.scene());
             renderedSize = viewportPixels;
             renderedRevision = state.session.revision();
+            renderedScale = scale;
             framesToDraw = std::max(framesToDraw, 2);
         }
         if (state.screenshotRequested) {
@@ -219,10 +244,16 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        renderer.displayToScreen(state.session.scene().display, viewportLowerLeft);
+        renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         platform->present();
+        if (logFrames && renderedThisFrame) {
+            glFinish();
+            const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+            std::fprintf(stderr, "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total);
+        }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         clearKeyPresses();
         framesToDraw = gEventSeen ? 3 : framesToDraw - 1;

@@ -261,7 +261,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
 namespace {
 
 void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint vertexArray,
-                    const DisplaySettings& display, glm::ivec2 sourceOffset) {
+                    const DisplaySettings& display, glm::ivec2 sourceOffset, int pixelScale) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(program.id());
@@ -269,6 +269,7 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
     glBindTexture(GL_TEXTURE_2D, radianceTexture);
     glUniform1i(program.uniform("radiance"), 0);
     glUniform2i(program.uniform("sourceOffset"), sourceOffset.x, sourceOffset.y);
+    glUniform1i(program.uniform("pixelScale"), pixelScale);
     glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
     glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
     glUniform1f(program.uniform("gamma"), display.gamma);
@@ -285,14 +286,14 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     displayTarget_.ensure(radianceTarget_.width(), radianceTarget_.height(), 1);
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
-    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0});
+    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
 }
 
-void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft) {
+void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
     platform_.makeCurrent();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width(), radianceTarget_.height());
-    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft);
+    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width() * pixelScale, radianceTarget_.height() * pixelScale);
+    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
 }
 
 // --- readback -------------------------------------------------------------------------------

@@ -30,7 +30,9 @@ public:
     // Display pass into the offscreen 8-bit target (same size as the last radiance render).
     void displayOffscreen(const DisplaySettings& display);
     // Display pass into the default framebuffer, at the given lower-left corner.
-    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft);
+    // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
+    // reduced-resolution preview while dragging).
+    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1);
 
     RadianceImage readRadiance() const;  // top row first
     DisplayImage readDisplay() const;    // top row first

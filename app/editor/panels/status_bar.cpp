@@ -17,7 +17,8 @@ float drawStatusBar(EditorState& state, float top, float width) {
     ImGui::Begin("##status", nullptr, flags);
     ImGui::Text("%s%s", state.session.dirty() ? "● " : "", state.session.path().empty() ? "untitled" : state.session.path().c_str());
     ImGui::SameLine(0, 24);
-    ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
+    if (state.previewScale > 1) ImGui::Text("frame %.1f ms (preview 1/%d)", state.lastRenderMilliseconds, state.previewScale);
+    else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
     ImGui::SameLine(0, 24);
     ImGui::Text("%d triangles", state.triangleCount);
     ImGui::SameLine(0, 24);
