@@ -6,6 +6,7 @@ screenshots. One scenario per ctest entry:
                Ctrl+S again saves to the same path without asking
   recovery     edit, wait for autosave, kill -9; the next start offers the work (Enter = recover)
                and the picture shows the edit
+  screenshot   F12 through the file browser writes the viewport as PNG and as EXR
   corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
                naming file:line, the work and its undo history untouched
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
@@ -27,6 +28,7 @@ SPHERE_CENTRE = (625, 375)
 BACKGROUND_SPOT = (350, 60)         # dark background inside the viewport, above the floor
 EXPONENT_SLIDER = (1018, 198)        # Blinn-Phong exponent n (64) in the material column
 ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
+VIEWPORT_PIXELS = (590, 752)         # 1280 − 330 − 360 wide, between menu bar and status bar
 
 
 class Editor:
@@ -235,6 +237,36 @@ def scenario_corrupt_open(x, glint, output, state):
         assert editor.wait_exit() == 0
         assert "corrupt_scene.json:4:" in editor.log, f"the error should name file:line, log was:\n{editor.log}"
         print("ok: corrupt scene refused with", [l for l in editor.log.splitlines() if "corrupt_scene" in l][0])
+    finally:
+        editor.kill()
+
+
+def scenario_screenshot(x, glint, output, state):
+    png, exr = os.path.join(output, "viewport.png"), os.path.join(output, "viewport.exr")
+    for path in (png, exr):
+        if os.path.exists(path):
+            os.remove(path)
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        for path in (png, exr):
+            x.key("F12")
+            type_path(x, path)
+            deadline = time.time() + 20
+            while not os.path.exists(path) and time.time() < deadline:
+                time.sleep(0.2)
+            assert os.path.exists(path), f"F12 wrote no {path}"
+            x.wait_for(lambda shot: not modal_shown(base)(shot), "the file browser to close")
+        with open(png, "rb") as image:
+            header = image.read(24)
+        assert header[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+        width, height = int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+        assert (width, height) == (VIEWPORT_PIXELS), f"the screenshot should be the viewport, got {width}x{height}"
+        with open(exr, "rb") as image:
+            assert image.read(4) == b"\x76\x2f\x31\x01", "not an OpenEXR file"
+        close_window(x, editor)  # nothing changed: no prompt
+        assert editor.wait_exit() == 0
+        print(f"ok: F12 wrote the viewport as a {width}x{height} PNG and as an EXR")
     finally:
         editor.kill()
 
