@@ -2,7 +2,7 @@
 // status bar and viewport, redraw-on-change, undo steps closed when a gesture ends, autosave,
 // screenshots. Panels live in panels/, shortcuts in shortcuts.cpp, camera input in
 // camera_actions.cpp, file actions in document.cpp.
-// Sections: window events · fonts and scale · viewport · screenshot · loop.
+// Sections: window events · fonts and scale · screenshot · loop.
 #include "editor/editor.h"
 
 #include <GLFW/glfw3.h>
@@ -16,7 +16,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <variant>
 
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
@@ -24,7 +23,6 @@
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
 #include "editor/shortcuts.h"
-#include "geometry/mesh.h"
 #include "gl/renderer.h"
 
 namespace glint {
@@ -88,18 +86,6 @@ void applyUiScale(float scale, const ImGuiStyle& baseStyle) {
     ImGui::GetStyle() = baseStyle;
     ImGui::GetStyle().ScaleAllSizes(scale);
     ImGui::GetIO().FontGlobalScale = scale;
-}
-
-// --- viewport -------------------------------------------------------------------------------
-
-int triangleCount(const Scene& scene) {
-    int count = 0;
-    for (const SceneObject& object : scene.objects) {
-        if (const auto* sphere = std::get_if<SphereShape>(&object.shape))
-            count += static_cast<int>(makeUvSphere(sphere->center, sphere->radius, sphere->segments, sphere->rings).triangleCount());
-        else count += 2;
-    }
-    return count;
 }
 
 // --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
@@ -230,7 +216,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             if (scale == 1) fullResolutionMilliseconds = state.lastRenderMilliseconds;
             state.previewScale = scale;
-            state.triangleCount = triangleCount(state.session.scene());
+            state.triangleCount = renderer.trianglesDrawn();
             renderedSize = viewportPixels;
             renderedRevision = state.session.revision();
             renderedScale = scale;

@@ -33,7 +33,7 @@ struct EditorState {
     // Figures for the status bar.
     double lastRenderMilliseconds = 0.0;
     int previewScale = 1;  // >1 while a drag renders at reduced resolution
-    int triangleCount = 0;
+    long long triangleCount = 0;  // submitted by the last render
     std::string rendererDescription;
     std::string statusMessage;  // one line ("Saved …")
 

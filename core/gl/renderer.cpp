@@ -221,6 +221,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     }
 
     Status result = success();
+    trianglesDrawn_ = 0;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
@@ -244,6 +245,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const GpuMesh& mesh = meshFor(i, object.shape);
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        trianglesDrawn_ += mesh.indexCount / 3;
     }
     glBindVertexArray(0);
     if (samples > 1) {

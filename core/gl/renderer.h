@@ -43,6 +43,8 @@ public:
     // The last shader error (empty when all compiled), for the UI.
     const std::string& shaderError() const { return shaderError_; }
     const std::string& description() const { return description_; }
+    // Triangles submitted by the last renderRadiance (proxy meshes included).
+    long long trianglesDrawn() const { return trianglesDrawn_; }
     const ShaderSources& sources() const { return sources_; }
 
 private:
@@ -75,6 +77,7 @@ private:
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
+    long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};
     RenderTarget displayTarget_{GL_RGBA8, false};

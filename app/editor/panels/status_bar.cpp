@@ -20,7 +20,7 @@ float drawStatusBar(EditorState& state, float top, float width) {
     if (state.previewScale > 1) ImGui::Text("frame %.1f ms (preview 1/%d)", state.lastRenderMilliseconds, state.previewScale);
     else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
     ImGui::SameLine(0, 24);
-    ImGui::Text("%d triangles", state.triangleCount);
+    ImGui::Text("%lld triangles", state.triangleCount);
     ImGui::SameLine(0, 24);
     ImGui::TextDisabled("%s", state.rendererDescription.c_str());
     if (!state.statusMessage.empty()) {
