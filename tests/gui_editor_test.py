@@ -5,7 +5,8 @@ screenshots. One scenario per ctest entry:
   save_reopen  edit, add a light, Ctrl+S through the file browser, reopen the file: same picture;
                Ctrl+S again saves to the same path without asking
   recovery     edit, wait for autosave, kill -9; the next start offers the work (Enter = recover)
-               and the picture shows the edit
+               and the picture shows the edit; Ctrl+Q then asks about the unsaved work
+  light_handle drag the key light's handle in the viewport (the lighting turns), undo, redo
   screenshot   F12 through the file browser writes the viewport as PNG and as EXR
   corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
                naming file:line, the work and its undo history untouched
@@ -94,16 +95,16 @@ def scenario_undo(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "undo_0_start")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
-        edited = x.wait_for(differs(base), "the sphere to change after the slider drag")
-        time.sleep(0.5)
-        edited = x.screenshot()
+        x.wait_for(differs(base), "the sphere to change after the slider drag")
+        edited = x.wait_stable(VIEWPORT)
         save(edited, output, "undo_1_dragged")
         x.key("ctrl+z")
         save(x.wait_for(matches(base), "Ctrl+Z to bring the sphere back (one drag = one step)"), output, "undo_2_undone")
         x.key("ctrl+shift+z")
         x.wait_for(matches(edited), "Ctrl+Shift+Z to redo the drag")
         x.click(*ADD_POINT_LIGHT)
-        lit = x.wait_for(differs(edited), "a new point light to change the picture")
+        x.wait_for(differs(edited), "a new point light to change the picture")
+        lit = x.wait_stable(VIEWPORT)
         save(lit, output, "undo_3_light_added")
         x.key("ctrl+z")
         x.wait_for(matches(edited), "Ctrl+Z to remove the added light")
@@ -130,8 +131,7 @@ def scenario_save_reopen(x, glint, output, state):
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
         x.click(*ADD_POINT_LIGHT)
-        time.sleep(1.0)
-        before_save = x.screenshot()
+        before_save = x.wait_stable(VIEWPORT)
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name
         type_path(x, path)
@@ -178,8 +178,7 @@ def scenario_recovery(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
-        time.sleep(0.5)
-        edited = x.screenshot()
+        edited = x.wait_stable(VIEWPORT)
         deadline = time.time() + 15
         while not os.path.exists(recovery) and time.time() < deadline:
             time.sleep(0.2)
@@ -196,8 +195,8 @@ def scenario_recovery(x, glint, output, state):
         x.key("Return")  # Recover
         recovered = x.wait_for(matches(edited, 0.5), "the recovered scene to show the edit")
         save(recovered, output, "recovery_2_recovered")
-        # Recovered work counts as unsaved: closing asks, and "don't save" leaves no recovery file.
-        close_window(x, editor)
+        # Recovered work counts as unsaved: Ctrl+Q asks, and "don't save" leaves no recovery file.
+        x.key("ctrl+q")
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt for recovered work")
         x.key("n")
         assert editor.wait_exit() == 0
@@ -216,8 +215,7 @@ def scenario_corrupt_open(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
-        time.sleep(0.5)
-        edited = x.screenshot()
+        edited = x.wait_stable(VIEWPORT)
         x.key("ctrl+o")
         type_path(x, corrupt)
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt before opening")
@@ -267,6 +265,40 @@ def scenario_screenshot(x, glint, output, state):
         close_window(x, editor)  # nothing changed: no prompt
         assert editor.wait_exit() == 0
         print(f"ok: F12 wrote the viewport as a {width}x{height} PNG and as an EXR")
+    finally:
+        editor.kill()
+
+
+def find_handle(shot):
+    """The centroid of the light handles' yellow pixels (dot and stroke) in the viewport, or None."""
+    hits = [(x_, y_) for y_ in range(VIEWPORT[1], VIEWPORT[3], 2) for x_ in range(VIEWPORT[0], VIEWPORT[2], 2)
+            if pixel(shot, x_, y_) == (255, 220, 90)]
+    if not hits:
+        return None
+    return sum(h[0] for h in hits) // len(hits), sum(h[1] for h in hits) // len(hits)
+
+
+def scenario_light_handle(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        handle = find_handle(base)
+        assert handle, "no light handle drawn in the viewport"
+        x.drag(handle, (handle[0] - 250, handle[1] + 40))
+        x.wait_for(differs(base), "dragging the key light's handle to relight the sphere")
+        turned = x.wait_stable(VIEWPORT)  # the full-resolution frame after the drag's previews
+        save(turned, output, "handle_1_turned")
+        moved_to = find_handle(turned)
+        assert moved_to and abs(moved_to[0] - (handle[0] - 250)) < 25, f"the handle should follow the mouse: {handle} -> {moved_to}"
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to turn the light back (one drag = one step)")
+        x.key("ctrl+shift+z")
+        x.wait_for(matches(turned), "Ctrl+Shift+Z to redo the turn")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z again")
+        close_window(x, editor)  # back at the opened state: nothing to save, no prompt
+        assert editor.wait_exit() == 0
+        print(f"ok: handle at {handle} dragged to {moved_to}, undone and redone")
     finally:
         editor.kill()
 

@@ -91,6 +91,18 @@ class XServer:
             write_png(shot, os.path.join(os.environ.get("GLINT_GUI_FAILURE_DIR", "."), "failure.png"))
         raise AssertionError(f"timed out after {timeout} s waiting for {what}")
 
+    def wait_stable(self, box, timeout=20.0, interval=0.3):
+        """Waits until two screenshots in a row agree over box (the application finished drawing)."""
+        deadline = time.time() + timeout
+        previous = self.screenshot()
+        while time.time() < deadline:
+            time.sleep(interval)
+            shot = self.screenshot()
+            if region_difference(shot, previous, box) == 0:
+                return shot
+            previous = shot
+        raise AssertionError(f"the screen did not settle within {timeout} s")
+
     def screenshot(self, window="root"):
         """Returns (width, height, pixels) with pixels a bytes object of RGB triples."""
         target = ["-root"] if window == "root" else ["-id", window]

@@ -21,6 +21,7 @@
 #include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/key_events.h"
+#include "editor/light_handles.h"
 #include "editor/panels/panels.h"
 #include "editor/shortcuts.h"
 #include "gl/renderer.h"
@@ -188,9 +189,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         viewport.y = menuHeight;
         viewport.width = std::max(1.0f, windowSize.x - viewport.x - (state.showRightPanel ? state.rightPanelWidth : 0.0f));
         viewport.height = std::max(1.0f, columnHeight);
-        const bool cameraDrag = handleViewportInput(state, viewport);
-        // A slider, colour picker or camera drag is one undo step, closed when it ends.
-        const bool gesture = ImGui::IsAnyItemActive() || cameraDrag;
+        const bool handleDrag = handleLightHandles(state, viewport);
+        const bool cameraDrag = !handleDrag && handleViewportInput(state, viewport);
+        // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
+        const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);
         ImGui::Render();
 
