@@ -92,8 +92,10 @@ TEST(EditSession, DirtyFollowsTheSavedStateThroughUndoAndRedo) {
     EditSession session;
     session.change("A").lights[0].irradiance = 1.0f;
     session.settle(false);
+    const auto settledBeforeSave = session.settledRevision();
     session.markSaved("/tmp/a.json");
     EXPECT_FALSE(session.dirty());
+    EXPECT_GT(session.settledRevision(), settledBeforeSave) << "autosave must notice the save";
     EXPECT_EQ(session.path(), "/tmp/a.json");
     session.undo();
     EXPECT_TRUE(session.dirty());

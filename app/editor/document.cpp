@@ -152,9 +152,11 @@ double autosave(EditorState& state, double nowSeconds, double autosaveIntervalSe
         Status written = ensureParentDirectory(path);
         if (written) written = writeFileAtomically(path, recoveryDocument(session.scene(), session.path()));
         if (!written) state.statusMessage = "Autosave failed: " + written.error().format();
-    } else {
+        else state.wroteRecovery = true;
+    } else if (state.wroteRecovery) {
         std::error_code error;
         std::filesystem::remove(path, error);  // back at the saved state: nothing to recover
+        state.wroteRecovery = false;
     }
     state.autosavedRevision = session.settledRevision();
     state.lastAutosaveSeconds = nowSeconds;
@@ -163,7 +165,9 @@ double autosave(EditorState& state, double nowSeconds, double autosaveIntervalSe
 
 void finishRecovery(EditorState& state) {
     uninstallCrashGuard();
-    if (!state.recoveryOffer.empty()) return;  // the user never answered: keep the file
+    // Only a file this editor wrote goes: one the user never answered, or one that could not
+    // be read, stays for the next start or for inspection.
+    if (!state.wroteRecovery) return;
     std::error_code error;
     std::filesystem::remove(recoveryFilePath(), error);
 }

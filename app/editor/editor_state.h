@@ -56,6 +56,7 @@ struct EditorState {
     std::uint64_t autosavedRevision = 0;
     std::uint64_t crashCopyRevision = 0;
     double lastAutosaveSeconds = -1e9;  // glfwGetTime() of the last recovery write
+    bool wroteRecovery = false;         // the recovery file on disk is this editor's
 };
 
 }  // namespace glint

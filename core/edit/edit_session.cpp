@@ -64,6 +64,7 @@ void EditSession::markSaved(std::string path) {
     settle(false);
     path_ = std::move(path);
     savedStep_ = currentStep();
+    ++settledRevision_;  // dirty changed: autosave drops the recovery file, the crash copy empties
 }
 
 void EditSession::replace(Scene scene, std::string path, bool dirty) {

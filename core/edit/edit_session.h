@@ -49,8 +49,8 @@ public:
 
     // Grows on every change, undo, redo and replace: the renderer redraws when it moves.
     std::uint64_t revision() const { return revision_; }
-    // Grows each time a step is recorded, undone or redone (not during a gesture): autosave
-    // and the crash copy follow it.
+    // Grows each time a step is recorded, undone or redone, and on save and replace (not during
+    // a gesture): autosave and the crash copy follow it.
     std::uint64_t settledRevision() const { return settledRevision_; }
 
 private:
