@@ -1,13 +1,15 @@
 // The editor's document actions without a window: opening scenes and materials (also by drag and
 // drop), refusing corrupt files while keeping the work, the unsaved-changes guard, recent files
-// kept between runs, and autosave writing and removing the recovery file.
+// kept between runs, autosave writing and removing the recovery file, camera actions as edits.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "edit/recovery.h"
+#include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/settings.h"
 #include "scene/scene_json.h"
@@ -129,6 +131,29 @@ TEST_F(EditorDocument, AutosaveWritesRecoveryWhileDirtyAndRemovesItWhenClean) {
     ASSERT_TRUE(saveSceneTo(state, directory_ + "/saved.json"));
     autosave(state, 200.0, interval);
     EXPECT_FALSE(std::filesystem::exists(recoveryFilePath()));
+}
+
+TEST_F(EditorDocument, CameraActionsAreUndoableEdits) {
+    EditorState state;
+    const Camera original = state.session.scene().camera;
+    state.selectedObject = 0;  // the unit sphere at the origin
+    frameSelected(state);
+    const Camera framed = state.session.scene().camera;
+    EXPECT_NEAR(glm::length(framed.target), 0.0f, 1e-5f);
+    // The bounding sphere fills the vertical field of view with 10 % margin: d = 1.1 r / sin(fov/2).
+    EXPECT_NEAR(glm::length(framed.position - framed.target), 1.1f / std::sin(glm::radians(20.0f)), 1e-3f);
+    toggleProjection(state);
+    const Camera& orthographic = state.session.scene().camera;
+    EXPECT_EQ(orthographic.projection, Projection::Orthographic);
+    // Same apparent size at the target: h = 2 d tan(fov/2).
+    EXPECT_NEAR(orthographic.orthoHeight, 2.0f * glm::length(framed.position - framed.target) * std::tan(glm::radians(20.0f)), 1e-3f);
+    EXPECT_EQ(state.session.undoLabel(), "Switch projection");
+    ASSERT_TRUE(state.session.undo());
+    ASSERT_TRUE(state.session.undo());
+    EXPECT_EQ(state.session.scene().camera.position, original.position);
+    EXPECT_FALSE(state.session.dirty());
+    resetView(state);
+    EXPECT_EQ(state.session.scene().camera.position, defaultScene().camera.position);
 }
 
 }  // namespace
