@@ -8,6 +8,8 @@ screenshots. One scenario per ctest entry:
                and the picture shows the edit; Ctrl+Q then asks about the unsaved work
   light_handle drag the key light's handle in the viewport (the lighting turns), undo, redo
   screenshot   F12 through the file browser writes the viewport as PNG and as EXR
+  crash_signal SIGSEGV right after an edit (autosave 30 s away): the crash guard's copy is
+               offered on the next start and restores the edit
   corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
                naming file:line, the work and its undo history untouched
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
@@ -202,6 +204,40 @@ def scenario_recovery(x, glint, output, state):
         assert editor.wait_exit() == 0
         assert not os.path.exists(recovery), "a clean exit must remove the recovery file"
         print("ok: kill -9 after an edit, the next start offered the work and restored the edit")
+    finally:
+        editor.kill()
+
+
+def scenario_crash_signal(x, glint, output, state):
+    """SIGSEGV right after an edit, with autosave far off: the crash guard writes the copy."""
+    recovery = os.path.join(state, "recovery.json")
+    editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"})
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        time.sleep(1.0)  # past the first autosave check (a clean scene writes nothing)
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        edited = x.wait_stable(VIEWPORT)
+        assert not os.path.exists(recovery), "autosave should not have run yet (30 s interval)"
+        editor.process.send_signal(signal.SIGSEGV)
+        code = editor.process.wait(timeout=10)
+        assert code == -signal.SIGSEGV, f"the editor should still die of SIGSEGV, exit status {code}"
+        assert os.path.exists(recovery), "the crash guard wrote no recovery file"
+        with open(recovery) as saved:
+            exponent = json.load(saved)["scene"]["materials"][0]["exponent"]
+        assert exponent < 60, f"the recovery file lacks the edit (exponent {exponent})"
+    finally:
+        editor.kill()
+    editor = Editor(x, glint, output, state)
+    try:
+        x.wait_for(modal_shown(base), "the offer to recover")
+        x.key("Return")
+        x.wait_for(matches(edited, 0.5), "the recovered edit")
+        x.key("ctrl+q")
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        print(f"ok: SIGSEGV after an edit left a recovery file with exponent {exponent:.3g}, recovered on restart")
     finally:
         editor.kill()
 

@@ -123,6 +123,9 @@ void requestQuit(EditorState& state) {
 
 void startRecovery(EditorState& state) {
     const std::string path = recoveryFilePath();
+    // The crash handler cannot create directories: the state directory must exist beforehand.
+    if (Status created = ensureParentDirectory(path); !created)
+        state.statusMessage = "No crash recovery: " + created.error().format();
     installCrashGuard(path);
     std::error_code error;
     if (!std::filesystem::exists(path, error)) return;

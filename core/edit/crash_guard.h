@@ -9,7 +9,8 @@
 
 namespace glint {
 
-// Installs the handlers; `recoveryPath` is copied into a fixed buffer now.
+// Installs the handlers; `recoveryPath` is copied into a fixed buffer now. Its directory must
+// exist already (the handler only opens, writes and renames).
 void installCrashGuard(const std::string& recoveryPath);
 // Publishes the text the handler would write; empty text means "nothing to save".
 void publishCrashCopy(const std::string& text);
