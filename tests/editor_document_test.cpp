@@ -133,6 +133,17 @@ TEST_F(EditorDocument, AutosaveWritesRecoveryWhileDirtyAndRemovesItWhenClean) {
     EXPECT_FALSE(std::filesystem::exists(recoveryFilePath()));
 }
 
+TEST_F(EditorDocument, UiScaleIsKeptBetweenRunsAndNonsenseIgnored) {
+    Settings settings;
+    settings.uiScale = 1.75f;
+    saveSettings(settings);
+    EXPECT_FLOAT_EQ(loadSettings().uiScale, 1.75f);
+    std::ofstream(std::string(std::getenv("GLINT_STATE_DIR")) + "/settings.json") << R"({"ui_scale": 40, "recent_files": [3]})";
+    const Settings fallback = loadSettings();
+    EXPECT_FLOAT_EQ(fallback.uiScale, 1.0f);
+    EXPECT_TRUE(fallback.recentFiles.empty());
+}
+
 TEST_F(EditorDocument, CameraActionsAreUndoableEdits) {
     EditorState state;
     const Camera original = state.session.scene().camera;

@@ -7,6 +7,8 @@ screenshots. One scenario per ctest entry:
   recovery     edit, wait for autosave, kill -9; the next start offers the work (Enter = recover)
                and the picture shows the edit; Ctrl+Q then asks about the unsaved work
   light_handle drag the key light's handle in the viewport (the lighting turns), undo, redo
+  typed_values Ctrl+click a slider and type: a value outside the valid range is refused with a
+               message; one past the slider's end but valid is kept
   screenshot   F12 through the file browser writes the viewport as PNG and as EXR
   crash_signal SIGSEGV right after an edit (autosave 30 s away): the crash guard's copy is
                offered on the next start and restores the edit
@@ -238,6 +240,53 @@ def scenario_crash_signal(x, glint, output, state):
         x.key("n")
         assert editor.wait_exit() == 0
         print(f"ok: SIGSEGV after an edit left a recovery file with exponent {exponent:.3g}, recovered on restart")
+    finally:
+        editor.kill()
+
+
+MATERIAL_COLUMN = (925, 40, 1275, 400)
+
+
+def refusal_shown(shot):
+    """The material panel's refusal message is orange text (255, 153, 76) under the widgets."""
+    return any(abs(r - 255) < 3 and abs(g - 153) < 3 and abs(b - 76) < 3
+               for r, g, b in (pixel(shot, x_, y_) for y_ in range(MATERIAL_COLUMN[1], MATERIAL_COLUMN[3])
+                               for x_ in range(MATERIAL_COLUMN[0], MATERIAL_COLUMN[2], 2)))
+
+
+def type_into_slider(x, where, text):
+    """Ctrl+click turns an ImGui slider into a text field (its text selected); type and confirm."""
+    x.run("xdotool", "mousemove", "--sync", str(where[0]), str(where[1]))
+    x.run("xdotool", "keydown", "ctrl")
+    time.sleep(0.15)
+    x.run("xdotool", "click", "1")
+    time.sleep(0.15)
+    x.run("xdotool", "keyup", "ctrl")
+    time.sleep(0.3)
+    x.key("ctrl+a")
+    x.type_text(text)
+    x.key("Return")
+
+
+def scenario_typed_values(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        assert not refusal_shown(base)
+        type_into_slider(x, EXPONENT_SLIDER, "-5")
+        refused = x.wait_for(refusal_shown, "a message refusing exponent -5")
+        save(refused, output, "typed_1_refused")
+        assert region_difference(refused, base, VIEWPORT) < 0.3, "a refused value must not change the sphere"
+        type_into_slider(x, EXPONENT_SLIDER, "20000")  # past the slider's 10000, inside the valid range
+        x.wait_for(differs(base), "exponent 20000 (beyond the slider) to be kept")
+        kept = x.wait_stable(VIEWPORT)
+        assert not refusal_shown(kept), "the message should go once a valid value is typed"
+        save(kept, output, "typed_2_kept")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to undo the typed value")
+        close_window(x, editor)
+        assert editor.wait_exit() == 0
+        print("ok: -5 refused with a message, 20000 kept beyond the slider, undone")
     finally:
         editor.kill()
 

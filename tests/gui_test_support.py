@@ -76,7 +76,7 @@ class XServer:
             time.sleep(0.05)
 
     def type_text(self, text):
-        self.run("xdotool", "type", "--delay", "20", text)
+        self.run("xdotool", "type", "--delay", "20", "--", text)
 
     def wait_for(self, condition, what, timeout=20.0, interval=0.25):
         """Polls screenshots until condition(shot) is true; returns the shot, or raises naming `what`."""

@@ -37,7 +37,9 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
                     *value = edited, changed = true;
                     refusal.clear();
                 } else {
-                    refusal = std::string(spec.label) + ": " + std::to_string(edited) + " refused; it must be " + formatRange(spec);
+                    char typed[32];
+                    std::snprintf(typed, sizeof typed, "%g", edited);
+                    refusal = std::string(spec.label) + ": " + typed + " refused; it must be " + formatRange(spec);
                 }
             }
             break;
