@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
@@ -106,6 +107,13 @@ int previewScale(double fullResolutionMilliseconds) {
     return std::clamp(static_cast<int>(std::ceil(std::sqrt(fullResolutionMilliseconds / kFrameBudgetMilliseconds))), 2, 4);
 }
 
+// "Glint — name" with a dot while there are unsaved changes.
+std::string windowTitle(const EditorState& state) {
+    const std::string& path = state.session.path();
+    const std::string name = path.empty() ? "untitled" : std::filesystem::path(path).filename().string();
+    return "Glint — " + name + (state.session.dirty() ? " ●" : "");
+}
+
 double autosaveIntervalSeconds() {
     if (const char* text = std::getenv("GLINT_AUTOSAVE_SECONDS")) {
         const double seconds = std::atof(text);
@@ -151,6 +159,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     glm::ivec2 renderedSize{0, 0};
     std::uint64_t renderedRevision = ~0ull;
     int renderedScale = 1;
+    std::string shownTitle;
     double fullResolutionMilliseconds = 0.0;
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
@@ -243,6 +252,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
                          viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
+        if (const std::string title = windowTitle(state); title != shownTitle) {
+            glfwSetWindowTitle(window, title.c_str());
+            shownTitle = title;
+        }
         clearKeyPresses();
         framesToDraw = gEventSeen ? 3 : framesToDraw - 1;
     }
