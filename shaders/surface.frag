@@ -1,20 +1,19 @@
 #version 410 core
 // Surface fragment shader: finds the exact surface point under the pixel (analytic sphere, or
-// the interpolated point of a planar mesh), then sums f_r · E⊥ · cos θ over the lights.
+// the interpolated point of a planar mesh), then shades it (common/shading.glsl): the lights,
+// the ambient light and the traced delta lobes of mirror and glass.
 // generated/material.glsl is made per model from its parameter table (MaterialParams,
 // loadMaterialParams(), the model's GLSL twin and GLINT_EVAL_BRDF); the prelude defines
 // GLINT_MSAA_SAMPLES when rendering multisampled.
 #include "common/uniforms.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
+#include "common/background.glsl"
+#include "common/shape.glsl"
+#include "common/specular_transport.glsl"
 #include "generated/material.glsl"
 #include "common/shading.glsl"
 
-const int SHAPE_MESH = 0;
-const int SHAPE_SPHERE = 1;
-
-uniform int shapeKind;
-uniform vec4 sphere;  // xyz: centre, w: radius
 #ifdef GLINT_MSAA_SAMPLES
 uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the pixel, [0,1)²
 #endif
@@ -22,19 +21,6 @@ uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the 
 in vec3 worldPosition;
 in vec3 worldNormal;
 out vec4 outRadiance;
-
-// Nearest t > 0 with |o + t·d − c| = r, or -1.
-float intersectSphere(Ray ray) {
-    vec3 offset = ray.origin - sphere.xyz;
-    float b = dot(offset, ray.direction);
-    float c = dot(offset, offset) - sphere.w * sphere.w;
-    float discriminant = b * b - c;
-    if (discriminant < 0.0) return -1.0;
-    float root = sqrt(discriminant);
-    if (-b - root > 0.0) return -b - root;
-    if (-b + root > 0.0) return -b + root;
-    return -1.0;
-}
 
 void main() {
     Ray ray = primaryRay(gl_FragCoord.xy);

@@ -49,6 +49,12 @@ scene nan '{"type": "directional", "irradiance": NaN}'
 expect_error nan "nan\.json:4:[0-9]+: invalid JSON" -- render "$out/nan.json" -o "$out/x.png"
 scene unknown_type '{"type": "laser"}'
 expect_error unknown_light_type "unknown_type\.json:4:[0-9]+: .*unknown value 'laser'" -- render "$out/unknown_type.json" -o "$out/x.png"
+scene wide_cone '{"type": "spot", "cone_half_angle_degrees": 120}'
+expect_error spot_cone "wide_cone\.json:4:[0-9]+: .*'cone_half_angle_degrees': 120 is out of range" -- render "$out/wide_cone.json" -o "$out/x.png"
+scene zero_attenuation '{"type": "point", "attenuation": [0, 0, 0]}'
+expect_error zero_attenuation "zero_attenuation\.json:4:[0-9]+: .*'attenuation'.*must not all be zero" -- render "$out/zero_attenuation.json" -o "$out/x.png"
+printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "g", "model": "glass",\n   "ior": -1.5}],\n "objects": [{"shape": "sphere", "material": "g"}]}\n' >"$out/negative_ior.json"
+expect_error negative_ior "negative_ior\.json:3:[0-9]+: .*'ior': -1\.5 is out of range" -- render "$out/negative_ior.json" -o "$out/x.png"
 mkdir -p "$out/a_directory.json"
 expect_error directory "is a directory" -- render "$out/a_directory.json" -o "$out/x.png"
 expect_error no_output "no output file" -- render "$here/scenes/lambert_sun.json"
@@ -74,5 +80,5 @@ else
   echo "FAIL no display: no headless image"; failures=$((failures + 1))
 fi
 
-echo "$((15 - failures)) passed, $failures failed"
+echo "$((18 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

@@ -32,9 +32,10 @@ struct PixelAgreement {
 };
 
 // |GPU − CPU| ≤ relativeTolerance·|CPU| + absoluteFloor per channel, on every pixel whose 3×3
-// neighbourhood sees one and the same object (or background) on the CPU.
+// neighbourhood sees one and the same object (or background) on the CPU, and is not marked in
+// `alsoExcluded` (row-major, optional: other edges, e.g. of total internal reflection).
 inline PixelAgreement compareWithReference(const Scene& scene, const RadianceImage& gpu, float relativeTolerance = 1e-3f,
-                                           float absoluteFloor = 1e-5f) {
+                                           float absoluteFloor = 1e-5f, const std::vector<bool>& alsoExcluded = {}) {
     const int width = gpu.width, height = gpu.height;
     const RadianceImage cpu = renderReference(scene, width, height);
     const glm::mat4 inverse = glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
@@ -53,6 +54,7 @@ inline PixelAgreement compareWithReference(const Scene& scene, const RadianceIma
                     const int nx = std::clamp(x + dx, 0, width - 1), ny = std::clamp(y + dy, 0, height - 1);
                     silhouette |= objectAt[ny * width + nx] != objectAt[y * width + x];
                 }
+            if (!alsoExcluded.empty()) silhouette |= alsoExcluded[y * width + x];
             if (silhouette) {
                 ++agreement.excluded;
                 continue;

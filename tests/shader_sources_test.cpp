@@ -6,6 +6,7 @@
 
 #include "gl/material_glsl.h"
 #include "gl/shader_sources.h"
+#include "gl/uniform_blocks.h"
 #include "test_support.h"
 
 namespace glint {
@@ -64,6 +65,21 @@ TEST(MaterialGlsl, FollowsTheParameterTable) {
     EXPECT_NE(glsl.find("p.specular = vec3(materialValue(3), materialValue(4), materialValue(5));"), std::string::npos);
     EXPECT_NE(glsl.find("p.exponent = materialValue(6);"), std::string::npos);
     EXPECT_NE(glsl.find("p.form = int(materialValue(7) + 0.5);"), std::string::npos);
+}
+
+TEST(MaterialGlsl, HooksForAmbientAndSpecularTransport) {
+    const std::string lambert = generateMaterialGlsl(modelInfo(BrdfModel::Lambert));
+    EXPECT_NE(lambert.find("#define GLINT_AMBIENT_REFLECTANCE ambientReflectanceLambert"), std::string::npos);
+    EXPECT_EQ(lambert.find("GLINT_SPECULAR_TRANSPORT"), std::string::npos);
+    const std::string glass = generateMaterialGlsl(modelInfo(BrdfModel::Glass));
+    EXPECT_NE(glass.find("#define GLINT_AMBIENT_REFLECTANCE noAmbientReflectance"), std::string::npos);
+    EXPECT_NE(glass.find("#define GLINT_SPECULAR_TRANSPORT transportGlass"), std::string::npos);
+}
+
+TEST(UniformBlocks, GlslLightCountMatchesTheCppMirror) {
+    auto uniforms = ShaderSources(std::string(GLINT_TEST_DATA_DIR) + "/../shaders").read("common/uniforms.glsl");
+    ASSERT_TRUE(uniforms.ok());
+    EXPECT_NE(uniforms->find("const int MAX_LIGHTS = " + std::to_string(kMaxLights) + ";"), std::string::npos);
 }
 
 }  // namespace

@@ -43,12 +43,19 @@ TEST(Snapshot, LambertSun) {
     expectMatchesGolden("lambert_sun", images->display);
 }
 
-TEST(Snapshot, BlinnPointLight) {
-    const Scene scene = test::loadTestScene("scenes/blinn_point.json");
+// tests/scenes/<name>.json at its own output size against goldens/<name>.png.
+void expectSceneMatchesGolden(const std::string& name) {
+    const Scene scene = test::loadTestScene("scenes/" + name + ".json");
     auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
     ASSERT_TRUE(images.ok()) << images.error().format();
-    expectMatchesGolden("blinn_point", images->display);
+    expectMatchesGolden(name, images->display);
 }
+
+TEST(Snapshot, BlinnPointLight) { expectSceneMatchesGolden("blinn_point"); }
+
+TEST(Snapshot, SpotLights) { expectSceneMatchesGolden("spot_light"); }
+
+TEST(Snapshot, GlassAndMirrorUnderTheSky) { expectSceneMatchesGolden("glass_sphere"); }
 
 TEST(Snapshot, DefaultScene) {
     const Scene scene = defaultScene();

@@ -73,4 +73,10 @@ inline glm::vec3 evalBlinnPhong(const BlinnPhongParams& p, glm::vec3 wi, glm::ve
     return p.diffuseAlbedo * kInvPi + p.specular * specularScale;
 }
 
+// Ambient reflectance k_a: the diffuse albedo ρ_d, the exact answer for the Lambert term; the
+// specular lobe's share of a uniform sky is left out, as in the lecture's k_a = k_d.
+inline glm::vec3 ambientReflectanceBlinnPhong(const BlinnPhongParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
+}
+
 }  // namespace glint

@@ -28,4 +28,10 @@ inline glm::vec3 evalLambert(const LambertParams& p, glm::vec3 /*wi*/, glm::vec3
     return p.albedo * kInvPi;
 }
 
+// Ambient reflectance k_a (the k_a·I_a of Hearn-Baker): under uniform radiance L_a the reflected
+// radiance is ∫ f_r L_a cos θ dω = ρ·L_a exactly: the directional albedo ρ.
+inline glm::vec3 ambientReflectanceLambert(const LambertParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.albedo;
+}
+
 }  // namespace glint

@@ -2,7 +2,9 @@
 #include "brdf/model_registry.h"
 
 #include "brdf/blinn_phong.h"
+#include "brdf/glass.h"
 #include "brdf/lambert.h"
+#include "brdf/mirror.h"
 #include "util/diagnostic.h"
 
 namespace glint {
@@ -10,10 +12,17 @@ namespace {
 
 constexpr ModelInfo kModels[] = {
     {BrdfModel::Lambert, "lambert", "Lambert", "brdf/lambert.glsl", "evalLambert", kLambertTable,
-     true, true, "J. H. Lambert, Photometria, 1760"},
+     true, true, "J. H. Lambert, Photometria, 1760", "ambientReflectanceLambert"},
     {BrdfModel::BlinnPhong, "blinn_phong", "Blinn-Phong", "brdf/blinn_phong.glsl", "evalBlinnPhong",
      kBlinnPhongTable, true, false,
-     "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977"},
+     "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977",
+     "ambientReflectanceBlinnPhong"},
+    {BrdfModel::Mirror, "mirror", "Mirror (conductor Fresnel)", "brdf/mirror.glsl", "evalMirror", kMirrorTable,
+     true, false, "A. Fresnel (1823); complex index after Born & Wolf, Principles of Optics, §14.2",
+     "ambientReflectanceMirror", "transportMirror"},
+    {BrdfModel::Glass, "glass", "Glass (dielectric)", "brdf/glass.glsl", "evalGlass", kGlassTable, true, true,
+     "Snell's law and Fresnel (1823); transparency after Hearn & Baker, Computer Graphics, §14.5", nullptr,
+     "transportGlass"},
 };
 
 }  // namespace
@@ -39,8 +48,20 @@ glm::vec3 evalBrdf(BrdfModel model, std::span<const float> values, glm::vec3 wi,
     switch (model) {
         case BrdfModel::Lambert: return evalLambert(unpackLambert(values.data()), wi, wo, frame);
         case BrdfModel::BlinnPhong: return evalBlinnPhong(unpackBlinnPhong(values.data()), wi, wo, frame);
+        case BrdfModel::Mirror: return evalMirror(unpackMirror(values.data()), wi, wo, frame);
+        case BrdfModel::Glass: return evalGlass(unpackGlass(values.data()), wi, wo, frame);
     }
     return glm::vec3(0.0f);
+}
+
+glm::vec3 ambientReflectance(BrdfModel model, std::span<const float> values, glm::vec3 wo, const ShadingFrame& frame) {
+    GLINT_CHECK(static_cast<int>(values.size()) == packedSize(modelInfo(model).params));
+    switch (model) {
+        case BrdfModel::Lambert: return ambientReflectanceLambert(unpackLambert(values.data()), wo, frame);
+        case BrdfModel::BlinnPhong: return ambientReflectanceBlinnPhong(unpackBlinnPhong(values.data()), wo, frame);
+        case BrdfModel::Mirror: return ambientReflectanceMirror(unpackMirror(values.data()), wo, frame);
+        default: return glm::vec3(0.0f);  // no ambient hook (ModelInfo::glslAmbient == nullptr)
+    }
 }
 
 bool isReciprocal(BrdfModel model, std::span<const float> values) {

@@ -1,6 +1,7 @@
 // The list of BRDF models: each model's id, label, parameter table and the physical claims
 // it makes (reciprocity, energy conservation), and dispatch of eval over packed values.
-// Adding a model: one header in core/brdf, one GLSL twin, one row here.
+// Adding a model: one header in core/brdf, one GLSL twin, one row here; optionally the two hooks
+// below (ambient reflectance, specular transport), each a case in model_registry.cpp.
 #pragma once
 
 #include <optional>
@@ -14,7 +15,7 @@
 
 namespace glint {
 
-enum class BrdfModel { Lambert, BlinnPhong };
+enum class BrdfModel { Lambert, BlinnPhong, Mirror, Glass };
 
 struct ModelInfo {
     BrdfModel model;
@@ -26,6 +27,17 @@ struct ModelInfo {
     bool reciprocal;        // f(wi, wo) == f(wo, wi) for every parameter set
     bool energyConserving;  // directional albedo <= 1 over the whole valid range
     const char* citation;
+    // Ambient hook: the GLSL function `vec3 f(MaterialParams, vec3 wo, ShadingFrame)` returning
+    // the model's ambient reflectance k_a (Hearn-Baker's k_a·I_a, with I_a a uniform radiance
+    // L_a): physically the directional albedo ∫ f_r cos θ_i dω_i for wo. Its C++ twin
+    // `ambientReflectance<Model>(params, wo, frame)` sits in the model's header and gets a case in
+    // ambientReflectance() below. nullptr: the model reflects no ambient light (k_a = 0).
+    const char* glslAmbient = nullptr;
+    // Specular-transport hook for delta lobes that f_r cannot hold (mirror, glass): the GLSL
+    // function `vec3 f(MaterialParams, vec3 position, ShadingFrame, vec3 wo)` tracing them
+    // (common/specular_transport.glsl); C++ twin: a case in traceSpecular() in
+    // render/specular_transport.cpp. nullptr: none.
+    const char* glslTransport = nullptr;
 };
 
 std::span<const ModelInfo> allModels();
@@ -36,6 +48,10 @@ std::optional<BrdfModel> findModel(std::string_view id);
 // wi points towards the light, wo towards the viewer; both unit length, in world space.
 glm::vec3 evalBrdf(BrdfModel model, std::span<const float> values, glm::vec3 wi, glm::vec3 wo,
                    const ShadingFrame& frame);
+
+// Ambient reflectance k_a per channel for packed values (zero for models without the hook):
+// the radiance reflected towards wo under a uniform ambient radiance L_a is k_a·L_a.
+glm::vec3 ambientReflectance(BrdfModel model, std::span<const float> values, glm::vec3 wo, const ShadingFrame& frame);
 
 // Whether one form of a model breaks a claim its table makes for the model as a whole:
 // e.g. Blinn-Phong's lecture form is not reciprocal. Property tests use this.

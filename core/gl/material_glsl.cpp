@@ -2,6 +2,22 @@
 #include "gl/material_glsl.h"
 
 namespace glint {
+namespace {
+
+// The registry's optional hooks: ambient reflectance (zero when absent) and specular transport.
+std::string hooks(const ModelInfo& model) {
+    std::string glsl;
+    if (model.glslAmbient) {
+        glsl += "#define GLINT_AMBIENT_REFLECTANCE " + std::string(model.glslAmbient) + "\n";
+    } else {
+        glsl += "vec3 noAmbientReflectance(MaterialParams p, vec3 wo, ShadingFrame frame) { return vec3(0.0); }\n"
+                "#define GLINT_AMBIENT_REFLECTANCE noAmbientReflectance\n";
+    }
+    if (model.glslTransport) glsl += "#define GLINT_SPECULAR_TRANSPORT " + std::string(model.glslTransport) + "\n";
+    return glsl;
+}
+
+}  // namespace
 
 std::string generateMaterialGlsl(const ModelInfo& model) {
     std::string fields, loads;
@@ -32,7 +48,8 @@ std::string generateMaterialGlsl(const ModelInfo& model) {
     return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" +
            "struct MaterialParams {\n" + fields + "};\n\n" +
            "MaterialParams loadMaterialParams() {\n    MaterialParams p;\n" + loads + "    return p;\n}\n\n" +
-           "#include \"" + model.glslFile + "\"\n" + "#define GLINT_EVAL_BRDF " + model.glslEval + "\n";
+           "#include \"" + model.glslFile + "\"\n" + "#define GLINT_EVAL_BRDF " + model.glslEval + "\n" +
+           hooks(model);
 }
 
 }  // namespace glint

@@ -47,6 +47,13 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     renderer->displayProgram_ = std::move(*program);
     renderer->displayFiles_ = {"fullscreen.vert", "display.frag"};
     renderer->displayBuiltAt_ = renderer->newestModification(renderer->displayFiles_);
+    auto background = renderer->buildBackgroundProgram();
+    if (!background) return background.error();
+    renderer->backgroundProgram_ = std::move(*background);
+    renderer->backgroundFiles_ = {"fullscreen.vert"};
+    if (auto assembled = assembleShader(renderer->sources_, "background.frag"))
+        renderer->backgroundFiles_.insert(renderer->backgroundFiles_.end(), assembled->files.begin(), assembled->files.end());
+    renderer->backgroundBuiltAt_ = renderer->newestModification(renderer->backgroundFiles_);
     glGenBuffers(3, renderer->uniformBuffers_);
     const GLsizeiptr sizes[3] = {sizeof(FrameBlockStd140), sizeof(LightBlockStd140), sizeof(MaterialBlockStd140)};
     for (int i = 0; i < 3; ++i) {
@@ -76,6 +83,12 @@ long long Renderer::newestModification(const std::vector<std::string>& files) co
     long long newest = 0;
     for (const std::string& file : files) newest = std::max(newest, sources_.modificationTime(file));
     return newest;
+}
+
+Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
+    auto program = ShaderProgram::build(sources_, "fullscreen.vert", "background.frag");
+    if (program) program->bindBlock("FrameBlock", kFrameBinding);
+    return program;
 }
 
 Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples) const {
@@ -124,6 +137,13 @@ bool Renderer::reloadChangedShaders() {
             displayProgram_ = std::move(*program);
         else error = program.error().format();
     }
+    const long long newestBackground = newestModification(backgroundFiles_);
+    if (newestBackground > backgroundBuiltAt_) {
+        changed = true;
+        backgroundBuiltAt_ = newestBackground;
+        if (auto program = buildBackgroundProgram()) backgroundProgram_ = std::move(*program);
+        else error = program.error().format();
+    }
     if (changed) shaderError_ = error;
     return changed;
 }
@@ -168,20 +188,37 @@ void Renderer::uploadFrame(const Scene& scene, int width, int height) {
     frame.viewProjection = scene.camera.viewProjection(static_cast<float>(width) / height);
     frame.inverseViewProjection = glm::inverse(frame.viewProjection);
     frame.viewportSize = {width, height, 0, 0};
-    frame.background = glm::vec4(scene.background, 1.0f);
+    frame.background = glm::vec4(scene.background.color, 1.0f);
+    frame.skyZenith = glm::vec4(scene.background.zenith, 1.0f);
+    frame.skyHorizon = glm::vec4(scene.background.horizon, 1.0f);
+    frame.skyGround = glm::vec4(scene.background.ground, 1.0f);
+    frame.backgroundKind = {scene.background.kind == BackgroundKind::Sky ? 1 : 0, 0, 0, 0};
     LightBlockStd140 lights{};
     int count = 0;
+    glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) {
-        if (!light.enabled || count == kMaxLights) continue;
+        if (!light.enabled) continue;
+        if (light.type == LightType::Ambient) {
+            ambient += ambientRadiance(light);
+            continue;
+        }
+        if (count == kMaxLights) continue;
         GpuLightStd140& gpu = lights.lights[count++];
+        gpu.spotAxis = glm::vec4(0.0f, 0.0f, 0.0f, -2.0f);  // no cone
+        gpu.attenuation = glm::vec4(light.attenuation.coefficients, light.attenuation.enabled ? 1.0f : 0.0f);
         if (light.type == LightType::Directional) {
             gpu.position = glm::vec4(-glm::normalize(light.direction), 0.0f);
             gpu.emission = glm::vec4(light.color * light.irradiance, 0.0f);
-        } else {
-            gpu.position = glm::vec4(light.position, 1.0f);
-            gpu.emission = glm::vec4(light.color * (light.power / (4.0f * kPi)), 0.0f);  // I = Φ/4π
+            continue;
+        }
+        gpu.position = glm::vec4(light.position, 1.0f);
+        gpu.emission = glm::vec4(pointIntensity(light), 0.0f);  // I = Φ/4π
+        if (light.type == LightType::Spot) {
+            gpu.spotAxis = glm::vec4(glm::normalize(light.direction), spotCosOuter(light));
+            gpu.spotShape = glm::vec4(spotCosInner(light), light.falloffExponent, 0.0f, 0.0f);
         }
     }
+    frame.ambientRadiance = glm::vec4(ambient, 0.0f);
     frame.lightCount = {count, 0, 0, 0};
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kFrameBinding]);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof frame, &frame);
@@ -208,10 +245,14 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     if (samples > 1) glEnable(GL_MULTISAMPLE);
-    const float clearColor[4] = {scene.background.r, scene.background.g, scene.background.b, 1.0f};
-    glClearBufferfv(GL_COLOR, 0, clearColor);
     glClear(GL_DEPTH_BUFFER_BIT);
     uploadFrame(scene, width, height);
+    // The background covers every pixel first (constant or sky, per primary ray direction).
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(backgroundProgram_.id());
+    glBindVertexArray(emptyVertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
 
     std::vector<float> sampleOffsets;
     for (int i = 0; i < samples && samples > 1; ++i) {

@@ -60,6 +60,7 @@ private:
     };
 
     Renderer(GlPlatform& platform, ShaderSources sources);
+    Result<ShaderProgram> buildBackgroundProgram() const;
     Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples) const;
     Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples);
     const GpuMesh& meshFor(size_t objectIndex, const Shape& shape);
@@ -74,6 +75,9 @@ private:
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
+    ShaderProgram backgroundProgram_;
+    std::vector<std::string> backgroundFiles_;
+    long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;

@@ -12,21 +12,29 @@ struct alignas(16) FrameBlockStd140 {
     glm::mat4 viewProjection;
     glm::mat4 inverseViewProjection;
     glm::vec4 viewportSize;
-    glm::vec4 background;
+    glm::vec4 background;       // rgb: constant background radiance
+    glm::vec4 skyZenith;        // rgb: sky gradient radiances
+    glm::vec4 skyHorizon;
+    glm::vec4 skyGround;
+    glm::vec4 ambientRadiance;  // rgb: Σ L_a of the ambient lights
     glm::ivec4 lightCount;
+    glm::ivec4 backgroundKind;  // x: 0 constant, 1 sky
 };
-static_assert(sizeof(FrameBlockStd140) == 2 * 64 + 3 * 16, "FrameBlock std140 layout");
+static_assert(sizeof(FrameBlockStd140) == 2 * 64 + 8 * 16, "FrameBlock std140 layout");
 
 struct GpuLightStd140 {
-    glm::vec4 position;  // w = 1 point, w = 0 directional (xyz towards the light)
-    glm::vec4 emission;  // rgb: E⊥ [W/m²] (directional) or intensity Φ/4π [W/sr] (point)
+    glm::vec4 position;     // w = 1 point or spot, w = 0 directional (xyz towards the light)
+    glm::vec4 emission;     // rgb: E⊥ [W/m²] (directional) or intensity Φ/4π [W/sr] (point, spot)
+    glm::vec4 spotAxis;     // xyz: spot axis; w: cos θ_c, −2 for lights without a cone
+    glm::vec4 spotShape;    // x: cos(θ_c − edge width); y: falloff exponent a
+    glm::vec4 attenuation;  // xyz: classic a0, a1, a2; w: 1 when enabled
 };
-static_assert(sizeof(GpuLightStd140) == 32, "GpuLight std140 layout");
+static_assert(sizeof(GpuLightStd140) == 80, "GpuLight std140 layout");
 
 struct LightBlockStd140 {
     GpuLightStd140 lights[kMaxLights];
 };
-static_assert(sizeof(LightBlockStd140) == kMaxLights * 32, "LightBlock std140 layout");
+static_assert(sizeof(LightBlockStd140) == kMaxLights * 80, "LightBlock std140 layout");
 
 inline constexpr int kMaterialBlockFloats = 32;
 struct MaterialBlockStd140 {

@@ -7,21 +7,25 @@
 #include <vector>
 
 #include "math/frame.h"
+#include "render/specular_transport.h"
 
 namespace glint {
 namespace {
 
-// Ray-sphere: |o + t·d - c|² = r² with |d| = 1; the nearest t > 0.
+// Ray-sphere: |o + t·d - c|² = r² with |d| = 1; the nearest t > 0. The discriminant is taken
+// as r² − |l|², l the offset's part perpendicular to the ray, and the near root as c/q: the
+// stable forms of Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray
+// Tracing Gems, 2019, ch. 7 (near grazing, b² − c cancels and GPU and CPU would disagree).
 std::optional<float> intersectSphere(const SphereShape& sphere, const Ray& ray) {
     const glm::vec3 offset = ray.origin - sphere.center;
     const float b = glm::dot(offset, ray.direction);
-    const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
-    const float discriminant = b * b - c;
+    const glm::vec3 perpendicular = offset - b * ray.direction;
+    const float discriminant = sphere.radius * sphere.radius - glm::dot(perpendicular, perpendicular);
     if (discriminant < 0.0f) return std::nullopt;
-    const float root = std::sqrt(discriminant);
-    const float nearT = -b - root;
+    const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
+    const float q = -b - std::copysign(std::sqrt(discriminant), b);
+    const float nearT = std::min(c / q, q), farT = std::max(c / q, q);
     if (nearT > 0.0f) return nearT;
-    const float farT = -b + root;
     if (farT > 0.0f) return farT;
     return std::nullopt;
 }
@@ -63,7 +67,7 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     const ShadingFrame frame = ShadingFrame::fromNormal(hit.normal);
     glm::vec3 radiance(0.0f);
     for (const Light& light : scene.lights) {
-        if (!light.enabled) continue;
+        if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below
         const LightArrival arrival = lightArrival(light, hit.position);
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f) continue;
@@ -71,6 +75,16 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         radiance += evalBrdf(material.model, material.values, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosTheta;
     }
+    // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
+    glm::vec3 ambient(0.0f);
+    for (const Light& light : scene.lights) ambient += ambientRadiance(light);
+    radiance += ambientReflectance(material.model, material.values, towardsViewer, frame) * ambient;
+    // Delta lobes (mirror, glass), traced against the background only.
+    const Shape& shape = scene.objects.at(hit.objectIndex).shape;
+    std::optional<SphereGeometry> sphere;
+    if (const auto* sphereShape = std::get_if<SphereShape>(&shape)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
+    radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
+                              hit.position, hit.normal, towardsViewer, hit.distance);
     return radiance;
 }
 
@@ -84,7 +98,7 @@ RadianceImage renderReference(const Scene& scene, int width, int height) {
             for (int x = 0; x < width; ++x) {
                 const Ray ray = primaryRay(inverseViewProjection, x + 0.5f, y + 0.5f, width, height);
                 const auto hit = intersectScene(scene, ray);
-                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : scene.background);
+                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : backgroundRadiance(scene.background, ray.direction));
             }
         }
     };

@@ -21,7 +21,9 @@ struct SurfaceHit {
 // Nearest intersection of a ray with the scene's objects, if any.
 std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray);
 
-// Outgoing radiance [W/(sr·m²)] at a hit towards `towardsViewer`: Σ f_r·E⊥·cos θ over the lights.
+// Outgoing radiance [W/(sr·m²)] at a hit towards `towardsViewer`: Σ f_r·E⊥·cos θ over the delta
+// lights, plus k_a·L_a for the ambient lights, plus the model's traced delta lobes (mirror, glass)
+// whose secondary rays see only the background. Twin of shadeSurface() in common/shading.glsl.
 glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer);
 
 // Renders the whole scene at width×height (the scene's own size when zero).

@@ -20,7 +20,8 @@ std::string describeBounds(const Bounds& bounds) {
     std::ostringstream text;
     const bool hasMin = bounds.min > -std::numeric_limits<double>::max();
     const bool hasMax = bounds.max < std::numeric_limits<double>::max();
-    if (hasMin && hasMax) text << "between " << bounds.min << " and " << bounds.max;
+    if (hasMin && hasMax && bounds.minExclusive) text << "greater than " << bounds.min << " and at most " << bounds.max;
+    else if (hasMin && hasMax) text << "between " << bounds.min << " and " << bounds.max;
     else if (hasMin) text << (bounds.minExclusive ? "greater than " : "at least ") << bounds.min;
     else if (hasMax) text << "at most " << bounds.max;
     return text.str();

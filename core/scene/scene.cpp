@@ -11,7 +11,7 @@ Scene defaultScene() {
     Scene scene;
     scene.camera.position = {0.0f, 0.9f, 4.2f};
     scene.camera.target = {0.0f, -0.1f, 0.0f};
-    scene.background = {0.02f, 0.022f, 0.026f};
+    scene.background.color = {0.02f, 0.022f, 0.026f};
 
     Material sphereMaterial = Material::withDefaults("red plastic", BrdfModel::BlinnPhong);
     Material floorMaterial = Material::withDefaults("grey floor", BrdfModel::Lambert);

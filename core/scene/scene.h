@@ -12,11 +12,14 @@
 #include "brdf/model_registry.h"
 #include "camera/camera.h"
 #include "light/light.h"
+#include "scene/background.h"
 
 namespace glint {
 
 inline constexpr int kSceneFormatVersion = 1;
-inline constexpr int kMaxLights = 16;
+// Lights per scene. Each costs 80 bytes of the LightBlock (64 × 80 = 5 KiB, well inside the
+// 16 KiB that OpenGL 4.1 guarantees per uniform block); the shader loops only over those present.
+inline constexpr int kMaxLights = 64;
 
 struct Material {
     std::string name;
@@ -64,7 +67,7 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<Material> materials;
     std::vector<SceneObject> objects;
-    glm::vec3 background{0.0f};  // radiance [W/(sr·m²)] seen where no object is hit
+    Background background;  // radiance [W/(sr·m²)] seen where no object is hit (and by secondary rays)
     DisplaySettings display;
     int width = 960;   // output size in pixels
     int height = 720;

@@ -1,5 +1,5 @@
 // Scene and material JSON, version 1 (see scene_json.h and docs/scene-format.md).
-// Sections: format header · materials · lights · objects · camera/display · writers.
+// Sections: format header · materials · lights · background · objects · camera/display · writers.
 #include "scene/scene_json.h"
 
 #include <array>
@@ -98,23 +98,54 @@ json materialBody(const Material& material) {
 
 // --- lights ---------------------------------------------------------------------------------
 
-constexpr const char* kLightTypes[] = {"directional", "point"};
+constexpr const char* kLightTypes[] = {"directional", "point", "spot", "ambient"};
+
+// The classic radial attenuation [a0, a1, a2] (non-physical; present = enabled).
+void readAttenuation(ObjectReader& reader, Light& light) {
+    if (!reader.has("attenuation")) return;
+    light.attenuation.enabled = true;
+    light.attenuation.coefficients = reader.vec3("attenuation", light.attenuation.coefficients, Bounds::nonNegative());
+    const glm::vec3& a = light.attenuation.coefficients;
+    if (a.x == 0.0f && a.y == 0.0f && a.z == 0.0f)
+        reader.fail("attenuation", "[a0, a1, a2] must not all be zero (1/(a0 + a1·d + a2·d²) would be infinite)");
+}
+
+void readSpot(ObjectReader& reader, Light& light) {
+    light.direction = reader.vec3("direction", light.direction);
+    if (glm::length(light.direction) < 1e-6f) reader.fail("direction", "must not be the zero vector");
+    light.direction = glm::normalize(light.direction);
+    const Bounds halfAngle{0.0, 90.0, true};  // (0°, 90°]
+    light.coneHalfAngleDegrees = static_cast<float>(reader.number("cone_half_angle_degrees", light.coneHalfAngleDegrees, halfAngle));
+    light.falloffExponent = static_cast<float>(reader.number("falloff_exponent", light.falloffExponent, Bounds::between(0, 10000)));
+    light.edgeWidthDegrees = std::min(light.edgeWidthDegrees, light.coneHalfAngleDegrees);
+    light.edgeWidthDegrees = static_cast<float>(
+        reader.number("edge_width_degrees", light.edgeWidthDegrees, Bounds::between(0, light.coneHalfAngleDegrees)));
+}
 
 Light readLight(ObjectReader& reader) {
     Light light;
-    if (!reader.has("type")) reader.failHere("a light needs the key 'type' (directional or point)");
+    if (!reader.has("type")) reader.failHere("a light needs the key 'type' (directional, point, spot or ambient)");
     light.type = static_cast<LightType>(reader.choice("type", kLightTypes, 0));
     light.name = reader.string("name", kLightTypes[static_cast<int>(light.type)]);
     light.enabled = reader.boolean("enabled", true);
     light.color = reader.vec3("color", light.color, Bounds::nonNegative());
-    if (light.type == LightType::Directional) {
-        light.irradiance = static_cast<float>(reader.number("irradiance", light.irradiance, Bounds::nonNegative()));
-        light.direction = reader.vec3("direction", light.direction);
-        if (glm::length(light.direction) < 1e-6f) reader.fail("direction", "must not be the zero vector");
-        light.direction = glm::normalize(light.direction);
-    } else {
-        light.power = static_cast<float>(reader.number("power", light.power, Bounds::nonNegative()));
-        light.position = reader.vec3("position", light.position);
+    switch (light.type) {
+        case LightType::Directional:
+            light.irradiance = static_cast<float>(reader.number("irradiance", light.irradiance, Bounds::nonNegative()));
+            light.direction = reader.vec3("direction", light.direction);
+            if (glm::length(light.direction) < 1e-6f) reader.fail("direction", "must not be the zero vector");
+            light.direction = glm::normalize(light.direction);
+            break;
+        case LightType::Point:
+        case LightType::Spot:
+            light.power = static_cast<float>(reader.number("power", light.power, Bounds::nonNegative()));
+            light.position = reader.vec3("position", light.position);
+            if (light.type == LightType::Spot) readSpot(reader, light);
+            readAttenuation(reader, light);
+            break;
+        case LightType::Ambient:
+            light.ambientRadiance = static_cast<float>(reader.number("radiance", light.ambientRadiance, Bounds::nonNegative()));
+            break;
     }
     reader.rejectUnknownKeys();
     return light;
@@ -125,14 +156,61 @@ json lightToJson(const Light& light) {
                 {"type", kLightTypes[static_cast<int>(light.type)]},
                 {"enabled", light.enabled},
                 {"color", {light.color.r, light.color.g, light.color.b}}};
-    if (light.type == LightType::Directional) {
-        out["irradiance"] = light.irradiance;
-        out["direction"] = {light.direction.x, light.direction.y, light.direction.z};
-    } else {
-        out["power"] = light.power;
-        out["position"] = {light.position.x, light.position.y, light.position.z};
+    switch (light.type) {
+        case LightType::Directional:
+            out["irradiance"] = light.irradiance;
+            out["direction"] = {light.direction.x, light.direction.y, light.direction.z};
+            break;
+        case LightType::Point:
+        case LightType::Spot:
+            out["power"] = light.power;
+            out["position"] = {light.position.x, light.position.y, light.position.z};
+            if (light.type == LightType::Spot) {
+                out["direction"] = {light.direction.x, light.direction.y, light.direction.z};
+                out["cone_half_angle_degrees"] = light.coneHalfAngleDegrees;
+                out["falloff_exponent"] = light.falloffExponent;
+                out["edge_width_degrees"] = light.edgeWidthDegrees;
+            }
+            if (light.attenuation.enabled) {
+                const glm::vec3& a = light.attenuation.coefficients;
+                out["attenuation"] = {a.x, a.y, a.z};
+            }
+            break;
+        case LightType::Ambient: out["radiance"] = light.ambientRadiance; break;
     }
     return out;
+}
+
+// --- background -----------------------------------------------------------------------------
+
+constexpr const char* kBackgroundTypes[] = {"constant", "sky"};
+
+// "background": [r, g, b] (constant radiance) or an object {"type": "constant"|"sky", ...}.
+Background readBackground(ObjectReader& root) {
+    Background background;
+    if (!root.has("background")) return background;
+    if (!root.take("background").is_object()) {
+        background.color = root.vec3("background", background.color, Bounds::nonNegative());
+        return background;
+    }
+    ObjectReader reader = root.object("background");
+    background.kind = static_cast<BackgroundKind>(reader.choice("type", kBackgroundTypes, 0));
+    if (background.kind == BackgroundKind::Constant) {
+        background.color = reader.vec3("color", background.color, Bounds::nonNegative());
+    } else {
+        background.zenith = reader.vec3("zenith", background.zenith, Bounds::nonNegative());
+        background.horizon = reader.vec3("horizon", background.horizon, Bounds::nonNegative());
+        background.ground = reader.vec3("ground", background.ground, Bounds::nonNegative());
+    }
+    reader.rejectUnknownKeys();
+    return background;
+}
+
+json backgroundToJson(const Background& background) {
+    const auto rgb = [](glm::vec3 v) { return json{v.x, v.y, v.z}; };
+    if (background.kind == BackgroundKind::Constant) return rgb(background.color);
+    return {{"type", "sky"}, {"zenith", rgb(background.zenith)}, {"horizon", rgb(background.horizon)},
+            {"ground", rgb(background.ground)}};
 }
 
 // --- objects --------------------------------------------------------------------------------
@@ -228,7 +306,7 @@ Scene readScene(const JsonDocument& document) {
         ObjectReader camera = root.object("camera");
         scene.camera = readCamera(camera);
     }
-    scene.background = root.vec3("background", scene.background, Bounds::nonNegative());
+    scene.background = readBackground(root);
     if (root.has("display")) {
         ObjectReader display = root.object("display");
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
@@ -280,7 +358,7 @@ json sceneToJson(const Scene& scene) {
                      {"ortho_height", camera.orthoHeight},
                      {"near", camera.nearPlane},
                      {"far", camera.farPlane}};
-    out["background"] = vec3Json(scene.background);
+    out["background"] = backgroundToJson(scene.background);
     out["display"] = {{"exposure", scene.display.exposureStops},
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
                       {"gamma", scene.display.gamma},

@@ -16,3 +16,8 @@ vec3 evalBlinnPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     else specularScale = lobe * (p.exponent + 8.0) / (8.0 * PI);               // normalised
     return p.diffuse_albedo * INV_PI + p.specular * specularScale;
 }
+
+// Ambient reflectance k_a = ρ_d (see blinn_phong.h).
+vec3 ambientReflectanceBlinnPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo;
+}

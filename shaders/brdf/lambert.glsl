@@ -4,3 +4,8 @@
 vec3 evalLambert(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     return p.albedo * INV_PI;
 }
+
+// Ambient reflectance k_a = ρ (the exact directional albedo; see lambert.h).
+vec3 ambientReflectanceLambert(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.albedo;
+}

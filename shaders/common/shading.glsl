@@ -1,5 +1,6 @@
-// The shading sum at one surface point: f_r · E⊥ · cos θ over the lights, with the model's
-// generated MaterialParams. GLSL twin of shadeHit() in core/render/reference_renderer.cpp.
+// The shading sum at one surface point: f_r · E⊥ · cos θ over the lights, k_a · L_a for the
+// ambient light and the model's traced delta lobes, with the model's generated MaterialParams.
+// GLSL twin of shadeHit() in core/render/reference_renderer.cpp.
 // Needs uniforms.glsl, frame.glsl, lights.glsl and generated/material.glsl first.
 
 vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
@@ -13,5 +14,10 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
         radiance += GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosIn;
     }
+    // Ambient: k_a · L_a (GLINT_AMBIENT_REFLECTANCE is the registry's hook, zero when absent).
+    radiance += GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;
+#ifdef GLINT_SPECULAR_TRANSPORT
+    radiance += GLINT_SPECULAR_TRANSPORT(params, position, frame, towardsViewer);
+#endif
     return radiance;
 }

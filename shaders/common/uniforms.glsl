@@ -1,21 +1,29 @@
 // Uniform blocks shared by the surface shaders. Their C++ mirrors (std140, size-checked) are in
 // core/gl/uniform_blocks.h; change both together.
 
-const int MAX_LIGHTS = 16;
+const int MAX_LIGHTS = 64;
 
 layout(std140) uniform FrameBlock {
     mat4 viewProjection;
     mat4 inverseViewProjection;
-    vec4 viewportSize;   // x, y: pixels of the render target
-    vec4 background;     // rgb: radiance [W/(sr·m²)]
-    ivec4 lightCount;    // x: number of lights in LightBlock
+    vec4 viewportSize;     // x, y: pixels of the render target
+    vec4 background;       // rgb: constant background radiance [W/(sr·m²)]
+    vec4 skyZenith;        // rgb: sky radiance straight up (+y)
+    vec4 skyHorizon;       // rgb: ... at the horizon
+    vec4 skyGround;        // rgb: ... straight down
+    vec4 ambientRadiance;  // rgb: Σ L_a of the ambient lights [W/(sr·m²)]
+    ivec4 lightCount;      // x: number of lights in LightBlock
+    ivec4 backgroundKind;  // x: 0 constant, 1 sky gradient
 };
 
-// A light in homogeneous form (DESIGN.md): position.w = 1 for a point light at position.xyz,
-// 0 for a directional light whose position.xyz points towards the light.
+// A light in homogeneous form (DESIGN.md): position.w = 1 for a point or spot light at
+// position.xyz, 0 for a directional light whose position.xyz points towards the light.
 struct GpuLight {
     vec4 position;
-    vec4 emission;  // rgb: E⊥ [W/m²] for directional; radiant intensity Φ/4π [W/sr] for point
+    vec4 emission;     // rgb: E⊥ [W/m²] for directional; radiant intensity Φ/4π [W/sr] otherwise
+    vec4 spotAxis;     // xyz: direction the spot shines; w: cos θ_c (−2 for no cone)
+    vec4 spotShape;    // x: cos(θ_c − edge width); y: falloff exponent a
+    vec4 attenuation;  // xyz: classic a0, a1, a2; w: 1 when enabled (non-physical option)
 };
 
 layout(std140) uniform LightBlock {

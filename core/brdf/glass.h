@@ -1,0 +1,55 @@
+// Glass: a smooth dielectric (index η in air) that reflects and refracts ideally, weighted by the
+// exact Fresnel equations or by the classic Hearn-Baker transparency k_t, and absorbs inside by
+// Beer-Lambert e^(−σ·d). Both lobes are deltas, so f_r for point lights is 0: the renderer traces
+// them (render/specular_transport.h). CPU half; GLSL twin: shaders/brdf/glass.glsl.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/frame.h"
+
+namespace glint {
+
+enum class GlassTransparency {
+    Fresnel = 0,  // exact dielectric Fresnel at each interface (physical)
+    Classic = 1,  // Hearn-Baker I = (1 − k_t)·I_refl + k_t·I_trans (not physical)
+};
+
+inline constexpr EnumOption kGlassTransparencyOptions[] = {
+    {"fresnel", "Fresnel (exact)"},
+    {"classic", "Classic (1 − k_t) I_refl + k_t I_trans"},
+};
+
+struct GlassParams {
+    float ior;                        // η of the glass relative to the air around it
+    glm::vec3 absorption;             // σ [1/m] per channel
+    GlassTransparency transparency;
+    float transmission;               // k_t, classic only
+};
+
+inline constexpr ParamSpec kGlassTable[] = {
+    {.name = "ior", .label = "Index η", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 2.5f, .validMin = 1, .validMax = 4, .defaultValue = {1.5f, 0, 0},
+     .help = "Refractive index (window glass 1.5, water 1.33, diamond 2.42)"},
+    {.name = "absorption", .label = "Absorption σ", .unit = "1/m", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0, 0, 0},
+     .help = "Beer-Lambert coefficient: transmittance e^(−σ·d) over a path d inside"},
+    {.name = "transparency", .label = "Transparency", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0, 0, 0},
+     .options = kGlassTransparencyOptions, .help = "Exact Fresnel, or the classic constant k_t"},
+    {.name = "transmission", .label = "Transmission k_t", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.9f, 0, 0},
+     .help = "Classic transparency only: fraction transmitted at each interface"},
+};
+
+inline GlassParams unpackGlass(const float* v) {
+    return {v[0], {v[1], v[2], v[3]}, static_cast<GlassTransparency>(static_cast<int>(v[4])), v[5]};
+}
+
+// f_r for delta lights: 0 (both lobes are deltas; a point light's reflection has zero area).
+inline glm::vec3 evalGlass(const GlassParams& /*p*/, glm::vec3 /*wi*/, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return glm::vec3(0.0f);
+}
+
+}  // namespace glint

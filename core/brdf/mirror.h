@@ -1,0 +1,49 @@
+// Mirror: an ideal specular reflector weighted by the exact conductor Fresnel F(θ; n + iκ) per
+// channel (κ = 0 gives a dielectric mirror), plus an optional small Lambert part ρ_d/π. The delta
+// lobe has no f_r for point lights: the renderer traces it (render/specular_transport.h).
+// CPU reference; its GLSL twin is shaders/brdf/mirror.glsl.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+
+struct MirrorParams {
+    glm::vec3 eta;            // n: real part of the complex index, per channel
+    glm::vec3 kappa;          // κ: extinction coefficient, per channel
+    glm::vec3 diffuseAlbedo;  // ρ_d of the optional Lambert part
+};
+
+// Default: aluminium (RGB fit of measured n, κ; pbrt-v4 and Mitsuba ship the same data).
+inline constexpr ParamSpec kMirrorTable[] = {
+    {.name = "eta", .label = "Index n", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0.05f, .sliderMax = 4, .validMin = 0.001f, .validMax = kUnbounded, .defaultValue = {1.66f, 0.88f, 0.52f},
+     .help = "Real part of the complex refractive index n + iκ (per channel)"},
+    {.name = "kappa", .label = "Extinction κ", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {9.22f, 6.27f, 4.84f},
+     .help = "Imaginary part κ of n + iκ; 0 for a dielectric"},
+    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0, 0, 0},
+     .help = "Optional small Lambert part, lit by the lights and the ambient light; added to the mirror "
+             "lobe, not balanced against it (F + ρ_d may exceed 1)"},
+};
+
+inline MirrorParams unpackMirror(const float* v) {
+    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}};
+}
+
+// f_r for delta lights: only the Lambert part ρ_d/π (the mirror lobe is a delta).
+inline glm::vec3 evalMirror(const MirrorParams& p, glm::vec3 /*wi*/, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo * kInvPi;
+}
+
+// Ambient reflectance k_a: the Lambert part's albedo ρ_d (the mirror lobe sees the background).
+inline glm::vec3 ambientReflectanceMirror(const MirrorParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
+}
+
+}  // namespace glint

@@ -1,0 +1,12 @@
+#version 410 core
+// The background pass: the radiance of the constant or sky background along each pixel's
+// primary ray, drawn before the objects (which then cover it). Twin of the CPU reference's miss.
+#include "common/uniforms.glsl"
+#include "common/frame.glsl"
+#include "common/background.glsl"
+
+out vec4 outRadiance;
+
+void main() {
+    outRadiance = vec4(backgroundRadiance(primaryRay(gl_FragCoord.xy).direction), 1.0);
+}

@@ -1,0 +1,14 @@
+// Mirror: GLSL twin of core/brdf/mirror.h (fields: eta, kappa, diffuse_albedo). The delta lobe
+// is traced by traceMirror() in common/specular_transport.glsl.
+
+vec3 evalMirror(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo * INV_PI;
+}
+
+vec3 ambientReflectanceMirror(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo;
+}
+
+vec3 transportMirror(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
+    return traceMirror(p.eta, p.kappa, frame.normal, towardsViewer);
+}

@@ -1,0 +1,9 @@
+// The background radiance along a ray leaving the scene: constant or sky gradient. GLSL twin of
+// core/scene/background.h; reads the FrameBlock (uniforms.glsl). No environment maps yet.
+
+vec3 backgroundRadiance(vec3 direction) {
+    if (backgroundKind.x == 0) return background.rgb;
+    float elevation = clamp(direction.y, -1.0, 1.0);
+    return elevation >= 0.0 ? mix(skyHorizon.rgb, skyZenith.rgb, elevation)
+                            : mix(skyHorizon.rgb, skyGround.rgb, -elevation);
+}
