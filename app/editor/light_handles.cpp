@@ -14,8 +14,9 @@ constexpr float kGrabRadiusPixels = 10.0f;
 int gDraggedLight = -1;
 
 glm::vec3 handlePosition(const Light& light, const Camera& camera) {
-    return light.type == LightType::Point ? light.position
-                                          : camera.target - glm::normalize(light.direction) * kDirectionalHandleDistance;
+    return light.type == LightType::Directional
+               ? camera.target - glm::normalize(light.direction) * kDirectionalHandleDistance
+               : light.position;
 }
 
 struct ScreenPoint {
@@ -52,6 +53,7 @@ bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
     drawList->PushClipRect(ImVec2(viewport.x, viewport.y), ImVec2(viewport.x + viewport.width, viewport.y + viewport.height));
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
+        if (light.type == LightType::Ambient) continue;  // it comes from everywhere: no handle
         const auto screen = project(viewProjection, handlePosition(light, scene.camera), viewport);
         if (!screen) continue;
         const bool selected = state.selectedLight == static_cast<int>(i);
@@ -79,7 +81,7 @@ bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
         if (screen) {
             const glm::vec3 moved = unproject(viewProjection, io.MousePos, screen->ndcDepth, viewport);
             const glm::vec3 fromTarget = moved - scene.camera.target;
-            if (light.type == LightType::Point) {
+            if (light.type != LightType::Directional) {
                 state.session.change("Move light").lights[gDraggedLight].position = moved;
             } else if (glm::length(fromTarget) > 1e-4f) {
                 state.session.change("Turn light").lights[gDraggedLight].direction = -glm::normalize(fromTarget);

@@ -1,9 +1,10 @@
-// The display section: exposure (stops), tone map (none, Reinhard, ACES filmic), the transfer function (sRGB or a pure gamma), and the
-// background radiance. Each change goes through the edit API.
+// The display section: exposure (stops), tone map (none, Reinhard, ACES filmic), the transfer
+// function (sRGB or a pure gamma), and the background (a constant radiance or the sky
+// gradient). Each change goes through the edit API.
 #include <imgui.h>
 
-#include "editor/color_space.h"
 #include "editor/panels/panels.h"
+#include "editor/panels/widgets.h"
 
 namespace glint {
 
@@ -33,13 +34,21 @@ void drawDisplaySection(EditorState& state) {
     }
     if (changed) state.session.change("Edit display").display = display;
 
-    glm::vec3 background = scene.background;
-    float encoded[3] = {encodeSrgb(background.r), encodeSrgb(background.g), encodeSrgb(background.b)};
-    if (ImGui::ColorEdit3("Background", encoded, ImGuiColorEditFlags_Float)) {
-        for (int c = 0; c < 3; ++c) background[c] = decodeSrgb(std::max(encoded[c], 0.0f));
-        state.session.change("Edit background").background = background;
+    Background background = scene.background;
+    bool backgroundChanged = false;
+    int kind = background.kind == BackgroundKind::Constant ? 0 : 1;
+    if (ImGui::Combo("Background", &kind, "constant\0sky gradient\0")) {
+        background.kind = kind == 0 ? BackgroundKind::Constant : BackgroundKind::Sky;
+        backgroundChanged = true;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance seen where no object is hit (shown sRGB-encoded)");
+    if (background.kind == BackgroundKind::Constant) {
+        backgroundChanged |= linearColorEdit("Radiance", background.color, "Radiance seen where no object is hit (shown sRGB-encoded)");
+    } else {
+        backgroundChanged |= linearColorEdit("Zenith", background.zenith, "Sky radiance straight up (+y)");
+        backgroundChanged |= linearColorEdit("Horizon", background.horizon, "Sky radiance at the horizon");
+        backgroundChanged |= linearColorEdit("Ground", background.ground, "Radiance straight down");
+    }
+    if (backgroundChanged) state.session.change("Edit background").background = background;
 }
 
 }  // namespace glint

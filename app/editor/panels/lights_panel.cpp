@@ -1,19 +1,31 @@
 // The lights section: the list of lights (enable, select), add / duplicate / remove / solo, and
-// the selected light's type, colour (sRGB picker, stored linear) and strength in radiometric
-// units (irradiance M [W/m²] or radiant power Φ [W]), direction or position. Values that make
-// no sense (negative strength, a zero direction) are refused with a message.
+// the selected light's type (directional, point, spot, ambient), colour (sRGB picker, stored
+// linear) and strength in radiometric units (irradiance M [W/m²], radiant power Φ [W] or
+// radiance L_a) with the photometric value beside (lx, lm and cd, nit), direction, position,
+// spot cone and the optional classic attenuation. Values that make no sense are refused with a
+// message.
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <cmath>
 #include <string>
 
-#include "editor/color_space.h"
 #include "editor/panels/panels.h"
+#include "editor/panels/widgets.h"
+#include "light/photometry.h"
 
 namespace glint {
 namespace {
 
-const char* typeLabel(LightType type) { return type == LightType::Directional ? "directional" : "point"; }
+const char* typeLabel(LightType type) {
+    switch (type) {
+        case LightType::Directional: return "directional";
+        case LightType::Point: return "point";
+        case LightType::Spot: return "spot";
+        case LightType::Ambient: return "ambient";
+    }
+    return "";
+}
 
 Light newLight(LightType type, const Scene& scene) {
     Light light;
@@ -21,6 +33,7 @@ Light newLight(LightType type, const Scene& scene) {
     light.name = std::string(typeLabel(type)) + " " + std::to_string(scene.lights.size() + 1);
     light.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f));
     light.position = {0.0f, 2.5f, 2.0f};
+    if (type == LightType::Spot) light.direction = glm::normalize(-light.position);  // aimed at the origin
     return light;
 }
 
@@ -55,6 +68,15 @@ void drawLightButtons(EditorState& state) {
         state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
     }
     ImGui::SameLine();
+    if (ImGui::Button("+ Spot")) {
+        state.session.change("Add light").lights.push_back(newLight(LightType::Spot, scene));
+        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
+    }
+    if (ImGui::Button("+ Ambient")) {
+        state.session.change("Add light").lights.push_back(newLight(LightType::Ambient, scene));
+        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
+    }
+    ImGui::SameLine();
     if (ImGui::Button("Duplicate") && selected) {
         Light copy = scene.lights[state.selectedLight];
         copy.name += " copy";
@@ -65,12 +87,12 @@ void drawLightButtons(EditorState& state) {
     if (!room && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("At most %d lights", kMaxLights);
     ImGui::BeginDisabled(!selected);
+    ImGui::SameLine();
     if (ImGui::Button("Remove")) {
         auto& lights = state.session.change("Remove light").lights;
         lights.erase(lights.begin() + state.selectedLight);
         state.selectedLight = std::max(0, state.selectedLight - 1);
     }
-    ImGui::SameLine();
     if (ImGui::Button("Solo")) {
         auto& lights = state.session.change("Solo light").lights;
         for (size_t i = 0; i < lights.size(); ++i) lights[i].enabled = static_cast<int>(i) == state.selectedLight;
@@ -89,30 +111,34 @@ bool drawLightEditor(Light& light, std::string& refusal) {
     bool changed = false;
     ImGui::InputText("Name", &light.name);
     changed |= ImGui::IsItemDeactivatedAfterEdit();
-    int type = light.type == LightType::Directional ? 0 : 1;
-    if (ImGui::Combo("Type", &type, "directional\0point\0")) {
-        light.type = type == 0 ? LightType::Directional : LightType::Point;
+    int type = static_cast<int>(light.type);
+    if (ImGui::Combo("Type", &type, "directional\0point\0spot\0ambient\0")) {
+        light.type = static_cast<LightType>(type);
         changed = true;
     }
-    float encoded[3] = {encodeSrgb(light.color.r), encodeSrgb(light.color.g), encodeSrgb(light.color.b)};
-    if (ImGui::ColorEdit3("Colour", encoded, ImGuiColorEditFlags_Float)) {
-        for (int c = 0; c < 3; ++c) light.color[c] = decodeSrgb(std::max(encoded[c], 0.0f));
-        changed = true;
+    changed |= linearColorEdit("Colour", light.color, "Linear-RGB filter on the light's strength (shown sRGB-encoded)");
+    const LightPhotometry photometry = lightPhotometry(light);
+    constexpr float kHuge = 1e9f;
+    switch (light.type) {
+        case LightType::Directional:
+            changed |= boundedDrag("Irradiance M", light.irradiance, 0.0f, kHuge, "%.3f W/m²", refusal,
+                                   "Irradiance on a surface facing the light, W/m²");
+            ImGui::TextDisabled("  = %.4g lx (illuminance)", photometry.lux);
+            break;
+        case LightType::Point:
+        case LightType::Spot:
+            changed |= boundedDrag("Power Φ", light.power, 0.0f, kHuge, "%.2f W", refusal,
+                                   "Radiant power of the isotropic point light: E = Φ/(4πd²)·cos θ");
+            ImGui::TextDisabled("  = %.4g lm, I = %.4g cd%s", photometry.lumens, photometry.candelas,
+                                light.type == LightType::Spot ? " on the axis" : "");
+            break;
+        case LightType::Ambient:
+            changed |= boundedDrag("Radiance L_a", light.ambientRadiance, 0.0f, kHuge, "%.3f W/(sr·m²)", refusal,
+                                   "Uniform radiance arriving from every direction");
+            ImGui::TextDisabled("  = %.4g nit (luminance)", photometry.nits);
+            break;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Linear-RGB filter on the light's strength (shown sRGB-encoded)");
-    float& strength = light.type == LightType::Directional ? light.irradiance : light.power;
-    float typed = strength;
-    const char* format = light.type == LightType::Directional ? "%.3f W/m²" : "%.2f W";
-    const char* label = light.type == LightType::Directional ? "Irradiance M" : "Power Φ";
-    if (ImGui::DragFloat(label, &typed, strength * 0.01f + 0.01f, 0.0f, 0.0f, format)) {
-        if (std::isfinite(typed) && typed >= 0.0f) strength = typed, changed = true, refusal.clear();
-        else refusal = std::string(label) + " must be a number of at least 0";
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(light.type == LightType::Directional
-                              ? "Irradiance on a surface facing the light, W/m²"
-                              : "Radiant power, emitted evenly: E = Φ/(4πd²)·cos θ");
-    if (light.type == LightType::Directional) {
+    if (light.type == LightType::Directional || light.type == LightType::Spot) {
         glm::vec3 direction = light.direction;
         if (ImGui::DragFloat3("Direction", &direction.x, 0.01f, -1.0f, 1.0f, "%.2f")) {
             if (glm::length(direction) > 1e-4f && std::isfinite(glm::length(direction)))
@@ -120,10 +146,32 @@ bool drawLightEditor(Light& light, std::string& refusal) {
             else refusal = "Direction must not be zero";
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("The direction the light travels (normalised)");
-    } else {
+    }
+    if (light.type == LightType::Point || light.type == LightType::Spot) {
         glm::vec3 position = light.position;
         if (ImGui::DragFloat3("Position m", &position.x, 0.02f, 0.0f, 0.0f, "%.2f")) {
             if (std::isfinite(position.x + position.y + position.z)) light.position = position, changed = true;
+        }
+    }
+    if (light.type == LightType::Spot) {
+        changed |= boundedDrag("Cone half angle", light.coneHalfAngleDegrees, 0.01f, 90.0f, "%.1f°", refusal,
+                               "θ_c: nothing is lit outside the cone");
+        changed |= boundedDrag("Falloff a", light.falloffExponent, 0.0f, 10000.0f, "%.2f", refusal,
+                               "Hearn-Baker falloff cos^a α inside the cone");
+        changed |= boundedDrag("Edge width", light.edgeWidthDegrees, 0.0f, light.coneHalfAngleDegrees, "%.1f°", refusal,
+                               "Smooth edge inside the cone, w ≤ θ_c");
+    }
+    if (light.type == LightType::Point || light.type == LightType::Spot) {
+        changed |= ImGui::Checkbox("Classic attenuation (not physical)", &light.attenuation.enabled);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("1/(a0 + a1·d + a2·d²) instead of the inverse-square law 1/d²");
+        if (light.attenuation.enabled) {
+            glm::vec3 coefficients = light.attenuation.coefficients;
+            if (ImGui::DragFloat3("a0 a1 a2", &coefficients.x, 0.01f, 0.0f, 0.0f, "%.3f")) {
+                const bool valid = coefficients.x >= 0 && coefficients.y >= 0 && coefficients.z >= 0 &&
+                                   coefficients.x + coefficients.y + coefficients.z > 0;
+                if (valid) light.attenuation.coefficients = coefficients, changed = true, refusal.clear();
+                else refusal = "Attenuation coefficients must be ≥ 0 and not all zero";
+            }
         }
     }
     return changed;
