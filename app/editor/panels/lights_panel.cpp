@@ -37,6 +37,12 @@ Light newLight(LightType type, const Scene& scene) {
     return light;
 }
 
+// Appends a light as one edit and selects it.
+void addLight(EditorState& state, Light light, const char* label) {
+    state.session.change(label).lights.push_back(std::move(light));
+    state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
+}
+
 void drawLightList(EditorState& state) {
     const Scene& scene = state.session.scene();
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -58,30 +64,17 @@ void drawLightButtons(EditorState& state) {
     const bool room = scene.lights.size() < static_cast<size_t>(kMaxLights);
     const bool selected = state.selectedLight < static_cast<int>(scene.lights.size());
     ImGui::BeginDisabled(!room);
-    if (ImGui::Button("+ Directional")) {
-        state.session.change("Add light").lights.push_back(newLight(LightType::Directional, scene));
-        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
-    }
+    if (ImGui::Button("+ Directional")) addLight(state, newLight(LightType::Directional, scene), "Add light");
     ImGui::SameLine();
-    if (ImGui::Button("+ Point")) {
-        state.session.change("Add light").lights.push_back(newLight(LightType::Point, scene));
-        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
-    }
+    if (ImGui::Button("+ Point")) addLight(state, newLight(LightType::Point, scene), "Add light");
     ImGui::SameLine();
-    if (ImGui::Button("+ Spot")) {
-        state.session.change("Add light").lights.push_back(newLight(LightType::Spot, scene));
-        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
-    }
-    if (ImGui::Button("+ Ambient")) {
-        state.session.change("Add light").lights.push_back(newLight(LightType::Ambient, scene));
-        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
-    }
+    if (ImGui::Button("+ Spot")) addLight(state, newLight(LightType::Spot, scene), "Add light");
+    if (ImGui::Button("+ Ambient")) addLight(state, newLight(LightType::Ambient, scene), "Add light");
     ImGui::SameLine();
     if (ImGui::Button("Duplicate") && selected) {
         Light copy = scene.lights[state.selectedLight];
         copy.name += " copy";
-        state.session.change("Duplicate light").lights.push_back(copy);
-        state.selectedLight = static_cast<int>(state.session.scene().lights.size()) - 1;
+        addLight(state, std::move(copy), "Duplicate light");
     }
     ImGui::EndDisabled();
     if (!room && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
