@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/headless.h"
+#include "cli/presets_command.h"
 #include "cli/render_command.h"
 #include "editor/editor.h"
 #include "scene/scene_json.h"
@@ -20,6 +21,8 @@ constexpr const char* kUsage =
     "  glint [SCENE.json]          open the editor (the default scene when no file is given)\n"
     "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
     "                              render headless (no display needed)\n"
+    "  glint presets [NAME -o FILE.json]\n"
+    "                              list the material presets, or write one as a material file\n"
     "  glint --help | --version\n"
     "\n"
     "With no display, `glint [SCENE]` renders the scene headless to glint-<name>.png.\n";
@@ -54,6 +57,8 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 1, argv + argc);
     if (!arguments.empty() && arguments[0] == "render")
         return glint::runRenderCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "presets")
+        return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {
         std::printf("%s", kUsage);
         return 0;

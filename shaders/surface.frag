@@ -20,12 +20,22 @@ uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the 
 
 in vec3 worldPosition;
 in vec3 worldNormal;
+in vec3 worldTangent;
 out vec4 outRadiance;
+
+// Twin of surfaceTangent() in core/render/reference_renderer.cpp for a sphere: the direction of
+// increasing u, (+y) × n normalised, and the u = 0 meridian's tangent at the poles.
+vec3 sphereTangent(vec3 outwardNormal) {
+    vec3 alongU = vec3(outwardNormal.z, 0.0, -outwardNormal.x);
+    float alongULength = length(alongU);
+    return alongULength > 1e-6 ? alongU / alongULength : vec3(0.0, 0.0, -1.0);
+}
 
 void main() {
     Ray ray = primaryRay(gl_FragCoord.xy);
     vec3 position = worldPosition;
     vec3 normal = normalize(worldNormal);
+    vec3 tangent = worldTangent;  // planes: the mesh tangent
     float depth = gl_FragCoord.z;
     if (shapeKind == SHAPE_SPHERE) {
         float t = intersectSphere(ray);
@@ -47,10 +57,12 @@ void main() {
 #endif
         position = ray.origin + t * ray.direction;
         normal = (position - sphere.xyz) / sphere.w;
+        tangent = sphereTangent(normal);
         vec4 clip = viewProjection * vec4(position, 1.0);
         depth = 0.5 * (clip.z / clip.w) + 0.5;
     }
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
     gl_FragDepth = depth;
-    outRadiance = vec4(shadeSurface(position, frameFromNormal(normalize(normal)), -ray.direction), 1.0);
+    ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
+    outRadiance = vec4(shadeSurface(position, frame, -ray.direction), 1.0);
 }

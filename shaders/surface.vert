@@ -1,15 +1,19 @@
 #version 410 core
-// Surface vertex shader: world-space position and normal for the fragment stage.
+// Surface vertex shader: world-space position, normal and tangent (along increasing u) for the
+// fragment stage.
 #include "common/uniforms.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec3 inTangent;
 
 out vec3 worldPosition;
 out vec3 worldNormal;
+out vec3 worldTangent;
 
 void main() {
     worldPosition = inPosition;
     worldNormal = inNormal;
+    worldTangent = inTangent;
     gl_Position = viewProjection * vec4(inPosition, 1.0);
 }

@@ -62,6 +62,9 @@ expect_error bad_size "--size needs" -- render "$here/scenes/lambert_sun.json" -
 expect_error unwritable "cannot write|could not open" -- render "$here/scenes/lambert_sun.json" -o "/no/such/dir/x.png"
 expect_error unknown_option "unknown option --frobnicate" -- render "$here/scenes/lambert_sun.json" --frobnicate
 expect_error editor_bad_scene "invalid\.json:4:" -- "$out/invalid.json"
+printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "cook_torrance",\n   "ior": [1.5, 0, 1.5]}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/zero_ior.json"
+expect_error zero_ior "zero_ior\.json:3:[0-9]+: .*'ior\[1\]': 0 is out of range: must be greater than 0" -- render "$out/zero_ior.json" -o "$out/x.png"
+expect_error unknown_preset "unknown preset 'unobtainium'" -- presets unobtainium -o "$out/x.json"
 
 # Good input: both outputs, the requested size, exit code 0.
 if "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.png" --size 100x60 &&
@@ -71,6 +74,13 @@ if "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.png" --size 100x
   echo "ok   render: PNG 100x60 and EXR written"
 else
   echo "FAIL render: good input did not produce the images"; failures=$((failures + 1))
+fi
+# Presets: the list names sources; a preset written to a file is a material file.
+if "$glint" presets >"$out/presets.stdout" && grep -q "^gold .*cook_torrance.*Johnson" "$out/presets.stdout" &&
+   "$glint" presets copper -o "$out/copper.json" >/dev/null && grep -q '"format": "glint-material"' "$out/copper.json"; then
+  echo "ok   presets: listed $(($(wc -l <"$out/presets.stdout") - 1)), copper written"
+else
+  echo "FAIL presets: no list or no material file"; failures=$((failures + 1))
 fi
 # No display: plain `glint` renders the default scene headless and says where it went.
 if (cd "$out" && DISPLAY= "$glint" >"$out/nodisplay.stdout") && grep -q "glint-default.png" "$out/nodisplay.stdout" &&

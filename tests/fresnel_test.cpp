@@ -44,6 +44,17 @@ TEST(Fresnel, ConductorMatchesF0AtNormalIncidence) {
     EXPECT_NEAR(fresnelConductor(0.0f, n, k).r, 1.0f, 1e-5f);
 }
 
+TEST(Fresnel, ComplexIndexPerChannelTakesTheDielectricPathWhereKappaIsZero) {
+    // κ = 0 with n < 1 (leaving a denser medium): total internal reflection beyond the critical angle.
+    const glm::vec3 n(0.75f, 1.5f, 0.18f), k(0.0f, 0.0f, 3.42f);
+    const float beyondCritical = std::cos(criticalAngle(0.75f) + 0.05f);
+    const glm::vec3 reflected = fresnelComplexIndex(beyondCritical, n, k);
+    EXPECT_EQ(reflected.r, 1.0f);
+    EXPECT_NEAR(reflected.g, fresnelDielectric(beyondCritical, 1.5f), 1e-7f);
+    EXPECT_NEAR(reflected.b, fresnelConductorPolarised(beyondCritical, 0.18f, 3.42f).unpolarised(), 1e-7f);
+    EXPECT_LT(fresnelComplexIndex(1.0f, n, k).r, 0.03f) << "(0.25/1.75)² at normal incidence";
+}
+
 TEST(Fresnel, SchlickStaysWithinItsKnownErrorForDielectrics) {
     // Schlick's largest error against the exact unpolarised curve, entering from air, lies near
     // grazing incidence: measured here as 0.059 for water, 0.036 for glass, 0.032 for n = 1.7.

@@ -102,6 +102,28 @@ TEST(GpuRenderer, MsaaSmoothsTheSilhouette) {
     EXPECT_TRUE(takeGlErrors("msaa test").ok());
 }
 
+TEST(GpuRenderer, CameraInsideASphereSeesItsInside) {
+    // The sphere proxy's back faces are culled only when the whole proxy lies beyond the near
+    // plane; from inside, they are what draws the (two-sided) inner surface.
+    Scene scene;
+    scene.materials = {Material::withDefaults("inside", BrdfModel::Lambert)};
+    scene.objects.push_back({"room", SphereShape{{0, 0, 0}, 3.0f}, 0});
+    scene.camera.position = {0.5f, 0.2f, 1.0f};
+    scene.camera.target = {0, 0, -1};
+    Light bulb;
+    bulb.type = LightType::Point;
+    bulb.position = {0, 1, 0};
+    scene.lights = {bulb};
+    for (const glm::vec3 position : {glm::vec3(0.5f, 0.2f, 1.0f), glm::vec3(0.0f, 0.0f, 7.0f), glm::vec3(0.0f, 0.0f, 3.01f)}) {
+        scene.camera.position = position;
+        auto images = test::sharedHeadless().render(scene, 64, 48);
+        ASSERT_TRUE(images.ok()) << images.error().format();
+        const auto agreement = test::compareWithReference(scene, images->radiance);
+        EXPECT_EQ(agreement.disagreeing, 0) << "camera at z = " << position.z << ": " << agreement.firstDisagreement;
+        EXPECT_GT(agreement.compared, 1000);
+    }
+}
+
 TEST(GpuRenderer, ShaderErrorsNameTheFileAndLine) {
     const std::string directory = test::outputDirectory("broken_shaders");
     std::filesystem::copy(std::string(GLINT_TEST_DATA_DIR) + "/../shaders", directory,

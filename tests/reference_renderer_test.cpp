@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "display/display_chain.h"
+#include "geometry/mesh.h"
 #include "render/reference_renderer.h"
 #include "test_support.h"
 
@@ -60,6 +61,35 @@ TEST(ReferenceRenderer, DisabledLightsAndLightsBehindAddNothing) {
     scene.lights[0].enabled = true;
     scene.lights[0].direction = {0, 0, 1};  // shining from behind the sphere
     EXPECT_EQ(renderReference(scene, 16, 16).at(8, 8), glm::vec3(0.0f));
+}
+
+TEST(ReferenceRenderer, SurfaceTangentIsTheMeshTangent) {
+    // Sphere: the direction of increasing u, as makeUvSphere's vertex tangent, away from the poles.
+    const SphereShape sphere{{0.5f, -1.0f, 2.0f}, 2.0f};
+    const Mesh mesh = makeUvSphere(sphere.center, sphere.radius, 16, 8);
+    int checked = 0;
+    for (const Vertex& vertex : mesh.vertices) {
+        if (std::abs(vertex.normal.y) > 0.999f) continue;
+        const glm::vec3 tangent = surfaceTangent(sphere, vertex.normal);
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(tangent[c], vertex.tangent[c], 1e-5f);
+        ++checked;
+    }
+    EXPECT_GT(checked, 100);
+    // Poles: the u = 0 meridian's tangent, the same fallback as sphereTangent() in surface.frag.
+    EXPECT_EQ(surfaceTangent(sphere, {0, 1, 0}), glm::vec3(0, 0, -1));
+    EXPECT_EQ(surfaceTangent(sphere, {0, -1, 0}), glm::vec3(0, 0, -1));
+    // Plane: its mesh tangent.
+    const PlaneShape plane{{0, -1, 0}, {0.3f, 1.0f, 0.2f}, {4, 4}};
+    const Mesh planeMesh = makePlane(plane.center, plane.normal, plane.size);
+    const glm::vec3 tangent = surfaceTangent(plane, glm::normalize(plane.normal));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(tangent[c], planeMesh.vertices[0].tangent[c], 1e-6f);
+    // The hit carries it, unchanged by the two-sided flip of the normal.
+    Scene scene;
+    scene.materials = {Material::withDefaults("m", BrdfModel::Lambert)};
+    scene.objects.push_back({"ball", sphere, 0});
+    const auto hit = intersectScene(scene, {{0.5f, -1.0f, 10.0f}, {0, 0, -1}});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(glm::length(hit->tangent - glm::vec3(1, 0, 0)), 0.0f, 1e-5f) << "at +z the tangent is (+y) × z = +x";
 }
 
 TEST(DisplayChain, SrgbAndGammaAndExposure) {

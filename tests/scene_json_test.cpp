@@ -131,6 +131,39 @@ TEST(SceneJsonErrors, UnknownModelAndOutOfRangeParameter) {
     EXPECT_NE(outOfRange.error().message.find("albedo[1]"), std::string::npos) << outOfRange.error().format();
 }
 
+// A material file whose third line holds `body` (after "model": ...).
+Result<Material> materialFile(const std::string& model, const std::string& body) {
+    return parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"" + model + "\",\n " + body + "}",
+                         "metal.json");
+}
+
+// The file is refused with a message that names it, the line (the body's by default) and `expected`.
+void expectRefused(const Result<Material>& result, const std::string& expected, int line = 3) {
+    ASSERT_FALSE(result.ok()) << expected;
+    EXPECT_EQ(result.error().where.file, "metal.json");
+    EXPECT_EQ(result.error().where.line, line) << result.error().format();
+    EXPECT_NE(result.error().message.find(expected), std::string::npos) << result.error().format();
+}
+
+TEST(SceneJsonErrors, IndexOfRefractionMustBePositive) {
+    for (const std::string bad : {"0", "-1.5", "[1.5, 0, 1.5]", "[1.5, 1.5, -0.2]"}) {
+        const auto result = materialFile("cook_torrance", "\"ior\": " + bad);
+        expectRefused(result, "'ior");
+        expectRefused(result, "greater than 0");
+    }
+    expectRefused(materialFile("cook_torrance", "\"ior\": NaN"), "invalid JSON");
+    expectRefused(materialFile("cook_torrance", "\"extinction\": -1"), "'extinction'");
+    expectRefused(materialFile("cook_torrance", "\"distribution\": \"phong\""), "beckmann");
+    expectRefused(materialFile("ward", "\"roughness_x\": 0"), "'roughness_x'");
+    expectRefused(materialFile("moonlight", "\"ior\": 1.5"), "unknown model 'moonlight'", 2);
+    auto good = materialFile("cook_torrance", "\"ior\": [0.18, 0.42, 1.37]");
+    ASSERT_TRUE(good.ok()) << good.error().format();
+    EXPECT_FLOAT_EQ(good->values[4], 0.42f);
+    auto noModel = parseMaterial("{\"format\": \"glint-material\", \"version\": 1,\n \"ior\": 1.5}", "metal.json");
+    ASSERT_FALSE(noModel.ok());
+    EXPECT_NE(noModel.error().message.find("'model'"), std::string::npos) << noModel.error().format();
+}
+
 TEST(SceneJsonErrors, VersionAndFormat) {
     EXPECT_NE(expectError(R"({"format": "glint-scene"})").message.find("version"), std::string::npos);
     EXPECT_NE(expectError(R"({"format": "glint-scene", "version": 7})").message.find("newer Glint"), std::string::npos);

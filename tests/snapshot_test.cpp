@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "gpu_test_support.h"
+#include "brdf/presets.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "test_support.h"
@@ -62,6 +63,41 @@ TEST(Snapshot, DefaultScene) {
     auto images = test::sharedHeadless().render(scene, 320, 240);
     ASSERT_TRUE(images.ok()) << images.error().format();
     expectMatchesGolden("default_scene", images->display);
+}
+
+// One sphere per model under a point and a directional light: the preset or parameters that show
+// what the model is for (goldens/model_<id>.png).
+TEST(Snapshot, OneSpherePerModel) {
+    Scene scene = test::loadTestScene("scenes/model_sphere.json");
+    // A bright Lommel-Seeliger moon with a retroreflective lobe (k_r = 0.6, m = 8) towards the bulb.
+    Material moon = Material::withDefaults("retroreflective", BrdfModel::Retroreflective);
+    moon.values = {0.9f, 0.9f, 0.9f, 1.0f, 0.7f, 0.6f, 0.6f, 0.2f, 8.0f};
+    const std::pair<BrdfModel, Material> samples[] = {
+        {BrdfModel::Lambert, Material::withDefaults("lambert", BrdfModel::Lambert)},
+        {BrdfModel::BlinnPhong, Material::withDefaults("blinn_phong", BrdfModel::BlinnPhong)},
+        {BrdfModel::OrenNayar, Material::withDefaults("oren_nayar", BrdfModel::OrenNayar)},
+        {BrdfModel::Phong, Material::withDefaults("phong", BrdfModel::Phong)},
+        {BrdfModel::CookTorrance, findPreset("gold")->material()},
+        {BrdfModel::GgxAnisotropic, Material::withDefaults("ggx_anisotropic", BrdfModel::GgxAnisotropic)},
+        {BrdfModel::Ward, Material::withDefaults("ward", BrdfModel::Ward)},
+        {BrdfModel::Retroreflective, moon},
+        {BrdfModel::Mirror, Material::withDefaults("mirror", BrdfModel::Mirror)},
+        {BrdfModel::Glass, Material::withDefaults("glass", BrdfModel::Glass)},
+    };
+    ASSERT_EQ(std::size(samples), allModels().size());
+    const Background constant = scene.background;
+    Background sky;
+    sky.kind = BackgroundKind::Sky;  // mirror and glass show what they reflect and refract
+    for (const auto& [model, material] : samples) {
+        SCOPED_TRACE(modelInfo(model).id);
+        ASSERT_EQ(material.model, model);
+        scene.background = modelInfo(model).glslTransport ? sky : constant;
+        scene.materials = {material};
+        scene.materials[0].name = "sample";
+        auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
+        ASSERT_TRUE(images.ok()) << images.error().format();
+        expectMatchesGolden(std::string("model_") + modelInfo(model).id, images->display);
+    }
 }
 
 TEST(ImageCompare, ToleranceFollowsTheDesign) {

@@ -14,8 +14,9 @@ namespace {
 
 std::string formatRange(const ParamSpec& spec) {
     char text[96];
-    if (spec.validMax == kUnbounded) std::snprintf(text, sizeof text, "at least %g", spec.validMin);
-    else std::snprintf(text, sizeof text, "between %g and %g", spec.validMin, spec.validMax);
+    const char* above = spec.validMinExclusive ? "greater than" : "at least";
+    if (spec.validMax == kUnbounded) std::snprintf(text, sizeof text, "%s %g", above, spec.validMin);
+    else std::snprintf(text, sizeof text, "%s %g and at most %g", above, spec.validMin, spec.validMax);
     return text;
 }
 
@@ -33,7 +34,7 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
             float edited = *value;
             if (ImGui::SliderFloat(spec.label, &edited, spec.sliderMin, spec.sliderMax, format.c_str(), flags)) {
                 // Ctrl+click typing may go past the slider but never past the valid range.
-                if (edited >= spec.validMin && edited <= spec.validMax) {
+                if ((spec.validMinExclusive ? edited > spec.validMin : edited >= spec.validMin) && edited <= spec.validMax) {
                     *value = edited, changed = true;
                     refusal.clear();
                 } else {
@@ -45,6 +46,23 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
             break;
         }
         case ParamKind::Color: {
+            if (spec.validMax > 1.0f) {
+                // Not a colour but a per-channel quantity (an index of refraction): linear numbers.
+                float edited[3] = {value[0], value[1], value[2]};
+                if (ImGui::DragFloat3(spec.label, edited, 0.005f, spec.sliderMin, spec.sliderMax, "%.4g")) {
+                    bool valid = true;
+                    for (float channel : edited)
+                        valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
+                                 channel <= spec.validMax;
+                    if (valid) {
+                        std::copy(edited, edited + 3, value), changed = true;
+                        refusal.clear();
+                    } else {
+                        refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
+                    }
+                }
+                break;
+            }
             float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
             if (ImGui::ColorEdit3(spec.label, encoded, ImGuiColorEditFlags_Float)) {
                 float linear[3];

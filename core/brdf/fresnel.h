@@ -52,6 +52,16 @@ inline glm::vec3 fresnelConductor(float cosIncident, glm::vec3 n, glm::vec3 k) {
             fresnelConductorPolarised(cosIncident, n.z, k.z).unpolarised()};
 }
 
+// Exact Fresnel for a complex index per channel: a channel with κ = 0 takes the dielectric
+// equations (so n < 1 gives total internal reflection), any other the conductor ones.
+inline glm::vec3 fresnelComplexIndex(float cosIncident, glm::vec3 n, glm::vec3 k) {
+    glm::vec3 reflectance;
+    for (int c = 0; c < 3; ++c)
+        reflectance[c] = k[c] == 0.0f ? fresnelDielectric(cosIncident, n[c])
+                                      : fresnelConductorPolarised(cosIncident, n[c], k[c]).unpolarised();
+    return reflectance;
+}
+
 // Reflectance at normal incidence: F0 = ((n−1)² + κ²) / ((n+1)² + κ²), per channel.
 inline glm::vec3 fresnelF0(glm::vec3 n, glm::vec3 k) {
     return ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);

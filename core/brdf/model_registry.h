@@ -15,7 +15,9 @@
 
 namespace glint {
 
-enum class BrdfModel { Lambert, BlinnPhong, Mirror, Glass };
+enum class BrdfModel {
+    Lambert, BlinnPhong, OrenNayar, Phong, CookTorrance, GgxAnisotropic, Ward, Retroreflective, Mirror, Glass
+};
 
 struct ModelInfo {
     BrdfModel model;
@@ -54,7 +56,7 @@ glm::vec3 evalBrdf(BrdfModel model, std::span<const float> values, glm::vec3 wi,
 glm::vec3 ambientReflectance(BrdfModel model, std::span<const float> values, glm::vec3 wo, const ShadingFrame& frame);
 
 // Whether one form of a model breaks a claim its table makes for the model as a whole:
-// e.g. Blinn-Phong's lecture form is not reciprocal. Property tests use this.
+// e.g. the lecture forms of Blinn-Phong and Phong are not reciprocal. Property tests use this.
 bool isReciprocal(BrdfModel model, std::span<const float> values);
 
 }  // namespace glint

@@ -29,6 +29,7 @@ struct ParamSpec {
     float validMin = 0.0f;   // ...and what files and typed values may hold (may be wider)
     float validMax = 1.0f;
     std::array<float, 3> defaultValue{0, 0, 0};
+    bool validMinExclusive = false;  // validMin itself is refused (an index of refraction > 0)
     ParamScale scale = ParamScale::Linear;
     std::span<const EnumOption> options{};  // Enum only
     const char* help = "";

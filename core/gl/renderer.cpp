@@ -20,6 +20,13 @@ namespace {
 constexpr int kProxySegments = 48, kProxyRings = 24;
 const float kProxyScale = 1.001f / std::cos(kPi / kProxySegments + kPi / kProxyRings);
 
+// Whether the whole proxy of a sphere lies beyond the camera's near plane, so that every pixel
+// of the sphere is covered by a front face of the proxy.
+bool proxyBeyondNearPlane(const Camera& camera, const SphereShape& sphere) {
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    return glm::dot(sphere.center - camera.position, forward) - sphere.radius * kProxyScale > camera.nearPlane;
+}
+
 bool sameShape(const Shape& a, const Shape& b) {
     if (a.index() != b.index()) return false;
     if (const auto* sphere = std::get_if<SphereShape>(&a)) {
@@ -175,6 +182,8 @@ const Renderer::GpuMesh& Renderer::meshFor(size_t objectIndex, const Shape& shap
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, tangent)));
     glBindVertexArray(0);
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
     gpu.shape = shape;
@@ -282,6 +291,12 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const auto* sphere = std::get_if<SphereShape>(&object.shape);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
+        // The proxy sphere's back faces would shade the same front hit a second time (gl_FragDepth
+        // disables early depth rejection): cull them, unless part of the proxy lies before the near
+        // plane (a camera inside or close), where the back faces are all that is drawn. Planes are
+        // two-sided and keep both faces.
+        if (sphere && proxyBeyondNearPlane(scene.camera, *sphere)) glEnable(GL_CULL_FACE);
+        else glDisable(GL_CULL_FACE);
         if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
         const GpuMesh& mesh = meshFor(i, object.shape);
         glBindVertexArray(mesh.vertexArray);
@@ -289,6 +304,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         trianglesDrawn_ += mesh.indexCount / 3;
     }
     glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
     if (samples > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());

@@ -44,6 +44,17 @@ std::optional<float> intersectPlane(const PlaneShape& plane, const Ray& ray) {
 
 }  // namespace
 
+glm::vec3 surfaceTangent(const Shape& shape, glm::vec3 outwardNormal) {
+    if (std::holds_alternative<SphereShape>(shape)) {
+        // ∂position/∂u ∝ (+y) × n; its length is sin(polar angle), zero at the poles, where
+        // the tangent of the u = 0 meridian is used.
+        const glm::vec3 alongU{outwardNormal.z, 0.0f, -outwardNormal.x};
+        const float length = glm::length(alongU);
+        return length > 1e-6f ? alongU / length : glm::vec3(0.0f, 0.0f, -1.0f);
+    }
+    return ShadingFrame::fromNormal(glm::normalize(std::get<PlaneShape>(shape).normal)).tangent;
+}
+
 std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
     std::optional<SurfaceHit> nearest;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -56,15 +67,16 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
         glm::vec3 normal;
         if (const auto* sphere = std::get_if<SphereShape>(&shape)) normal = (position - sphere->center) / sphere->radius;
         else normal = std::get<PlaneShape>(shape).normal;
+        const glm::vec3 tangent = surfaceTangent(shape, normal);
         if (glm::dot(normal, ray.direction) > 0.0f) normal = -normal;  // surfaces are two-sided
-        nearest = SurfaceHit{*t, position, glm::normalize(normal), static_cast<int>(i)};
+        nearest = SurfaceHit{*t, position, glm::normalize(normal), tangent, static_cast<int>(i)};
     }
     return nearest;
 }
 
 glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer) {
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
-    const ShadingFrame frame = ShadingFrame::fromNormal(hit.normal);
+    const ShadingFrame frame = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
     glm::vec3 radiance(0.0f);
     for (const Light& light : scene.lights) {
         if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below

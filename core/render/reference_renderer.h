@@ -15,8 +15,15 @@ struct SurfaceHit {
     float distance;       // along the ray [m]
     glm::vec3 position;
     glm::vec3 normal;     // unit, facing the ray's origin
+    glm::vec3 tangent;    // unit, ⟂ normal: direction of increasing u (see surfaceTangent)
     int objectIndex;
 };
+
+// The shading tangent of a shape at a point, before any two-sided flip: for a sphere the
+// direction of increasing u of its UV parametrisation (azimuth around +y, as makeUvSphere's
+// vertex tangent), with a fixed tangent at the poles; for a plane its mesh tangent (makePlane).
+// GLSL twin: sphereTangent in shaders/surface.frag (planes pass the mesh tangent).
+glm::vec3 surfaceTangent(const Shape& shape, glm::vec3 outwardNormal);
 
 // Nearest intersection of a ray with the scene's objects, if any.
 std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray);

@@ -51,9 +51,9 @@ Material readMaterial(ObjectReader& reader) {
     for (size_t i = 0; i < table.size(); ++i) {
         const ParamSpec& spec = table[i];
         float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
-        const Bounds bounds = Bounds::between(spec.validMin, spec.validMax == kUnbounded
-                                                                 ? std::numeric_limits<double>::max()
-                                                                 : spec.validMax);
+        Bounds bounds = Bounds::between(spec.validMin, spec.validMax == kUnbounded ? std::numeric_limits<double>::max()
+                                                                             : spec.validMax);
+        bounds.minExclusive = spec.validMinExclusive;
         switch (spec.kind) {
             case ParamKind::Scalar: value[0] = static_cast<float>(reader.number(spec.name, value[0], bounds)); break;
             case ParamKind::Color: {

@@ -38,6 +38,16 @@ vec3 fresnelConductor(float cosIncident, vec3 n, vec3 k) {
                 fresnelConductorChannel(cosIncident, n.b, k.b));
 }
 
+// Twin of fresnelComplexIndex: dielectric equations (with TIR) where κ = 0, conductor elsewhere.
+float fresnelComplexIndexChannel(float cosIncident, float n, float k) {
+    return k == 0.0 ? fresnelDielectric(cosIncident, n) : fresnelConductorChannel(cosIncident, n, k);
+}
+
+vec3 fresnelComplexIndex(float cosIncident, vec3 n, vec3 k) {
+    return vec3(fresnelComplexIndexChannel(cosIncident, n.r, k.r), fresnelComplexIndexChannel(cosIncident, n.g, k.g),
+                fresnelComplexIndexChannel(cosIncident, n.b, k.b));
+}
+
 vec3 fresnelF0(vec3 n, vec3 k) {
     return ((n - 1.0) * (n - 1.0) + k * k) / ((n + 1.0) * (n + 1.0) + k * k);
 }

@@ -21,7 +21,24 @@ ShadingFrame frameFromNormal(vec3 n) {
     return frame;
 }
 
+// Twin of ShadingFrame::fromNormalAndTangent: Gram-Schmidt of the tangent against the normal,
+// falling back to frameFromNormal when they are parallel.
+ShadingFrame frameFromNormalAndTangent(vec3 n, vec3 tangentHint) {
+    vec3 t = tangentHint - n * dot(n, tangentHint);
+    float tangentLength = length(t);
+    if (tangentLength < 1e-6) return frameFromNormal(n);
+    ShadingFrame frame;
+    frame.normal = n;
+    frame.tangent = t / tangentLength;
+    frame.bitangent = cross(n, frame.tangent);
+    return frame;
+}
+
 float cosTheta(ShadingFrame frame, vec3 w) { return dot(w, frame.normal); }
+
+vec3 toLocal(ShadingFrame frame, vec3 world) {
+    return vec3(dot(world, frame.tangent), dot(world, frame.bitangent), dot(world, frame.normal));
+}
 
 struct Ray {
     vec3 origin;

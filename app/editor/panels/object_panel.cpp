@@ -66,6 +66,7 @@ void drawObjectSection(EditorState& state) {
         ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.materialPanelMessage.c_str());
         ImGui::PopTextWrapPos();
     }
+    drawPresetBrowser(state, materialIndex);
     ImGui::Separator();
     Shape shape = state.session.scene().objects[state.selectedObject].shape;
     if (ImGui::TreeNodeEx(std::holds_alternative<SphereShape>(shape) ? "Sphere" : "Plane", ImGuiTreeNodeFlags_None)) {

@@ -16,6 +16,7 @@ float drawStatusBar(EditorState& state, float top, float width);
 void drawScenePanel(EditorState& state, float top, float height);
 void drawMaterialColumn(EditorState& state, float top, float height, float windowWidth);
 void drawObjectSection(EditorState& state);
+void drawPresetBrowser(EditorState& state, int materialIndex);
 void drawLightsSection(EditorState& state);
 void drawDisplaySection(EditorState& state);
 void drawCameraSection(EditorState& state);

@@ -1,0 +1,95 @@
+// Cook-Torrance / Torrance-Sparrow microfacet BRDF f = D·G·F / (4 cos θ_i cos θ_o) plus an
+// optional coloured Lambert diffuse term, with a choice of D, G and F (see microfacet.h).
+// CPU reference; its GLSL twin is shaders/brdf/cook_torrance.glsl. Isotropic only.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "brdf/microfacet.h"
+#include "math/frame.h"
+
+namespace glint {
+
+enum class MicrofacetDistribution { Beckmann = 0, Ggx = 1 };
+enum class MicrofacetGeometry { VCavity = 0, Smith = 1 };
+
+inline constexpr EnumOption kDistributionOptions[] = {
+    {"beckmann", "Beckmann"},
+    {"ggx", "GGX (Trowbridge-Reitz)"},
+};
+inline constexpr EnumOption kGeometryOptions[] = {
+    {"v_cavity", "V-cavity (Cook-Torrance 1982)"},
+    {"smith", "Smith, height-correlated"},
+};
+
+struct CookTorranceParams {
+    glm::vec3 diffuseAlbedo;  // ρ_d of the added Lambert term (0 for metals)
+    glm::vec3 ior;            // n per channel, > 0
+    glm::vec3 extinction;     // κ per channel, ≥ 0 (0: dielectric)
+    float roughness;          // α: the distribution's width (linear roughness, α = perceptual²)
+    MicrofacetDistribution distribution;
+    MicrofacetGeometry geometry;
+    FresnelMode fresnel;
+};
+
+inline constexpr ParamSpec kCookTorranceTable[] = {
+    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
+     .help = "Added Lambert term ρ_d/π (0 for metals; a dielectric's body colour)"},
+    {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0.01f, .sliderMax = 4, .validMin = 0, .validMax = kUnbounded, .defaultValue = {1.5f, 1.5f, 1.5f},
+     .validMinExclusive = true, .help = "Real part of the complex index per RGB channel (> 0)"},
+    {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.0f, 0.0f, 0.0f},
+     .help = "Imaginary part of the index per channel: 0 for dielectrics, a few for metals"},
+    {.name = "roughness", .label = "Roughness α", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0.001f, .sliderMax = 1, .validMin = 0.001f, .validMax = 1, .defaultValue = {0.2f, 0, 0},
+     .scale = ParamScale::Log, .help = "Linear microfacet roughness α (perceptual roughness squared)"},
+    {.name = "distribution", .label = "Distribution D", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1, 0, 0},
+     .options = kDistributionOptions, .help = "Normal distribution of the microfacets"},
+    {.name = "geometry", .label = "Geometry G", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1, 0, 0},
+     .options = kGeometryOptions,
+     .help = "Masking-shadowing: V-cavity, or height-correlated Smith for the chosen D (Beckmann in Walter's approximation)"},
+    {.name = "fresnel", .label = "Fresnel F", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1, 0, 0},
+     .options = kFresnelModeOptions, .help = "Schlick's approximation or the exact equations"},
+};
+
+inline CookTorranceParams unpackCookTorrance(const float* v) {
+    return {{v[0], v[1], v[2]},
+            {v[3], v[4], v[5]},
+            {v[6], v[7], v[8]},
+            v[9],
+            static_cast<MicrofacetDistribution>(static_cast<int>(v[10])),
+            static_cast<MicrofacetGeometry>(static_cast<int>(v[11])),
+            static_cast<FresnelMode>(static_cast<int>(v[12]))};
+}
+
+// D·G / (4 cos θ_i cos θ_o) without Fresnel: the specular term of a perfect (F = 1) reflector.
+inline float cookTorranceSpecular(const CookTorranceParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
+    const float cosIn = frame.cosTheta(wi), cosOut = frame.cosTheta(wo);
+    const glm::vec3 halfway = glm::normalize(wi + wo);
+    const float cosHalf = frame.cosTheta(halfway);
+    const float cosDifference = glm::dot(wo, halfway);
+    const float sin2Half = sinSquared(frame.normal, halfway);
+    const bool ggx = p.distribution == MicrofacetDistribution::Ggx;
+    const float distribution = ggx ? distributionGgx(cosHalf, sin2Half, p.roughness)
+                                   : distributionBeckmann(cosHalf, sin2Half, p.roughness);
+    float geometry;
+    if (p.geometry == MicrofacetGeometry::VCavity) geometry = maskingVCavity(cosHalf, cosIn, cosOut, cosDifference);
+    else if (ggx) geometry = smithHeightCorrelated(lambdaGgx(cosIn, p.roughness), lambdaGgx(cosOut, p.roughness));
+    else geometry = smithHeightCorrelated(lambdaBeckmann(cosIn, p.roughness), lambdaBeckmann(cosOut, p.roughness));
+    return distribution * geometry / (4.0f * cosIn * cosOut);
+}
+
+// f_r = ρ_d/π + D·G·F(ω_i·h) / (4 cos θ_i cos θ_o) (Cook & Torrance 1982; Walter et al. 2007, eq. 20).
+inline glm::vec3 evalCookTorrance(const CookTorranceParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
+    if (frame.cosTheta(wi) <= 0.0f || frame.cosTheta(wo) <= 0.0f) return glm::vec3(0.0f);
+    const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
+    const glm::vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
+    return p.diffuseAlbedo * kInvPi + fresnel * cookTorranceSpecular(p, wi, wo, frame);
+}
+
+}  // namespace glint

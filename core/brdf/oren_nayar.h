@@ -1,0 +1,45 @@
+// Oren-Nayar rough diffuse reflection, the qualitative model of Oren & Nayar, "Generalization of
+// Lambert's Reflectance Model", SIGGRAPH 1994 (eq. 30): Lambert times A + B·max(0, cos Δφ)·sin α·tan β.
+// CPU reference; its GLSL twin is shaders/brdf/oren_nayar.glsl. No interreflection term.
+#pragma once
+
+#include <algorithm>
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+
+struct OrenNayarParams {
+    glm::vec3 albedo;       // ρ per channel
+    float roughnessDegrees;  // σ: standard deviation of the facet slope angle [degrees]
+};
+
+inline constexpr ParamSpec kOrenNayarTable[] = {
+    {.name = "albedo", .label = "Albedo ρ", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.8f, 0.8f, 0.8f},
+     .help = "Facet albedo; σ = 0 gives Lambert ρ/π"},
+    {.name = "roughness", .label = "Roughness σ", .unit = "deg", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 90, .validMin = 0, .validMax = 90, .defaultValue = {30, 0, 0},
+     .help = "Standard deviation of the facet slope angle, in degrees"},
+};
+
+inline OrenNayarParams unpackOrenNayar(const float* v) { return {{v[0], v[1], v[2]}, v[3]}; }
+
+// f_r = ρ/π (A + B max(0, cos(φ_i − φ_o)) sin α tan β), α = max(θ_i, θ_o), β = min(θ_i, θ_o),
+// A = 1 − 0.5 σ²/(σ² + 0.33), B = 0.45 σ²/(σ² + 0.09), σ in radians. Uses
+// sin θ_i sin θ_o cos Δφ = ω_i·ω_o − cos θ_i cos θ_o and sin α tan β = sin θ_i sin θ_o / max(cos θ_i, cos θ_o).
+inline glm::vec3 evalOrenNayar(const OrenNayarParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
+    const float cosIn = frame.cosTheta(wi), cosOut = frame.cosTheta(wo);
+    if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
+    const float sigma = p.roughnessDegrees * (kPi / 180.0f);
+    const float sigma2 = sigma * sigma;
+    const float a = 1.0f - 0.5f * sigma2 / (sigma2 + 0.33f);
+    const float b = 0.45f * sigma2 / (sigma2 + 0.09f);
+    const float azimuthal = std::max(0.0f, glm::dot(wi, wo) - cosIn * cosOut);
+    return p.albedo * kInvPi * (a + b * azimuthal / std::max(cosIn, cosOut));
+}
+
+}  // namespace glint

@@ -1,0 +1,79 @@
+// Phong: a diffuse Lambert term plus the specular lobe (R·V)^n around the mirror direction of the
+// light (Phong 1975), in the four BRDF forms of the shading lectures (as Blinn-Phong).
+// CPU reference; its GLSL twin is shaders/brdf/phong.glsl.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+
+// How the lobe k_s·cos^n δ (δ = angle between the mirrored light direction R and ω_o) becomes a BRDF.
+enum class PhongForm {
+    Lecture = 0,     // k_s·cos^n δ / cos θ'       (θ' to the light; not reciprocal)
+    MaxCosine = 1,   // k_s·cos^n δ / max(cos θ, cos θ')   (reciprocal repair)
+    HalfVector = 2,  // k_s·cos^n δ / |L+V|²       (reciprocal repair)
+    Normalized = 3,  // k_s·(n+2)/(2π)·cos^n δ     (energy-normalised; Lewis 1994)
+};
+
+inline constexpr EnumOption kPhongFormOptions[] = {
+    {"lecture", "k_s cos^n δ / cos θ' (lecture)"},
+    {"max_cosine", "k_s cos^n δ / max(cos θ, cos θ')"},
+    {"half_vector", "k_s cos^n δ / |L+V|²"},
+    {"normalized", "k_s (n+2)/2π cos^n δ"},
+};
+
+struct PhongParams {
+    glm::vec3 diffuseAlbedo;  // ρ_d of the Lambert term
+    glm::vec3 specular;       // k_s
+    float exponent;           // n: sharpness of the lobe
+    PhongForm form;
+};
+
+inline constexpr ParamSpec kPhongTable[] = {
+    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.1f, 0.3f, 0.5f},
+     .help = "Lambert term ρ_d/π"},
+    {.name = "specular", .label = "Specular k_s", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.04f, 0.04f, 0.04f},
+     .help = "Specular strength; white for dielectrics, coloured for metals"},
+    {.name = "exponent", .label = "Exponent n", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 10000, .validMin = 0, .validMax = kUnbounded, .defaultValue = {32, 0, 0},
+     .scale = ParamScale::Log, .help = "Sharpness of the highlight, cos^n δ"},
+    {.name = "form", .label = "BRDF form", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 3, .validMin = 0, .validMax = 3, .defaultValue = {3, 0, 0},
+     .options = kPhongFormOptions, .help = "How the lobe is made a BRDF"},
+};
+
+inline PhongParams unpackPhong(const float* v) {
+    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], static_cast<PhongForm>(static_cast<int>(v[7]))};
+}
+
+// f_r = ρ_d/π + specular form (see PhongForm), R = 2(N·ω_i)N − ω_i; zero below the horizon.
+// R·ω_o = 2(N·ω_i)(N·ω_o) − ω_i·ω_o is symmetric in ω_i and ω_o, so the lobe itself is reciprocal.
+inline glm::vec3 evalPhong(const PhongParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
+    const float cosIn = frame.cosTheta(wi);
+    const float cosOut = frame.cosTheta(wo);
+    if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
+    const float cosMirror = 2.0f * cosIn * cosOut - glm::dot(wi, wo);
+    const float lobe = std::pow(std::max(cosMirror, 0.0f), p.exponent);
+    float specularScale = 0.0f;
+    switch (p.form) {
+        case PhongForm::Lecture: specularScale = lobe / cosIn; break;
+        case PhongForm::MaxCosine: specularScale = lobe / std::max(cosIn, cosOut); break;
+        case PhongForm::HalfVector: {
+            const glm::vec3 sum = wi + wo;
+            specularScale = lobe / glm::dot(sum, sum);
+            break;
+        }
+        case PhongForm::Normalized: specularScale = lobe * (p.exponent + 2.0f) / (2.0f * kPi); break;
+    }
+    return p.diffuseAlbedo * kInvPi + p.specular * specularScale;
+}
+
+}  // namespace glint

@@ -1,0 +1,73 @@
+// Limb-darkened diffuse reflection (Minnaert 1941, or Lommel-Seeliger) for the moon, plus a
+// retroreflective lobe around the light direction for safety vests and road signs.
+// CPU reference; its GLSL twin is shaders/brdf/retroreflective.glsl.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+
+enum class LimbDarkening {
+    Minnaert = 0,        // ρ (k+1)/(2π) (cos θ_i cos θ_o)^(k−1)
+    LommelSeeliger = 1,  // ρ / (4π (cos θ_i + cos θ_o)), ρ the single-scattering albedo
+};
+
+inline constexpr EnumOption kLimbDarkeningOptions[] = {
+    {"minnaert", "Minnaert (cos θ_i cos θ_o)^(k−1)"},
+    {"lommel_seeliger", "Lommel-Seeliger 1/(cos θ_i + cos θ_o)"},
+};
+
+struct RetroreflectiveParams {
+    glm::vec3 albedo;           // ρ: Minnaert albedo at normal incidence, or single-scattering albedo
+    LimbDarkening limbDarkening;
+    float minnaertExponent;     // k: 1 is Lambert, < 1 flattens the disc (the full moon), > 1 darkens the limb
+    glm::vec3 retroreflection;  // k_r: weight of the lobe around ω_i
+    float retroExponent;        // m: sharpness of that lobe
+};
+
+inline constexpr ParamSpec kRetroreflectiveTable[] = {
+    {.name = "albedo", .label = "Albedo ρ", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.12f, 0.12f, 0.12f},
+     .help = "Minnaert: directional albedo at normal incidence; Lommel-Seeliger: single-scattering albedo"},
+    {.name = "limb_darkening", .label = "Limb darkening", .unit = "", .kind = ParamKind::Enum,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1, 0, 0},
+     .options = kLimbDarkeningOptions, .help = "The diffuse law"},
+    {.name = "minnaert_k", .label = "Minnaert exponent k", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0.1f, .sliderMax = 2, .validMin = 0.1f, .validMax = 2, .defaultValue = {0.7f, 0, 0},
+     .help = "Minnaert only: 1 = Lambert, < 1 flatter (moon-like), > 1 darker limb"},
+    {.name = "retroreflection", .label = "Retroreflection k_r", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
+     .help = "Weight of the lobe (m+1)/(2π) cos^m γ, γ the angle between ω_o and ω_i"},
+    {.name = "retro_exponent", .label = "Retro exponent m", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 1000, .validMin = 0, .validMax = kUnbounded, .defaultValue = {50, 0, 0},
+     .scale = ParamScale::Log, .help = "Sharpness of the retroreflective lobe"},
+};
+
+inline RetroreflectiveParams unpackRetroreflective(const float* v) {
+    return {{v[0], v[1], v[2]}, static_cast<LimbDarkening>(static_cast<int>(v[3])), v[4],
+            {v[5], v[6], v[7]}, v[8]};
+}
+
+// f_r = diffuse law + k_r (m+1)/(2π) max(0, ω_i·ω_o)^m. Both terms are symmetric in ω_i, ω_o.
+// Minnaert's BRDF (cos θ_i cos θ_o)^(k−1) (Minnaert 1941, "The reciprocity principle in lunar
+// photometry") is normalised so that its albedo at normal incidence is ρ; Lommel-Seeliger
+// (Hapke 1981, single scattering) reflects at most ρ/2.
+inline glm::vec3 evalRetroreflective(const RetroreflectiveParams& p, glm::vec3 wi, glm::vec3 wo,
+                                     const ShadingFrame& frame) {
+    const float cosIn = frame.cosTheta(wi), cosOut = frame.cosTheta(wo);
+    if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
+    float diffuse;
+    if (p.limbDarkening == LimbDarkening::Minnaert)
+        diffuse = (p.minnaertExponent + 1.0f) / (2.0f * kPi) * std::pow(cosIn * cosOut, p.minnaertExponent - 1.0f);
+    else diffuse = 1.0f / (4.0f * kPi * (cosIn + cosOut));
+    const float retro = (p.retroExponent + 1.0f) / (2.0f * kPi) * std::pow(std::max(glm::dot(wi, wo), 0.0f), p.retroExponent);
+    return p.albedo * diffuse + p.retroreflection * retro;
+}
+
+}  // namespace glint

@@ -1,0 +1,27 @@
+// Cook-Torrance microfacet BRDF D·G·F / (4 cos θ_i cos θ_o) plus Lambert diffuse. GLSL twin of
+// core/brdf/cook_torrance.h; MaterialParams is generated from its parameter table (fields:
+// diffuse_albedo, ior, extinction, roughness, distribution, geometry, fresnel).
+#include "brdf/microfacet.glsl"
+
+float cookTorranceSpecular(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    float cosIn = cosTheta(frame, wi), cosOut = cosTheta(frame, wo);
+    vec3 halfway = normalize(wi + wo);
+    float cosHalf = cosTheta(frame, halfway);
+    float cosDifference = dot(wo, halfway);
+    float sin2Half = sinSquared(frame.normal, halfway);
+    bool ggx = p.distribution == 1;
+    float distribution = ggx ? distributionGgx(cosHalf, sin2Half, p.roughness)
+                             : distributionBeckmann(cosHalf, sin2Half, p.roughness);
+    float geometry;
+    if (p.geometry == 0) geometry = maskingVCavity(cosHalf, cosIn, cosOut, cosDifference);
+    else if (ggx) geometry = smithHeightCorrelated(lambdaGgx(cosIn, p.roughness), lambdaGgx(cosOut, p.roughness));
+    else geometry = smithHeightCorrelated(lambdaBeckmann(cosIn, p.roughness), lambdaBeckmann(cosOut, p.roughness));
+    return distribution * geometry / (4.0 * cosIn * cosOut);
+}
+
+vec3 evalCookTorrance(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    if (cosTheta(frame, wi) <= 0.0 || cosTheta(frame, wo) <= 0.0) return vec3(0.0);
+    float cosDifference = dot(wi, normalize(wi + wo));
+    vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
+    return p.diffuse_albedo * INV_PI + fresnel * cookTorranceSpecular(p, wi, wo, frame);
+}

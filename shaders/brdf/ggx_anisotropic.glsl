@@ -1,0 +1,20 @@
+// Anisotropic GGX with height-correlated Smith, complex-index Fresnel and Lambert diffuse. GLSL
+// twin of core/brdf/ggx_anisotropic.h (fields: diffuse_albedo, ior, extinction, roughness_x,
+// roughness_y, fresnel).
+#include "brdf/microfacet.glsl"
+
+float ggxAnisotropicSpecular(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    vec3 inLocal = toLocal(frame, wi), outLocal = toLocal(frame, wo);
+    vec3 halfLocal = normalize(inLocal + outLocal);
+    float distribution = distributionGgxAnisotropic(halfLocal, p.roughness_x, p.roughness_y);
+    float geometry = smithHeightCorrelated(lambdaGgxAnisotropic(inLocal, p.roughness_x, p.roughness_y),
+                                           lambdaGgxAnisotropic(outLocal, p.roughness_x, p.roughness_y));
+    return distribution * geometry / (4.0 * inLocal.z * outLocal.z);
+}
+
+vec3 evalGgxAnisotropic(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    if (cosTheta(frame, wi) <= 0.0 || cosTheta(frame, wo) <= 0.0) return vec3(0.0);
+    float cosDifference = dot(wi, normalize(wi + wo));
+    vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
+    return p.diffuse_albedo * INV_PI + fresnel * ggxAnisotropicSpecular(p, wi, wo, frame);
+}

@@ -1,0 +1,13 @@
+// Oren-Nayar qualitative rough diffuse model (1994, eq. 30). GLSL twin of core/brdf/oren_nayar.h
+// (fields: albedo, roughness [degrees]).
+
+vec3 evalOrenNayar(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    float cosIn = cosTheta(frame, wi), cosOut = cosTheta(frame, wo);
+    if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
+    float sigma = p.roughness * (PI / 180.0);
+    float sigma2 = sigma * sigma;
+    float a = 1.0 - 0.5 * sigma2 / (sigma2 + 0.33);
+    float b = 0.45 * sigma2 / (sigma2 + 0.09);
+    float azimuthal = max(0.0, dot(wi, wo) - cosIn * cosOut);
+    return p.albedo * INV_PI * (a + b * azimuthal / max(cosIn, cosOut));
+}

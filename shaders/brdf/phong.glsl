@@ -1,0 +1,17 @@
+// Phong in the four BRDF forms of the lectures. GLSL twin of core/brdf/phong.h
+// (fields: diffuse_albedo, specular, exponent, form).
+
+vec3 evalPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    float cosIn = cosTheta(frame, wi);
+    float cosOut = cosTheta(frame, wo);
+    if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
+    float cosMirror = 2.0 * cosIn * cosOut - dot(wi, wo);  // R·ω_o
+    float lobe = pow(max(cosMirror, 0.0), p.exponent);
+    float specularScale;
+    vec3 sum = wi + wo;
+    if (p.form == 0) specularScale = lobe / cosIn;                             // lecture
+    else if (p.form == 1) specularScale = lobe / max(cosIn, cosOut);           // max-cosine
+    else if (p.form == 2) specularScale = lobe / dot(sum, sum);                // |L+V|²
+    else specularScale = lobe * (p.exponent + 2.0) / (2.0 * PI);               // normalised
+    return p.diffuse_albedo * INV_PI + p.specular * specularScale;
+}

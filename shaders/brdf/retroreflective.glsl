@@ -1,0 +1,14 @@
+// Minnaert or Lommel-Seeliger limb darkening plus a retroreflective lobe. GLSL twin of
+// core/brdf/retroreflective.h (fields: albedo, limb_darkening, minnaert_k, retroreflection,
+// retro_exponent).
+
+vec3 evalRetroreflective(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+    float cosIn = cosTheta(frame, wi), cosOut = cosTheta(frame, wo);
+    if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
+    float diffuse;
+    if (p.limb_darkening == 0)
+        diffuse = (p.minnaert_k + 1.0) / (2.0 * PI) * pow(cosIn * cosOut, p.minnaert_k - 1.0);
+    else diffuse = 1.0 / (4.0 * PI * (cosIn + cosOut));
+    float retro = (p.retro_exponent + 1.0) / (2.0 * PI) * pow(max(dot(wi, wo), 0.0), p.retro_exponent);
+    return p.albedo * diffuse + p.retroreflection * retro;
+}
