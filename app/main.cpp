@@ -9,6 +9,8 @@
 #include "cli/headless.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
+#include "cli/snapshot_command.h"
+#include "cli/thumbnails_command.h"
 #include "editor/editor.h"
 #include "scene/scene_json.h"
 
@@ -21,6 +23,10 @@ constexpr const char* kUsage =
     "  glint [SCENE.json]          open the editor (the default scene when no file is given)\n"
     "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
     "                              render headless (no display needed)\n"
+    "  glint snapshot SUITE [--out DIR] [--update] [--update-case NAME] [--jobs N] [--shard I/N]\n"
+    "                              compare a suite of scenes and materials with their goldens\n"
+    "  glint thumbnails DIR -o OUTDIR [--size N] [--jobs N]\n"
+    "                              one thumbnail per material and a labelled contact sheet\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
     "  glint --help | --version\n"
@@ -57,6 +63,10 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 1, argv + argc);
     if (!arguments.empty() && arguments[0] == "render")
         return glint::runRenderCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "snapshot")
+        return glint::runSnapshotCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "thumbnails")
+        return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")
         return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {

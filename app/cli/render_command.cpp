@@ -7,13 +7,14 @@
 #include "cli/headless.h"
 #include "display/display_chain.h"
 #include "render/reference_renderer.h"
-#include "scene/scene_json.h"
+#include "snapshot/case_source.h"
 
 namespace glint {
 namespace {
 
 constexpr const char* kUsage =
     "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
+    "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256)\n"
     "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
@@ -72,7 +73,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.scenePath.empty()) return usageError("no scene file given");
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
 
-    auto scene = loadScene(options.scenePath);
+    auto scene = loadRenderable(options.scenePath);  // a material file renders on the preview stage
     if (!scene) {
         std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
         return 2;

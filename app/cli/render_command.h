@@ -1,5 +1,6 @@
 // `glint render SCENE -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]`: renders a
-// scene file headless (OSMesa, or the CPU reference) and writes the image.
+// scene file (or a material file, on the preview stage) headless (OSMesa, or the CPU reference)
+// and writes the image.
 #pragma once
 
 #include <string>

@@ -3,10 +3,23 @@
 
 #include <glad/gl.h>
 
+#include <mutex>
+
 namespace glint {
 
 Status loadGlFunctions(const GlPlatform& platform) {
-    const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(platform.procAddressLoader()));
+    // glad's function pointers are process-global. OSMesa's are the same for every context, so
+    // several threads, each with its own context, share one load: the first caller loads, later
+    // callers with the same loader reuse it (and never rewrite pointers another thread is using).
+    static std::mutex loadMutex;
+    static GetProcAddress loadedWith = nullptr;
+    static int loadedVersion = 0;
+    const std::lock_guard<std::mutex> lock(loadMutex);
+    if (loadedWith != platform.procAddressLoader() || loadedVersion == 0) {
+        loadedVersion = gladLoadGL(reinterpret_cast<GLADloadfunc>(platform.procAddressLoader()));
+        loadedWith = platform.procAddressLoader();
+    }
+    const int version = loadedVersion;
     if (version == 0) return makeError(std::string("could not load OpenGL functions through ") + platform.name());
     const int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
     if (major < 4 || (major == 4 && minor < 1))

@@ -23,12 +23,27 @@ CompareResult compareImages(const DisplayImage& actual, const DisplayImage& expe
         result.failingPixels = result.totalPixels;
         return result;
     }
-    for (long pixel = 0; pixel < result.totalPixels; ++pixel) {
+    // The largest channel difference between actual pixel `pixel` and expected pixel `other`.
+    auto worstChannel = [&](long pixel, long other) {
         int worst = 0;
         for (int c = 0; c < 3; ++c)
-            worst = std::max(worst, std::abs(int(actual.pixels[pixel * 3 + c]) - int(expected.pixels[pixel * 3 + c])));
-        result.maxChannelDifference = std::max(result.maxChannelDifference, worst);
-        if (worst > tolerance.channelTolerance) ++result.failingPixels;
+            worst = std::max(worst, std::abs(int(actual.pixels[pixel * 3 + c]) - int(expected.pixels[other * 3 + c])));
+        return worst;
+    };
+    const int reach = tolerance.allowOnePixelShift ? 1 : 0;
+    for (int y = 0; y < expected.height; ++y) {
+        for (int x = 0; x < expected.width; ++x) {
+            const long pixel = static_cast<long>(y) * expected.width + x;
+            int best = worstChannel(pixel, pixel);
+            for (int dy = -reach; dy <= reach && best > tolerance.channelTolerance; ++dy)
+                for (int dx = -reach; dx <= reach; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= expected.width || ny >= expected.height) continue;
+                    best = std::min(best, worstChannel(pixel, static_cast<long>(ny) * expected.width + nx));
+                }
+            result.maxChannelDifference = std::max(result.maxChannelDifference, best);
+            if (best > tolerance.channelTolerance) ++result.failingPixels;
+        }
     }
     result.passed = result.failingFraction() <= tolerance.failingFraction;
     return result;

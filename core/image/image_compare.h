@@ -1,7 +1,8 @@
 // Golden-image comparison with the tolerance of DESIGN.md (after Filament's renderdiff and
 // Blender's render tests): a pixel fails when any channel differs by more than
 // `channelTolerance` (default 5/255); the comparison fails when more than `failingFraction`
-// (default 0.1%) of pixels fail. Also builds the ×16 difference image written on failure.
+// (default 0.1%) of pixels fail. Optionally a pixel may match any golden pixel in its 3×3
+// neighbourhood (a one-pixel shift of anti-aliased edges). Also builds the ×16 difference image.
 #pragma once
 
 #include <string>
@@ -13,13 +14,14 @@ namespace glint {
 struct CompareTolerance {
     int channelTolerance = 5;        // in 8-bit steps
     double failingFraction = 0.001;  // of all pixels
+    bool allowOnePixelShift = false; // a pixel passes if any golden pixel in its 3×3 neighbourhood matches
 };
 
 struct CompareResult {
     bool sizesMatch = true;
     long failingPixels = 0;
     long totalPixels = 0;
-    int maxChannelDifference = 0;  // in 8-bit steps
+    int maxChannelDifference = 0;  // in 8-bit steps (after the shift allowance, when on)
     bool passed = false;
 
     double failingFraction() const { return totalPixels ? static_cast<double>(failingPixels) / totalPixels : 1.0; }

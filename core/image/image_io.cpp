@@ -17,11 +17,12 @@ std::string extensionOf(const std::string& path) {
 }
 
 template <class Pixel>
-Status writeImage(const std::string& path, int width, int height, const Pixel* pixels, OIIO::TypeDesc type) {
+Status writeImage(const std::string& path, int width, int height, const Pixel* pixels, OIIO::TypeDesc type, int pngCompression = 6) {
     auto output = OIIO::ImageOutput::create(path);
     if (!output) return makeError("cannot write this image format: " + OIIO::geterror(), {path});
     OIIO::ImageSpec spec(width, height, 3, type);
     if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
+    spec.attribute("png:compressionLevel", pngCompression);
     if (!output->open(path, spec)) return makeError("cannot write: " + output->geterror(), {path});
     if (!output->write_image(type, pixels) || !output->close())
         return makeError("write failed: " + output->geterror(), {path});
@@ -57,8 +58,8 @@ Status writeRadianceImage(const RadianceImage& image, const std::string& path) {
     return writeImage(path, image.width, image.height, image.pixels.data(), OIIO::TypeDesc::FLOAT);
 }
 
-Status writeDisplayImage(const DisplayImage& image, const std::string& path) {
-    return writeImage(path, image.width, image.height, image.pixels.data(), OIIO::TypeDesc::UINT8);
+Status writeDisplayImage(const DisplayImage& image, const std::string& path, int pngCompression) {
+    return writeImage(path, image.width, image.height, image.pixels.data(), OIIO::TypeDesc::UINT8, pngCompression);
 }
 
 Result<RadianceImage> readRadianceImage(const std::string& path) {

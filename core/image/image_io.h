@@ -10,7 +10,8 @@
 namespace glint {
 
 Status writeRadianceImage(const RadianceImage& image, const std::string& path);
-Status writeDisplayImage(const DisplayImage& image, const std::string& path);
+// `pngCompression` is zlib's level for PNG files: 0 (fastest, largest) to 9; OpenImageIO's default 6.
+Status writeDisplayImage(const DisplayImage& image, const std::string& path, int pngCompression = 6);
 Result<RadianceImage> readRadianceImage(const std::string& path);
 Result<DisplayImage> readDisplayImage(const std::string& path);
 

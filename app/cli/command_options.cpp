@@ -1,0 +1,37 @@
+// Option parsing for subcommands (see command_options.h).
+#include "cli/command_options.h"
+
+#include <algorithm>
+
+namespace glint {
+
+Result<ParsedArguments> parseCommandOptions(const std::vector<std::string>& arguments, const std::vector<CommandOption>& options,
+                                            const std::string& positionalName) {
+    ParsedArguments parsed;
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& argument = arguments[i];
+        if (argument == "-h" || argument == "--help") {
+            parsed.help = true;
+            continue;
+        }
+        if (argument.empty() || argument[0] != '-') {
+            if (!parsed.positionals.empty())
+                return makeError("one " + positionalName + " at a time (got " + parsed.positionals[0] + " and " + argument + ")");
+            parsed.positionals.push_back(argument);
+            continue;
+        }
+        const auto option = std::find_if(options.begin(), options.end(), [&](const CommandOption& candidate) {
+            return std::find(candidate.names.begin(), candidate.names.end(), argument) != candidate.names.end();
+        });
+        if (option == options.end()) return makeError("unknown option " + argument);
+        std::string value;
+        if (!option->valueName.empty()) {
+            if (i + 1 >= arguments.size()) return makeError(argument + " needs " + option->valueName);
+            value = arguments[++i];
+        }
+        if (std::string refusal = option->apply(value); !refusal.empty()) return makeError(refusal);
+    }
+    return parsed;
+}
+
+}  // namespace glint

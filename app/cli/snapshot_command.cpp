@@ -1,0 +1,226 @@
+// `glint snapshot` (see snapshot_command.h).
+// Sections: options · one case · reports · the command.
+#include "cli/snapshot_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include "cli/command_options.h"
+#include "cli/render_pool.h"
+#include "image/image_io.h"
+#include "snapshot/case_source.h"
+#include "snapshot/golden_check.h"
+#include "snapshot/snapshot_report.h"
+#include "snapshot/snapshot_suite.h"
+#include "util/file_io.h"
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kUsage =
+    "usage: glint snapshot SUITE [--out DIR] [--update] [--update-case NAME]... [--jobs N] [--shard I/N]\n"
+    "  SUITE              a suite directory (scenes and materials *.json, goldens/NAME.png, optional\n"
+    "                     snapshot.json) or its manifest file\n"
+    "  --out DIR          where the report goes (default: snapshot-report): index.html, junit.xml,\n"
+    "                     images/NAME.{actual,expected,diff}.png for each failing case\n"
+    "  --update           write the goldens of failing cases (missing, other size, different)\n"
+    "  --update-case NAME write the golden of case NAME, passing or not (repeatable)\n"
+    "  --jobs N           render on N threads, each with its own OSMesa context (default 1)\n"
+    "  --shard I/N        run only shard I of N (0 <= I < N): case k of the sorted list goes to shard k mod N\n"
+    "exit code: 0 all passed, 1 some case failed or errored, 2 the suite could not be run\n";
+
+// --- options --------------------------------------------------------------------------------
+
+struct SnapshotOptions {
+    std::string suitePath;
+    std::string outputDirectory = "snapshot-report";
+    bool updateFailing = false;
+    std::set<std::string> updateNamed;
+    int jobs = 1;
+    Shard shard;
+    bool sharded = false;
+};
+
+int usageError(const std::string& message) {
+    std::fprintf(stderr, "glint snapshot: %s\n%s", message.c_str(), kUsage);
+    return 2;
+}
+
+// --- one case -------------------------------------------------------------------------------
+
+// Writes a golden atomically: a temporary PNG beside it, renamed over it.
+Status writeGolden(const DisplayImage& image, const std::string& goldenPath) {
+    const fs::path golden(goldenPath);
+    const std::string temporary = (golden.parent_path() / ("." + golden.stem().string() + ".writing.png")).string();
+    if (Status written = writeDisplayImage(image, temporary); !written) return written;
+    std::error_code error;
+    fs::rename(temporary, golden, error);
+    if (error) return makeError("cannot write the golden: " + error.message(), {goldenPath});
+    return success();
+}
+
+CaseResult runCase(HeadlessRenderer& headless, const SnapshotSuite& suite, const SnapshotCase& snapshotCase,
+                   const SnapshotOptions& options) {
+    CaseResult result;
+    result.name = snapshotCase.name;
+    result.file = snapshotCase.file;
+    result.tolerance = snapshotCase.tolerance;
+    auto scene = loadRenderable(snapshotCase.file, snapshotCase.width, snapshotCase.height);
+    if (!scene) {
+        result.message = scene.error().format();
+        return result;
+    }
+    auto images = headless.render(*scene, scene->width, scene->height);
+    if (!images) {
+        result.message = "render failed: " + images.error().format();
+        return result;
+    }
+    result.width = scene->width, result.height = scene->height;
+    const std::string goldenPath = suite.goldenPath(snapshotCase);
+    GoldenCheck check = checkAgainstGolden(images->display, goldenPath, snapshotCase.tolerance);
+    result.compared = check.compared;
+    result.comparison = check.comparison;
+
+    if (options.updateNamed.count(snapshotCase.name) || (options.updateFailing && check.outcome == CaseOutcome::Failed)) {
+        if (Status written = writeGolden(images->display, goldenPath); !written) {
+            result.message = written.error().format();
+            return result;
+        }
+        result.outcome = CaseOutcome::Passed;
+        result.goldenWritten = goldenPath;
+        result.message = check.outcome == CaseOutcome::Failed ? "golden written; before: " + check.message : "golden rewritten";
+        return result;
+    }
+    result.outcome = check.outcome;
+    result.message = check.message;
+    if (check.outcome != CaseOutcome::Failed) return result;
+
+    // A failing case leaves its images for a person (and the HTML report) to look at.
+    const fs::path imageDirectory = fs::path(options.outputDirectory) / "images";
+    auto save = [&](const DisplayImage& image, const std::string& kind, std::string& reportPath) {
+        const std::string relative = "images/" + snapshotCase.name + "." + kind + ".png";
+        if (Status written = writeDisplayImage(image, (imageDirectory / (snapshotCase.name + "." + kind + ".png")).string()); !written)
+            result.message += "; " + written.error().format();
+        else
+            reportPath = relative;
+    };
+    save(images->display, "actual", result.actualImage);
+    if (check.golden) save(*check.golden, "expected", result.expectedImage);
+    if (check.compared) save(differenceImage(images->display, *check.golden), "diff", result.diffImage);
+    return result;
+}
+
+// --- reports --------------------------------------------------------------------------------
+
+// Removes the images an earlier run left (only the names this command writes).
+void removeOldImages(const fs::path& imageDirectory) {
+    static const std::regex ours(R"(.+\.(actual|expected|diff)\.png)");
+    std::error_code error;
+    std::vector<fs::path> stale;
+    for (auto entry = fs::directory_iterator(imageDirectory, error); !error && entry != fs::directory_iterator(); entry.increment(error))
+        if (std::regex_match(entry->path().filename().string(), ours)) stale.push_back(entry->path());
+    for (const fs::path& path : stale) fs::remove(path, error);
+}
+
+Status writeReports(const SnapshotReport& report, const std::string& outputDirectory) {
+    const fs::path directory(outputDirectory);
+    if (Status html = writeFileAtomically((directory / "index.html").string(), htmlReport(report)); !html) return html;
+    return writeFileAtomically((directory / "junit.xml").string(), junitReport(report));
+}
+
+// The suite could not be run: say why, still leave a report for CI, exit 2.
+int suiteFailure(SnapshotReport& report, const std::string& message, const SnapshotOptions& options) {
+    report.suiteError = message;
+    std::fprintf(stderr, "glint snapshot: %s\n", message.c_str());
+    std::error_code error;
+    fs::create_directories(options.outputDirectory, error);
+    if (Status written = writeReports(report, options.outputDirectory); !written)
+        std::fprintf(stderr, "glint snapshot: %s\n", written.error().format().c_str());
+    std::printf("%s\n", report.summaryLine().c_str());
+    return 2;
+}
+
+}  // namespace
+
+// --- the command ----------------------------------------------------------------------------
+
+int runSnapshotCommand(const std::vector<std::string>& arguments) {
+    SnapshotOptions options;
+    const std::vector<CommandOption> known = {
+        {{"-o", "--out"}, "a directory", [&](const std::string& value) { options.outputDirectory = value; return std::string(); }},
+        {{"--update"}, "", [&](const std::string&) { options.updateFailing = true; return std::string(); }},
+        {{"--update-case"}, "a case name", [&](const std::string& value) { options.updateNamed.insert(value); return std::string(); }},
+        {{"-j", "--jobs"}, "a number from 1 to 999",
+         [&](const std::string& value) {
+             if (!std::regex_match(value, std::regex("[1-9][0-9]{0,2}"))) return std::string("--jobs needs a number from 1 to 999");
+             options.jobs = std::stoi(value);
+             return std::string();
+         }},
+        {{"--shard"}, "I/N",
+         [&](const std::string& value) {
+             auto shard = parseShard(value);
+             if (!shard) return shard.error().message;
+             options.shard = *shard;
+             options.sharded = true;
+             return std::string();
+         }},
+    };
+    auto parsed = parseCommandOptions(arguments, known, "suite");
+    if (!parsed) return usageError(parsed.error().message);
+    if (parsed->help) {
+        std::printf("%s", kUsage);
+        return 0;
+    }
+    if (!parsed->positionals.empty()) options.suitePath = parsed->positionals[0];
+    if (options.suitePath.empty()) return usageError("no suite directory or manifest given");
+
+    SnapshotReport report;
+    report.suiteName = fs::path(options.suitePath).filename().string();
+    auto suite = loadSnapshotSuite(options.suitePath);
+    if (!suite) return suiteFailure(report, suite.error().format(), options);
+    report.suiteName = suite->name;
+    if (options.sharded)
+        report.suiteName += " (shard " + std::to_string(options.shard.index) + "/" + std::to_string(options.shard.count) + ")";
+    for (const std::string& name : options.updateNamed)
+        if (std::none_of(suite->cases.begin(), suite->cases.end(), [&](const SnapshotCase& c) { return c.name == name; }))
+            return suiteFailure(report, "--update-case " + name + ": the suite has no case of that name", options);
+
+    const std::vector<SnapshotCase> cases = casesOfShard(suite->cases, options.shard);
+    std::error_code error;
+    fs::create_directories(fs::path(options.outputDirectory) / "images", error);
+    if (error) return suiteFailure(report, "cannot create the report directory " + options.outputDirectory + ": " + error.message(), options);
+    removeOldImages(fs::path(options.outputDirectory) / "images");
+    if (options.updateFailing || !options.updateNamed.empty()) fs::create_directories(fs::path(suite->directory) / "goldens", error);
+
+    report.cases.resize(cases.size());
+    const Status rendered = renderInParallel(options.jobs, cases.size(), [&](HeadlessRenderer& headless, size_t index) {
+        report.cases[index] = runCase(headless, *suite, cases[index], options);
+    });
+    if (!rendered) {
+        report.cases.clear();
+        return suiteFailure(report, rendered.error().format(), options);
+    }
+
+    for (const CaseResult& result : report.cases) {
+        if (!result.goldenWritten.empty()) std::printf("wrote golden %s\n", result.goldenWritten.c_str());
+        if (result.outcome != CaseOutcome::Passed)
+            std::fprintf(stderr, "%s %s: %s\n", result.outcome == CaseOutcome::Failed ? "FAIL " : "ERROR", result.name.c_str(),
+                         result.message.c_str());
+    }
+    if (Status written = writeReports(report, options.outputDirectory); !written) {
+        std::fprintf(stderr, "glint snapshot: %s\n", written.error().format().c_str());
+        std::printf("%s\n", report.summaryLine().c_str());
+        return 2;
+    }
+    std::fprintf(stderr, "glint snapshot: report in %s/index.html and %s/junit.xml\n", options.outputDirectory.c_str(),
+                 options.outputDirectory.c_str());
+    std::printf("%s\n", report.summaryLine().c_str());
+    return report.count(CaseOutcome::Passed) == static_cast<int>(report.cases.size()) ? 0 : 1;
+}
+
+}  // namespace glint
