@@ -22,9 +22,10 @@ def main():
             shot = x.screenshot()
             write_png(shot, os.path.join(output, "gui_smoke.png"))
             width, height, _ = shot
-            # The viewport is left of the panel (about 360 px wide); the sphere sits near its centre.
-            sphere = pixel(shot, (width - 360) // 2, height // 2 - 40)
-            background = pixel(shot, 20, 20)
+            # The viewport lies between the scene column (330 px) and the material column (360 px);
+            # the sphere sits near its centre.
+            sphere = pixel(shot, 330 + (width - 330 - 360) // 2, height // 2 - 40)
+            background = pixel(shot, 350, 60)
             assert sphere[0] > 80 and sphere[0] > sphere[1] + 30, f"no lit red sphere at the viewport centre: {sphere}"
             assert max(background) < 60, f"background should be dark: {background}"
             # The panel: ImGui's dark window with light text on it.

@@ -43,6 +43,66 @@ class XServer:
             time.sleep(0.2)
         raise RuntimeError(f"no window named {name!r} appeared in {timeout} s")
 
+    # --- real input through xdotool ------------------------------------------------------------
+
+    def click(self, x, y, button=1):
+        self.run("xdotool", "mousemove", "--sync", str(x), str(y))
+        time.sleep(0.05)
+        self.run("xdotool", "click", str(button))
+
+    def drag(self, start, end, button=1, steps=12, step_seconds=0.03):
+        """Presses at start, moves in steps (the application sees motion events), releases at end."""
+        self.run("xdotool", "mousemove", "--sync", str(start[0]), str(start[1]))
+        time.sleep(0.1)
+        self.run("xdotool", "mousedown", str(button))
+        for i in range(1, steps + 1):
+            x = start[0] + (end[0] - start[0]) * i // steps
+            y = start[1] + (end[1] - start[1]) * i // steps
+            self.run("xdotool", "mousemove", "--sync", str(x), str(y))
+            time.sleep(step_seconds)
+        time.sleep(0.1)
+        self.run("xdotool", "mouseup", str(button))
+
+    def key(self, *keys, hold_seconds=0.15):
+        """Presses keys such as "ctrl+z" or "Return" (xdotool names), one after another, holding
+        each chord for hold_seconds so applications that sample key state per frame see it."""
+        for key in keys:
+            parts = key.split("+")
+            for part in parts:
+                self.run("xdotool", "keydown", part)
+            time.sleep(hold_seconds)
+            for part in reversed(parts):
+                self.run("xdotool", "keyup", part)
+            time.sleep(0.05)
+
+    def type_text(self, text):
+        self.run("xdotool", "type", "--delay", "20", "--", text)
+
+    def wait_for(self, condition, what, timeout=20.0, interval=0.25):
+        """Polls screenshots until condition(shot) is true; returns the shot, or raises naming `what`."""
+        deadline = time.time() + timeout
+        shot = None
+        while time.time() < deadline:
+            shot = self.screenshot()
+            if condition(shot):
+                return shot
+            time.sleep(interval)
+        if shot is not None:
+            write_png(shot, os.path.join(os.environ.get("GLINT_GUI_FAILURE_DIR", "."), "failure.png"))
+        raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+
+    def wait_stable(self, box, timeout=20.0, interval=0.3):
+        """Waits until two screenshots in a row agree over box (the application finished drawing)."""
+        deadline = time.time() + timeout
+        previous = self.screenshot()
+        while time.time() < deadline:
+            time.sleep(interval)
+            shot = self.screenshot()
+            if region_difference(shot, previous, box) == 0:
+                return shot
+            previous = shot
+        raise AssertionError(f"the screen did not settle within {timeout} s")
+
     def screenshot(self, window="root"):
         """Returns (width, height, pixels) with pixels a bytes object of RGB triples."""
         target = ["-root"] if window == "root" else ["-id", window]
@@ -62,6 +122,11 @@ def parse_xwd(data):
         raise ValueError(f"unsupported XWD depth {bits_per_pixel}")
     pixels = bytearray(width * height * 3)
     order = "<" if byte_order == 0 else ">"
+    if byte_order == 0 and (red_mask, green_mask, blue_mask) == (0xFF0000, 0xFF00, 0xFF) and bytes_per_line == width * 4:
+        # The common case (little-endian BGRX): slice whole channels at once.
+        body = data[offset:offset + height * bytes_per_line]
+        pixels[0::3], pixels[1::3], pixels[2::3] = body[2::4], body[1::4], body[0::4]
+        return width, height, bytes(pixels)
 
     def shift(mask):
         return (mask & -mask).bit_length() - 1
@@ -75,6 +140,26 @@ def parse_xwd(data):
             pixels[i + 1] = (value >> shifts[1]) & 0xFF
             pixels[i + 2] = (value >> shifts[2]) & 0xFF
     return width, height, bytes(pixels)
+
+
+def region_difference(a, b, box, step=4):
+    """Mean absolute difference (0-255) of two screenshots over box = (x0, y0, x1, y1)."""
+    width = a[0]
+    total, count = 0, 0
+    x0, y0, x1, y1 = box
+    for y in range(y0, y1, step):
+        for x in range(x0, x1, step):
+            i = (y * width + x) * 3
+            total += abs(a[2][i] - b[2][i]) + abs(a[2][i + 1] - b[2][i + 1]) + abs(a[2][i + 2] - b[2][i + 2])
+            count += 3
+    return total / max(count, 1)
+
+
+def region_mean(image, box, step=4):
+    """Mean of all channels (0-255) over box = (x0, y0, x1, y1)."""
+    width = image[0]
+    values = [image[2][(y * width + x) * 3 + c] for y in range(box[1], box[3], step) for x in range(box[0], box[2], step) for c in range(3)]
+    return sum(values) / max(len(values), 1)
 
 
 def pixel(image, x, y):

@@ -102,6 +102,14 @@ TEST(DisplayChain, SrgbAndGammaAndExposure) {
     EXPECT_EQ(quantize8(encodeForDisplay(1.0f, display)), 188);
     display = {0.0f, Transfer::Gamma, 2.2f};
     EXPECT_EQ(quantize8(encodeForDisplay(0.5f, display)), 186);  // 0.5^(1/2.2) = 0.7297
+    // Tone curves: Reinhard maps 1 to 1/2; the ACES fit maps 1 to 2.54/3.16 = 0.8038; both stay
+    // below 1 for bright values where "none" clips.
+    EXPECT_FLOAT_EQ(applyToneMap(1.0f, ToneMap::Reinhard), 0.5f);
+    EXPECT_NEAR(applyToneMap(1.0f, ToneMap::AcesFilmic), 2.54f / 3.16f, 1e-6f);
+    EXPECT_LT(applyToneMap(50.0f, ToneMap::Reinhard), 1.0f);
+    EXPECT_FLOAT_EQ(applyToneMap(7.0f, ToneMap::None), 7.0f);
+    display = {0.0f, Transfer::Srgb, 2.2f, ToneMap::Reinhard};
+    EXPECT_EQ(quantize8(encodeForDisplay(1.0f, display)), 188);  // sRGB(0.5)
 }
 
 }  // namespace

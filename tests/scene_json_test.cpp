@@ -195,3 +195,22 @@ TEST(JsonDocument, LocatesNestedValues) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST(SceneJson, ToneMapRoundTripsAndUnknownCurvesAreRefused) {
+    Scene scene = defaultScene();
+    scene.display.toneMap = ToneMap::AcesFilmic;
+    auto reread = parseScene(sceneToJson(scene).dump(2), "tone.json");
+    ASSERT_TRUE(reread.ok()) << reread.error().format();
+    EXPECT_EQ(reread->display.toneMap, ToneMap::AcesFilmic);
+    nlohmann::json text = sceneToJson(scene);
+    text["display"]["tone_map"] = "filmic-ish";
+    auto refused = parseScene(text.dump(2), "tone.json");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().format().find("tone_map"), std::string::npos) << refused.error().format();
+}
+
+}  // namespace
+}  // namespace glint

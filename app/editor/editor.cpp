@@ -1,5 +1,8 @@
-// The editor's frame loop, input and layout (see editor.h).
-// Sections: event tracking · fonts · input · panels · loop.
+// The editor's frame loop: window callbacks (close, drop), the layout of menu bar, side columns,
+// status bar and viewport, redraw-on-change, undo steps closed when a gesture ends, autosave,
+// screenshots. Panels live in panels/, shortcuts in shortcuts.cpp, camera input in
+// camera_actions.cpp, file actions in document.cpp.
+// Sections: window events · fonts and scale · screenshot · loop.
 #include "editor/editor.h"
 
 #include <GLFW/glfw3.h>
@@ -8,26 +11,51 @@
 #include <imgui_impl_opengl3.h>
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 
-#include "camera/orbit.h"
-#include "editor/material_panel.h"
+#include "cli/headless.h"
+#include "editor/camera_actions.h"
+#include "editor/document.h"
+#include "editor/key_events.h"
+#include "editor/light_handles.h"
+#include "editor/panels/panels.h"
+#include "editor/shortcuts.h"
 #include "gl/renderer.h"
 
 namespace glint {
 namespace {
 
-// --- event tracking: any input or window event asks for a few more frames -------------------
+// --- window events: any input asks for a few more frames; close and drop are queued --------
 
 bool gEventSeen = false;
+bool gCloseRequested = false;
+std::vector<std::string> gDroppedPaths;
+
 void noteCursor(GLFWwindow*, double, double) { gEventSeen = true; }
 void noteButton(GLFWwindow*, int, int, int) { gEventSeen = true; }
 void noteScroll(GLFWwindow*, double, double) { gEventSeen = true; }
-void noteKey(GLFWwindow*, int, int, int, int) { gEventSeen = true; }
+void noteKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) recordKeyPress(key, mods);
+    gEventSeen = true;
+}
 void noteChar(GLFWwindow*, unsigned int) { gEventSeen = true; }
 void noteSize(GLFWwindow*, int, int) { gEventSeen = true; }
 void noteRefresh(GLFWwindow*) { gEventSeen = true; }
+void noteClose(GLFWwindow* window) {
+    // The editor decides (unsaved-changes prompt); the window stays open until it does.
+    glfwSetWindowShouldClose(window, GLFW_FALSE);
+    gCloseRequested = true;
+    gEventSeen = true;
+}
+void noteDrop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) gDroppedPaths.emplace_back(paths[i]);
+    gEventSeen = true;
+}
 
 void installEventTracking(GLFWwindow* window) {
     // Installed before ImGui's backend, which chains to them.
@@ -38,12 +66,14 @@ void installEventTracking(GLFWwindow* window) {
     glfwSetCharCallback(window, noteChar);
     glfwSetFramebufferSizeCallback(window, noteSize);
     glfwSetWindowRefreshCallback(window, noteRefresh);
+    glfwSetWindowCloseCallback(window, noteClose);
+    glfwSetDropCallback(window, noteDrop);
 }
 
-// --- fonts: DejaVu Sans for ρ, θ, π, ², · in labels; ImGui's own font when it is missing ----
+// --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·; sizes follow the UI scale setting -------
 
 void loadFont(float pixelSize) {
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0};
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
     const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     ImGuiIO& io = ImGui::GetIO();
     if (std::FILE* file = std::fopen(path, "rb")) {
@@ -54,87 +84,42 @@ void loadFont(float pixelSize) {
     }
 }
 
-// --- the editor's state ---------------------------------------------------------------------
-
-struct EditorState {
-    Scene scene;
-    std::string scenePath;
-    OrbitController orbit;
-    int selectedObject = 0;
-    bool sceneChanged = true;  // the radiance must be re-rendered
-    float panelWidth = 360.0f;
-    double lastRenderMilliseconds = 0.0;
-};
-
-// --- input: orbit (left drag), pan (right or middle drag), zoom (wheel) ---------------------
-
-void handleViewportInput(EditorState& state, GLFWwindow* window) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureMouse) return;
-    const ImVec2 delta = io.MouseDelta;
-    int windowHeight = 0;
-    glfwGetWindowSize(window, nullptr, &windowHeight);
-    const float scale = 1.0f / std::max(windowHeight, 1);
-    bool moved = false;
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && (delta.x != 0 || delta.y != 0)) {
-        state.orbit.orbit(-delta.x * scale * 3.0f, delta.y * scale * 3.0f);
-        moved = true;
-    }
-    if ((ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle)) &&
-        (delta.x != 0 || delta.y != 0)) {
-        state.orbit.pan(-delta.x * scale, delta.y * scale);
-        moved = true;
-    }
-    if (io.MouseWheel != 0.0f) {
-        state.orbit.zoom(std::pow(0.9f, io.MouseWheel));
-        moved = true;
-    }
-    if (!io.WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_R, false)) {
-        state.orbit = OrbitController::fromCamera(defaultScene().camera);
-        moved = true;
-    }
-    if (moved) {
-        state.orbit.applyTo(state.scene.camera);
-        state.sceneChanged = true;
-    }
+void applyUiScale(float scale, const ImGuiStyle& baseStyle) {
+    ImGui::GetStyle() = baseStyle;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImGui::GetIO().FontGlobalScale = scale;
 }
 
-// --- panels ---------------------------------------------------------------------------------
+// --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
 
-void drawSidePanel(EditorState& state, const Renderer& renderer, glm::ivec2 windowSize) {
-    ImGui::SetNextWindowPos(ImVec2(windowSize.x - state.panelWidth, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(state.panelWidth, static_cast<float>(windowSize.y)), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(240, 0), ImVec2(900, 1e6f));
-    ImGui::Begin("Material", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-    state.panelWidth = ImGui::GetWindowWidth();
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f);  // room for the label and the reset button
-    if (state.scene.objects.empty()) {
-        ImGui::TextWrapped("The scene has no objects.");
-    } else {
-        if (ImGui::BeginCombo("Object", state.scene.objects[state.selectedObject].name.c_str())) {
-            for (size_t i = 0; i < state.scene.objects.size(); ++i)
-                if (ImGui::Selectable(state.scene.objects[i].name.c_str(), state.selectedObject == static_cast<int>(i)))
-                    state.selectedObject = static_cast<int>(i);
-            ImGui::EndCombo();
-        }
-        Material& material = state.scene.materials[state.scene.objects[state.selectedObject].materialIndex];
-        ImGui::Text("Material: %s", material.name.c_str());
-        ImGui::Separator();
-        if (drawMaterialPanel(material)) state.sceneChanged = true;
+void saveScreenshot(EditorState& state, Renderer& renderer) {
+    renderer.displayOffscreen(state.session.scene().display);
+    const RenderedImages images{renderer.readRadiance(), renderer.readDisplay()};
+    if (Status written = writeRenderedImage(images, state.screenshotPath); !written)
+        state.errorMessage = "Could not save the screenshot.\n\n" + written.error().format();
+    else state.statusMessage = "Screenshot " + state.screenshotPath;
+}
+
+// Downscale factor for previews during a gesture so a frame stays near 33 ms (cost ∝ pixels).
+int previewScale(double fullResolutionMilliseconds) {
+    constexpr double kFrameBudgetMilliseconds = 33.0;
+    if (fullResolutionMilliseconds <= kFrameBudgetMilliseconds) return 1;
+    return std::clamp(static_cast<int>(std::ceil(std::sqrt(fullResolutionMilliseconds / kFrameBudgetMilliseconds))), 2, 4);
+}
+
+// "Glint — name" with a dot while there are unsaved changes.
+std::string windowTitle(const EditorState& state) {
+    const std::string& path = state.session.path();
+    const std::string name = path.empty() ? "untitled" : std::filesystem::path(path).filename().string();
+    return "Glint — " + name + (state.session.dirty() ? " ●" : "");
+}
+
+double autosaveIntervalSeconds() {
+    if (const char* text = std::getenv("GLINT_AUTOSAVE_SECONDS")) {
+        const double seconds = std::atof(text);
+        if (seconds > 0.0 && seconds <= 30.0) return seconds;
     }
-    ImGui::Separator();
-    if (!renderer.shaderError().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("%s", renderer.shaderError().c_str());
-        ImGui::PopStyleColor();
-    }
-    ImGui::TextDisabled("Render %.1f ms", state.lastRenderMilliseconds);
-    ImGui::PushTextWrapPos();
-    ImGui::TextDisabled("%s", renderer.description().c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::TextWrapped("Left drag: orbit · right drag: pan · wheel: zoom · R: reset view");
-    ImGui::PopItemWidth();
-    ImGui::End();
+    return 5.0;
 }
 
 }  // namespace
@@ -151,59 +136,131 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     GLFWwindow* window = platform->window();
 
     EditorState state;
-    state.scene = std::move(scene);
-    state.scenePath = scenePath;
-    state.orbit = OrbitController::fromCamera(state.scene.camera);
+    state.session.replace(std::move(scene), scenePath);
+    state.settings = loadSettings();
+    state.rendererDescription = renderer.description();
+    if (!scenePath.empty()) noteRecentFile(state.settings, state.session.path());
+    startRecovery(state);
+    const double autosaveInterval = autosaveIntervalSeconds();
+    // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
+    const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write no imgui.ini
     ImGui::StyleColorsDark();
+    const ImGuiStyle baseStyle = ImGui::GetStyle();
+    float appliedScale = 0.0f;
     loadFont(17.0f);
     installEventTracking(window);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 410 core");
 
     glm::ivec2 renderedSize{0, 0};
+    std::uint64_t renderedRevision = ~0ull;
+    int renderedScale = 1;
+    std::string shownTitle;
+    double fullResolutionMilliseconds = 0.0;
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
-    while (!glfwWindowShouldClose(window)) {
+    double secondsToAutosave = 1e9;
+    while (!state.quitNow) {
         gEventSeen = false;
         if (framesToDraw > 0) glfwPollEvents();
+        else if (secondsToAutosave < 1e8) glfwWaitEventsTimeout(std::max(secondsToAutosave, 0.01));
         else glfwWaitEvents();
-        if (renderer.reloadChangedShaders()) state.sceneChanged = true;
+        const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
+        if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
+        if (gCloseRequested) {
+            gCloseRequested = false;
+            requestQuit(state);
+        }
+        for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
+        gDroppedPaths.clear();
+        if (state.settings.uiScale != appliedScale) {
+            appliedScale = state.settings.uiScale;
+            applyUiScale(appliedScale, baseStyle);
+        }
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         const glm::ivec2 framebuffer = platform->framebufferSize();
-        drawSidePanel(state, renderer, framebuffer);
-        handleViewportInput(state, window);
+        const ImVec2 windowSize = ImGui::GetIO().DisplaySize;
+        const float menuHeight = drawMenuBar(state);
+        const float statusHeight = drawStatusBar(state, windowSize.y, windowSize.x);
+        const float columnHeight = windowSize.y - menuHeight - statusHeight;
+        drawScenePanel(state, menuHeight, columnHeight);
+        drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
+        drawDialogs(state);
+        handleShortcuts(state);
+        ViewportRect viewport;
+        viewport.x = state.showLeftPanel ? state.leftPanelWidth : 0.0f;
+        viewport.y = menuHeight;
+        viewport.width = std::max(1.0f, windowSize.x - viewport.x - (state.showRightPanel ? state.rightPanelWidth : 0.0f));
+        viewport.height = std::max(1.0f, columnHeight);
+        const bool handleDrag = handleLightHandles(state, viewport);
+        const bool cameraDrag = !handleDrag && handleViewportInput(state, viewport);
+        // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
+        const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
+        state.session.settle(gesture);
         ImGui::Render();
 
-        const glm::ivec2 viewport{std::max(1, framebuffer.x - static_cast<int>(state.panelWidth)), std::max(1, framebuffer.y)};
-        if (viewport != renderedSize) state.sceneChanged = true;
-        if (state.sceneChanged) {
+        // Window (ImGui) pixels to framebuffer pixels (HiDPI).
+        const float pixelScale = windowSize.x > 0 ? framebuffer.x / windowSize.x : 1.0f;
+        const glm::ivec2 viewportPixels{std::max(1, static_cast<int>(viewport.width * pixelScale)),
+                                        std::max(1, static_cast<int>(viewport.height * pixelScale))};
+        const glm::ivec2 viewportLowerLeft{static_cast<int>(viewport.x * pixelScale),
+                                           static_cast<int>(statusHeight * pixelScale)};
+        // While a gesture changes the scene, a frame that would take longer than 33 ms is drawn
+        // at reduced resolution; the full-resolution frame follows when the gesture ends.
+        const int wantedScale = gesture ? previewScale(fullResolutionMilliseconds) : 1;
+        const bool changed = state.session.revision() != renderedRevision;
+        const bool renderedThisFrame = viewportPixels != renderedSize || changed || (!gesture && renderedScale != 1);
+        if (renderedThisFrame) {
+            const int scale = changed ? wantedScale : 1;
+            const glm::ivec2 renderPixels = (viewportPixels + scale - 1) / scale;
             const auto start = std::chrono::steady_clock::now();
-            if (Status status = renderer.renderRadiance(state.scene, viewport.x, viewport.y); !status)
+            if (Status status = renderer.renderRadiance(state.session.scene(), renderPixels.x, renderPixels.y); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
             state.lastRenderMilliseconds =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            renderedSize = viewport;
-            state.sceneChanged = false;
+            if (scale == 1) fullResolutionMilliseconds = state.lastRenderMilliseconds;
+            state.previewScale = scale;
+            state.triangleCount = renderer.trianglesDrawn();
+            renderedSize = viewportPixels;
+            renderedRevision = state.session.revision();
+            renderedScale = scale;
             framesToDraw = std::max(framesToDraw, 2);
+        }
+        if (state.screenshotRequested) {
+            state.screenshotRequested = false;
+            saveScreenshot(state, renderer);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        renderer.displayToScreen(state.scene.display, {0, 0});
+        renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         platform->present();
+        if (logFrames && renderedThisFrame) {
+            glFinish();
+            const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+            std::fprintf(stderr, "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total);
+        }
+        secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
+        if (const std::string title = windowTitle(state); title != shownTitle) {
+            glfwSetWindowTitle(window, title.c_str());
+            shownTitle = title;
+        }
+        clearKeyPresses();
         framesToDraw = gEventSeen ? 3 : framesToDraw - 1;
     }
 
+    finishRecovery(state);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

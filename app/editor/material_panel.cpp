@@ -1,8 +1,10 @@
 // Material panel generated from the parameter table (see material_panel.h).
 #include "editor/material_panel.h"
 
-#include <algorithm>
 #include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "editor/color_space.h"
@@ -10,7 +12,17 @@
 namespace glint {
 namespace {
 
-bool drawParam(const ParamSpec& spec, float* value) {
+std::string formatRange(const ParamSpec& spec) {
+    char text[96];
+    const char* above = spec.validMinExclusive ? "greater than" : "at least";
+    if (spec.validMax == kUnbounded) std::snprintf(text, sizeof text, "%s %g", above, spec.validMin);
+    else std::snprintf(text, sizeof text, "%s %g and at most %g", above, spec.validMin, spec.validMax);
+    return text;
+}
+
+// Typed values beyond the slider are kept when the table's valid range allows them, and refused
+// with a message in `refusal` when it does not (never clamped silently).
+bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
     bool changed = false;
     ImGui::PushID(spec.name);
     switch (spec.kind) {
@@ -22,7 +34,14 @@ bool drawParam(const ParamSpec& spec, float* value) {
             float edited = *value;
             if (ImGui::SliderFloat(spec.label, &edited, spec.sliderMin, spec.sliderMax, format.c_str(), flags)) {
                 // Ctrl+click typing may go past the slider but never past the valid range.
-                if (edited >= spec.validMin && edited <= spec.validMax) *value = edited, changed = true;
+                if ((spec.validMinExclusive ? edited > spec.validMin : edited >= spec.validMin) && edited <= spec.validMax) {
+                    *value = edited, changed = true;
+                    refusal.clear();
+                } else {
+                    char typed[32];
+                    std::snprintf(typed, sizeof typed, "%g", edited);
+                    refusal = std::string(spec.label) + ": " + typed + " refused; it must be " + formatRange(spec);
+                }
             }
             break;
         }
@@ -34,15 +53,31 @@ bool drawParam(const ParamSpec& spec, float* value) {
                 for (float channel : edited)
                     valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
                              channel <= spec.validMax;
-                if (valid) std::copy(edited, edited + 3, value), changed = true;
+                if (valid) {
+                    std::copy(edited, edited + 3, value), changed = true;
+                    refusal.clear();
+                } else {
+                    refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
+                }
             }
             break;
         }
         case ParamKind::Color: {
             float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
             if (ImGui::ColorEdit3(spec.label, encoded, ImGuiColorEditFlags_Float)) {
-                for (int c = 0; c < 3; ++c) value[c] = std::clamp(decodeSrgb(encoded[c]), spec.validMin, spec.validMax);
-                changed = true;
+                float linear[3];
+                bool valid = true;
+                for (int c = 0; c < 3; ++c) {
+                    linear[c] = decodeSrgb(encoded[c]);
+                    valid = valid && linear[c] >= spec.validMin && linear[c] <= spec.validMax;
+                }
+                if (valid) {
+                    std::copy(linear, linear + 3, value);
+                    changed = true;
+                    refusal.clear();
+                } else {
+                    refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
+                }
             }
             break;
         }
@@ -79,7 +114,7 @@ bool drawParam(const ParamSpec& spec, float* value) {
 
 }  // namespace
 
-bool drawMaterialPanel(Material& material) {
+bool drawMaterialPanel(Material& material, std::string& refusal) {
     bool changed = false;
     const ModelInfo& current = modelInfo(material.model);
     if (ImGui::BeginCombo("Model", current.label)) {
@@ -94,7 +129,7 @@ bool drawMaterialPanel(Material& material) {
     }
     const auto table = modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i)
-        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)));
+        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
     if (material.model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
         ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,

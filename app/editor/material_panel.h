@@ -1,12 +1,15 @@
 // The material panel: a model picker and one widget per entry of the model's parameter table
 // (slider with unit and range, log slider, sRGB colour picker storing linear, checkbox, combo),
 // each with reset-to-default. A free function over a Material; returns true when it changed.
+// A typed value outside the table's valid range is refused and `refusal` says why.
 #pragma once
+
+#include <string>
 
 #include "scene/scene.h"
 
 namespace glint {
 
-bool drawMaterialPanel(Material& material);
+bool drawMaterialPanel(Material& material, std::string& refusal);
 
 }  // namespace glint

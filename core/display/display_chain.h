@@ -1,5 +1,6 @@
-// The display chain on the CPU: radiance → exposure (×2^EV) → clamp to [0,1] → sRGB or gamma
-// encoding → 8-bit quantisation (round to nearest). Its GLSL twin is shaders/display.frag.
+// The display chain on the CPU: radiance → exposure (×2^EV) → tone map (none, Reinhard, ACES
+// filmic) → clamp to [0,1] → sRGB or gamma encoding → 8-bit quantisation (round to nearest).
+// Its GLSL twin is shaders/display.frag.
 #pragma once
 
 #include <algorithm>
@@ -16,8 +17,23 @@ inline float encodeSrgb(float linear) {
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
+// Per-channel tone curves of the exposed value x ≥ 0.
+// Reinhard: x/(1+x) (Reinhard et al., Photographic Tone Reproduction for Digital Images, 2002, eq. 3).
+// ACES filmic: K. Narkowicz's fit of the ACES reference rendering transform (2015),
+// x(2.51x+0.03) / (x(2.43x+0.59)+0.14).
+inline float applyToneMap(float exposed, ToneMap toneMap) {
+    switch (toneMap) {
+        case ToneMap::None: return exposed;
+        case ToneMap::Reinhard: return exposed / (1.0f + exposed);
+        case ToneMap::AcesFilmic:
+            return exposed * (2.51f * exposed + 0.03f) / (exposed * (2.43f * exposed + 0.59f) + 0.14f);
+    }
+    return exposed;
+}
+
 inline float encodeForDisplay(float radiance, const DisplaySettings& display) {
-    const float exposed = std::clamp(radiance * std::exp2(display.exposureStops), 0.0f, 1.0f);
+    const float toneMapped = applyToneMap(std::max(radiance * std::exp2(display.exposureStops), 0.0f), display.toneMap);
+    const float exposed = std::clamp(toneMapped, 0.0f, 1.0f);
     return display.transfer == Transfer::Srgb ? encodeSrgb(exposed) : std::pow(exposed, 1.0f / display.gamma);
 }
 

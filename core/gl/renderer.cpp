@@ -231,6 +231,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     }
 
     Status result = success();
+    trianglesDrawn_ = 0;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
@@ -260,6 +261,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const GpuMesh& mesh = meshFor(i, object.shape);
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        trianglesDrawn_ += mesh.indexCount / 3;
     }
     glDisable(GL_CULL_FACE);
     // The background (constant or sky, per primary ray direction) last, only where no object
@@ -290,7 +292,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
 namespace {
 
 void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint vertexArray,
-                    const DisplaySettings& display, glm::ivec2 sourceOffset) {
+                    const DisplaySettings& display, glm::ivec2 sourceOffset, int pixelScale) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(program.id());
@@ -298,9 +300,11 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
     glBindTexture(GL_TEXTURE_2D, radianceTexture);
     glUniform1i(program.uniform("radiance"), 0);
     glUniform2i(program.uniform("sourceOffset"), sourceOffset.x, sourceOffset.y);
+    glUniform1i(program.uniform("pixelScale"), pixelScale);
     glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
     glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
     glUniform1f(program.uniform("gamma"), display.gamma);
+    glUniform1i(program.uniform("toneMap"), static_cast<int>(display.toneMap));
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -313,14 +317,14 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     displayTarget_.ensure(radianceTarget_.width(), radianceTarget_.height(), 1);
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
-    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0});
+    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
 }
 
-void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft) {
+void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
     platform_.makeCurrent();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width(), radianceTarget_.height());
-    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft);
+    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width() * pixelScale, radianceTarget_.height() * pixelScale);
+    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
 }
 
 // --- readback -------------------------------------------------------------------------------

@@ -30,7 +30,9 @@ public:
     // Display pass into the offscreen 8-bit target (same size as the last radiance render).
     void displayOffscreen(const DisplaySettings& display);
     // Display pass into the default framebuffer, at the given lower-left corner.
-    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft);
+    // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
+    // reduced-resolution preview while dragging).
+    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1);
 
     RadianceImage readRadiance() const;  // top row first
     DisplayImage readDisplay() const;    // top row first
@@ -41,6 +43,8 @@ public:
     // The last shader error (empty when all compiled), for the UI.
     const std::string& shaderError() const { return shaderError_; }
     const std::string& description() const { return description_; }
+    // Triangles submitted by the last renderRadiance (proxy meshes included).
+    long long trianglesDrawn() const { return trianglesDrawn_; }
     const ShaderSources& sources() const { return sources_; }
 
 private:
@@ -77,6 +81,7 @@ private:
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
+    long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};
     RenderTarget displayTarget_{GL_RGBA8, false};

@@ -51,12 +51,15 @@ struct SceneObject {
 };
 
 enum class Transfer { Srgb, Gamma };
+// Tone mapping of exposed radiance before encoding (display_chain.h has the formulas).
+enum class ToneMap { None, Reinhard, AcesFilmic };
 
-// The display chain: exposure → clamp → sRGB or gamma encoding → 8-bit quantisation.
+// The display chain: exposure → tone map → clamp → sRGB or gamma encoding → 8-bit quantisation.
 struct DisplaySettings {
     float exposureStops = 0.0f;  // radiance is multiplied by 2^exposureStops
     Transfer transfer = Transfer::Srgb;
     float gamma = 2.2f;  // used when transfer == Gamma
+    ToneMap toneMap = ToneMap::None;  // None: values above 1 clip
 };
 
 struct Scene {

@@ -272,6 +272,7 @@ json objectToJson(const SceneObject& object, const std::vector<Material>& materi
 
 constexpr const char* kProjections[] = {"perspective", "orthographic"};
 constexpr const char* kTransfers[] = {"srgb", "gamma"};
+constexpr const char* kToneMaps[] = {"none", "reinhard", "aces"};  // order of enum ToneMap
 
 Camera readCamera(ObjectReader& reader) {
     Camera camera;
@@ -313,6 +314,7 @@ Scene readScene(const JsonDocument& document) {
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
         scene.display.transfer = static_cast<Transfer>(display.choice("transfer", kTransfers, 0));
         scene.display.gamma = static_cast<float>(display.number("gamma", scene.display.gamma, Bounds::between(0.1, 10)));
+        scene.display.toneMap = static_cast<ToneMap>(display.choice("tone_map", kToneMaps, 0));
         display.rejectUnknownKeys();
     }
     for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader));
@@ -361,7 +363,8 @@ json sceneToJson(const Scene& scene) {
     out["background"] = backgroundToJson(scene.background);
     out["display"] = {{"exposure", scene.display.exposureStops},
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
-                      {"gamma", scene.display.gamma}};
+                      {"gamma", scene.display.gamma},
+                      {"tone_map", kToneMaps[static_cast<int>(scene.display.toneMap)]}};
     out["materials"] = json::array();
     for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material));
     out["lights"] = json::array();

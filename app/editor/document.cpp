@@ -1,0 +1,178 @@
+// Document actions (see document.h).
+// Sections: scenes · materials · unsaved-changes guard · recovery and autosave.
+#include "editor/document.h"
+
+#include <filesystem>
+#include <system_error>
+
+#include "edit/crash_guard.h"
+#include "editor/settings.h"
+#include "scene/scene_json.h"
+#include "util/file_io.h"
+
+namespace glint {
+
+// --- scenes ---------------------------------------------------------------------------------
+
+void openSceneFile(EditorState& state, const std::string& path) {
+    auto loaded = loadScene(path);
+    if (!loaded) {
+        state.errorMessage = "Could not open the scene; your work is unchanged.\n\n" + loaded.error().format();
+        return;
+    }
+    const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+    state.session.replace(std::move(*loaded), absolute);
+    state.selectedObject = 0;
+    state.selectedLight = 0;
+    noteRecentFile(state.settings, absolute);
+    state.statusMessage = "Opened " + absolute;
+}
+
+bool saveSceneTo(EditorState& state, const std::string& path) {
+    state.session.settle(false);
+    if (Status saved = glint::saveScene(state.session.scene(), path); !saved) {
+        state.errorMessage = "Could not save the scene.\n\n" + saved.error().format();
+        return false;
+    }
+    const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+    state.session.markSaved(absolute);
+    noteRecentFile(state.settings, absolute);
+    state.statusMessage = "Saved " + absolute;
+    return true;
+}
+
+void saveScene(EditorState& state) {
+    if (state.session.path().empty()) requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, "untitled.json");
+    else saveSceneTo(state, state.session.path());
+}
+
+void newScene(EditorState& state) {
+    state.session.replace(defaultScene(), "");
+    state.selectedObject = 0;
+    state.selectedLight = 0;
+    state.statusMessage = "New scene";
+}
+
+// --- materials ------------------------------------------------------------------------------
+
+void openMaterialFile(EditorState& state, const std::string& path) {
+    const Scene& scene = state.session.scene();
+    if (scene.objects.empty()) {
+        state.errorMessage = "The scene has no object to put the material on.";
+        return;
+    }
+    auto loaded = loadMaterial(path);
+    if (!loaded) {
+        state.errorMessage = "Could not open the material; your work is unchanged.\n\n" + loaded.error().format();
+        return;
+    }
+    const int materialIndex = scene.objects[state.selectedObject].materialIndex;
+    state.session.change("Open material").materials[materialIndex] = std::move(*loaded);
+    state.session.settle(false);
+    state.statusMessage = "Material from " + path;
+}
+
+bool saveMaterialTo(EditorState& state, const std::string& path) {
+    const Scene& scene = state.session.scene();
+    if (scene.objects.empty()) return false;
+    const Material& material = scene.materials[scene.objects[state.selectedObject].materialIndex];
+    if (Status saved = glint::saveMaterial(material, path); !saved) {
+        state.errorMessage = "Could not save the material.\n\n" + saved.error().format();
+        return false;
+    }
+    state.statusMessage = "Saved material " + path;
+    return true;
+}
+
+void openDroppedFile(EditorState& state, const std::string& path) {
+    auto text = readTextFile(path);
+    if (text && text->find("\"glint-material\"") != std::string::npos) openMaterialFile(state, path);
+    else openSceneGuarded(state, path);
+}
+
+// --- unsaved-changes guard ------------------------------------------------------------------
+
+void openSceneGuarded(EditorState& state, const std::string& path) {
+    state.pendingOpenPath = path;
+    guardUnsavedChanges(state, "opening " + path, nullptr);
+}
+
+void guardUnsavedChanges(EditorState& state, const std::string& what, std::function<void(EditorState&)> action) {
+    state.actionAfterPrompt = std::move(action);
+    state.actionAfterPromptName = what;
+    if (state.session.dirty()) state.unsavedPromptRequested = true;
+    else runActionAfterPrompt(state);
+}
+
+void runActionAfterPrompt(EditorState& state) {
+    auto action = state.actionAfterPrompt;
+    state.actionAfterPrompt = nullptr;
+    if (!state.pendingOpenPath.empty()) {
+        const std::string path = std::move(state.pendingOpenPath);
+        state.pendingOpenPath.clear();
+        openSceneFile(state, path);
+    }
+    if (action) action(state);
+}
+
+void requestQuit(EditorState& state) {
+    guardUnsavedChanges(state, "closing Glint", [](EditorState& s) { s.quitNow = true; });
+}
+
+// --- recovery and autosave ------------------------------------------------------------------
+
+void startRecovery(EditorState& state) {
+    const std::string path = recoveryFilePath();
+    // The crash handler cannot create directories: the state directory must exist beforehand.
+    if (Status created = ensureParentDirectory(path); !created)
+        state.statusMessage = "No crash recovery: " + created.error().format();
+    installCrashGuard(path);
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) return;
+    auto recovered = loadRecovery(path);
+    if (!recovered) {
+        state.errorMessage = "A recovery file was found but cannot be read; it is kept for you to inspect.\n\n" +
+                             recovered.error().format();
+        return;
+    }
+    state.recoveryOffer.push_back(std::move(*recovered));
+    state.recoveryOfferPath = path;
+}
+
+double autosave(EditorState& state, double nowSeconds, double autosaveIntervalSeconds) {
+    const EditSession& session = state.session;
+    if (session.settledRevision() == state.autosavedRevision) return 1e9;
+    // Something changed since the last write. The crash copy follows at once (cheap: no disk).
+    if (state.crashCopyRevision != session.settledRevision()) {
+        publishCrashCopy(session.dirty() ? recoveryDocument(session.scene(), session.path()) : std::string());
+        state.crashCopyRevision = session.settledRevision();
+    }
+    if (!state.recoveryOffer.empty()) return 1e9;  // never overwrite work the user has not decided on
+    const double wait = state.lastAutosaveSeconds + autosaveIntervalSeconds - nowSeconds;
+    if (wait > 0) return wait;
+    const std::string path = recoveryFilePath();
+    if (session.dirty()) {
+        Status written = ensureParentDirectory(path);
+        if (written) written = writeFileAtomically(path, recoveryDocument(session.scene(), session.path()));
+        if (!written) state.statusMessage = "Autosave failed: " + written.error().format();
+        else state.wroteRecovery = true;
+    } else if (state.wroteRecovery) {
+        std::error_code error;
+        std::filesystem::remove(path, error);  // back at the saved state: nothing to recover
+        state.wroteRecovery = false;
+    }
+    state.autosavedRevision = session.settledRevision();
+    state.lastAutosaveSeconds = nowSeconds;
+    return 1e9;
+}
+
+void finishRecovery(EditorState& state) {
+    uninstallCrashGuard();
+    // Only a file this editor wrote goes: one the user never answered, or one that could not
+    // be read, stays for the next start or for inspection.
+    if (!state.wroteRecovery) return;
+    std::error_code error;
+    std::filesystem::remove(recoveryFilePath(), error);
+}
+
+}  // namespace glint

@@ -1,0 +1,62 @@
+// EditorState: everything the editor's panels and dialogs work on, in one small struct. The
+// scene itself lives in `session` and changes only through it (core/edit/edit_session.h).
+// It holds no GL objects and draws nothing.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "edit/edit_session.h"
+#include "edit/recovery.h"
+#include "editor/panels/file_browser.h"
+#include "editor/settings.h"
+
+namespace glint {
+
+struct EditorState {
+    EditSession session;
+    int selectedObject = 0;
+    int selectedLight = 0;
+    Settings settings;  // persisted: recent files, UI scale
+
+    // Layout (pixels).
+    float rightPanelWidth = 360.0f;
+    float leftPanelWidth = 330.0f;
+    bool showLeftPanel = true;
+    bool showRightPanel = true;
+    bool showHelp = false;
+    std::string materialPanelMessage;
+    std::string lightPanelMessage;  // a typed value the material panel refused, and why
+
+    // Figures for the status bar.
+    double lastRenderMilliseconds = 0.0;
+    int previewScale = 1;  // >1 while a drag renders at reduced resolution
+    long long triangleCount = 0;  // submitted by the last render
+    std::string rendererDescription;
+    std::string statusMessage;  // one line ("Saved …")
+
+    // Dialogs. An action waiting behind the unsaved-changes prompt (quit, new, open) runs once
+    // the user saved or discarded; `errorMessage` is shown in a modal until dismissed.
+    std::function<void(EditorState&)> actionAfterPrompt;
+    std::string actionAfterPromptName;  // "closing Glint", "opening …"
+    std::string pendingOpenPath;        // a scene to open once the prompt is answered
+    bool unsavedPromptRequested = false;
+    bool continueAfterSaveAs = false;   // Save chosen in the prompt for a scene with no file yet
+    std::string errorMessage;
+    std::vector<RecoveredWork> recoveryOffer;  // at most one; a modal at start
+    std::string recoveryOfferPath;
+    FileBrowser fileBrowser;
+    bool screenshotRequested = false;
+    std::string screenshotPath;
+    bool quitNow = false;
+
+    // Autosave: the recovery file and the crash copy follow session.settledRevision().
+    std::uint64_t autosavedRevision = 0;
+    std::uint64_t crashCopyRevision = 0;
+    double lastAutosaveSeconds = -1e9;  // glfwGetTime() of the last recovery write
+    bool wroteRecovery = false;         // the recovery file on disk is this editor's
+};
+
+}  // namespace glint

@@ -1,0 +1,155 @@
+// Modal dialogs: "unsaved changes" (Save / Don't save / Cancel), errors (file:line from the
+// Diagnostic), the recovery offer at start, the file browser's result, and the help window (F1)
+// listing every shortcut.
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include <imgui.h>
+
+#include "editor/document.h"
+#include "editor/key_events.h"
+#include "editor/panels/panels.h"
+#include "editor/shortcuts.h"
+
+namespace glint {
+namespace {
+
+void centreNextWindow() {
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+}
+
+void drawUnsavedPrompt(EditorState& state) {
+    if (state.unsavedPromptRequested) {
+        ImGui::OpenPopup("Unsaved changes");
+        state.unsavedPromptRequested = false;
+    }
+    centreNextWindow();
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const std::string& path = state.session.path();
+    ImGui::Text("Save changes to %s before %s?", path.empty() ? "the untitled scene" : path.c_str(),
+                state.actionAfterPromptName.c_str());
+    ImGui::Spacing();
+    if (ImGui::Button("Save (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) {
+        ImGui::CloseCurrentPopup();
+        if (path.empty()) {
+            state.continueAfterSaveAs = true;
+            requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, "untitled.json");
+        } else if (saveSceneTo(state, path)) {
+            runActionAfterPrompt(state);
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Don't save (N)") || takeKeyPress(GLFW_KEY_N)) {
+        ImGui::CloseCurrentPopup();
+        runActionAfterPrompt(state);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel (Esc)") || takeKeyPress(GLFW_KEY_ESCAPE)) {
+        ImGui::CloseCurrentPopup();
+        state.actionAfterPrompt = nullptr;
+        state.pendingOpenPath.clear();
+    }
+    ImGui::EndPopup();
+}
+
+void drawErrorModal(EditorState& state) {
+    if (!state.errorMessage.empty() && !ImGui::IsPopupOpen("Error")) {
+        ImGui::OpenPopup("Error");
+        std::fprintf(stderr, "glint: %s\n", state.errorMessage.c_str());  // the log keeps what the modal says
+    }
+    centreNextWindow();
+    ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(900, 600));
+    if (!ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+    ImGui::TextUnformatted(state.errorMessage.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("OK") || takeKeyPress(GLFW_KEY_ENTER) || takeKeyPress(GLFW_KEY_ESCAPE)) {
+        state.errorMessage.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void drawRecoveryOffer(EditorState& state) {
+    if (state.recoveryOffer.empty()) return;
+    if (!ImGui::IsPopupOpen("Recover unsaved work")) ImGui::OpenPopup("Recover unsaved work");
+    centreNextWindow();
+    if (!ImGui::BeginPopupModal("Recover unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    const RecoveredWork& work = state.recoveryOffer.front();
+    ImGui::Text("Glint did not close cleanly last time. Unsaved work was kept:");
+    ImGui::BulletText("scene: %s", work.scenePath.empty() ? "(never saved)" : work.scenePath.c_str());
+    ImGui::BulletText("%zu objects, %zu lights", work.scene.objects.size(), work.scene.lights.size());
+    ImGui::TextDisabled("from %s", state.recoveryOfferPath.c_str());
+    ImGui::Spacing();
+    if (ImGui::Button("Recover (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) {
+        state.session.replace(work.scene, work.scenePath, /*dirty=*/true);
+        state.selectedObject = 0;
+        state.selectedLight = 0;
+        state.statusMessage = "Recovered unsaved work: save it to keep it";
+        state.recoveryOffer.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+        std::error_code error;
+        std::filesystem::remove(state.recoveryOfferPath, error);
+        state.recoveryOffer.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void handleFileBrowser(EditorState& state) {
+    const auto chosen = drawFileBrowser(state.fileBrowser);
+    if (!chosen) {
+        if (!ImGui::IsPopupOpen("###FileBrowser")) state.continueAfterSaveAs = false;
+        return;
+    }
+    switch (state.fileBrowser.purpose) {
+        case FilePurpose::OpenScene: openSceneGuarded(state, *chosen); break;
+        case FilePurpose::SaveSceneAs:
+            if (saveSceneTo(state, *chosen) && state.continueAfterSaveAs) runActionAfterPrompt(state);
+            state.continueAfterSaveAs = false;
+            break;
+        case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
+        case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
+        case FilePurpose::SaveScreenshot:
+            state.screenshotRequested = true;
+            state.screenshotPath = *chosen;
+            break;
+    }
+}
+
+void drawHelpWindow(EditorState& state) {
+    if (!state.showHelp) return;
+    centreNextWindow();
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 30.0f, 0), ImGuiCond_Appearing);
+    if (ImGui::Begin("Keyboard and mouse (F1)", &state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            for (const Shortcut& shortcut : allShortcuts()) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(shortcut.keys);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(shortcut.action);
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace
+
+void drawDialogs(EditorState& state) {
+    drawRecoveryOffer(state);
+    drawUnsavedPrompt(state);
+    handleFileBrowser(state);
+    drawErrorModal(state);
+    drawHelpWindow(state);
+}
+
+}  // namespace glint

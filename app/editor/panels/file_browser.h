@@ -1,0 +1,30 @@
+// The file browser: an ImGui modal listing a directory (folders first, files filtered by
+// extension), with a typed path field, for opening and saving scenes, materials and
+// screenshots. It only picks a path; it reads and writes no file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+enum class FilePurpose { OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot };
+
+struct FileBrowser {
+    bool requested = false;  // open the modal on the next frame
+    FilePurpose purpose = FilePurpose::OpenScene;
+    std::string directory;               // absolute
+    std::vector<std::string> extensions; // e.g. {".json"}; the first is added to typed names when saving
+    std::string typedPath;               // the path field (a name, or a relative or absolute path)
+    std::string error;                   // e.g. "no such directory"
+};
+
+// Asks for the modal; `startPath` is a file or directory to start in ("" = current directory).
+void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::string& startPath);
+// Draws the modal when open; returns the chosen absolute path on the frame the user confirms.
+std::optional<std::string> drawFileBrowser(FileBrowser& browser);
+
+bool purposeSaves(FilePurpose purpose);
+
+}  // namespace glint

@@ -1,0 +1,27 @@
+// The editor's panels and dialogs: free functions over EditorState, one file each. Panels read
+// the scene from state.session and change it only through state.session.change() (core's edit
+// API), so every change is undoable and autosaved.
+#pragma once
+
+#include "editor/editor_state.h"
+
+namespace glint {
+
+// Menu bar (File, Edit, View, Help); returns its height in pixels.
+float drawMenuBar(EditorState& state);
+// Status bar along the bottom; returns its height in pixels.
+float drawStatusBar(EditorState& state, float top, float width);
+
+// The left column (scene: lights, display) and the right column (object and material).
+void drawScenePanel(EditorState& state, float top, float height);
+void drawMaterialColumn(EditorState& state, float top, float height, float windowWidth);
+void drawObjectSection(EditorState& state);
+void drawPresetBrowser(EditorState& state, int materialIndex);
+void drawLightsSection(EditorState& state);
+void drawDisplaySection(EditorState& state);
+void drawCameraSection(EditorState& state);
+
+// Modals: unsaved changes, errors, recovery offer; the help window (F1); the file browser.
+void drawDialogs(EditorState& state);
+
+}  // namespace glint

@@ -1,0 +1,35 @@
+// The status bar: frame time, triangle count, renderer, unsaved-changes marker and the last
+// message (saved, opened, recovered).
+#include <imgui.h>
+
+#include "editor/panels/panels.h"
+
+namespace glint {
+
+float drawStatusBar(EditorState& state, float top, float width) {
+    const float height = ImGui::GetFrameHeight() + 2.0f;
+    ImGui::SetNextWindowPos(ImVec2(0, top - height));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 2));
+    ImGui::Begin("##status", nullptr, flags);
+    ImGui::Text("%s%s", state.session.dirty() ? "● " : "", state.session.path().empty() ? "untitled" : state.session.path().c_str());
+    ImGui::SameLine(0, 24);
+    if (state.previewScale > 1) ImGui::Text("frame %.1f ms (preview 1/%d)", state.lastRenderMilliseconds, state.previewScale);
+    else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
+    ImGui::SameLine(0, 24);
+    ImGui::Text("%lld triangles", state.triangleCount);
+    ImGui::SameLine(0, 24);
+    ImGui::TextDisabled("%s", state.rendererDescription.c_str());
+    if (!state.statusMessage.empty()) {
+        ImGui::SameLine(0, 24);
+        ImGui::TextUnformatted(state.statusMessage.c_str());
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+    return height;
+}
+
+}  // namespace glint

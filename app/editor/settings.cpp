@@ -1,0 +1,48 @@
+// Editor settings file (see settings.h).
+#include "editor/settings.h"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "edit/recovery.h"
+#include "util/file_io.h"
+
+namespace glint {
+namespace {
+
+std::string settingsPath() { return stateDirectory() + "/settings.json"; }
+
+}  // namespace
+
+Settings loadSettings() {
+    Settings settings;
+    auto text = readTextFile(settingsPath());
+    if (!text) return settings;
+    const nlohmann::json document = nlohmann::json::parse(*text, nullptr, false);
+    if (!document.is_object()) return settings;
+    if (auto recent = document.find("recent_files"); recent != document.end() && recent->is_array())
+        for (const auto& entry : *recent)
+            if (entry.is_string() && settings.recentFiles.size() < Settings::kMaxRecentFiles)
+                settings.recentFiles.push_back(entry.get<std::string>());
+    if (auto scale = document.find("ui_scale"); scale != document.end() && scale->is_number()) {
+        const float value = scale->get<float>();
+        if (value >= 0.75f && value <= 3.0f) settings.uiScale = value;
+    }
+    return settings;
+}
+
+void saveSettings(const Settings& settings) {
+    const nlohmann::json document = {{"recent_files", settings.recentFiles}, {"ui_scale", settings.uiScale}};
+    if (ensureParentDirectory(settingsPath())) (void)writeFileAtomically(settingsPath(), document.dump(2) + "\n");
+}
+
+void noteRecentFile(Settings& settings, const std::string& path) {
+    auto& recent = settings.recentFiles;
+    recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
+    recent.insert(recent.begin(), path);
+    if (recent.size() > Settings::kMaxRecentFiles) recent.resize(Settings::kMaxRecentFiles);
+    saveSettings(settings);
+}
+
+}  // namespace glint

@@ -1,0 +1,21 @@
+// Editor settings kept between runs: recent files and the UI scale, in
+// stateDirectory()/settings.json (see core/edit/recovery.h for the directory). A damaged or
+// missing file gives the defaults; writes are atomic.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace glint {
+
+struct Settings {
+    static constexpr size_t kMaxRecentFiles = 10;
+    std::vector<std::string> recentFiles;  // newest first, absolute paths
+    float uiScale = 1.0f;                  // HiDPI: font and sizes, 0.75–3
+};
+
+Settings loadSettings();
+void saveSettings(const Settings& settings);  // failures are ignored: settings are a convenience
+void noteRecentFile(Settings& settings, const std::string& path);  // and saves
+
+}  // namespace glint

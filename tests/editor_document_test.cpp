@@ -1,0 +1,171 @@
+// The editor's document actions without a window: opening scenes and materials (also by drag and
+// drop), refusing corrupt files while keeping the work, the unsaved-changes guard, recent files
+// kept between runs, autosave writing and removing the recovery file, camera actions as edits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "edit/recovery.h"
+#include "editor/camera_actions.h"
+#include "editor/document.h"
+#include "editor/settings.h"
+#include "scene/scene_json.h"
+#include "test_support.h"
+
+namespace glint {
+namespace {
+
+// Each test gets its own state directory (recovery file, settings).
+class EditorDocument : public ::testing::Test {
+protected:
+    void SetUp() override {
+        directory_ = test::outputDirectory(std::string("editor_document/") +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(directory_ + "/state");
+        ::setenv("GLINT_STATE_DIR", (directory_ + "/state").c_str(), 1);
+    }
+    void TearDown() override { ::unsetenv("GLINT_STATE_DIR"); }
+    std::string write(const std::string& name, const std::string& text) {
+        const std::string path = directory_ + "/" + name;
+        std::ofstream(path) << text;
+        return path;
+    }
+    std::string directory_;
+};
+
+TEST_F(EditorDocument, DroppedMaterialGoesOntoTheSelectedObjectAsOneUndoStep) {
+    Material gold = Material::withDefaults("gold", BrdfModel::Lambert);
+    gold.values = {0.9f, 0.7f, 0.2f};
+    const std::string path = directory_ + "/gold.json";
+    ASSERT_TRUE(saveMaterial(gold, path).ok());
+    EditorState state;
+    state.selectedObject = 0;
+    openDroppedFile(state, path);
+    EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    const Scene& scene = state.session.scene();
+    EXPECT_EQ(scene.materials[scene.objects[0].materialIndex].name, "gold");
+    EXPECT_TRUE(state.session.undo());
+    EXPECT_EQ(state.session.scene().materials[0].name, defaultScene().materials[0].name);
+}
+
+TEST_F(EditorDocument, DroppedSceneOpensAndBecomesRecent) {
+    Scene scene = defaultScene();
+    scene.lights.resize(1);
+    const std::string path = directory_ + "/one_light.json";
+    ASSERT_TRUE(saveScene(scene, path).ok());
+    EditorState state;
+    openDroppedFile(state, path);
+    EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    EXPECT_EQ(state.session.scene().lights.size(), 1u);
+    EXPECT_FALSE(state.session.dirty());
+    EXPECT_FALSE(state.session.canUndo());
+    // Recent files survive a restart (settings.json in the state directory).
+    const Settings reloaded = loadSettings();
+    ASSERT_FALSE(reloaded.recentFiles.empty());
+    EXPECT_EQ(reloaded.recentFiles.front(), state.session.path());
+}
+
+TEST_F(EditorDocument, CorruptFilesAreRefusedWithTheirLineAndTheWorkIsKept) {
+    EditorState state;
+    state.session.change("Edit").lights[0].irradiance = 9.0f;
+    state.session.settle(false);
+    const std::string scenePath = write("bad_scene.json", "{\n  \"format\": \"glint-scene\",\n  \"version\": 1,\n  \"lights\": 7\n}\n");
+    openSceneGuarded(state, scenePath);  // dirty: the prompt is asked for first
+    EXPECT_TRUE(state.unsavedPromptRequested);
+    runActionAfterPrompt(state);  // "Don't save"
+    EXPECT_NE(state.errorMessage.find("bad_scene.json:4:"), std::string::npos) << state.errorMessage;
+    EXPECT_FLOAT_EQ(state.session.scene().lights[0].irradiance, 9.0f);
+    EXPECT_TRUE(state.session.canUndo());
+
+    state.errorMessage.clear();
+    const std::string materialPath = write("bad_material.json", "{\"format\": \"glint-material\", \"version\": 1,\n \"model\": \"plaster\"}");
+    openDroppedFile(state, materialPath);
+    EXPECT_NE(state.errorMessage.find("bad_material.json:2:"), std::string::npos) << state.errorMessage;
+    EXPECT_FLOAT_EQ(state.session.scene().lights[0].irradiance, 9.0f);
+}
+
+TEST_F(EditorDocument, AnUnreadableRecoveryFileIsReportedAndKept) {
+    ASSERT_TRUE(ensureParentDirectory(recoveryFilePath()).ok());
+    std::ofstream(recoveryFilePath()) << "{ not json";
+    EditorState state;
+    startRecovery(state);
+    EXPECT_NE(state.errorMessage.find("recovery.json"), std::string::npos) << state.errorMessage;
+    EXPECT_TRUE(state.recoveryOffer.empty());
+    autosave(state, 100.0, 5.0);
+    finishRecovery(state);
+    EXPECT_TRUE(std::filesystem::exists(recoveryFilePath())) << "kept for the user to inspect";
+}
+
+TEST_F(EditorDocument, QuitWithoutChangesNeedsNoPromptAndWithChangesWaitsForOne) {
+    EditorState clean;
+    requestQuit(clean);
+    EXPECT_TRUE(clean.quitNow);
+    EditorState dirty;
+    dirty.session.change("Edit").lights[0].irradiance = 1.0f;
+    requestQuit(dirty);
+    EXPECT_FALSE(dirty.quitNow);
+    EXPECT_TRUE(dirty.unsavedPromptRequested);
+    runActionAfterPrompt(dirty);
+    EXPECT_TRUE(dirty.quitNow);
+}
+
+TEST_F(EditorDocument, AutosaveWritesRecoveryWhileDirtyAndRemovesItWhenClean) {
+    EditorState state;
+    state.session.change("Edit").lights[0].irradiance = 4.0f;
+    state.session.settle(false);
+    const double interval = 5.0;
+    EXPECT_GT(autosave(state, 100.0, interval), 1e8);  // written now: nothing left to wait for
+    auto recovered = loadRecovery(recoveryFilePath());
+    ASSERT_TRUE(recovered.ok()) << recovered.error().format();
+    EXPECT_FLOAT_EQ(recovered->scene.lights[0].irradiance, 4.0f);
+    // The next change waits for the interval, then is written.
+    state.session.change("Edit").lights[0].irradiance = 5.0f;
+    state.session.settle(false);
+    EXPECT_NEAR(autosave(state, 101.0, interval), 4.0, 1e-9);
+    EXPECT_GT(autosave(state, 105.0, interval), 1e8);
+    EXPECT_FLOAT_EQ(loadRecovery(recoveryFilePath())->scene.lights[0].irradiance, 5.0f);
+    // Saved: the next autosave removes the recovery file; a clean exit would too.
+    ASSERT_TRUE(saveSceneTo(state, directory_ + "/saved.json"));
+    autosave(state, 200.0, interval);
+    EXPECT_FALSE(std::filesystem::exists(recoveryFilePath()));
+}
+
+TEST_F(EditorDocument, UiScaleIsKeptBetweenRunsAndNonsenseIgnored) {
+    Settings settings;
+    settings.uiScale = 1.75f;
+    saveSettings(settings);
+    EXPECT_FLOAT_EQ(loadSettings().uiScale, 1.75f);
+    std::ofstream(std::string(std::getenv("GLINT_STATE_DIR")) + "/settings.json") << R"({"ui_scale": 40, "recent_files": [3]})";
+    const Settings fallback = loadSettings();
+    EXPECT_FLOAT_EQ(fallback.uiScale, 1.0f);
+    EXPECT_TRUE(fallback.recentFiles.empty());
+}
+
+TEST_F(EditorDocument, CameraActionsAreUndoableEdits) {
+    EditorState state;
+    const Camera original = state.session.scene().camera;
+    state.selectedObject = 0;  // the unit sphere at the origin
+    frameSelected(state);
+    const Camera framed = state.session.scene().camera;
+    EXPECT_NEAR(glm::length(framed.target), 0.0f, 1e-5f);
+    // The bounding sphere fills the vertical field of view with 10 % margin: d = 1.1 r / sin(fov/2).
+    EXPECT_NEAR(glm::length(framed.position - framed.target), 1.1f / std::sin(glm::radians(20.0f)), 1e-3f);
+    toggleProjection(state);
+    const Camera& orthographic = state.session.scene().camera;
+    EXPECT_EQ(orthographic.projection, Projection::Orthographic);
+    // Same apparent size at the target: h = 2 d tan(fov/2).
+    EXPECT_NEAR(orthographic.orthoHeight, 2.0f * glm::length(framed.position - framed.target) * std::tan(glm::radians(20.0f)), 1e-3f);
+    EXPECT_EQ(state.session.undoLabel(), "Switch projection");
+    ASSERT_TRUE(state.session.undo());
+    ASSERT_TRUE(state.session.undo());
+    EXPECT_EQ(state.session.scene().camera.position, original.position);
+    EXPECT_FALSE(state.session.dirty());
+    resetView(state);
+    EXPECT_EQ(state.session.scene().camera.position, defaultScene().camera.position);
+}
+
+}  // namespace
+}  // namespace glint

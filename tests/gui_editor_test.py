@@ -1,0 +1,403 @@
+"""GUI tests of the editor under Xvfb, driven with real input (xdotool) and checked in
+screenshots. One scenario per ctest entry:
+  undo         drag a material slider (the sphere changes), Ctrl+Z (it is back), Ctrl+Shift+Z,
+               add a light and undo it; closing with unsaved changes asks first (N = don't save)
+  save_reopen  edit, add a light, Ctrl+S through the file browser, reopen the file: same picture;
+               Ctrl+S again saves to the same path without asking
+  recovery     edit, wait for autosave, kill -9; the next start offers the work (Enter = recover)
+               and the picture shows the edit; Ctrl+Q then asks about the unsaved work
+  light_handle drag the key light's handle in the viewport (the lighting turns), undo, redo
+  typed_values Ctrl+click a slider and type: a value outside the valid range is refused with a
+               message; one past the slider's end but valid is kept
+  screenshot   F12 through the file browser writes the viewport as PNG and as EXR
+  crash_signal SIGSEGV right after an edit (autosave 30 s away): the crash guard's copy is
+               offered on the next start and restores the edit
+  corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
+               naming file:line, the work and its undo history untouched
+usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_test_support import XServer, pixel, region_difference, write_png  # noqa: E402
+
+# Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
+# left, material column 360 px on the right, status bar at the bottom).
+VIEWPORT = (340, 40, 910, 760)
+SPHERE_CENTRE = (625, 375)
+BACKGROUND_SPOT = (350, 60)         # dark background inside the viewport, above the floor
+EXPONENT_SLIDER = (1018, 198)        # Blinn-Phong exponent n (64) in the material column
+ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
+VIEWPORT_PIXELS = (590, 752)         # 1280 − 330 − 360 wide, between menu bar and status bar
+
+
+class Editor:
+    def __init__(self, x, glint, output, state_dir, args=(), env=None):
+        self.x = x
+        environment = dict(x.env, GLINT_STATE_DIR=state_dir, GLINT_GUI_FAILURE_DIR=output)
+        environment.update(env or {})
+        self.process = subprocess.Popen([glint, *args], env=environment, cwd=output, stdout=subprocess.PIPE,
+                                        stderr=subprocess.STDOUT, text=True)
+        self.window = x.find_window("Glint")
+        self.log = ""
+
+    def wait_exit(self, timeout=20):
+        code = self.process.wait(timeout=timeout)
+        self.log = self.process.communicate()[0]
+        return code
+
+    def kill(self):
+        if self.process.poll() is None:
+            self.process.kill()
+            self.log = self.process.communicate()[0]
+
+
+def lit_sphere(shot):
+    red = pixel(shot, *SPHERE_CENTRE)
+    return red[0] > 80 and red[0] > red[1] + 30
+
+
+def differs(reference, threshold=1.0):
+    return lambda shot: region_difference(shot, reference, VIEWPORT) > threshold
+
+
+def matches(reference, threshold=0.3):
+    return lambda shot: region_difference(shot, reference, VIEWPORT) < threshold
+
+
+def modal_shown(reference):
+    """ImGui lightens everything behind a modal; the dark background shows it."""
+    return lambda shot: sum(pixel(shot, *BACKGROUND_SPOT)) > sum(pixel(reference, *BACKGROUND_SPOT)) + 60
+
+
+def save(shot, output, name):
+    write_png(shot, os.path.join(output, name + ".png"))
+
+
+def close_window(x, editor):
+    subprocess.run([os.environ["GLINT_X11_CLOSE"], editor.window], env=x.env, check=True)
+
+
+def type_path(x, path):
+    """The file browser's path field has the keyboard focus: replace its text and confirm."""
+    time.sleep(0.5)
+    x.key("ctrl+a")
+    x.type_text(path)
+    x.key("Return")
+
+
+# --- scenarios ----------------------------------------------------------------------------------
+
+def scenario_undo(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        save(base, output, "undo_0_start")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the sphere to change after the slider drag")
+        edited = x.wait_stable(VIEWPORT)
+        save(edited, output, "undo_1_dragged")
+        x.key("ctrl+z")
+        save(x.wait_for(matches(base), "Ctrl+Z to bring the sphere back (one drag = one step)"), output, "undo_2_undone")
+        x.key("ctrl+shift+z")
+        x.wait_for(matches(edited), "Ctrl+Shift+Z to redo the drag")
+        x.click(*ADD_POINT_LIGHT)
+        x.wait_for(differs(edited), "a new point light to change the picture")
+        lit = x.wait_stable(VIEWPORT)
+        save(lit, output, "undo_3_light_added")
+        x.key("ctrl+z")
+        x.wait_for(matches(edited), "Ctrl+Z to remove the added light")
+        # Unsaved changes: a close request asks first and the editor stays open.
+        close_window(x, editor)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt")
+        time.sleep(0.5)
+        assert editor.process.poll() is None, "the editor closed without asking about unsaved changes"
+        x.key("n")  # Don't save
+        code = editor.wait_exit()
+        assert code == 0, f"editor exited with {code}"
+        print("ok: drag changed the sphere, undo/redo restored it, added light undone, close asked first")
+    finally:
+        editor.kill()
+
+
+def scenario_save_reopen(x, glint, output, state):
+    path = os.path.join(output, "saved_scene.json")
+    if os.path.exists(path):
+        os.remove(path)
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        x.click(*ADD_POINT_LIGHT)
+        before_save = x.wait_stable(VIEWPORT)
+        save(before_save, output, "save_1_before")
+        x.key("ctrl+s")  # untitled: the file browser asks for a name
+        type_path(x, path)
+        deadline = time.time() + 20
+        while not os.path.exists(path) and time.time() < deadline:
+            time.sleep(0.2)
+        assert os.path.exists(path), "Ctrl+S did not write the scene"
+        with open(path) as saved:
+            scene = json.load(saved)
+        assert len(scene["lights"]) == 3, f"expected 3 lights in the saved scene, found {len(scene['lights'])}"
+        exponent = scene["materials"][0]["exponent"]
+        assert exponent < 60, f"the dragged exponent was not saved: {exponent}"
+        close_window(x, editor)  # saved: no prompt
+        assert editor.wait_exit() == 0
+    finally:
+        editor.kill()
+
+    editor = Editor(x, glint, output, state, args=[path])
+    try:
+        reopened = x.wait_for(matches(before_save, 0.5), "the reopened scene to look as it did when saved")
+        save(reopened, output, "save_2_reopened")
+        first_write = os.stat(path).st_mtime_ns
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] + 60, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(reopened), "the second drag to show")
+        time.sleep(0.3)
+        x.key("ctrl+s")  # the scene has a path now: no dialog
+        deadline = time.time() + 20
+        while os.stat(path).st_mtime_ns == first_write and time.time() < deadline:
+            time.sleep(0.2)
+        with open(path) as saved:
+            second = json.load(saved)["materials"][0]["exponent"]
+        assert second > exponent, f"Ctrl+S did not save the second edit ({second} vs {exponent})"
+        close_window(x, editor)
+        assert editor.wait_exit() == 0
+        print(f"ok: saved through the file browser (exponent {exponent:.3g}, 3 lights), reopened identical, re-saved {second:.3g}")
+    finally:
+        editor.kill()
+
+
+def scenario_recovery(x, glint, output, state):
+    recovery = os.path.join(state, "recovery.json")
+    editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"})
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        edited = x.wait_stable(VIEWPORT)
+        deadline = time.time() + 15
+        while not os.path.exists(recovery) and time.time() < deadline:
+            time.sleep(0.2)
+        assert os.path.exists(recovery), "autosave wrote no recovery file"
+        editor.process.send_signal(signal.SIGKILL)
+        editor.process.wait(timeout=10)
+    finally:
+        editor.kill()
+
+    editor = Editor(x, glint, output, state)
+    try:
+        offer = x.wait_for(modal_shown(base), "the offer to recover the unsaved work")
+        save(offer, output, "recovery_1_offer")
+        x.key("Return")  # Recover
+        recovered = x.wait_for(matches(edited, 0.5), "the recovered scene to show the edit")
+        save(recovered, output, "recovery_2_recovered")
+        # Recovered work counts as unsaved: Ctrl+Q asks, and "don't save" leaves no recovery file.
+        x.key("ctrl+q")
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt for recovered work")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        assert not os.path.exists(recovery), "a clean exit must remove the recovery file"
+        print("ok: kill -9 after an edit, the next start offered the work and restored the edit")
+    finally:
+        editor.kill()
+
+
+def scenario_crash_signal(x, glint, output, state):
+    """SIGSEGV right after an edit, with autosave far off: the crash guard writes the copy."""
+    recovery = os.path.join(state, "recovery.json")
+    editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"})
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        time.sleep(1.0)  # past the first autosave check (a clean scene writes nothing)
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        edited = x.wait_stable(VIEWPORT)
+        assert not os.path.exists(recovery), "autosave should not have run yet (30 s interval)"
+        editor.process.send_signal(signal.SIGSEGV)
+        code = editor.process.wait(timeout=10)
+        assert code == -signal.SIGSEGV, f"the editor should still die of SIGSEGV, exit status {code}"
+        assert os.path.exists(recovery), "the crash guard wrote no recovery file"
+        with open(recovery) as saved:
+            exponent = json.load(saved)["scene"]["materials"][0]["exponent"]
+        assert exponent < 60, f"the recovery file lacks the edit (exponent {exponent})"
+    finally:
+        editor.kill()
+    editor = Editor(x, glint, output, state)
+    try:
+        x.wait_for(modal_shown(base), "the offer to recover")
+        x.key("Return")
+        x.wait_for(matches(edited, 0.5), "the recovered edit")
+        x.key("ctrl+q")
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        print(f"ok: SIGSEGV after an edit left a recovery file with exponent {exponent:.3g}, recovered on restart")
+    finally:
+        editor.kill()
+
+
+MATERIAL_COLUMN = (925, 40, 1275, 400)
+
+
+def refusal_shown(shot):
+    """The material panel's refusal message is orange text (255, 153, 76) under the widgets."""
+    return any(abs(r - 255) < 3 and abs(g - 153) < 3 and abs(b - 76) < 3
+               for r, g, b in (pixel(shot, x_, y_) for y_ in range(MATERIAL_COLUMN[1], MATERIAL_COLUMN[3])
+                               for x_ in range(MATERIAL_COLUMN[0], MATERIAL_COLUMN[2], 2)))
+
+
+def type_into_slider(x, where, text):
+    """Ctrl+click turns an ImGui slider into a text field (its text selected); type and confirm."""
+    x.run("xdotool", "mousemove", "--sync", str(where[0]), str(where[1]))
+    x.run("xdotool", "keydown", "ctrl")
+    time.sleep(0.15)
+    x.run("xdotool", "click", "1")
+    time.sleep(0.15)
+    x.run("xdotool", "keyup", "ctrl")
+    time.sleep(0.3)
+    x.key("ctrl+a")
+    x.type_text(text)
+    x.key("Return")
+
+
+def scenario_typed_values(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        assert not refusal_shown(base)
+        type_into_slider(x, EXPONENT_SLIDER, "-5")
+        refused = x.wait_for(refusal_shown, "a message refusing exponent -5")
+        save(refused, output, "typed_1_refused")
+        assert region_difference(refused, base, VIEWPORT) < 0.3, "a refused value must not change the sphere"
+        type_into_slider(x, EXPONENT_SLIDER, "20000")  # past the slider's 10000, inside the valid range
+        x.wait_for(differs(base), "exponent 20000 (beyond the slider) to be kept")
+        kept = x.wait_stable(VIEWPORT)
+        assert not refusal_shown(kept), "the message should go once a valid value is typed"
+        save(kept, output, "typed_2_kept")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to undo the typed value")
+        close_window(x, editor)
+        assert editor.wait_exit() == 0
+        print("ok: -5 refused with a message, 20000 kept beyond the slider, undone")
+    finally:
+        editor.kill()
+
+
+def scenario_corrupt_open(x, glint, output, state):
+    corrupt = os.path.join(output, "corrupt_scene.json")
+    with open(corrupt, "w") as out:
+        out.write('{\n  "format": "glint-scene",\n  "version": 1,\n  "lights": [{"type": "point", "power": -5}]\n}\n')
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the slider drag to show")
+        edited = x.wait_stable(VIEWPORT)
+        x.key("ctrl+o")
+        type_path(x, corrupt)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt before opening")
+        time.sleep(0.3)
+        x.key("n")  # don't save: open the other scene (which will fail)
+        time.sleep(0.5)
+        error = x.wait_for(modal_shown(edited), "the error dialog")
+        save(error, output, "corrupt_1_error")
+        x.key("Return")  # OK
+        x.wait_for(matches(edited), "the edited scene to stay on screen")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "the undo history to survive the failed open")
+        x.key("ctrl+shift+z")
+        close_window(x, editor)
+        x.wait_for(modal_shown(edited), "the unsaved-changes prompt (the work is still unsaved)")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        assert "corrupt_scene.json:4:" in editor.log, f"the error should name file:line, log was:\n{editor.log}"
+        print("ok: corrupt scene refused with", [l for l in editor.log.splitlines() if "corrupt_scene" in l][0])
+    finally:
+        editor.kill()
+
+
+def scenario_screenshot(x, glint, output, state):
+    png, exr = os.path.join(output, "viewport.png"), os.path.join(output, "viewport.exr")
+    for path in (png, exr):
+        if os.path.exists(path):
+            os.remove(path)
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        for path in (png, exr):
+            x.key("F12")
+            type_path(x, path)
+            deadline = time.time() + 20
+            while not os.path.exists(path) and time.time() < deadline:
+                time.sleep(0.2)
+            assert os.path.exists(path), f"F12 wrote no {path}"
+            x.wait_for(lambda shot: not modal_shown(base)(shot), "the file browser to close")
+        with open(png, "rb") as image:
+            header = image.read(24)
+        assert header[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+        width, height = int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+        assert (width, height) == (VIEWPORT_PIXELS), f"the screenshot should be the viewport, got {width}x{height}"
+        with open(exr, "rb") as image:
+            assert image.read(4) == b"\x76\x2f\x31\x01", "not an OpenEXR file"
+        close_window(x, editor)  # nothing changed: no prompt
+        assert editor.wait_exit() == 0
+        print(f"ok: F12 wrote the viewport as a {width}x{height} PNG and as an EXR")
+    finally:
+        editor.kill()
+
+
+def find_handle(shot):
+    """The centroid of the light handles' yellow pixels (dot and stroke) in the viewport, or None."""
+    hits = [(x_, y_) for y_ in range(VIEWPORT[1], VIEWPORT[3], 2) for x_ in range(VIEWPORT[0], VIEWPORT[2], 2)
+            if pixel(shot, x_, y_) == (255, 220, 90)]
+    if not hits:
+        return None
+    return sum(h[0] for h in hits) // len(hits), sum(h[1] for h in hits) // len(hits)
+
+
+def scenario_light_handle(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        handle = find_handle(base)
+        assert handle, "no light handle drawn in the viewport"
+        x.drag(handle, (handle[0] - 250, handle[1] + 40))
+        x.wait_for(differs(base), "dragging the key light's handle to relight the sphere")
+        turned = x.wait_stable(VIEWPORT)  # the full-resolution frame after the drag's previews
+        save(turned, output, "handle_1_turned")
+        moved_to = find_handle(turned)
+        assert moved_to and abs(moved_to[0] - (handle[0] - 250)) < 25, f"the handle should follow the mouse: {handle} -> {moved_to}"
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to turn the light back (one drag = one step)")
+        x.key("ctrl+shift+z")
+        x.wait_for(matches(turned), "Ctrl+Shift+Z to redo the turn")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z again")
+        close_window(x, editor)  # back at the opened state: nothing to save, no prompt
+        assert editor.wait_exit() == 0
+        print(f"ok: handle at {handle} dragged to {moved_to}, undone and redone")
+    finally:
+        editor.kill()
+
+
+def main():
+    glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
+    output = os.path.join(output, scenario)
+    os.makedirs(output, exist_ok=True)
+    os.environ["GLINT_GUI_FAILURE_DIR"] = output
+    state = os.path.join(output, "state")
+    shutil.rmtree(state, ignore_errors=True)
+    with XServer(1280, 800) as x:
+        globals()["scenario_" + scenario](x, glint, output, state)
+
+
+if __name__ == "__main__":
+    main()
