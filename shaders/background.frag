@@ -1,6 +1,6 @@
 #version 410 core
 // The background pass: the radiance of the constant or sky background along each pixel's
-// primary ray, drawn before the objects (which then cover it). Twin of the CPU reference's miss.
+// primary ray, drawn after the objects where none wrote depth. Twin of the CPU reference's miss.
 #include "common/uniforms.glsl"
 #include "common/frame.glsl"
 #include "common/background.glsl"

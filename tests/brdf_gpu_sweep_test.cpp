@@ -1,6 +1,7 @@
 // The GLSL twin of every BRDF model against its C++ reference: each model with three parameter
-// sets, on a sphere (poles in view) and a floor plane, under a point and a directional light,
-// rendered headless at 96×96 and compared pixel by pixel on linear float output (silhouettes excluded).
+// sets (plus exponent 0 where valid), on a sphere and a floor plane under a point, a directional,
+// a spot and an ambient light (tests/scenes/sweep_lights.json), rendered headless at 96×96 and
+// compared pixel by pixel on linear float output (silhouettes excluded).
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -26,12 +27,14 @@ const SweepCase kSweep[] = {
     {"blinn_phong", {{"form", glm::vec3(0)}, {"exponent", glm::vec3(30)}}},
     {"blinn_phong", {{"form", glm::vec3(2)}, {"exponent", glm::vec3(300)}, {"specular", glm::vec3(0.5f)}}},
     {"blinn_phong", {{"form", glm::vec3(3)}, {"exponent", glm::vec3(4)}}},
+    {"blinn_phong", {{"form", glm::vec3(1)}, {"exponent", glm::vec3(0)}}},  // x^0 = 1, also for x = 0
     {"oren_nayar", {{"roughness", glm::vec3(0)}}},
     {"oren_nayar", {{"roughness", glm::vec3(30)}, {"albedo", {0.7f, 0.4f, 0.3f}}}},
     {"oren_nayar", {{"roughness", glm::vec3(90)}}},
     {"phong", {{"form", glm::vec3(0)}, {"exponent", glm::vec3(20)}}},
     {"phong", {{"form", glm::vec3(1)}, {"exponent", glm::vec3(200)}, {"specular", glm::vec3(0.6f)}}},
     {"phong", {{"form", glm::vec3(3)}, {"exponent", glm::vec3(8)}}},
+    {"phong", {{"form", glm::vec3(3)}, {"exponent", glm::vec3(0)}}},
     {"cook_torrance", {{"distribution", glm::vec3(1)}, {"geometry", glm::vec3(1)}, {"fresnel", glm::vec3(1)},
                        {"ior", {0.18299f, 0.42108f, 1.3734f}}, {"extinction", {3.4242f, 2.3459f, 1.7704f}},
                        {"roughness", glm::vec3(0.15f)}}},
@@ -50,9 +53,10 @@ const SweepCase kSweep[] = {
     {"retroreflective", {{"limb_darkening", glm::vec3(0)}, {"minnaert_k", glm::vec3(0.6f)}, {"albedo", glm::vec3(0.5f)}}},
     {"retroreflective", {{"limb_darkening", glm::vec3(0)}, {"minnaert_k", glm::vec3(1.4f)},
                          {"retroreflection", {0.8f, 0.8f, 0.2f}}, {"retro_exponent", glm::vec3(20)}}},
+    {"retroreflective", {{"retroreflection", glm::vec3(0.5f)}, {"retro_exponent", glm::vec3(0)}}},
     {"mirror", {}},
-    {"mirror", {{"kappa", glm::vec3(0)}, {"eta", glm::vec3(1.5f)}, {"diffuse_albedo", {0.3f, 0.2f, 0.1f}}}},
-    {"mirror", {{"eta", {0.18299f, 0.42108f, 1.3734f}}, {"kappa", {3.4242f, 2.3459f, 1.7704f}}}},
+    {"mirror", {{"extinction", glm::vec3(0)}, {"ior", glm::vec3(1.5f)}, {"diffuse_albedo", {0.3f, 0.2f, 0.1f}}}},
+    {"mirror", {{"ior", {0.18299f, 0.42108f, 1.3734f}}, {"extinction", {3.4242f, 2.3459f, 1.7704f}}}},
     {"glass", {}},
     {"glass", {{"ior", glm::vec3(1.33f)}, {"absorption", {0.1f, 0.6f, 1.2f}}}},
     {"glass", {{"transparency", glm::vec3(1)}, {"transmission", glm::vec3(0.7f)}, {"ior", glm::vec3(2.42f)}}},
@@ -73,8 +77,12 @@ Material sweepMaterial(const SweepCase& sweep) {
 }
 
 TEST(BrdfGpuSweep, EveryModelMatchesItsCppTwin) {
-    Scene scene = test::loadTestScene("scenes/blinn_point.json");  // a point and a directional light
-    ASSERT_EQ(scene.lights.size(), 2u);
+    Scene scene = test::loadTestScene("scenes/sweep_lights.json");
+    ASSERT_EQ(scene.lights.size(), 4u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Point);
+    EXPECT_EQ(scene.lights[1].type, LightType::Directional);
+    EXPECT_EQ(scene.lights[2].type, LightType::Spot);
+    EXPECT_EQ(scene.lights[3].type, LightType::Ambient);  // each model's ambient hook, too
     std::vector<bool> modelSwept(allModels().size(), false);
     for (const SweepCase& sweep : kSweep) {
         const Material material = sweepMaterial(sweep);

@@ -126,6 +126,19 @@ TEST(BrdfRegistry, TablesAreConsistent) {
                 EXPECT_GE(spec.defaultValue[c], spec.validMin);
                 EXPECT_LE(spec.defaultValue[c], spec.validMax);
             }
+            // A colour is a reflectance in [0, 1] (the panel shows an sRGB picker); a per-channel
+            // quantity that may leave [0, 1] (an index, an absorption) must be PerChannel.
+            if (spec.kind == ParamKind::Color) {
+                EXPECT_EQ(spec.validMin, 0.0f);
+                EXPECT_EQ(spec.validMax, 1.0f);
+            }
+        }
+        // Every model names the complex index n + iκ the same way: per-channel `ior` and `extinction`.
+        const int extinction = findParam(info.params, "extinction");
+        if (extinction >= 0) {
+            ASSERT_GE(findParam(info.params, "ior"), 0);
+            EXPECT_EQ(info.params[findParam(info.params, "ior")].kind, ParamKind::PerChannel);
+            EXPECT_EQ(info.params[extinction].kind, ParamKind::PerChannel);
         }
     }
     EXPECT_FALSE(findModel("no_such_model").has_value());
@@ -300,7 +313,7 @@ TEST(BrdfProperties, MirrorWithADiffusePartReflectsMoreThanItReceives) {
     // part adds ρ_d on top: aluminium (F ≈ 0.91 at normal incidence) with ρ_d = 0.5 gives > 1.
     const std::vector<float> values = valuesOf(BrdfModel::Mirror, {{"diffuse_albedo", glm::vec3(0.5f)}});
     const MirrorParams mirror = unpackMirror(values.data());
-    const glm::vec3 lobe = fresnelConductor(1.0f, mirror.eta, mirror.kappa);
+    const glm::vec3 lobe = fresnelConductor(1.0f, mirror.ior, mirror.extinction);
     const BrdfFunction brdf = [&](glm::vec3 wi, glm::vec3 wo) { return evalBrdf(BrdfModel::Mirror, values, wi, wo, {}); };
     const glm::vec3 diffuse = directionalAlbedoAroundMirror(brdf, viewAt(0.0f));
     EXPECT_NEAR(diffuse.g, 0.5f, 1e-3f);
@@ -448,6 +461,55 @@ TEST(BrdfProperties, LimbDarkeningLaws) {
     EXPECT_GT(evalBrdf(info.model, vest, viewAt(0.6f), viewAt(0.6f), {}).r, 10.0f);
     EXPECT_LT(evalBrdf(info.model, vest, viewAt(0.6f), viewAt(-0.6f), {}).r, 1e-6f);
     for (float theta : {0.0f, 0.8f}) EXPECT_LE(directionalAlbedo(info, vest, viewAt(theta)).r, 1.0f + 2e-3f);
+}
+
+// Ambient reflectance k_a: every model but glass has the hook; k_a is never more than the
+// model's whole directional albedo (the hooks leave out only non-negative lobes), except for
+// Oren-Nayar, whose k_a = ρ differs from its qualitative albedo by a few percent either way.
+TEST(BrdfAmbient, EveryHookIsAtMostTheDirectionalAlbedo) {
+    std::mt19937 random(11);
+    for (const ModelInfo& info : allModels()) {
+        EXPECT_EQ(info.glslAmbient == nullptr, info.model == BrdfModel::Glass) << info.id;
+        for (int trial = 0; trial < 3; ++trial) {
+            const auto values = randomValues(info, random);
+            for (float theta : {0.0f, 0.7f, 1.3f}) {
+                const glm::vec3 ka = ambientReflectance(info.model, values, viewAt(theta), {});
+                ASSERT_TRUE(ka.r >= 0 && ka.g >= 0 && ka.b >= 0 && std::isfinite(ka.r + ka.g + ka.b)) << info.id;
+                if (info.model == BrdfModel::OrenNayar) continue;
+                const glm::vec3 albedo = directionalAlbedo(info, values, viewAt(theta));
+                for (int c = 0; c < 3; ++c) EXPECT_LE(ka[c], albedo[c] * 1.01f + 1e-3f) << info.id << " θ " << theta;
+            }
+        }
+    }
+    EXPECT_EQ(ambientReflectance(BrdfModel::Retroreflective, defaultValues(kRetroreflectiveTable), viewAt(2.0f), {}),
+              glm::vec3(0.0f));  // seen from below the horizon
+}
+
+// Where the hook is the exact albedo: the diffuse-only forms of each model.
+TEST(BrdfAmbient, HooksAreExactForDiffuseOnlyForms) {
+    const glm::vec3 rho(0.2f, 0.5f, 0.9f);
+    const std::vector<std::pair<BrdfModel, std::vector<float>>> diffuseOnly = {
+        {BrdfModel::OrenNayar, valuesOf(BrdfModel::OrenNayar, {{"albedo", rho}, {"roughness", glm::vec3(0)}})},
+        {BrdfModel::Phong, valuesOf(BrdfModel::Phong, {{"diffuse_albedo", rho}, {"specular", glm::vec3(0)}})},
+        {BrdfModel::Ward, valuesOf(BrdfModel::Ward, {{"diffuse_albedo", rho}, {"specular", glm::vec3(0)}})},
+        {BrdfModel::CookTorrance, valuesOf(BrdfModel::CookTorrance, {{"diffuse_albedo", rho}, {"ior", glm::vec3(1)},
+                                   {"extinction", glm::vec3(0)}, {"fresnel", glm::vec3(1)}})},  // F(n = 1) = 0
+        {BrdfModel::GgxAnisotropic, valuesOf(BrdfModel::GgxAnisotropic, {{"diffuse_albedo", rho}, {"ior", glm::vec3(1)},
+                                     {"extinction", glm::vec3(0)}, {"fresnel", glm::vec3(1)}})},
+        {BrdfModel::Retroreflective, valuesOf(BrdfModel::Retroreflective, {{"albedo", rho}, {"limb_darkening", glm::vec3(0)},
+                                      {"minnaert_k", glm::vec3(0.6f)}})},
+        {BrdfModel::Retroreflective, valuesOf(BrdfModel::Retroreflective, {{"albedo", rho}, {"limb_darkening", glm::vec3(0)},
+                                      {"minnaert_k", glm::vec3(1.7f)}})},
+        {BrdfModel::Retroreflective, valuesOf(BrdfModel::Retroreflective, {{"albedo", rho}, {"limb_darkening", glm::vec3(1)}})},
+    };
+    for (const auto& [model, values] : diffuseOnly) {
+        for (float theta : {0.0f, 0.8f, 1.3f}) {
+            const glm::vec3 ka = ambientReflectance(model, values, viewAt(theta), {});
+            const glm::vec3 albedo = directionalAlbedo(modelInfo(model), values, viewAt(theta));
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(ka[c], albedo[c], 3e-3f * albedo[c] + 1e-5f) << modelInfo(model).id << " θ " << theta;
+        }
+    }
 }
 
 }  // namespace

@@ -103,7 +103,7 @@ TEST(SceneJsonLightsErrors, GlassAndMirrorNonsenseIsRefused) {
     };
     for (const char* body : {R"("model": "glass", "ior": -1.5)", R"("model": "glass", "ior": 0.5)",
                              R"("model": "glass", "absorption": [0, -1, 0])", R"("model": "glass", "transmission": 1.5)",
-                             R"("model": "mirror", "eta": [0, 1, 1])", R"("model": "mirror", "kappa": -1)"}) {
+                             R"("model": "mirror", "ior": [0, 1, 1])", R"("model": "mirror", "extinction": -1)"}) {
         auto result = material(body);
         ASSERT_FALSE(result.ok()) << body;
         EXPECT_EQ(result.error().where.line, 2) << result.error().format();
@@ -115,6 +115,23 @@ TEST(SceneJsonLightsErrors, GlassAndMirrorNonsenseIsRefused) {
     auto unknownMode = material(R"("model": "glass", "transparency": "frosted")");
     ASSERT_FALSE(unknownMode.ok());
     EXPECT_NE(unknownMode.error().message.find("frosted"), std::string::npos);
+}
+
+TEST(SceneJsonMaterials, PerChannelQuantitiesTakeOneNumberOrThreeAndRoundTrip) {
+    auto mirror = parseMaterial("{\"format\": \"glint-material\", \"version\": 1, \"model\": \"mirror\",\n"
+                                "\"ior\": 1.5, \"extinction\": [0.5, 1, 2]}", "mirror.json");
+    ASSERT_TRUE(mirror.ok()) << mirror.error().format();
+    EXPECT_EQ(std::vector<float>(mirror->values.begin(), mirror->values.begin() + 6),
+              (std::vector<float>{1.5f, 1.5f, 1.5f, 0.5f, 1.0f, 2.0f}));
+    const nlohmann::json saved = materialToJson(*mirror);
+    EXPECT_EQ(saved.at("ior"), nlohmann::json({1.5f, 1.5f, 1.5f}));
+    EXPECT_EQ(saved.at("extinction"), nlohmann::json({0.5f, 1.0f, 2.0f}));
+    // The old mirror keys are gone: every model calls the complex index ior + extinction.
+    auto old = parseMaterial("{\"format\": \"glint-material\", \"version\": 1, \"model\": \"mirror\",\n"
+                             "\"eta\": 1.5}", "mirror.json");
+    ASSERT_FALSE(old.ok());
+    EXPECT_EQ(old.error().where.line, 2);
+    EXPECT_NE(old.error().message.find("unknown key"), std::string::npos) << old.error().format();
 }
 
 }  // namespace

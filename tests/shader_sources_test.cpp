@@ -67,6 +67,12 @@ TEST(MaterialGlsl, FollowsTheParameterTable) {
     EXPECT_NE(glsl.find("p.form = int(materialValue(7) + 0.5);"), std::string::npos);
 }
 
+TEST(MaterialGlsl, PerChannelQuantitiesAreVec3) {
+    const std::string glsl = generateMaterialGlsl(modelInfo(BrdfModel::Mirror));
+    EXPECT_NE(glsl.find("p.ior = vec3(materialValue(0), materialValue(1), materialValue(2));"), std::string::npos);
+    EXPECT_NE(glsl.find("p.extinction = vec3(materialValue(3), materialValue(4), materialValue(5));"), std::string::npos);
+}
+
 TEST(MaterialGlsl, HooksForAmbientAndSpecularTransport) {
     const std::string lambert = generateMaterialGlsl(modelInfo(BrdfModel::Lambert));
     EXPECT_NE(lambert.find("#define GLINT_AMBIENT_REFLECTANCE ambientReflectanceLambert"), std::string::npos);

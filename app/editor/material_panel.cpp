@@ -45,24 +45,24 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
             }
             break;
         }
-        case ParamKind::Color: {
-            if (spec.validMax > 1.0f) {
-                // Not a colour but a per-channel quantity (an index of refraction): linear numbers.
-                float edited[3] = {value[0], value[1], value[2]};
-                if (ImGui::DragFloat3(spec.label, edited, 0.005f, spec.sliderMin, spec.sliderMax, "%.4g")) {
-                    bool valid = true;
-                    for (float channel : edited)
-                        valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
-                                 channel <= spec.validMax;
-                    if (valid) {
-                        std::copy(edited, edited + 3, value), changed = true;
-                        refusal.clear();
-                    } else {
-                        refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
-                    }
+        case ParamKind::PerChannel: {
+            // Not a colour (an index of refraction, an absorption coefficient): three linear numbers.
+            float edited[3] = {value[0], value[1], value[2]};
+            if (ImGui::DragFloat3(spec.label, edited, 0.005f, spec.sliderMin, spec.sliderMax, "%.4g")) {
+                bool valid = true;
+                for (float channel : edited)
+                    valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
+                             channel <= spec.validMax;
+                if (valid) {
+                    std::copy(edited, edited + 3, value), changed = true;
+                    refusal.clear();
+                } else {
+                    refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
                 }
-                break;
             }
+            break;
+        }
+        case ParamKind::Color: {
             float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
             if (ImGui::ColorEdit3(spec.label, encoded, ImGuiColorEditFlags_Float)) {
                 float linear[3];

@@ -36,10 +36,10 @@ inline constexpr ParamSpec kCookTorranceTable[] = {
     {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
      .help = "Added Lambert term ρ_d/π (0 for metals; a dielectric's body colour)"},
-    {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::Color,
+    {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0.01f, .sliderMax = 4, .validMin = 0, .validMax = kUnbounded, .defaultValue = {1.5f, 1.5f, 1.5f},
      .validMinExclusive = true, .help = "Real part of the complex index per RGB channel (> 0)"},
-    {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::Color,
+    {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.0f, 0.0f, 0.0f},
      .help = "Imaginary part of the index per channel: 0 for dielectrics, a few for metals"},
     {.name = "roughness", .label = "Roughness α", .unit = "", .kind = ParamKind::Scalar,
@@ -90,6 +90,14 @@ inline glm::vec3 evalCookTorrance(const CookTorranceParams& p, glm::vec3 wi, glm
     const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
     const glm::vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
     return p.diffuseAlbedo * kInvPi + fresnel * cookTorranceSpecular(p, wi, wo, frame);
+}
+
+// Ambient reflectance k_a: the diffuse albedo ρ_d, exact for the added Lambert term. The
+// microfacet lobe's albedo has no closed form (it needs a fitted table or a sampled integral,
+// which the two twins could not share exactly), so it is left out, as in the lecture's k_a = k_d.
+inline glm::vec3 ambientReflectanceCookTorrance(const CookTorranceParams& p, glm::vec3 /*wo*/,
+                                                const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
 }
 
 }  // namespace glint

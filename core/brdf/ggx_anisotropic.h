@@ -23,11 +23,11 @@ inline constexpr ParamSpec kGgxAnisotropicTable[] = {
     {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
      .help = "Added Lambert term ρ_d/π (0 for metals)"},
-    {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::Color,
+    {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0.01f, .sliderMax = 4, .validMin = 0, .validMax = kUnbounded,
      .defaultValue = {1.3456f, 0.96521f, 0.61722f}, .validMinExclusive = true,
      .help = "Real part of the complex index per RGB channel (> 0); default: aluminium"},
-    {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::Color,
+    {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded,
      .defaultValue = {7.4746f, 6.3995f, 5.3031f}, .help = "Imaginary part of the index per channel"},
     {.name = "roughness_x", .label = "Roughness α_x", .unit = "", .kind = ParamKind::Scalar,
@@ -65,6 +65,13 @@ inline glm::vec3 evalGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 wi,
     const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
     const glm::vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
     return p.diffuseAlbedo * kInvPi + fresnel * ggxAnisotropicSpecular(p, wi, wo, frame);
+}
+
+// Ambient reflectance k_a: the diffuse albedo ρ_d (the microfacet lobe's share is left out; see
+// ambientReflectanceCookTorrance).
+inline glm::vec3 ambientReflectanceGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 /*wo*/,
+                                                  const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
 }
 
 }  // namespace glint

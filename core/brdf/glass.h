@@ -32,7 +32,7 @@ inline constexpr ParamSpec kGlassTable[] = {
     {.name = "ior", .label = "Index η", .unit = "", .kind = ParamKind::Scalar,
      .sliderMin = 1, .sliderMax = 2.5f, .validMin = 1, .validMax = 4, .defaultValue = {1.5f, 0, 0},
      .help = "Refractive index (window glass 1.5, water 1.33, diamond 2.42)"},
-    {.name = "absorption", .label = "Absorption σ", .unit = "1/m", .kind = ParamKind::Color,
+    {.name = "absorption", .label = "Absorption σ", .unit = "1/m", .kind = ParamKind::PerChannel,
      .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0, 0, 0},
      .help = "Beer-Lambert coefficient: transmittance e^(−σ·d) over a path d inside"},
     {.name = "transparency", .label = "Transparency", .unit = "", .kind = ParamKind::Enum,

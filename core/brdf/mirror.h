@@ -13,17 +13,17 @@
 namespace glint {
 
 struct MirrorParams {
-    glm::vec3 eta;            // n: real part of the complex index, per channel
-    glm::vec3 kappa;          // κ: extinction coefficient, per channel
+    glm::vec3 ior;            // n: real part of the complex index, per channel
+    glm::vec3 extinction;     // κ: extinction coefficient, per channel
     glm::vec3 diffuseAlbedo;  // ρ_d of the optional Lambert part
 };
 
 // Default: aluminium (RGB fit of measured n, κ; pbrt-v4 and Mitsuba ship the same data).
 inline constexpr ParamSpec kMirrorTable[] = {
-    {.name = "eta", .label = "Index n", .unit = "", .kind = ParamKind::Color,
+    {.name = "ior", .label = "Index n", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0.05f, .sliderMax = 4, .validMin = 0.001f, .validMax = kUnbounded, .defaultValue = {1.66f, 0.88f, 0.52f},
      .help = "Real part of the complex refractive index n + iκ (per channel)"},
-    {.name = "kappa", .label = "Extinction κ", .unit = "", .kind = ParamKind::Color,
+    {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {9.22f, 6.27f, 4.84f},
      .help = "Imaginary part κ of n + iκ; 0 for a dielectric"},
     {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,

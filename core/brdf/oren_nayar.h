@@ -42,4 +42,11 @@ inline glm::vec3 evalOrenNayar(const OrenNayarParams& p, glm::vec3 wi, glm::vec3
     return p.albedo * kInvPi * (a + b * azimuthal / std::max(cosIn, cosOut));
 }
 
+// Ambient reflectance k_a: the facet albedo ρ, the exact directional albedo at σ = 0 (Lambert).
+// For σ > 0 the qualitative model's own albedo differs from ρ by a few percent, either way
+// (brdf_test); ρ is the lecture's k_a = k_d.
+inline glm::vec3 ambientReflectanceOrenNayar(const OrenNayarParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.albedo;
+}
+
 }  // namespace glint

@@ -11,7 +11,10 @@
 
 namespace glint {
 
-enum class ParamKind { Scalar, Color, Bool, Enum };
+// Color: linear RGB reflectance in [0, 1], shown with an sRGB picker. PerChannel: three linear
+// numbers that are not a colour (an index of refraction, an absorption coefficient), shown as
+// three numbers. Both are [r, g, b] or one number in files and a vec3 in GLSL.
+enum class ParamKind { Scalar, Color, PerChannel, Bool, Enum };
 enum class ParamScale { Linear, Log };
 
 struct EnumOption {
@@ -38,7 +41,9 @@ struct ParamSpec {
 inline constexpr float kUnbounded = std::numeric_limits<float>::infinity();
 
 // Floats one parameter occupies in the packed value array.
-constexpr int componentCount(ParamKind kind) { return kind == ParamKind::Color ? 3 : 1; }
+constexpr int componentCount(ParamKind kind) {
+    return kind == ParamKind::Color || kind == ParamKind::PerChannel ? 3 : 1;
+}
 
 // Offset of each parameter in the packed array, and the total.
 inline int packedSize(std::span<const ParamSpec> table) {

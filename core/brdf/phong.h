@@ -76,4 +76,10 @@ inline glm::vec3 evalPhong(const PhongParams& p, glm::vec3 wi, glm::vec3 wo, con
     return p.diffuseAlbedo * kInvPi + p.specular * specularScale;
 }
 
+// Ambient reflectance k_a: the diffuse albedo ρ_d, exact for the Lambert term; the specular
+// lobe's share of a uniform sky is left out, as in the lecture's k_a = k_d.
+inline glm::vec3 ambientReflectancePhong(const PhongParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
+}
+
 }  // namespace glint

@@ -70,4 +70,16 @@ inline glm::vec3 evalRetroreflective(const RetroreflectiveParams& p, glm::vec3 w
     return p.albedo * diffuse + p.retroreflection * retro;
 }
 
+// Ambient reflectance k_a: the diffuse law's exact directional albedo ∫ f_r cos θ_i dω_i at
+// μ_o = cos θ_o. Minnaert: (k+1)/(2π) μ_o^(k−1) · 2π ∫₀¹ μ_i^k dμ_i = μ_o^(k−1), so k_a = ρ μ_o^(k−1).
+// Lommel-Seeliger: 1/(4π) · 2π ∫₀¹ μ_i/(μ_i + μ_o) dμ_i = ½ (1 − μ_o ln(1 + 1/μ_o)).
+// The retroreflective lobe's share is left out (it has no closed form over the hemisphere).
+inline glm::vec3 ambientReflectanceRetroreflective(const RetroreflectiveParams& p, glm::vec3 wo,
+                                                   const ShadingFrame& frame) {
+    const float cosOut = frame.cosTheta(wo);
+    if (cosOut <= 0.0f) return glm::vec3(0.0f);
+    if (p.limbDarkening == LimbDarkening::Minnaert) return p.albedo * std::pow(cosOut, p.minnaertExponent - 1.0f);
+    return p.albedo * (0.5f * (1.0f - cosOut * std::log(1.0f + 1.0f / cosOut)));
+}
+
 }  // namespace glint

@@ -71,4 +71,10 @@ inline glm::vec3 evalWard(const WardParams& p, glm::vec3 wi, glm::vec3 wo, const
     return p.diffuseAlbedo * kInvPi + p.specular * wardSpecular(p, wi, wo, frame);
 }
 
+// Ambient reflectance k_a: the diffuse albedo ρ_d, exact for the Lambert term; the specular
+// lobe's share is left out, as in the lecture's k_a = k_d.
+inline glm::vec3 ambientReflectanceWard(const WardParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
+    return p.diffuseAlbedo;
+}
+
 }  // namespace glint

@@ -31,6 +31,7 @@ std::string generateMaterialGlsl(const ModelInfo& model) {
                 loads += "    p." + name + " = " + at(0) + ";\n";
                 break;
             case ParamKind::Color:
+            case ParamKind::PerChannel:
                 fields += "    vec3 " + name + ";\n";
                 loads += "    p." + name + " = vec3(" + at(0) + ", " + at(1) + ", " + at(2) + ");\n";
                 break;

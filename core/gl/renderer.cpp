@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "geometry/mesh.h"
+#include "gl/frame_uniforms.h"
 #include "gl/gl_loader.h"
 #include "gl/material_glsl.h"
 #include "gl/uniform_blocks.h"
@@ -193,46 +194,11 @@ const Renderer::GpuMesh& Renderer::meshFor(size_t objectIndex, const Shape& shap
 // --- per-frame uniforms ---------------------------------------------------------------------
 
 void Renderer::uploadFrame(const Scene& scene, int width, int height) {
-    FrameBlockStd140 frame{};
-    frame.viewProjection = scene.camera.viewProjection(static_cast<float>(width) / height);
-    frame.inverseViewProjection = glm::inverse(frame.viewProjection);
-    frame.viewportSize = {width, height, 0, 0};
-    frame.background = glm::vec4(scene.background.color, 1.0f);
-    frame.skyZenith = glm::vec4(scene.background.zenith, 1.0f);
-    frame.skyHorizon = glm::vec4(scene.background.horizon, 1.0f);
-    frame.skyGround = glm::vec4(scene.background.ground, 1.0f);
-    frame.backgroundKind = {scene.background.kind == BackgroundKind::Sky ? 1 : 0, 0, 0, 0};
-    LightBlockStd140 lights{};
-    int count = 0;
-    glm::vec3 ambient(0.0f);
-    for (const Light& light : scene.lights) {
-        if (!light.enabled) continue;
-        if (light.type == LightType::Ambient) {
-            ambient += ambientRadiance(light);
-            continue;
-        }
-        if (count == kMaxLights) continue;
-        GpuLightStd140& gpu = lights.lights[count++];
-        gpu.spotAxis = glm::vec4(0.0f, 0.0f, 0.0f, -2.0f);  // no cone
-        gpu.attenuation = glm::vec4(light.attenuation.coefficients, light.attenuation.enabled ? 1.0f : 0.0f);
-        if (light.type == LightType::Directional) {
-            gpu.position = glm::vec4(-glm::normalize(light.direction), 0.0f);
-            gpu.emission = glm::vec4(light.color * light.irradiance, 0.0f);
-            continue;
-        }
-        gpu.position = glm::vec4(light.position, 1.0f);
-        gpu.emission = glm::vec4(pointIntensity(light), 0.0f);  // I = Φ/4π
-        if (light.type == LightType::Spot) {
-            gpu.spotAxis = glm::vec4(glm::normalize(light.direction), spotCosOuter(light));
-            gpu.spotShape = glm::vec4(spotCosInner(light), light.falloffExponent, 0.0f, 0.0f);
-        }
-    }
-    frame.ambientRadiance = glm::vec4(ambient, 0.0f);
-    frame.lightCount = {count, 0, 0, 0};
+    const FrameUniforms packed = packFrameUniforms(scene, width, height);
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kFrameBinding]);
-    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof frame, &frame);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof packed.frame, &packed.frame);
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kLightBinding]);
-    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof lights, &lights);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof packed.lights, &packed.lights);
 }
 
 // --- drawing --------------------------------------------------------------------------------
@@ -256,12 +222,6 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     if (samples > 1) glEnable(GL_MULTISAMPLE);
     glClear(GL_DEPTH_BUFFER_BIT);
     uploadFrame(scene, width, height);
-    // The background covers every pixel first (constant or sky, per primary ray direction).
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(backgroundProgram_.id());
-    glBindVertexArray(emptyVertexArray_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEnable(GL_DEPTH_TEST);
 
     std::vector<float> sampleOffsets;
     for (int i = 0; i < samples && samples > 1; ++i) {
@@ -303,8 +263,20 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;
     }
-    glBindVertexArray(0);
     glDisable(GL_CULL_FACE);
+    // The background (constant or sky, per primary ray direction) last, only where no object
+    // wrote depth: drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and
+    // MSAA samples) an object covers are rejected before the background shader runs.
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthRange(1.0, 1.0);
+    glUseProgram(backgroundProgram_.id());
+    glBindVertexArray(emptyVertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthRange(0.0, 1.0);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(0);
     if (samples > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());

@@ -13,7 +13,7 @@ glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Ba
     switch (model) {
         case BrdfModel::Mirror: {
             const MirrorParams mirror = unpackMirror(values.data());
-            return traceMirror(mirror.eta, mirror.kappa, background, normal, towardsViewer);
+            return traceMirror(mirror.ior, mirror.extinction, background, normal, towardsViewer);
         }
         case BrdfModel::Glass: {
             const GlassParams glass = unpackGlass(values.data());

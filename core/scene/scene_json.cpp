@@ -56,8 +56,9 @@ Material readMaterial(ObjectReader& reader) {
         bounds.minExclusive = spec.validMinExclusive;
         switch (spec.kind) {
             case ParamKind::Scalar: value[0] = static_cast<float>(reader.number(spec.name, value[0], bounds)); break;
-            case ParamKind::Color: {
-                // A colour may be written as [r, g, b] or as one grey number.
+            case ParamKind::Color:
+            case ParamKind::PerChannel: {
+                // A colour or per-channel quantity may be written as [r, g, b] or as one number for all three.
                 if (reader.has(spec.name) && reader.take(spec.name).is_number()) {
                     const float grey = static_cast<float>(reader.number(spec.name, 0, bounds));
                     value[0] = value[1] = value[2] = grey;
@@ -88,7 +89,8 @@ json materialBody(const Material& material) {
         const float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
         switch (spec.kind) {
             case ParamKind::Scalar: out[spec.name] = value[0]; break;
-            case ParamKind::Color: out[spec.name] = {value[0], value[1], value[2]}; break;
+            case ParamKind::Color:
+            case ParamKind::PerChannel: out[spec.name] = {value[0], value[1], value[2]}; break;
             case ParamKind::Bool: out[spec.name] = value[0] != 0.0f; break;
             case ParamKind::Enum: out[spec.name] = spec.options[static_cast<int>(value[0])].id; break;
         }

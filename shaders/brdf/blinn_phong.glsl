@@ -8,7 +8,7 @@ vec3 evalBlinnPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
     vec3 sum = wi + wo;
     vec3 halfway = normalize(sum);
-    float lobe = pow(max(cosTheta(frame, halfway), 0.0), p.exponent);
+    float lobe = powZeroIsOne(max(cosTheta(frame, halfway), 0.0), p.exponent);
     float specularScale;
     if (p.form == 0) specularScale = lobe / cosIn;                             // lecture
     else if (p.form == 1) specularScale = lobe / max(cosIn, cosOut);           // max-Blinn

@@ -25,3 +25,8 @@ vec3 evalCookTorrance(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
     return p.diffuse_albedo * INV_PI + fresnel * cookTorranceSpecular(p, wi, wo, frame);
 }
+
+// Ambient reflectance k_a = ρ_d (see cook_torrance.h).
+vec3 ambientReflectanceCookTorrance(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo;
+}

@@ -18,3 +18,8 @@ vec3 evalGgxAnisotropic(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) 
     vec3 fresnel = microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction);
     return p.diffuse_albedo * INV_PI + fresnel * ggxAnisotropicSpecular(p, wi, wo, frame);
 }
+
+// Ambient reflectance k_a = ρ_d (see ggx_anisotropic.h).
+vec3 ambientReflectanceGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo;
+}

@@ -1,4 +1,4 @@
-// Mirror: GLSL twin of core/brdf/mirror.h (fields: eta, kappa, diffuse_albedo). The delta lobe
+// Mirror: GLSL twin of core/brdf/mirror.h (fields: ior, extinction, diffuse_albedo). The delta lobe
 // is traced by traceMirror() in common/specular_transport.glsl.
 
 vec3 evalMirror(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
@@ -10,5 +10,5 @@ vec3 ambientReflectanceMirror(MaterialParams p, vec3 wo, ShadingFrame frame) {
 }
 
 vec3 transportMirror(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
-    return traceMirror(p.eta, p.kappa, frame.normal, towardsViewer);
+    return traceMirror(p.ior, p.extinction, frame.normal, towardsViewer);
 }

@@ -11,3 +11,8 @@ vec3 evalOrenNayar(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     float azimuthal = max(0.0, dot(wi, wo) - cosIn * cosOut);
     return p.albedo * INV_PI * (a + b * azimuthal / max(cosIn, cosOut));
 }
+
+// Ambient reflectance k_a = ρ (see oren_nayar.h).
+vec3 ambientReflectanceOrenNayar(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.albedo;
+}

@@ -6,7 +6,7 @@ vec3 evalPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     float cosOut = cosTheta(frame, wo);
     if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
     float cosMirror = 2.0 * cosIn * cosOut - dot(wi, wo);  // R·ω_o
-    float lobe = pow(max(cosMirror, 0.0), p.exponent);
+    float lobe = powZeroIsOne(max(cosMirror, 0.0), p.exponent);
     float specularScale;
     vec3 sum = wi + wo;
     if (p.form == 0) specularScale = lobe / cosIn;                             // lecture
@@ -14,4 +14,9 @@ vec3 evalPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     else if (p.form == 2) specularScale = lobe / dot(sum, sum);                // |L+V|²
     else specularScale = lobe * (p.exponent + 2.0) / (2.0 * PI);               // normalised
     return p.diffuse_albedo * INV_PI + p.specular * specularScale;
+}
+
+// Ambient reflectance k_a = ρ_d (see phong.h).
+vec3 ambientReflectancePhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo;
 }

@@ -17,3 +17,8 @@ vec3 evalWard(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     if (cosTheta(frame, wi) <= 0.0 || cosTheta(frame, wo) <= 0.0) return vec3(0.0);
     return p.diffuse_albedo * INV_PI + p.specular * wardSpecular(p, wi, wo, frame);
 }
+
+// Ambient reflectance k_a = ρ_d (see ward.h).
+vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo;
+}

@@ -3,6 +3,12 @@
 const float PI = 3.14159265358979323846;
 const float INV_PI = 1.0 / PI;
 
+// base^exponent for base ≥ 0 with 0^0 = 1, as C++'s std::pow: GLSL leaves pow(0, 0) undefined
+// (GLSL 4.10 §8.2), and exponents of exactly 0 are valid for the Phong-type lobes.
+float powZeroIsOne(float base, float exponent) {
+    return exponent == 0.0 ? 1.0 : pow(base, exponent);
+}
+
 struct ShadingFrame {
     vec3 tangent;
     vec3 bitangent;

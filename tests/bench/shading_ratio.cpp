@@ -1,7 +1,8 @@
 // Shading overhead benchmark: the frame time of a 1280×720 sphere that fills the frame, lit by
 // 4 lights (radiance pass + display pass, OSMesa), against a bare full-screen pass that evaluates
 // the same generated BRDF code for 4 lights with no scene, no depth, no display. Prints medians
-// and their ratio per model; timings interleaved frame by frame. Not run by ctest.
+// and their ratio per model (and the radiance pass's alone, without the display pass the bare
+// pass lacks by definition); timings interleaved frame by frame. Not run by ctest.
 // usage: shading_ratio [FRAMES]   (DISPLAY unset; LP_NUM_THREADS as you like)
 #include <algorithm>
 #include <chrono>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "cli/headless.h"
+#include "gl/frame_uniforms.h"
 #include "gl/material_glsl.h"
 #include "gl/render_target.h"
 #include "gl/uniform_blocks.h"
@@ -98,20 +100,11 @@ int run(int frames) {
         bare->bindBlock("FrameBlock", kBareBinding + 0);
         bare->bindBlock("LightBlock", kBareBinding + 1);
         bare->bindBlock("MaterialBlock", kBareBinding + 2);
-        // The bare pass's uniforms: the same lights and material as the scene.
-        FrameBlockStd140 frame{};
-        frame.viewportSize = {kWidth, kHeight, 0, 0};
-        frame.lightCount = {4, 0, 0, 0};
-        LightBlockStd140 lights{};
-        for (int i = 0; i < 4; ++i) {
-            const Light& light = scene.lights[i];
-            lights.lights[i].position = light.type == LightType::Directional
-                                            ? glm::vec4(-glm::normalize(light.direction), 0.0f)
-                                            : glm::vec4(light.position, 1.0f);
-            lights.lights[i].emission = light.type == LightType::Directional
-                                            ? glm::vec4(light.color * light.irradiance, 0.0f)
-                                            : glm::vec4(light.color * (light.power / (4.0f * kPi)), 0.0f);
-        }
+        // The bare pass's uniforms: the scene's own, packed by the renderer's code (same lights,
+        // same light count for the dynamic loop, same material block).
+        const FrameUniforms uniforms = packFrameUniforms(scene, kWidth, kHeight);
+        const FrameBlockStd140& frame = uniforms.frame;
+        const LightBlockStd140& lights = uniforms.lights;
         MaterialBlockStd140 material{};
         std::copy(scene.materials[0].values.begin(), scene.materials[0].values.end(), material.values);
         const auto drawBare = [&] {
@@ -146,8 +139,10 @@ int run(int frames) {
             displayTimes.push_back(timeFrame(drawDisplay));
         }
         const double sceneMs = medianMs(sceneTimes), bareMs = medianMs(bareTimes);
-        std::printf("%-14s frame %7.2f ms (radiance %7.2f, display %6.2f)   bare pass %7.2f ms   ratio %.3f\n", info.id,
-                    sceneMs, medianMs(radianceTimes), medianMs(displayTimes), bareMs, sceneMs / bareMs);
+        const double radianceMs = medianMs(radianceTimes);
+        std::printf("%-14s frame %7.2f ms (radiance %7.2f, display %6.2f)   bare pass %7.2f ms   ratio %.3f"
+                    "   (radiance pass alone %.3f)\n",
+                    info.id, sceneMs, radianceMs, medianMs(displayTimes), bareMs, sceneMs / bareMs, radianceMs / bareMs);
     }
     glDeleteBuffers(3, buffers);
     glDeleteVertexArrays(1, &emptyVertexArray);
