@@ -4,6 +4,7 @@ usage: gui_smoke_test.py GLINT OUTPUT_DIR"""
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -14,23 +15,30 @@ def main():
     glint, output = sys.argv[1], sys.argv[2]
     os.makedirs(output, exist_ok=True)
     close_helper = os.environ["GLINT_X11_CLOSE"]
-    with XServer(1280, 800) as x:
-        editor = subprocess.Popen([glint], env=x.env, cwd=output, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    with XServer(1280, 800) as x, tempfile.TemporaryDirectory() as state:
+        env = dict(x.env, GLINT_STATE_DIR=state)  # no recovery offer from other runs
+        editor = subprocess.Popen([glint], env=env, cwd=output, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         try:
             window = x.find_window("Glint")
-            time.sleep(2.0)  # first frames: shader compile and ImGui layout
-            shot = x.screenshot()
+            # Poll until the first frames (shader compile, ImGui layout) are on screen.
+            deadline = time.time() + 60.0
+            while True:
+                shot = x.screenshot()
+                width, height, _ = shot
+                # The viewport lies between the scene column (330 px) and the material column
+                # (360 px); the sphere sits near its centre.
+                sphere = pixel(shot, 330 + (width - 330 - 360) // 2, height // 2 - 40)
+                background = pixel(shot, 350, 60)
+                # The panel: ImGui's dark window with light text on it.
+                panel = [pixel(shot, x_, y_) for x_ in range(width - 340, width - 20, 2) for y_ in range(40, 300, 2)]
+                bright = sum(1 for p in panel if min(p) > 180)
+                sphere_lit = sphere[0] > 80 and sphere[0] > sphere[1] + 30
+                if (sphere_lit and max(background) < 60 and bright > 50) or time.time() > deadline:
+                    break
+                time.sleep(0.25)
             write_png(shot, os.path.join(output, "gui_smoke.png"))
-            width, height, _ = shot
-            # The viewport lies between the scene column (330 px) and the material column (360 px);
-            # the sphere sits near its centre.
-            sphere = pixel(shot, 330 + (width - 330 - 360) // 2, height // 2 - 40)
-            background = pixel(shot, 350, 60)
-            assert sphere[0] > 80 and sphere[0] > sphere[1] + 30, f"no lit red sphere at the viewport centre: {sphere}"
+            assert sphere_lit, f"no lit red sphere at the viewport centre: {sphere}"
             assert max(background) < 60, f"background should be dark: {background}"
-            # The panel: ImGui's dark window with light text on it.
-            panel = [pixel(shot, x_, y_) for x_ in range(width - 340, width - 20, 2) for y_ in range(40, 300, 2)]
-            bright = sum(1 for p in panel if min(p) > 180)
             assert bright > 50, f"no text in the material panel ({bright} bright pixels)"
             subprocess.run([close_helper, window], env=x.env, check=True)
             code = editor.wait(timeout=20)
