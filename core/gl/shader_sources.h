@@ -26,7 +26,6 @@ public:
     // Modification time of a file on disk (0 when embedded or missing): for hot reload.
     long long modificationTime(const std::string& path) const;
     bool readsFromDisk() const { return !directory_.empty(); }
-    const std::string& directory() const { return directory_; }
 
 private:
     std::string directory_;
