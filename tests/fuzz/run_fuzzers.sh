@@ -16,8 +16,10 @@ for corpus in "$root"/tests/fuzz/corpus/*/; do
   work=$(mktemp -d)
   cp "$corpus"* "$work"/
   echo "fuzz_$target: ${seconds} s"
+  extra=()  # assimp 5.2.5 leaks inside its STL reader on malformed input (see tests/fuzz/CMakeLists.txt)
+  [[ $target == mesh_import ]] && extra=(-detect_leaks=0)
   if ! (cd "$work" && "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
-          -rss_limit_mb=2048 "$work" >"$work/log" 2>&1); then
+          -rss_limit_mb=2048 "${extra[@]}" "$work" >"$work/log" 2>&1); then
     status=1
     for crash in "$work"/crash-* "$work"/timeout-* "$work"/leak-*; do
       [[ -e $crash ]] && cp "$crash" "$corpus/regression-$(basename "$crash")" && echo "  kept $(basename "$crash") in the corpus"
