@@ -211,7 +211,7 @@ TEST(MeshImport, MalformedFilesAreRefusedWithTheFileNamed) {
     expectRefused("end_header_run_on.ply",  // assimp 5.2.5 would never return (fuzz_mesh_import found it)
                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                   "element face 1\nproperty list uchar int vertex_indices\nend_header0\n0  0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                  "end_header");
+                  "end_header0");
     expectRefused("index_out_of_range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
     expectRefused("all_zero_area.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "zero area");
     expectRefused("no_faces.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\n");

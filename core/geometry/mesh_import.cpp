@@ -94,15 +94,28 @@ std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, cons
     return std::nullopt;
 }
 
-// Assimp 5.2.5's PLY reader never returns when "end_header" runs on into the data on its line
-// (found by fuzz_mesh_import), so such a header is refused before assimp sees it.
+// Assimp 5.2.5's PLY reader never returns on some malformed headers (an unknown keyword,
+// "end_header" running on into the data; found by fuzz_mesh_import), so the header's lines are
+// checked before assimp sees them: each must start with a PLY keyword.
 std::optional<Diagnostic> checkPlyHeader(std::string_view start, const std::string& name) {
     if (start.substr(0, 3) != "ply") return std::nullopt;
-    const size_t end = start.find("end_header");
-    if (end == std::string_view::npos) return std::nullopt;  // assimp reports the missing end itself
-    const size_t after = end + 10;
-    if (after < start.size() && start[after] != '\n' && start[after] != '\r')
-        return makeError("cannot load mesh: malformed PLY header: 'end_header' must end its line", {name});
+    static const std::string_view keywords[] = {"ply", "format", "comment", "obj_info", "element", "property"};
+    int line = 0;
+    size_t position = 0;
+    while (position < start.size()) {
+        ++line;
+        size_t end = start.find('\n', position);
+        if (end == std::string_view::npos) return std::nullopt;  // header longer than the peek: assimp's turn
+        std::string_view text = start.substr(position, end - position);
+        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+        position = end + 1;
+        if (text == "end_header") return std::nullopt;
+        const std::string_view word = text.substr(0, text.find(' '));
+        if (std::find(std::begin(keywords), std::end(keywords), word) == std::end(keywords))
+            return makeError("cannot load mesh: malformed PLY header: '" + std::string(text.substr(0, 40)) +
+                                 "' is not a PLY header line (format, comment, element, property, end_header)",
+                             {name, line, 1});
+    }
     return std::nullopt;
 }
 
