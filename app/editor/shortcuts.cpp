@@ -7,6 +7,7 @@
 #include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/key_events.h"
+#include "editor/object_actions.h"
 
 namespace glint {
 namespace {
@@ -22,6 +23,8 @@ constexpr Shortcut kShortcuts[] = {
     {"F", "frame the selected object"},
     {"Home", "reset the view"},
     {"P", "perspective / orthographic"},
+    {"W", "wireframe overlay on / off"},
+    {"N", "vertex normals overlay on / off"},
     {"F12", "screenshot of the viewport (PNG or EXR)"},
     {"F1", "this help"},
     {"left drag (viewport)", "orbit the camera"},
@@ -56,6 +59,8 @@ void handleShortcuts(EditorState& state) {
     if (keyPressed(GLFW_KEY_F)) frameSelected(state);
     if (keyPressed(GLFW_KEY_HOME)) resetView(state);
     if (keyPressed(GLFW_KEY_P)) toggleProjection(state);
+    if (keyPressed(GLFW_KEY_W)) toggleWireframe(state);
+    if (keyPressed(GLFW_KEY_N)) toggleNormals(state);
     if (keyPressed(GLFW_KEY_F12)) requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
 }
 

@@ -10,7 +10,8 @@ void RenderTarget::release() {
     if (colorTexture_) glDeleteTextures(1, &colorTexture_);
     if (colorRenderbuffer_) glDeleteRenderbuffers(1, &colorRenderbuffer_);
     if (depthRenderbuffer_) glDeleteRenderbuffers(1, &depthRenderbuffer_);
-    framebuffer_ = colorTexture_ = colorRenderbuffer_ = depthRenderbuffer_ = 0;
+    if (depthTexture_) glDeleteTextures(1, &depthTexture_);
+    framebuffer_ = colorTexture_ = colorRenderbuffer_ = depthRenderbuffer_ = depthTexture_ = 0;
 }
 
 void RenderTarget::ensure(int width, int height, int samples) {
@@ -32,11 +33,17 @@ void RenderTarget::ensure(int width, int height, int samples) {
         glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat_, width, height);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRenderbuffer_);
     }
-    if (withDepth_) {
+    if (withDepth_ && samples == 1) {
+        glGenTextures(1, &depthTexture_);
+        glBindTexture(GL_TEXTURE_2D, depthTexture_);
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT24, width, height);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depthTexture_, 0);
+    } else if (withDepth_) {
         glGenRenderbuffers(1, &depthRenderbuffer_);
         glBindRenderbuffer(GL_RENDERBUFFER, depthRenderbuffer_);
-        if (samples == 1) glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        else glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRenderbuffer_);
     }
     GLINT_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);

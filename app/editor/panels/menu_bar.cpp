@@ -4,6 +4,7 @@
 
 #include "editor/camera_actions.h"
 #include "editor/document.h"
+#include "editor/object_actions.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
@@ -58,6 +59,9 @@ void drawViewMenu(EditorState& state) {
     if (ImGui::MenuItem("Reset view", "Home")) resetView(state);
     const bool orthographic = state.session.scene().camera.projection == Projection::Orthographic;
     if (ImGui::MenuItem("Orthographic", "P", orthographic)) toggleProjection(state);
+    const OverlaySettings& overlays = state.session.scene().display.overlays;
+    if (ImGui::MenuItem("Wireframe overlay", "W", overlays.wireframe)) toggleWireframe(state);
+    if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);

@@ -1,17 +1,38 @@
-// The object and material section: pick the object, edit its shape (sphere centre and radius;
-// plane centre, normal and size), see its material, edit it through the
-// table-driven material widgets (editor/material_panel.h) on a copy that is written back
-// through the edit API, so a slider drag is one undo step.
+// The object and material section: pick, add, duplicate and remove objects; the overlays
+// (wireframe, normals); the shape's own parameters (placement, sizes, tessellation); then the
+// object's material through the table-driven material widgets (editor/material_panel.h) on a copy
+// written back through the edit API, so a slider drag is one undo step.
 #include <imgui.h>
 
 #include <cmath>
 #include <variant>
 
 #include "editor/material_panel.h"
+#include "editor/object_actions.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
 namespace {
+
+// A drag field for a length that must stay positive; `refusal` says why a typed value was refused.
+bool positiveLength(const char* label, float& value, std::string& refusal) {
+    float edited = value;
+    if (!ImGui::DragFloat(label, &edited, 0.005f, 0.0f, 0.0f, "%.3f")) return false;
+    if (edited > 0.0f && std::isfinite(edited)) {
+        value = edited;
+        refusal.clear();
+        return true;
+    }
+    refusal = std::string(label) + " must be greater than 0";
+    return false;
+}
+
+// Segments × rings of a tessellated shape; the slider keeps them in range.
+bool tessellationSliders(int& segments, int& rings, int minimumRings) {
+    bool changed = ImGui::SliderInt("Segments", &segments, 3, 256, "%d", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderInt("Rings", &rings, minimumRings, 128, "%d", ImGuiSliderFlags_AlwaysClamp);
+    return changed;
+}
 
 // Widgets on a copy of the shape; returns true when the copy changed and is valid. Sizes must be
 // positive and a normal non-zero, else `refusal` says why.
@@ -19,11 +40,8 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
     bool changed = false;
     if (auto* sphere = std::get_if<SphereShape>(&shape)) {
         changed |= ImGui::DragFloat3("Centre m", &sphere->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
-        float radius = sphere->radius;
-        if (ImGui::DragFloat("Radius m", &radius, 0.005f, 0.0f, 0.0f, "%.3f")) {
-            if (radius > 0.0f && std::isfinite(radius)) sphere->radius = radius, changed = true, refusal.clear();
-            else refusal = "Radius must be greater than 0";
-        }
+        changed |= positiveLength("Radius m", sphere->radius, refusal);
+        changed |= tessellationSliders(sphere->segments, sphere->rings, 2);
     } else if (auto* plane = std::get_if<PlaneShape>(&shape)) {
         changed |= ImGui::DragFloat3("Centre m", &plane->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
         glm::vec3 normal = plane->normal;
@@ -40,21 +58,57 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
     return changed;
 }
 
+void drawAddMenu(EditorState& state) {
+    if (ImGui::Button("Add…")) ImGui::OpenPopup("Add object");
+    if (ImGui::BeginPopup("Add object")) {
+        for (ObjectKind kind : {ObjectKind::Sphere, ObjectKind::Plane})
+            if (ImGui::Selectable(objectKindLabel(kind))) addObject(state, kind);
+        ImGui::EndPopup();
+    }
+}
+
+void drawOverlayToggles(EditorState& state) {
+    OverlaySettings overlays = state.session.scene().display.overlays;
+    if (ImGui::Checkbox("Wireframe (W)", &overlays.wireframe)) toggleWireframe(state);
+    ImGui::SameLine();
+    if (ImGui::Checkbox("Normals (N)", &overlays.normals)) toggleNormals(state);
+    if (overlays.normals) {
+        if (positiveLength("Normal length m", overlays.normalLength, state.materialPanelMessage))
+            state.session.change("Normal length").display.overlays.normalLength = overlays.normalLength;
+    }
+}
+
 }  // namespace
 
 void drawObjectSection(EditorState& state) {
+    drawAddMenu(state);
     const Scene& scene = state.session.scene();
     if (scene.objects.empty()) {
-        ImGui::TextWrapped("The scene has no objects.");
+        ImGui::TextWrapped("The scene has no objects: add one above.");
         return;
     }
     state.selectedObject = std::clamp(state.selectedObject, 0, static_cast<int>(scene.objects.size()) - 1);
+    ImGui::SameLine();
+    if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove")) {
+        removeObject(state, state.selectedObject);
+        if (state.session.scene().objects.empty()) return;
+    }
     if (ImGui::BeginCombo("Object", scene.objects[state.selectedObject].name.c_str())) {
         for (size_t i = 0; i < scene.objects.size(); ++i)
             if (ImGui::Selectable(scene.objects[i].name.c_str(), state.selectedObject == static_cast<int>(i)))
                 state.selectedObject = static_cast<int>(i);
         ImGui::EndCombo();
     }
+    drawOverlayToggles(state);
+    Shape shape = state.session.scene().objects[state.selectedObject].shape;
+    if (ImGui::TreeNodeEx(shapeLabel(shape), ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (drawShapeEditor(shape, state.materialPanelMessage))
+            state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
+        ImGui::TreePop();
+    }
+    ImGui::Separator();
     const int materialIndex = scene.objects[state.selectedObject].materialIndex;
     Material edited = scene.materials[materialIndex];
     ImGui::Text("Material: %s", edited.name.c_str());
@@ -67,13 +121,6 @@ void drawObjectSection(EditorState& state) {
         ImGui::PopTextWrapPos();
     }
     drawPresetBrowser(state, materialIndex);
-    ImGui::Separator();
-    Shape shape = state.session.scene().objects[state.selectedObject].shape;
-    if (ImGui::TreeNodeEx(std::holds_alternative<SphereShape>(shape) ? "Sphere" : "Plane", ImGuiTreeNodeFlags_None)) {
-        if (drawShapeEditor(shape, state.materialPanelMessage))
-            state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
-        ImGui::TreePop();
-    }
 }
 
 }  // namespace glint
