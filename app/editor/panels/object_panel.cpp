@@ -1,7 +1,7 @@
-// The object and material section: pick, add, duplicate and remove objects; the overlays
-// (wireframe, normals); the shape's own parameters (placement, sizes, tessellation); then the
-// object's material through the table-driven material widgets (editor/material_panel.h) on a copy
-// written back through the edit API, so a slider drag is one undo step.
+// The object and material section: pick the object; its material through the table-driven
+// material widgets (editor/material_panel.h) on a copy written back through the edit API, so a
+// slider drag is one undo step; then add, duplicate and remove objects, the overlays (wireframe,
+// normals) and the shape's own parameters (placement, sizes, tessellation).
 #include <imgui.h>
 
 #include <cmath>
@@ -81,34 +81,19 @@ void drawOverlayToggles(EditorState& state) {
 }  // namespace
 
 void drawObjectSection(EditorState& state) {
-    drawAddMenu(state);
     const Scene& scene = state.session.scene();
     if (scene.objects.empty()) {
-        ImGui::TextWrapped("The scene has no objects: add one above.");
+        ImGui::TextWrapped("The scene has no objects.");
+        drawAddMenu(state);
         return;
     }
     state.selectedObject = std::clamp(state.selectedObject, 0, static_cast<int>(scene.objects.size()) - 1);
-    ImGui::SameLine();
-    if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
-    ImGui::SameLine();
-    if (ImGui::Button("Remove")) {
-        removeObject(state, state.selectedObject);
-        if (state.session.scene().objects.empty()) return;
-    }
     if (ImGui::BeginCombo("Object", scene.objects[state.selectedObject].name.c_str())) {
         for (size_t i = 0; i < scene.objects.size(); ++i)
             if (ImGui::Selectable(scene.objects[i].name.c_str(), state.selectedObject == static_cast<int>(i)))
                 state.selectedObject = static_cast<int>(i);
         ImGui::EndCombo();
     }
-    drawOverlayToggles(state);
-    Shape shape = state.session.scene().objects[state.selectedObject].shape;
-    if (ImGui::TreeNodeEx(shapeLabel(shape), ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (drawShapeEditor(shape, state.materialPanelMessage))
-            state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
-        ImGui::TreePop();
-    }
-    ImGui::Separator();
     const int materialIndex = scene.objects[state.selectedObject].materialIndex;
     Material edited = scene.materials[materialIndex];
     ImGui::Text("Material: %s", edited.name.c_str());
@@ -121,6 +106,20 @@ void drawObjectSection(EditorState& state) {
         ImGui::PopTextWrapPos();
     }
     drawPresetBrowser(state, materialIndex);
+    if (!ImGui::CollapsingHeader("Objects and shape", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    drawAddMenu(state);
+    ImGui::SameLine();
+    if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove")) {
+        removeObject(state, state.selectedObject);
+        return;
+    }
+    drawOverlayToggles(state);
+    Shape shape = state.session.scene().objects[state.selectedObject].shape;
+    ImGui::TextDisabled("%s", shapeLabel(shape));
+    if (drawShapeEditor(shape, state.materialPanelMessage))
+        state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
 }
 
 }  // namespace glint
