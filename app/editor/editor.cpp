@@ -248,8 +248,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         if (logFrames && renderedThisFrame) {
             glFinish();
             const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
-            std::fprintf(stderr, "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms\n",
-                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total);
+            std::fprintf(stderr,
+                         "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, %lld triangles\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total,
+                         state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         if (const std::string title = windowTitle(state); title != shownTitle) {

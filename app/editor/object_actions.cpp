@@ -10,7 +10,7 @@ namespace glint {
 namespace {
 
 // How far to the right of the camera's target a new object appears [m].
-constexpr float kNewObjectOffset = 1.8f;
+constexpr float kNewObjectOffset = 1.2f;
 
 glm::vec3& shapeCenter(Shape& shape) {
     return std::visit([](auto& concrete) -> glm::vec3& { return concrete.center; }, shape);
