@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <string>
 #include <variant>
 
@@ -32,6 +33,8 @@ Shape defaultShape(ObjectKind kind) {
     switch (kind) {
         case ObjectKind::Sphere: return SphereShape{};
         case ObjectKind::Plane: return PlaneShape{.center = {0.0f, 0.0f, 0.0f}, .normal = {0, 1, 0}, .size = {2, 2}};
+        case ObjectKind::Cube: return CubeShape{};
+        case ObjectKind::Torus: return TorusShape{};
     }
     return SphereShape{};
 }
@@ -44,27 +47,35 @@ const char* objectKindLabel(ObjectKind kind) {
     switch (kind) {
         case ObjectKind::Sphere: return "Sphere";
         case ObjectKind::Plane: return "Plane";
+        case ObjectKind::Cube: return "Cube";
+        case ObjectKind::Torus: return "Torus";
     }
     return "?";
 }
 
 const char* shapeLabel(const Shape& shape) {
-    if (std::holds_alternative<SphereShape>(shape)) return "Sphere";
-    return "Plane";
+    constexpr const char* kLabels[] = {"Sphere", "Plane", "Cube", "Torus", "Mesh"};  // order of Shape
+    static_assert(std::size(kLabels) == std::variant_size_v<Shape>);
+    return kLabels[shape.index()];
 }
 
 void addObject(EditorState& state, ObjectKind kind) {
+    std::string base = objectKindLabel(kind);
+    base[0] = static_cast<char>(std::tolower(base[0]));
+    addObjectWithShape(state, base, defaultShape(kind));
+}
+
+void addObjectWithShape(EditorState& state, const std::string& baseName, Shape shape) {
     const Camera& camera = state.session.scene().camera;
     const glm::vec3 forward = glm::normalize(camera.target - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-    Shape shape = defaultShape(kind);
     shapeCenter(shape) = camera.target + kNewObjectOffset * right;
-    std::string base = objectKindLabel(kind);
-    base[0] = static_cast<char>(std::tolower(base[0]));
-    Scene& scene = state.session.change(std::string("Add ") + base);
-    const std::string name = uniqueObjectName(scene, base);
+    Scene& scene = state.session.change("Add " + baseName);
+    const std::string name = uniqueObjectName(scene, baseName);
     scene.materials.push_back(Material::withDefaults(name + " material", BrdfModel::Lambert));
-    scene.objects.push_back({name, std::move(shape), static_cast<int>(scene.materials.size()) - 1});
+    SceneObject object{name, std::move(shape), static_cast<int>(scene.materials.size()) - 1};
+    object.interpolation = defaultInterpolation(object.shape);
+    scene.objects.push_back(std::move(object));
     selectNew(state);
     state.statusMessage = "Added " + name;
 }

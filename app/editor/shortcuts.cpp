@@ -15,6 +15,7 @@ namespace {
 constexpr Shortcut kShortcuts[] = {
     {"Ctrl+N", "new scene (the default one)"},
     {"Ctrl+O", "open a scene"},
+    {"Ctrl+M", "open a mesh (.obj .ply .stl .gltf .glb .fbx) as a new object"},
     {"Ctrl+S", "save the scene (asks for a name the first time)"},
     {"Ctrl+Shift+S", "save the scene as"},
     {"Ctrl+Z", "undo (a whole slider drag is one step)"},
@@ -53,6 +54,7 @@ void handleShortcuts(EditorState& state) {
     if (keyPressed(GLFW_KEY_S, kCtrlShift))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, state.session.path());
     if (keyPressed(GLFW_KEY_O, kCtrl)) requestFileBrowser(state.fileBrowser, FilePurpose::OpenScene, state.session.path());
+    if (keyPressed(GLFW_KEY_M, kCtrl)) requestFileBrowser(state.fileBrowser, FilePurpose::OpenMesh, "");
     if (keyPressed(GLFW_KEY_N, kCtrl)) guardUnsavedChanges(state, "starting a new scene", newScene);
     if (keyPressed(GLFW_KEY_Q, kCtrl)) requestQuit(state);
     if (io.WantCaptureKeyboard) return;

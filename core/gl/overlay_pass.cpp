@@ -46,6 +46,8 @@ void OverlayPass::draw(const OverlaySettings& settings, const std::vector<Overla
         glUniform1f(program.uniform("normalLength"), settings.normalLength);
         for (const OverlayMesh& mesh : meshes) {
             glUniform1i(program.uniform("cullBackFaces"), cull && mesh.closed ? 1 : 0);
+            glUniform4f(program.uniform("placement"), mesh.placement.x, mesh.placement.y, mesh.placement.z,
+                        mesh.placement.w);
             glBindVertexArray(mesh.vertexArray);
             glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         }

@@ -18,6 +18,7 @@ struct OverlayMesh {
     GLuint vertexArray = 0;  // attribute 0: position, 1: normal
     GLsizei indexCount = 0;  // GL_UNSIGNED_INT triangles
     bool closed = false;     // a closed surface: back-facing triangles get no wireframe
+    glm::vec4 placement{0.0f, 0.0f, 0.0f, 1.0f};  // xyz offset [m], w scale (geometry/shape_mesh.h)
 };
 
 class OverlayPass {

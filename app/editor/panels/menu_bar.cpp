@@ -24,6 +24,7 @@ void drawFileMenu(EditorState& state) {
             }
         ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Open mesh…", "Ctrl+M")) requestFileBrowser(state.fileBrowser, FilePurpose::OpenMesh, "");
     if (ImGui::MenuItem("Save scene", "Ctrl+S")) saveScene(state);
     if (ImGui::MenuItem("Save scene as…", "Ctrl+Shift+S"))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, state.session.path());

@@ -1,7 +1,8 @@
 // The object and material section: pick the object; its material through the table-driven
 // material widgets (editor/material_panel.h) on a copy written back through the edit API, so a
 // slider drag is one undo step; then add, duplicate and remove objects, the overlays (wireframe,
-// normals) and the shape's own parameters (placement, sizes, tessellation).
+// normals), the shading mode and the shape's own parameters (placement, sizes, tessellation;
+// a loaded mesh's statistics).
 #include <imgui.h>
 
 #include <cmath>
@@ -42,6 +43,17 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
         changed |= ImGui::DragFloat3("Centre m", &sphere->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
         changed |= positiveLength("Radius m", sphere->radius, refusal);
         changed |= tessellationSliders(sphere->segments, sphere->rings, 2);
+    } else if (auto* cube = std::get_if<CubeShape>(&shape)) {
+        changed |= ImGui::DragFloat3("Centre m", &cube->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= positiveLength("Edge m", cube->size, refusal);
+    } else if (auto* torus = std::get_if<TorusShape>(&shape)) {
+        changed |= ImGui::DragFloat3("Centre m", &torus->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= positiveLength("Major radius m", torus->majorRadius, refusal);
+        changed |= positiveLength("Tube radius m", torus->minorRadius, refusal);
+        changed |= tessellationSliders(torus->segments, torus->rings, 3);
+    } else if (auto* mesh = std::get_if<MeshShape>(&shape)) {
+        changed |= ImGui::DragFloat3("Centre m", &mesh->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= positiveLength("Size (radius) m", mesh->scale, refusal);
     } else if (auto* plane = std::get_if<PlaneShape>(&shape)) {
         changed |= ImGui::DragFloat3("Centre m", &plane->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
         glm::vec3 normal = plane->normal;
@@ -61,10 +73,41 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
 void drawAddMenu(EditorState& state) {
     if (ImGui::Button("Add…")) ImGui::OpenPopup("Add object");
     if (ImGui::BeginPopup("Add object")) {
-        for (ObjectKind kind : {ObjectKind::Sphere, ObjectKind::Plane})
+        for (ObjectKind kind : {ObjectKind::Sphere, ObjectKind::Plane, ObjectKind::Cube, ObjectKind::Torus})
             if (ImGui::Selectable(objectKindLabel(kind))) addObject(state, kind);
+        if (ImGui::Selectable("Mesh file…")) requestFileBrowser(state.fileBrowser, FilePurpose::OpenMesh, "");
         ImGui::EndPopup();
     }
+}
+
+// Exact (the analytic surface) where the shape has one; flat, Gouraud or Phong interpolation over
+// the drawn triangles otherwise (scene.h, SurfaceInterpolation).
+void drawInterpolationCombo(EditorState& state) {
+    constexpr const char* kLabels[] = {"exact (analytic)", "flat", "Gouraud", "Phong"};  // order of SurfaceInterpolation
+    const SceneObject& object = state.session.scene().objects[state.selectedObject];
+    const bool exactAllowed = !std::holds_alternative<TorusShape>(object.shape) && !std::holds_alternative<MeshShape>(object.shape);
+    int selected = static_cast<int>(object.interpolation);
+    if (ImGui::BeginCombo("Shading", kLabels[selected])) {
+        for (int i = exactAllowed ? 0 : 1; i < 4; ++i)
+            if (ImGui::Selectable(kLabels[i], i == selected) && i != selected)
+                state.session.change("Shading mode").objects[state.selectedObject].interpolation =
+                    static_cast<SurfaceInterpolation>(i);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("flat: one normal per triangle; Gouraud: shade the vertices, interpolate the colour;\n"
+                          "Phong: interpolate the normal, shade every pixel; exact: the analytic surface");
+}
+
+void drawMeshStatistics(const MeshShape& mesh) {
+    const MeshStatistics& statistics = mesh.statistics;
+    ImGui::PushTextWrapPos();
+    ImGui::TextDisabled("%s", mesh.path.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::Text("%zu vertices, %zu triangles", statistics.vertexCount, statistics.triangleCount);
+    ImGui::Text("normals: %s", statistics.hadNormals ? "from the file" : "generated (smooth)");
+    ImGui::Text("degenerate faces dropped: %zu", statistics.degenerateTrianglesDropped);
+    ImGui::Text("loaded in %.0f ms", statistics.loadSeconds * 1000.0);
 }
 
 void drawOverlayToggles(EditorState& state) {
@@ -118,8 +161,10 @@ void drawObjectSection(EditorState& state) {
     drawOverlayToggles(state);
     Shape shape = state.session.scene().objects[state.selectedObject].shape;
     ImGui::TextDisabled("%s", shapeLabel(shape));
+    drawInterpolationCombo(state);
     if (drawShapeEditor(shape, state.materialPanelMessage))
         state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
+    if (const auto* mesh = std::get_if<MeshShape>(&shape)) drawMeshStatistics(*mesh);
 }
 
 }  // namespace glint
