@@ -19,10 +19,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_editor_test import VIEWPORT, Editor, close_window, differs, lit_sphere, matches, save, type_path  # noqa: E402
 from gui_test_support import XServer, region_difference  # noqa: E402
 
-# The object section of the material column on the default scene (1280×800 window).
-ADD_BUTTON = (953, 356)
-ADD_MENU_ITEM = {"Sphere": (975, 372), "Plane": (975, 393), "Cube": (975, 414), "Torus": (975, 435)}
-POPUP_BOX = (955, 362, 1020, 405)
+# The object section of the material column on the default scene (1280×800 window). The "Add…"
+# button sits below the material panel, so it moves with the selected object's material: the
+# default sphere's Blinn-Phong, or the Lambert material every added object gets (and selects).
+ADD_BUTTON = {"blinn_phong": (953, 356), "lambert": (953, 261)}
+ADD_MENU_OFFSET = {"Sphere": 16, "Plane": 37, "Cube": 58, "Torus": 79}  # below the button [px]
 
 
 def triangle_counts(log):
@@ -40,12 +41,20 @@ def slow_click(x, position, hold_seconds=0.6):
     x.run("xdotool", "mouseup", "1")
 
 
-def add_from_menu(x, kind):
+def add_from_menu(x, kind, selected_material):
     """Add… opens a popup under the mouse; its item is clicked once the popup has been drawn."""
+    button = ADD_BUTTON[selected_material]
     before = x.screenshot()
-    x.click(*ADD_BUTTON)
-    x.wait_for(lambda shot: region_difference(shot, before, POPUP_BOX) > 1.0, "the Add… popup")
-    slow_click(x, ADD_MENU_ITEM[kind])
+    slow_click(x, button)
+    popup = (button[0] + 5, button[1] + 14, button[0] + 90, button[1] + 95)  # below the button itself
+    x.wait_for(lambda shot: region_difference(shot, before, popup) > 1.0, "the Add… popup")
+    slow_click(x, (button[0] + 22, button[1] + ADD_MENU_OFFSET[kind]))
+    park_mouse(x)
+
+
+def park_mouse(x):
+    """Moves the pointer to an empty spot of the material column, so no tooltip covers the viewport."""
+    x.run("xdotool", "mousemove", "--sync", "1100", "740")
 
 
 def start(x, glint, output, state):
@@ -86,7 +95,7 @@ def scenario_add_object(x, glint, output, state):
         shot = x.wait_for(lit_sphere, "the lit sphere")
         pictures = [shot]
         for kind in ("Plane", "Cube", "Torus"):
-            add_from_menu(x, kind)
+            add_from_menu(x, kind, "blinn_phong" if kind == "Plane" else "lambert")
             x.wait_for(differs(pictures[-1]), f"the added {kind.lower()} to show")
             pictures.append(x.wait_stable(VIEWPORT))
             save(pictures[-1], output, f"add_object_{len(pictures) - 1}_{kind.lower()}")
@@ -117,6 +126,7 @@ def scenario_shading(x, glint, output, state):
         slow_click(x, SHADING_COMBO)
         x.wait_for(lambda shot: region_difference(shot, before, (925, 440, 1110, 540)) > 1.0, "the shading combo to open")
         slow_click(x, SHADING_ITEM["flat"])
+        park_mouse(x)
         x.wait_for(differs(base, 1.0), "flat shading to change the sphere")
         flat = x.wait_stable(VIEWPORT)
         save(flat, output, "shading_1_flat")
