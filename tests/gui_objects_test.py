@@ -11,13 +11,12 @@ in screenshots. One scenario per ctest entry:
 usage: gui_objects_test.py GLINT OUTPUT_DIR SCENARIO"""
 import os
 import re
-import shutil
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_editor_test import VIEWPORT, Editor, close_window, differs, lit_sphere, matches, save, type_path  # noqa: E402
-from gui_test_support import XServer, region_difference  # noqa: E402
+from gui_test_support import region_difference, run_scenario_from_arguments  # noqa: E402
 
 # The object section of the material column on the default scene (1280×800 window). The "Add…"
 # button sits below the material panel, so it moves with the selected object's material: the
@@ -172,14 +171,8 @@ def scenario_open_mesh(x, glint, output, state):
 
 
 def main():
-    glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
-    output = os.path.join(output, scenario)
-    os.makedirs(output, exist_ok=True)
-    os.environ["GLINT_GUI_FAILURE_DIR"] = output
-    state = os.path.join(output, "state")
-    shutil.rmtree(state, ignore_errors=True)
-    with XServer(1280, 800) as x:
-        globals()["scenario_" + scenario](x, glint, output, state)
+    run_scenario_from_arguments({name[len("scenario_"):]: function for name, function in globals().items()
+                                 if name.startswith("scenario_")})
 
 
 if __name__ == "__main__":

@@ -14,6 +14,22 @@ void RenderTarget::release() {
     framebuffer_ = colorTexture_ = colorRenderbuffer_ = depthRenderbuffer_ = depthTexture_ = 0;
 }
 
+namespace {
+
+// A single-sample texture of `format` attached to the bound framebuffer at `attachment`.
+GLuint attachTexture(GLenum format, GLenum attachment, int width, int height) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
+    return texture;
+}
+
+}  // namespace
+
 void RenderTarget::ensure(int width, int height, int samples) {
     if (framebuffer_ && width == width_ && height == height_ && samples == samples_) return;
     release();
@@ -21,12 +37,7 @@ void RenderTarget::ensure(int width, int height, int samples) {
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     if (samples == 1) {
-        glGenTextures(1, &colorTexture_);
-        glBindTexture(GL_TEXTURE_2D, colorTexture_);
-        glTexStorage2D(GL_TEXTURE_2D, 1, colorFormat_, width, height);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTexture_, 0);
+        colorTexture_ = attachTexture(colorFormat_, GL_COLOR_ATTACHMENT0, width, height);
     } else {
         glGenRenderbuffers(1, &colorRenderbuffer_);
         glBindRenderbuffer(GL_RENDERBUFFER, colorRenderbuffer_);
@@ -34,12 +45,7 @@ void RenderTarget::ensure(int width, int height, int samples) {
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRenderbuffer_);
     }
     if (withDepth_ && samples == 1) {
-        glGenTextures(1, &depthTexture_);
-        glBindTexture(GL_TEXTURE_2D, depthTexture_);
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT24, width, height);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depthTexture_, 0);
+        depthTexture_ = attachTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT, width, height);
     } else if (withDepth_) {
         glGenRenderbuffers(1, &depthRenderbuffer_);
         glBindRenderbuffer(GL_RENDERBUFFER, depthRenderbuffer_);
