@@ -77,6 +77,7 @@ def scenario_overlays(x, glint, output, state):
         save(wire, output, "overlays_1_wireframe")
         x.key("w")
         x.wait_for(matches(base), "W again to hide the wireframe")
+        assert matches(base)(x.wait_stable(VIEWPORT)), "the wireframe came back after W hid it"
         x.key("n")
         normals = x.wait_for(differs(base, 0.5), "N to draw the vertex normals")
         save(normals, output, "overlays_2_normals")
