@@ -124,7 +124,7 @@ def scenario_shading(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         before = x.screenshot()
         slow_click(x, SHADING_COMBO)
-        x.wait_for(lambda shot: region_difference(shot, before, (925, 440, 1110, 540)) > 1.0, "the shading combo to open")
+        x.wait_for(lambda shot: region_difference(shot, before, (930, 470, 1000, 530)) > 1.0, "the shading combo's list")
         slow_click(x, SHADING_ITEM["flat"])
         park_mouse(x)
         x.wait_for(differs(base, 1.0), "flat shading to change the sphere")
