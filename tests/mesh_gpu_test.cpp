@@ -86,6 +86,17 @@ TEST(MeshGpu, TessellatedSphereMatchesTheCpuReferenceInEveryMode) {
     }
 }
 
+// Gouraud shades in the vertex shader: every model's program must compile there (mirror and
+// glass trace their delta lobes per vertex too) and agree with the reference.
+TEST(MeshGpu, EveryModelMatchesTheCpuReferenceInGouraud) {
+    for (const ModelInfo& info : allModels()) {
+        SCOPED_TRACE(info.id);
+        Scene scene = meshStage(SphereShape{{0, 0, 0}, 1.0f, 16, 8}, SurfaceInterpolation::Gouraud);
+        scene.materials[0] = Material::withDefaults("material", info.model);
+        expectAgreement(scene, false, 2000);
+    }
+}
+
 TEST(MeshGpu, ImportedMeshWithItsPlacementMatchesTheCpuReference) {
     const std::string path = test::outputDirectory("mesh_gpu") + "/octahedron.obj";
     test::writeText(path, "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"

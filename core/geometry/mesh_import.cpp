@@ -42,8 +42,8 @@ public:
         return !cancelled_;
     }
     void report(float fraction) {
-        if (progress_ && !progress_(fraction)) cancelled_ = true;
-        if (cancelled_) throw CancelImport();
+        if (!cancelled_ && progress_ && !progress_(fraction)) cancelled_ = true;
+        if (cancelled_) throw CancelImport();  // again on every later report: assimp may go on after the first
     }
     bool cancelled() const { return cancelled_; }
 
