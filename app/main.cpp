@@ -12,6 +12,7 @@
 #include "cli/snapshot_command.h"
 #include "cli/thumbnails_command.h"
 #include "editor/editor.h"
+#include "geometry/mesh_import.h"
 #include "scene/scene_json.h"
 
 namespace {
@@ -21,6 +22,8 @@ constexpr const char* kUsage =
     "\n"
     "usage:\n"
     "  glint [SCENE.json]          open the editor (the default scene when no file is given)\n"
+    "  glint MESH.obj|.ply|.stl|.gltf|.glb|.fbx\n"
+    "                              open the editor on the default scene and load the mesh as an object\n"
     "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
     "                              render headless (no display needed)\n"
     "  glint snapshot SUITE [--out DIR] [--update] [--update-case NAME] [--jobs N] [--shard I/N]\n"
@@ -83,8 +86,10 @@ int main(int argc, char** argv) {
     }
 
     glint::Scene scene = glint::defaultScene();
-    std::string scenePath, sceneName = "default";
-    if (!arguments.empty()) {
+    std::string scenePath, sceneName = "default", meshPath;
+    if (!arguments.empty() && glint::isMeshFile(arguments[0])) {
+        meshPath = arguments[0];  // loaded by the editor in the background, as File ▸ Open mesh does
+    } else if (!arguments.empty()) {
         scenePath = arguments[0];
         auto loaded = glint::loadScene(scenePath);
         if (!loaded) {
@@ -97,9 +102,15 @@ int main(int argc, char** argv) {
 
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if ((!display || !*display) && (!wayland || !*wayland))
+    if ((!display || !*display) && (!wayland || !*wayland)) {
+        if (!meshPath.empty()) {
+            std::fprintf(stderr, "glint: a mesh opens in the editor, which needs a display; to render one headless, "
+                                 "name it in a scene file (an object with \"shape\": \"mesh\")\n");
+            return 2;
+        }
         return renderWithoutDisplay(scene, sceneName, "DISPLAY is not set");
+    }
     auto platform = glint::GlfwPlatform::create(1280, 800, "Glint — " + sceneName);
     if (!platform) return renderWithoutDisplay(scene, sceneName, platform.error().message);
-    return glint::runEditor(std::move(*platform), std::move(scene), scenePath);
+    return glint::runEditor(std::move(*platform), std::move(scene), scenePath, meshPath);
 }

@@ -61,6 +61,7 @@ expect_error no_output "no output file" -- render "$here/scenes/lambert_sun.json
 expect_error bad_size "--size needs" -- render "$here/scenes/lambert_sun.json" -o "$out/x.png" --size 12by7
 expect_error unwritable "cannot write|could not open" -- render "$here/scenes/lambert_sun.json" -o "/no/such/dir/x.png"
 expect_error unknown_option "unknown option --frobnicate" -- render "$here/scenes/lambert_sun.json" --frobnicate
+expect_error overlays_reference "not with --reference" -- render "$here/scenes/lambert_sun.json" -o "$out/x.png" --reference --wireframe
 expect_error editor_bad_scene "invalid\.json:4:" -- "$out/invalid.json"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "cook_torrance",\n   "ior": [1.5, 0, 1.5]}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/zero_ior.json"
 expect_error zero_ior "zero_ior\.json:3:[0-9]+: .*'ior\[1\]': 0 is out of range: must be greater than 0" -- render "$out/zero_ior.json" -o "$out/x.png"

@@ -17,14 +17,13 @@ screenshots. One scenario per ctest entry:
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
 import json
 import os
-import shutil
 import signal
 import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import XServer, pixel, region_difference, write_png  # noqa: E402
+from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
 
 # Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
 # left, material column 360 px on the right, status bar at the bottom).
@@ -389,14 +388,8 @@ def scenario_light_handle(x, glint, output, state):
 
 
 def main():
-    glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
-    output = os.path.join(output, scenario)
-    os.makedirs(output, exist_ok=True)
-    os.environ["GLINT_GUI_FAILURE_DIR"] = output
-    state = os.path.join(output, "state")
-    shutil.rmtree(state, ignore_errors=True)
-    with XServer(1280, 800) as x:
-        globals()["scenario_" + scenario](x, glint, output, state)
+    run_scenario_from_arguments({name[len("scenario_"):]: function for name, function in globals().items()
+                                 if name.startswith("scenario_")})
 
 
 if __name__ == "__main__":

@@ -182,3 +182,18 @@ def write_png(image, path):
         out.write(chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)))
         out.write(chunk(b"IDAT", zlib.compress(raw, 6)))
         out.write(chunk(b"IEND", b""))
+
+
+def run_scenario_from_arguments(scenarios, width=1280, height=800):
+    """argv: GLINT OUTPUT_DIR SCENARIO. Runs scenarios[SCENARIO](x, glint, output, state) in a fresh
+    Xvfb with its own output folder (failure screenshots go there) and an empty state folder."""
+    import shutil
+    import sys
+    glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
+    output = os.path.join(output, scenario)
+    os.makedirs(output, exist_ok=True)
+    os.environ["GLINT_GUI_FAILURE_DIR"] = output
+    state = os.path.join(output, "state")
+    shutil.rmtree(state, ignore_errors=True)
+    with XServer(width, height) as x:
+        scenarios[scenario](x, glint, output, state)

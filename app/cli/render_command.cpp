@@ -13,17 +13,20 @@ namespace glint {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
+    "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference] [--wireframe] [--normals]\n"
     "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256)\n"
     "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
-    "  --reference        render with the CPU reference ray caster instead of OpenGL\n";
+    "  --reference        render with the CPU reference ray caster instead of OpenGL\n"
+    "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
+    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n";
 
 struct RenderOptions {
     std::string scenePath, outputPath;
     int width = 0, height = 0, msaa = 0;
     bool reference = false;
+    bool wireframe = false, normals = false;
 };
 
 int usageError(const std::string& message) {
@@ -62,6 +65,10 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             options.msaa = std::stoi(*value);
         } else if (argument == "--reference") {
             options.reference = true;
+        } else if (argument == "--wireframe") {
+            options.wireframe = true;
+        } else if (argument == "--normals") {
+            options.normals = true;
         } else if (!argument.empty() && argument[0] == '-') {
             return usageError("unknown option " + argument);
         } else if (options.scenePath.empty()) {
@@ -72,6 +79,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     }
     if (options.scenePath.empty()) return usageError("no scene file given");
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
+    if (options.reference && (options.wireframe || options.normals))
+        return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
 
     auto scene = loadRenderable(options.scenePath);  // a material file renders on the preview stage
     if (!scene) {
@@ -79,6 +88,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     if (options.msaa > 0) scene->msaaSamples = options.msaa;
+    scene->display.overlays.wireframe |= options.wireframe;
+    scene->display.overlays.normals |= options.normals;
     const int width = options.width > 0 ? options.width : scene->width;
     const int height = options.height > 0 ? options.height : scene->height;
 

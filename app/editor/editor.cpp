@@ -23,6 +23,7 @@
 #include "editor/document.h"
 #include "editor/key_events.h"
 #include "editor/light_handles.h"
+#include "editor/mesh_loading.h"
 #include "editor/panels/panels.h"
 #include "editor/shortcuts.h"
 #include "gl/renderer.h"
@@ -126,7 +127,8 @@ double autosaveIntervalSeconds() {
 
 // --- loop -----------------------------------------------------------------------------------
 
-int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath) {
+int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath,
+              const std::string& meshPath) {
     auto created = Renderer::create(*platform, defaultShaderSources());
     if (!created) {
         std::fprintf(stderr, "glint: %s\n", created.error().format().c_str());
@@ -141,6 +143,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     state.rendererDescription = renderer.description();
     if (!scenePath.empty()) noteRecentFile(state.settings, state.session.path());
     startRecovery(state);
+    if (!meshPath.empty()) startMeshLoad(state, meshPath);
     const double autosaveInterval = autosaveIntervalSeconds();
     // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
     const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
@@ -165,7 +168,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     double secondsToAutosave = 1e9;
     while (!state.quitNow) {
         gEventSeen = false;
-        if (framesToDraw > 0) glfwPollEvents();
+        if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
+        else if (framesToDraw > 0) glfwPollEvents();
         else if (secondsToAutosave < 1e8) glfwWaitEventsTimeout(std::max(secondsToAutosave, 0.01));
         else glfwWaitEvents();
         const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
@@ -174,6 +178,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
             gCloseRequested = false;
             requestQuit(state);
         }
+        if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
         gDroppedPaths.clear();
         if (state.settings.uiScale != appliedScale) {
@@ -192,6 +197,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawScenePanel(state, menuHeight, columnHeight);
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
+        drawMeshLoadDialog(state);
         handleShortcuts(state);
         ViewportRect viewport;
         viewport.x = state.showLeftPanel ? state.leftPanelWidth : 0.0f;
@@ -248,8 +254,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         if (logFrames && renderedThisFrame) {
             glFinish();
             const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
-            std::fprintf(stderr, "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms\n",
-                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total);
+            std::fprintf(stderr,
+                         "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, %lld triangles\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total,
+                         state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         if (const std::string title = windowTitle(state); title != shownTitle) {

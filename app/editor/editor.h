@@ -11,6 +11,8 @@
 namespace glint {
 
 // Runs until the window is closed; returns the process exit code.
-int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath);
+// `meshPath`, when not empty, starts loading that mesh as a new object (as File ▸ Open mesh).
+int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath,
+              const std::string& meshPath = {});
 
 }  // namespace glint

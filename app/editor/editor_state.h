@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "editor/settings.h"
 
 namespace glint {
+
+class MeshLoadJob;  // editor/mesh_loading.h
 
 struct EditorState {
     EditSession session;
@@ -51,6 +54,7 @@ struct EditorState {
     bool screenshotRequested = false;
     std::string screenshotPath;
     bool quitNow = false;
+    std::shared_ptr<MeshLoadJob> meshLoad;  // the mesh file loading on a worker thread, if any
 
     // Autosave: the recovery file and the crash copy follow session.settledRevision().
     std::uint64_t autosavedRevision = 0;

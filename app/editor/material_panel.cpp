@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <string_view>
 
 #include "editor/color_space.h"
+#include "editor/ior_presets.h"
 
 namespace glint {
 namespace {
@@ -128,8 +130,11 @@ bool drawMaterialPanel(Material& material, std::string& refusal) {
         ImGui::EndCombo();
     }
     const auto table = modelInfo(material.model).params;
-    for (size_t i = 0; i < table.size(); ++i)
+    for (size_t i = 0; i < table.size(); ++i) {
         changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
+        // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
+        if (std::string_view(table[i].name) == "ior") changed |= drawIorPresetMenu(material);
+    }
     if (material.model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
         ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,

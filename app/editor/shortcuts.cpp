@@ -7,6 +7,7 @@
 #include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/key_events.h"
+#include "editor/object_actions.h"
 
 namespace glint {
 namespace {
@@ -14,6 +15,7 @@ namespace {
 constexpr Shortcut kShortcuts[] = {
     {"Ctrl+N", "new scene (the default one)"},
     {"Ctrl+O", "open a scene"},
+    {"Ctrl+M", "open a mesh (.obj .ply .stl .gltf .glb .fbx) as a new object"},
     {"Ctrl+S", "save the scene (asks for a name the first time)"},
     {"Ctrl+Shift+S", "save the scene as"},
     {"Ctrl+Z", "undo (a whole slider drag is one step)"},
@@ -22,6 +24,8 @@ constexpr Shortcut kShortcuts[] = {
     {"F", "frame the selected object"},
     {"Home", "reset the view"},
     {"P", "perspective / orthographic"},
+    {"W", "wireframe overlay on / off"},
+    {"N", "vertex normals overlay on / off"},
     {"F12", "screenshot of the viewport (PNG or EXR)"},
     {"F1", "this help"},
     {"left drag (viewport)", "orbit the camera"},
@@ -50,12 +54,15 @@ void handleShortcuts(EditorState& state) {
     if (keyPressed(GLFW_KEY_S, kCtrlShift))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, state.session.path());
     if (keyPressed(GLFW_KEY_O, kCtrl)) requestFileBrowser(state.fileBrowser, FilePurpose::OpenScene, state.session.path());
+    if (keyPressed(GLFW_KEY_M, kCtrl)) requestFileBrowser(state.fileBrowser, FilePurpose::OpenMesh, "");
     if (keyPressed(GLFW_KEY_N, kCtrl)) guardUnsavedChanges(state, "starting a new scene", newScene);
     if (keyPressed(GLFW_KEY_Q, kCtrl)) requestQuit(state);
     if (io.WantCaptureKeyboard) return;
     if (keyPressed(GLFW_KEY_F)) frameSelected(state);
     if (keyPressed(GLFW_KEY_HOME)) resetView(state);
     if (keyPressed(GLFW_KEY_P)) toggleProjection(state);
+    if (keyPressed(GLFW_KEY_W)) toggleWireframe(state);
+    if (keyPressed(GLFW_KEY_N)) toggleNormals(state);
     if (keyPressed(GLFW_KEY_F12)) requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
 }
 

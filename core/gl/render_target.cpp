@@ -10,8 +10,25 @@ void RenderTarget::release() {
     if (colorTexture_) glDeleteTextures(1, &colorTexture_);
     if (colorRenderbuffer_) glDeleteRenderbuffers(1, &colorRenderbuffer_);
     if (depthRenderbuffer_) glDeleteRenderbuffers(1, &depthRenderbuffer_);
-    framebuffer_ = colorTexture_ = colorRenderbuffer_ = depthRenderbuffer_ = 0;
+    if (depthTexture_) glDeleteTextures(1, &depthTexture_);
+    framebuffer_ = colorTexture_ = colorRenderbuffer_ = depthRenderbuffer_ = depthTexture_ = 0;
 }
+
+namespace {
+
+// A single-sample texture of `format` attached to the bound framebuffer at `attachment`.
+GLuint attachTexture(GLenum format, GLenum attachment, int width, int height) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
+    return texture;
+}
+
+}  // namespace
 
 void RenderTarget::ensure(int width, int height, int samples) {
     if (framebuffer_ && width == width_ && height == height_ && samples == samples_) return;
@@ -20,23 +37,19 @@ void RenderTarget::ensure(int width, int height, int samples) {
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     if (samples == 1) {
-        glGenTextures(1, &colorTexture_);
-        glBindTexture(GL_TEXTURE_2D, colorTexture_);
-        glTexStorage2D(GL_TEXTURE_2D, 1, colorFormat_, width, height);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTexture_, 0);
+        colorTexture_ = attachTexture(colorFormat_, GL_COLOR_ATTACHMENT0, width, height);
     } else {
         glGenRenderbuffers(1, &colorRenderbuffer_);
         glBindRenderbuffer(GL_RENDERBUFFER, colorRenderbuffer_);
         glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat_, width, height);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRenderbuffer_);
     }
-    if (withDepth_) {
+    if (withDepth_ && samples == 1) {
+        depthTexture_ = attachTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT, width, height);
+    } else if (withDepth_) {
         glGenRenderbuffers(1, &depthRenderbuffer_);
         glBindRenderbuffer(GL_RENDERBUFFER, depthRenderbuffer_);
-        if (samples == 1) glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        else glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRenderbuffer_);
     }
     GLINT_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);

@@ -52,6 +52,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     if (auto assembled = assembleShader(renderer->sources_, "background.frag"))
         renderer->backgroundFiles_.insert(renderer->backgroundFiles_.end(), assembled->files.begin(), assembled->files.end());
     renderer->backgroundBuiltAt_ = renderer->newestModification(renderer->backgroundFiles_);
+    auto overlays = OverlayPass::create(renderer->sources_);
+    if (!overlays) return overlays.error();
+    renderer->overlayPass_ = std::move(*overlays);
     glGenBuffers(3, renderer->uniformBuffers_);
     const GLsizeiptr sizes[3] = {sizeof(FrameBlockStd140), sizeof(LightBlockStd140), sizeof(MaterialBlockStd140)};
     for (int i = 0; i < 3; ++i) {
@@ -192,6 +195,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     Status result = success();
     trianglesDrawn_ = 0;
     meshes_->releaseUnused();
+    drawnMeshes_.clear();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
@@ -224,6 +228,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;
+        const MeshPlacement placement = placementOf(object.shape);
+        drawnMeshes_.push_back({mesh.vertexArray, mesh.indexCount, !std::holds_alternative<PlaneShape>(object.shape),
+                                glm::vec4(placement.offset, placement.scale)});
     }
     glDisable(GL_CULL_FACE);
     // The background (constant or sky, per primary ray direction) last, only where no object
@@ -242,7 +249,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     if (samples > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
-        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        // Depth too: the overlay pass hides lines behind the surface with it.
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     if (result) shaderError_.clear();
     if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
@@ -280,6 +288,7 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
     runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
+    overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
 }
 
 void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
@@ -287,6 +296,7 @@ void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerL
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width() * pixelScale, radianceTarget_.height() * pixelScale);
     runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
+    overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), lowerLeft, pixelScale);
 }
 
 // --- readback -------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gl/gpu_mesh_cache.h"
+#include "gl/overlay_pass.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
@@ -29,7 +30,8 @@ public:
     // Draws the scene's radiance at width×height (MSAA per scene.msaaSamples). A shader that
     // fails to compile is reported and the model's last good program, if any, is used.
     Status renderRadiance(const Scene& scene, int width, int height);
-    // Display pass into the offscreen 8-bit target (same size as the last radiance render).
+    // Display pass into the offscreen 8-bit target (same size as the last radiance render), then
+    // the overlays display.overlays asks for, over the meshes of the last radiance render.
     void displayOffscreen(const DisplaySettings& display);
     // Display pass into the default framebuffer, at the given lower-left corner.
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
@@ -78,6 +80,8 @@ private:
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     std::unique_ptr<GpuMeshCache> meshes_ = std::make_unique<GpuMeshCache>();
+    OverlayPass overlayPass_;
+    std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
     long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};

@@ -40,36 +40,73 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
     return *this;
 }
 
+namespace {
+
+struct StageFile {
+    GLenum stage;
+    std::string path;
+};
+
+}  // namespace
+
+// Assembles, compiles and links the stages in order; the first failure is returned.
+static Result<GLuint> linkStages(const ShaderSources& sources, const std::vector<StageFile>& stages,
+                                 const std::string& prelude, const GeneratedShaderFiles& generated) {
+    std::vector<GLuint> compiled;
+    auto release = [&] {
+        for (GLuint shader : compiled) glDeleteShader(shader);
+    };
+    for (const StageFile& stage : stages) {
+        auto source = assembleShader(sources, stage.path, prelude, generated);
+        if (!source) {
+            release();
+            return source.error();
+        }
+        auto shader = compileStage(stage.stage, *source, stage.path);
+        if (!shader) {
+            release();
+            return shader.error();
+        }
+        compiled.push_back(*shader);
+    }
+    const GLuint program = glCreateProgram();
+    for (GLuint shader : compiled) glAttachShader(program, shader);
+    glLinkProgram(program);
+    release();
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::vector<char> log(static_cast<size_t>(length) + 1, '\0');
+        glGetProgramInfoLog(program, length, nullptr, log.data());
+        glDeleteProgram(program);
+        return makeError("shader link failed: " + std::string(log.data()), {stages.back().path});
+    }
+    return program;
+}
+
 Result<ShaderProgram> ShaderProgram::build(const ShaderSources& sources, const std::string& vertexPath,
                                            const std::string& fragmentPath, const std::string& prelude,
                                            const GeneratedShaderFiles& generated) {
-    auto vertexSource = assembleShader(sources, vertexPath, prelude, generated);
-    if (!vertexSource) return vertexSource.error();
-    auto fragmentSource = assembleShader(sources, fragmentPath, prelude, generated);
-    if (!fragmentSource) return fragmentSource.error();
-    auto vertex = compileStage(GL_VERTEX_SHADER, *vertexSource, vertexPath);
-    if (!vertex) return vertex.error();
-    auto fragment = compileStage(GL_FRAGMENT_SHADER, *fragmentSource, fragmentPath);
-    if (!fragment) {
-        glDeleteShader(*vertex);
-        return fragment.error();
-    }
+    auto linked = linkStages(sources, {{GL_VERTEX_SHADER, vertexPath}, {GL_FRAGMENT_SHADER, fragmentPath}}, prelude,
+                             generated);
+    if (!linked) return linked.error();
     ShaderProgram program;
-    program.program_ = glCreateProgram();
-    glAttachShader(program.program_, *vertex);
-    glAttachShader(program.program_, *fragment);
-    glLinkProgram(program.program_);
-    glDeleteShader(*vertex);
-    glDeleteShader(*fragment);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(program.program_, GL_LINK_STATUS, &linked);
-    if (!linked) {
-        GLint length = 0;
-        glGetProgramiv(program.program_, GL_INFO_LOG_LENGTH, &length);
-        std::vector<char> log(static_cast<size_t>(length) + 1, '\0');
-        glGetProgramInfoLog(program.program_, length, nullptr, log.data());
-        return makeError("shader link failed: " + std::string(log.data()), {fragmentPath});
-    }
+    program.program_ = *linked;
+    return program;
+}
+
+Result<ShaderProgram> ShaderProgram::buildWithGeometry(const ShaderSources& sources, const std::string& vertexPath,
+                                                       const std::string& geometryPath,
+                                                       const std::string& fragmentPath) {
+    auto linked = linkStages(sources,
+                             {{GL_VERTEX_SHADER, vertexPath}, {GL_GEOMETRY_SHADER, geometryPath},
+                              {GL_FRAGMENT_SHADER, fragmentPath}},
+                             {}, {});
+    if (!linked) return linked.error();
+    ShaderProgram program;
+    program.program_ = *linked;
     return program;
 }
 

@@ -1,4 +1,5 @@
-// ShaderProgram: compiles and links a vertex + fragment pair assembled by shader_sources.h,
+// ShaderProgram: compiles and links a vertex + fragment pair (optionally with a geometry stage)
+// assembled by shader_sources.h,
 // and reports failures as Diagnostics naming the shader file and line. Owns the GL program.
 #pragma once
 
@@ -22,6 +23,9 @@ public:
     static Result<ShaderProgram> build(const ShaderSources& sources, const std::string& vertexPath,
                                        const std::string& fragmentPath, const std::string& prelude = {},
                                        const GeneratedShaderFiles& generated = {});
+    // Vertex → geometry → fragment (the overlay passes).
+    static Result<ShaderProgram> buildWithGeometry(const ShaderSources& sources, const std::string& vertexPath,
+                                                   const std::string& geometryPath, const std::string& fragmentPath);
 
     GLuint id() const { return program_; }
     GLint uniform(const char* name) const { return glGetUniformLocation(program_, name); }

@@ -15,6 +15,7 @@
 #include "geometry/mesh.h"
 #include "light/light.h"
 #include "scene/background.h"
+#include "scene/overlays.h"
 
 namespace glint {
 
@@ -103,6 +104,7 @@ struct DisplaySettings {
     Transfer transfer = Transfer::Srgb;
     float gamma = 2.2f;  // used when transfer == Gamma
     ToneMap toneMap = ToneMap::None;  // None: values above 1 clip
+    OverlaySettings overlays;  // wireframe / normals drawn over the displayed image (GL only)
 };
 
 struct Scene {

@@ -302,6 +302,14 @@ Scene readScene(const JsonDocument& document) {
         scene.display.transfer = static_cast<Transfer>(display.choice("transfer", kTransfers, 0));
         scene.display.gamma = static_cast<float>(display.number("gamma", scene.display.gamma, Bounds::between(0.1, 10)));
         scene.display.toneMap = static_cast<ToneMap>(display.choice("tone_map", kToneMaps, 0));
+        if (display.has("overlays")) {
+            ObjectReader overlays = display.object("overlays");
+            scene.display.overlays.wireframe = overlays.boolean("wireframe", false);
+            scene.display.overlays.normals = overlays.boolean("normals", false);
+            scene.display.overlays.normalLength =
+                static_cast<float>(overlays.number("normal_length", scene.display.overlays.normalLength, Bounds::positive()));
+            overlays.rejectUnknownKeys();
+        }
         display.rejectUnknownKeys();
     }
     for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader));
@@ -352,6 +360,10 @@ json sceneToJson(const Scene& scene) {
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
                       {"gamma", scene.display.gamma},
                       {"tone_map", kToneMaps[static_cast<int>(scene.display.toneMap)]}};
+    if (const OverlaySettings& overlays = scene.display.overlays; overlays.any() || overlays.normalLength != OverlaySettings{}.normalLength)
+        out["display"]["overlays"] = {{"wireframe", overlays.wireframe},
+                                      {"normals", overlays.normals},
+                                      {"normal_length", overlays.normalLength}};
     out["materials"] = json::array();
     for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material));
     out["lights"] = json::array();

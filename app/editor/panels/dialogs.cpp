@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "editor/document.h"
+#include "editor/mesh_loading.h"
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
 #include "editor/shortcuts.h"
@@ -116,6 +117,7 @@ void handleFileBrowser(EditorState& state) {
             break;
         case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
+        case FilePurpose::OpenMesh: startMeshLoad(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

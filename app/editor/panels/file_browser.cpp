@@ -10,6 +10,7 @@
 #include <imgui_stdlib.h>
 
 #include "editor/key_events.h"
+#include "geometry/mesh_import.h"
 
 namespace glint {
 namespace {
@@ -23,6 +24,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenMaterial: return "Open material###FileBrowser";
         case FilePurpose::SaveMaterialAs: return "Save material as###FileBrowser";
         case FilePurpose::SaveScreenshot: return "Save screenshot (.png or .exr)###FileBrowser";
+        case FilePurpose::OpenMesh: return "Open mesh (adds an object)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -94,6 +96,10 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.purpose = purpose;
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
                                                                 : std::vector<std::string>{".json"};
+    if (purpose == FilePurpose::OpenMesh) {
+        browser.extensions.clear();
+        for (const std::string& extension : meshFileExtensions()) browser.extensions.push_back("." + extension);
+    }
     browser.error.clear();
     std::error_code error;
     fs::path start = startPath.empty() ? fs::current_path(error) : fs::absolute(startPath, error);

@@ -4,6 +4,7 @@
 
 #include "editor/camera_actions.h"
 #include "editor/document.h"
+#include "editor/object_actions.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
@@ -23,6 +24,7 @@ void drawFileMenu(EditorState& state) {
             }
         ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Open mesh…", "Ctrl+M")) requestFileBrowser(state.fileBrowser, FilePurpose::OpenMesh, "");
     if (ImGui::MenuItem("Save scene", "Ctrl+S")) saveScene(state);
     if (ImGui::MenuItem("Save scene as…", "Ctrl+Shift+S"))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, state.session.path());
@@ -58,6 +60,9 @@ void drawViewMenu(EditorState& state) {
     if (ImGui::MenuItem("Reset view", "Home")) resetView(state);
     const bool orthographic = state.session.scene().camera.projection == Projection::Orthographic;
     if (ImGui::MenuItem("Orthographic", "P", orthographic)) toggleProjection(state);
+    const OverlaySettings& overlays = state.session.scene().display.overlays;
+    if (ImGui::MenuItem("Wireframe overlay", "W", overlays.wireframe)) toggleWireframe(state);
+    if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);

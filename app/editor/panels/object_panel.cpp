@@ -1,17 +1,39 @@
-// The object and material section: pick the object, edit its shape (sphere centre and radius;
-// plane centre, normal and size), see its material, edit it through the
-// table-driven material widgets (editor/material_panel.h) on a copy that is written back
-// through the edit API, so a slider drag is one undo step.
+// The object and material section: pick the object; its material through the table-driven
+// material widgets (editor/material_panel.h) on a copy written back through the edit API, so a
+// slider drag is one undo step; then add, duplicate and remove objects, the overlays (wireframe,
+// normals), the shading mode and the shape's own parameters (placement, sizes, tessellation;
+// a loaded mesh's statistics).
 #include <imgui.h>
 
 #include <cmath>
 #include <variant>
 
 #include "editor/material_panel.h"
+#include "editor/object_actions.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
 namespace {
+
+// A drag field for a length that must stay positive; `refusal` says why a typed value was refused.
+bool positiveLength(const char* label, float& value, std::string& refusal) {
+    float edited = value;
+    if (!ImGui::DragFloat(label, &edited, 0.005f, 0.0f, 0.0f, "%.3f")) return false;
+    if (edited > 0.0f && std::isfinite(edited)) {
+        value = edited;
+        refusal.clear();
+        return true;
+    }
+    refusal = std::string(label) + " must be greater than 0";
+    return false;
+}
+
+// Segments × rings of a tessellated shape; the slider keeps them in range.
+bool tessellationSliders(int& segments, int& rings, int minimumRings) {
+    bool changed = ImGui::SliderInt("Segments", &segments, 3, 256, "%d", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderInt("Rings", &rings, minimumRings, 128, "%d", ImGuiSliderFlags_AlwaysClamp);
+    return changed;
+}
 
 // Widgets on a copy of the shape; returns true when the copy changed and is valid. Sizes must be
 // positive and a normal non-zero, else `refusal` says why.
@@ -19,11 +41,19 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
     bool changed = false;
     if (auto* sphere = std::get_if<SphereShape>(&shape)) {
         changed |= ImGui::DragFloat3("Centre m", &sphere->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
-        float radius = sphere->radius;
-        if (ImGui::DragFloat("Radius m", &radius, 0.005f, 0.0f, 0.0f, "%.3f")) {
-            if (radius > 0.0f && std::isfinite(radius)) sphere->radius = radius, changed = true, refusal.clear();
-            else refusal = "Radius must be greater than 0";
-        }
+        changed |= positiveLength("Radius m", sphere->radius, refusal);
+        changed |= tessellationSliders(sphere->segments, sphere->rings, 2);
+    } else if (auto* cube = std::get_if<CubeShape>(&shape)) {
+        changed |= ImGui::DragFloat3("Centre m", &cube->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= positiveLength("Edge m", cube->size, refusal);
+    } else if (auto* torus = std::get_if<TorusShape>(&shape)) {
+        changed |= ImGui::DragFloat3("Centre m", &torus->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= positiveLength("Major radius m", torus->majorRadius, refusal);
+        changed |= positiveLength("Tube radius m", torus->minorRadius, refusal);
+        changed |= tessellationSliders(torus->segments, torus->rings, 3);
+    } else if (auto* mesh = std::get_if<MeshShape>(&shape)) {
+        changed |= ImGui::DragFloat3("Centre m", &mesh->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= positiveLength("Size (radius) m", mesh->scale, refusal);
     } else if (auto* plane = std::get_if<PlaneShape>(&shape)) {
         changed |= ImGui::DragFloat3("Centre m", &plane->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
         glm::vec3 normal = plane->normal;
@@ -40,12 +70,64 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
     return changed;
 }
 
+void drawAddMenu(EditorState& state) {
+    if (ImGui::Button("Add…")) ImGui::OpenPopup("Add object");
+    if (ImGui::BeginPopup("Add object")) {
+        for (ObjectKind kind : {ObjectKind::Sphere, ObjectKind::Plane, ObjectKind::Cube, ObjectKind::Torus})
+            if (ImGui::Selectable(objectKindLabel(kind))) addObject(state, kind);
+        if (ImGui::Selectable("Mesh file…")) requestFileBrowser(state.fileBrowser, FilePurpose::OpenMesh, "");
+        ImGui::EndPopup();
+    }
+}
+
+// Exact (the analytic surface) where the shape has one; flat, Gouraud or Phong interpolation over
+// the drawn triangles otherwise (scene.h, SurfaceInterpolation).
+void drawInterpolationCombo(EditorState& state) {
+    constexpr const char* kLabels[] = {"exact (analytic)", "flat", "Gouraud", "Phong"};  // order of SurfaceInterpolation
+    const SceneObject& object = state.session.scene().objects[state.selectedObject];
+    const bool exactAllowed = !std::holds_alternative<TorusShape>(object.shape) && !std::holds_alternative<MeshShape>(object.shape);
+    int selected = static_cast<int>(object.interpolation);
+    if (ImGui::BeginCombo("Shading", kLabels[selected])) {
+        for (int i = exactAllowed ? 0 : 1; i < 4; ++i)
+            if (ImGui::Selectable(kLabels[i], i == selected) && i != selected)
+                state.session.change("Shading mode").objects[state.selectedObject].interpolation =
+                    static_cast<SurfaceInterpolation>(i);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("flat: one normal per triangle; Gouraud: shade the vertices, interpolate the colour;\n"
+                          "Phong: interpolate the normal, shade every pixel; exact: the analytic surface");
+}
+
+void drawMeshStatistics(const MeshShape& mesh) {
+    const MeshStatistics& statistics = mesh.statistics;
+    ImGui::PushTextWrapPos();
+    ImGui::TextDisabled("%s", mesh.path.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::Text("%zu vertices, %zu triangles", statistics.vertexCount, statistics.triangleCount);
+    ImGui::Text("normals: %s", statistics.hadNormals ? "from the file" : "generated (smooth)");
+    ImGui::Text("degenerate faces dropped: %zu", statistics.degenerateTrianglesDropped);
+    ImGui::Text("loaded in %.0f ms", statistics.loadSeconds * 1000.0);
+}
+
+void drawOverlayToggles(EditorState& state) {
+    OverlaySettings overlays = state.session.scene().display.overlays;
+    if (ImGui::Checkbox("Wireframe (W)", &overlays.wireframe)) toggleWireframe(state);
+    ImGui::SameLine();
+    if (ImGui::Checkbox("Normals (N)", &overlays.normals)) toggleNormals(state);
+    if (overlays.normals) {
+        if (positiveLength("Normal length m", overlays.normalLength, state.materialPanelMessage))
+            state.session.change("Normal length").display.overlays.normalLength = overlays.normalLength;
+    }
+}
+
 }  // namespace
 
 void drawObjectSection(EditorState& state) {
     const Scene& scene = state.session.scene();
     if (scene.objects.empty()) {
         ImGui::TextWrapped("The scene has no objects.");
+        drawAddMenu(state);
         return;
     }
     state.selectedObject = std::clamp(state.selectedObject, 0, static_cast<int>(scene.objects.size()) - 1);
@@ -67,13 +149,22 @@ void drawObjectSection(EditorState& state) {
         ImGui::PopTextWrapPos();
     }
     drawPresetBrowser(state, materialIndex);
-    ImGui::Separator();
-    Shape shape = state.session.scene().objects[state.selectedObject].shape;
-    if (ImGui::TreeNodeEx(std::holds_alternative<SphereShape>(shape) ? "Sphere" : "Plane", ImGuiTreeNodeFlags_None)) {
-        if (drawShapeEditor(shape, state.materialPanelMessage))
-            state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
-        ImGui::TreePop();
+    if (!ImGui::CollapsingHeader("Objects and shape", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    drawAddMenu(state);
+    ImGui::SameLine();
+    if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove")) {
+        removeObject(state, state.selectedObject);
+        return;
     }
+    drawOverlayToggles(state);
+    Shape shape = state.session.scene().objects[state.selectedObject].shape;
+    ImGui::TextDisabled("%s", shapeLabel(shape));
+    drawInterpolationCombo(state);
+    if (drawShapeEditor(shape, state.materialPanelMessage))
+        state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
+    if (const auto* mesh = std::get_if<MeshShape>(&shape)) drawMeshStatistics(*mesh);
 }
 
 }  // namespace glint

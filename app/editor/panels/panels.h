@@ -23,5 +23,7 @@ void drawCameraSection(EditorState& state);
 
 // Modals: unsaved changes, errors, recovery offer; the help window (F1); the file browser.
 void drawDialogs(EditorState& state);
+// The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel.
+void drawMeshLoadDialog(EditorState& state);
 
 }  // namespace glint

@@ -1,0 +1,85 @@
+// IOR preset menu (see ior_presets.h). The numbers come from the preset table in
+// core/brdf/presets.h (with its sources); this file only picks n and κ out of it.
+#include "editor/ior_presets.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <string_view>
+
+#include "brdf/presets.h"
+
+namespace glint {
+namespace {
+
+constexpr const char* kDielectrics[] = {"glass", "water", "ice", "diamond"};
+constexpr const char* kMetals[] = {"gold", "silver", "copper", "aluminium", "iron", "chromium"};
+
+// The preset's value for `param`, or nullptr when it sets none.
+const glm::vec3* presetValue(const Preset& preset, const char* param) {
+    for (const PresetSetting& setting : preset.settings) {
+        if (!setting.param) break;
+        if (std::string_view(setting.param) == param) return &setting.value;
+    }
+    return nullptr;
+}
+
+void writeParam(Material& material, int index, const glm::vec3& value) {
+    const auto table = modelInfo(material.model).params;
+    for (int c = 0; c < componentCount(table[index].kind); ++c)
+        material.values[packedOffset(table, index) + c] = value[c];
+}
+
+}  // namespace
+
+bool applyIorPreset(Material& material, const char* presetName) {
+    const Preset* preset = findPreset(presetName);
+    if (!preset) return false;
+    const auto table = modelInfo(material.model).params;
+    const int iorIndex = findParam(table, "ior");
+    const int extinctionIndex = findParam(table, "extinction");
+    const glm::vec3* ior = presetValue(*preset, "ior");
+    const glm::vec3* extinction = presetValue(*preset, "extinction");
+    if (iorIndex < 0 || !ior) return false;
+    const bool isMetal = extinction && (extinction->x > 0.0f || extinction->y > 0.0f || extinction->z > 0.0f);
+    if (isMetal && extinctionIndex < 0) return false;  // κ cannot be represented
+    writeParam(material, iorIndex, *ior);
+    if (extinctionIndex >= 0) writeParam(material, extinctionIndex, extinction ? *extinction : glm::vec3(0.0f));
+    return true;
+}
+
+bool drawIorPresetMenu(Material& material) {
+    const auto table = modelInfo(material.model).params;
+    const bool hasExtinction = findParam(table, "extinction") >= 0;
+    bool applied = false;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Presets")) ImGui::OpenPopup("IOR presets");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(hasExtinction ? "Set n (and κ) from a measured material" : "Set n from a measured material");
+    if (ImGui::BeginPopup("IOR presets")) {
+        ImGui::TextDisabled("Dielectrics (κ = 0)");
+        for (const char* name : kDielectrics) {
+            const Preset* preset = findPreset(name);
+            char label[64];
+            std::snprintf(label, sizeof label, "%s  n = %.4g", name, presetValue(*preset, "ior")->x);
+            if (ImGui::Selectable(label)) applied |= applyIorPreset(material, name);
+        }
+        if (hasExtinction) {
+            ImGui::Separator();
+            ImGui::TextDisabled("Metals (n, κ per channel)");
+            for (const char* name : kMetals) {
+                if (ImGui::Selectable(name)) applied |= applyIorPreset(material, name);
+                if (ImGui::IsItemHovered()) {
+                    const Preset* preset = findPreset(name);
+                    const glm::vec3 n = *presetValue(*preset, "ior"), k = *presetValue(*preset, "extinction");
+                    ImGui::SetTooltip("n = (%.3f, %.3f, %.3f)\nκ = (%.3f, %.3f, %.3f)\n%s", n.x, n.y, n.z, k.x, k.y, k.z,
+                                      preset->source);
+                }
+            }
+        }
+        ImGui::EndPopup();
+    }
+    return applied;
+}
+
+}  // namespace glint

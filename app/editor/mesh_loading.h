@@ -1,0 +1,53 @@
+// Loading a mesh file into the editor's scene on a worker thread: the job reports progress and
+// can be cancelled; when it finishes the frame loop adds a mesh object in one undo step, or shows
+// the error (file and line) and leaves the scene exactly as it was. Drawing the progress modal
+// lives in panels/mesh_load_dialog.cpp; importing itself in core/geometry/mesh_import.h.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "editor/editor_state.h"
+#include "geometry/mesh_import.h"
+
+namespace glint {
+
+class MeshLoadJob {
+public:
+    // Starts importing `path` on a new thread.
+    explicit MeshLoadJob(std::string path);
+    ~MeshLoadJob();  // cancels and waits for the thread
+    MeshLoadJob(const MeshLoadJob&) = delete;
+    MeshLoadJob& operator=(const MeshLoadJob&) = delete;
+
+    const std::string& path() const { return path_; }
+    float progress() const { return progress_.load(); }  // [0, 1]
+    void cancel() { cancelRequested_.store(true); }
+    bool cancelRequested() const { return cancelRequested_.load(); }
+    bool finished() const { return finished_.load(); }
+    // The import's outcome once finished() (taken once).
+    std::optional<Result<ImportedMesh>> takeResult();
+
+private:
+    std::string path_;
+    std::atomic<float> progress_{0.0f};
+    std::atomic<bool> cancelRequested_{false};
+    std::atomic<bool> finished_{false};
+    std::mutex resultMutex_;
+    std::optional<Result<ImportedMesh>> result_;
+    std::thread thread_;
+};
+
+// Starts loading a mesh unless one is loading already (then the status line says so).
+void startMeshLoad(EditorState& state, const std::string& path);
+// Each frame: when the job has finished, adds the mesh object (success), notes the cancel, or
+// shows the error. Returns true while a load is still running (the loop keeps drawing frames).
+bool pollMeshLoad(EditorState& state);
+// Adds an imported mesh as a new object with its own material, selected; one undo step.
+void addMeshObject(EditorState& state, const std::string& path, ImportedMesh imported);
+
+}  // namespace glint
