@@ -10,6 +10,7 @@
 #include "gl/frame_uniforms.h"
 #include "gl/gl_loader.h"
 #include "gl/material_glsl.h"
+#include "gl/material_textures.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
 
@@ -99,10 +100,10 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
     return program;
 }
 
-Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples) const {
+Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples, TexturedParams textured) const {
     const ModelInfo& info = modelInfo(model);
     const std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
-    const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info)}};
+    const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info, textured)}};
     auto program = ShaderProgram::build(sources_, "surface.vert", "surface.frag", prelude, generated);
     if (!program) return program.error();
     program->bindBlock("FrameBlock", kFrameBinding);
@@ -115,11 +116,11 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
     return entry;
 }
 
-Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples) {
-    const auto key = std::make_pair(model, samples);
+Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples, TexturedParams textured) {
+    const auto key = std::make_tuple(model, samples, textured.mask);
     if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end())
         return &found->second.program;
-    auto built = buildSurfaceProgram(model, samples);
+    auto built = buildSurfaceProgram(model, samples, textured);
     if (!built) return built.error();
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
@@ -134,7 +135,8 @@ bool Renderer::reloadChangedShaders() {
         if (newest <= entry.builtAt) continue;
         changed = true;
         entry.builtAt = newest;
-        if (auto rebuilt = buildSurfaceProgram(key.first, key.second)) entry = std::move(*rebuilt);
+        const auto& [model, samples, textured] = key;
+        if (auto rebuilt = buildSurfaceProgram(model, samples, {textured})) entry = std::move(*rebuilt);
         else error = rebuilt.error().format();
     }
     const long long newestDisplay = newestModification(displayFiles_);
@@ -185,6 +187,8 @@ const Renderer::GpuMesh& Renderer::meshFor(size_t objectIndex, const Shape& shap
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, tangent)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
     glBindVertexArray(0);
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
     gpu.shape = shape;
@@ -235,7 +239,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
-        auto program = surfaceProgram(material.model, samples);
+        auto program = surfaceProgram(material.model, samples, TexturedParams::of(material));
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -250,6 +254,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
         const auto* sphere = std::get_if<SphereShape>(&object.shape);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
+        if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         // The proxy sphere's back faces would shade the same front hit a second time (gl_FragDepth
         // disables early depth rejection): cull them, unless part of the proxy lies before the near

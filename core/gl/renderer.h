@@ -6,11 +6,14 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "gl/material_glsl.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
+#include "gl/texture_cache.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -45,6 +48,8 @@ public:
     const std::string& description() const { return description_; }
     // Triangles submitted by the last renderRadiance (proxy meshes included).
     long long trianglesDrawn() const { return trianglesDrawn_; }
+    // Material texture images on the GPU (uploaded once per file version).
+    TextureCache& textureCache() { return textureCache_; }
     const ShaderSources& sources() const { return sources_; }
 
 private:
@@ -61,8 +66,8 @@ private:
 
     Renderer(GlPlatform& platform, ShaderSources sources);
     Result<ShaderProgram> buildBackgroundProgram() const;
-    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples) const;
-    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples);
+    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, TexturedParams textured) const;
+    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, TexturedParams textured);
     const GpuMesh& meshFor(size_t objectIndex, const Shape& shape);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
@@ -71,7 +76,8 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    std::map<std::pair<BrdfModel, int>, SurfaceProgram> surfacePrograms_;
+    // Keyed by model, MSAA samples and which parameters are textured (TexturedParams::mask).
+    std::map<std::tuple<BrdfModel, int, std::uint32_t>, SurfaceProgram> surfacePrograms_;
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
@@ -81,6 +87,7 @@ private:
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
+    TextureCache textureCache_;
     long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};

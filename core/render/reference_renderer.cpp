@@ -8,6 +8,7 @@
 
 #include "math/frame.h"
 #include "render/specular_transport.h"
+#include "texture/texture_eval.h"
 
 namespace glint {
 namespace {
@@ -76,7 +77,11 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
 
 glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer) {
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
-    const ShadingFrame frame = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
+    // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
+    const TexturePoint texturePoint = texturePointOn(scene.objects.at(hit.objectIndex).shape, hit.position);
+    const std::vector<float> values = texturedValues(material, texturePoint);
+    const ShadingFrame frame =
+        normalMappedFrame(material, texturePoint, ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent));
     glm::vec3 radiance(0.0f);
     for (const Light& light : scene.lights) {
         if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below
@@ -84,19 +89,19 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f) continue;
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i.
-        radiance += evalBrdf(material.model, material.values, arrival.towardsLight, towardsViewer, frame) *
+        radiance += evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosTheta;
     }
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
-    radiance += ambientReflectance(material.model, material.values, towardsViewer, frame) * ambient;
+    radiance += ambientReflectance(material.model, values, towardsViewer, frame) * ambient;
     // Delta lobes (mirror, glass), traced against the background only.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
     std::optional<SphereGeometry> sphere;
     if (const auto* sphereShape = std::get_if<SphereShape>(&shape)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
-                              hit.position, hit.normal, towardsViewer, hit.distance);
+    radiance += traceSpecular(material.model, values, scene.background, sphere ? &*sphere : nullptr,
+                              hit.position, frame.normal, towardsViewer, hit.distance);
     return radiance;
 }
 

@@ -13,6 +13,7 @@
 #include "camera/camera.h"
 #include "light/light.h"
 #include "scene/background.h"
+#include "texture/material_texture.h"
 
 namespace glint {
 
@@ -25,6 +26,7 @@ struct Material {
     std::string name;
     BrdfModel model = BrdfModel::Lambert;
     std::vector<float> values;  // packed per the model's parameter table
+    std::vector<MaterialTexture> textures;  // parameters driven by textures (texture/), table order
 
     static Material withDefaults(std::string name, BrdfModel model);
 };

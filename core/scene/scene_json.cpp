@@ -5,6 +5,7 @@
 #include <array>
 
 #include "scene/json_object_reader.h"
+#include "texture/texture_json.h"
 #include "util/file_io.h"
 
 namespace glint {
@@ -35,7 +36,8 @@ void readHeader(ObjectReader& root, const char* expectedFormat) {
 
 constexpr const char* kMaterialReservedKeys[] = {"name", "model", "format", "version"};
 
-Material readMaterial(ObjectReader& reader) {
+// `file`: the scene or material file, against which texture paths are resolved.
+Material readMaterial(ObjectReader& reader, const std::string& file) {
     Material material;
     material.name = reader.string("name", "material");
     const std::string modelId = reader.requiredString("model");
@@ -77,11 +79,13 @@ Material readMaterial(ObjectReader& reader) {
             }
         }
     }
+    readMaterialTextures(reader, material, file);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
 }
 
-json materialBody(const Material& material) {
+// `file`: where the JSON goes, so that texture paths are written relative to it ("" for absolute).
+json materialBody(const Material& material, const std::string& file) {
     json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
     const auto table = modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i) {
@@ -95,6 +99,7 @@ json materialBody(const Material& material) {
             case ParamKind::Enum: out[spec.name] = spec.options[static_cast<int>(value[0])].id; break;
         }
     }
+    if (json textures = materialTexturesToJson(material, file); !textures.is_null()) out["textures"] = textures;
     return out;
 }
 
@@ -317,7 +322,7 @@ Scene readScene(const JsonDocument& document) {
         scene.display.toneMap = static_cast<ToneMap>(display.choice("tone_map", kToneMaps, 0));
         display.rejectUnknownKeys();
     }
-    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader));
+    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader, document.file()));
     for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
         root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
@@ -348,7 +353,7 @@ Result<Scene> loadScene(const std::string& path) {
     return parseScene(*text, path);
 }
 
-json sceneToJson(const Scene& scene) {
+json sceneToJson(const Scene& scene, const std::string& file) {
     json out = {{"format", kSceneFormat}, {"version", kSceneFormatVersion}};
     out["output"] = {{"width", scene.width}, {"height", scene.height}, {"msaa", scene.msaaSamples}};
     const Camera& camera = scene.camera;
@@ -366,7 +371,7 @@ json sceneToJson(const Scene& scene) {
                       {"gamma", scene.display.gamma},
                       {"tone_map", kToneMaps[static_cast<int>(scene.display.toneMap)]}};
     out["materials"] = json::array();
-    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material));
+    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material, file));
     out["lights"] = json::array();
     for (const Light& light : scene.lights) out["lights"].push_back(lightToJson(light));
     out["objects"] = json::array();
@@ -375,7 +380,7 @@ json sceneToJson(const Scene& scene) {
 }
 
 Status saveScene(const Scene& scene, const std::string& path) {
-    return writeFileAtomically(path, sceneToJson(scene).dump(2) + "\n");
+    return writeFileAtomically(path, sceneToJson(scene, path).dump(2) + "\n");
 }
 
 Result<Material> parseMaterial(const std::string& text, const std::string& file) {
@@ -384,7 +389,7 @@ Result<Material> parseMaterial(const std::string& text, const std::string& file)
     try {
         ObjectReader root = readRoot(*document, "material");
         readHeader(root, kMaterialFormat);
-        return readMaterial(root);
+        return readMaterial(root, document->file());
     } catch (const JsonReadError& error) {
         return error.diagnostic;
     }
@@ -396,14 +401,14 @@ Result<Material> loadMaterial(const std::string& path) {
     return parseMaterial(*text, path);
 }
 
-json materialToJson(const Material& material) {
+json materialToJson(const Material& material, const std::string& file) {
     json out = {{"format", kMaterialFormat}, {"version", kSceneFormatVersion}};
-    out.update(materialBody(material));
+    out.update(materialBody(material, file));
     return out;
 }
 
 Status saveMaterial(const Material& material, const std::string& path) {
-    return writeFileAtomically(path, materialToJson(material).dump(2) + "\n");
+    return writeFileAtomically(path, materialToJson(material, path).dump(2) + "\n");
 }
 
 }  // namespace glint
