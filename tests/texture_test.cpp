@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "display/display_chain.h"
 #include "geometry/mesh.h"
 #include "image/image_io.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
 #include "texture/procedural.h"
+#include "texture/texture_edit.h"
 #include "texture/texture_eval.h"
 #include "texture/texture_image.h"
 
@@ -44,8 +46,8 @@ TEST(TextureImage, DecodesSrgbToLinearWithRowsBottomUp) {
     EXPECT_EQ((*image)->width, 4);
     EXPECT_EQ((*image)->height, 2);
     // Row 0 is the picture's bottom row: grey 64/255 decodes to 0.0513 linear.
-    EXPECT_NEAR((*image)->texel(1, 0).r, srgbToLinear(64.0f / 255.0f), 1e-6f);
-    EXPECT_NEAR(srgbToLinear(64.0f / 255.0f), 0.0512694f, 1e-5f);
+    EXPECT_NEAR((*image)->texel(1, 0).r, decodeSrgb(64.0f / 255.0f), 1e-6f);
+    EXPECT_NEAR(decodeSrgb(64.0f / 255.0f), 0.0512694f, 1e-5f);
     EXPECT_EQ((*image)->texel(0, 1), glm::vec4(1, 0, 0, 1));  // top-left red
     auto linear = loadTextureImage(path, TextureColorSpace::Linear);
     ASSERT_TRUE(linear.ok());
@@ -221,6 +223,25 @@ TEST(TextureEval, TexturedValuesReplaceTheConstants) {
     const int roughness = packedOffset(table, findParam(table, "roughness"));
     EXPECT_FLOAT_EQ(texturedValues(*material, {{0.25f, 0.25f}, {}})[roughness], 0.2f);
     EXPECT_FLOAT_EQ(texturedValues(*material, {{0.75f, 0.25f}, {}})[roughness], 0.6f);
+}
+
+// The editor's path: a file that fails leaves the material exactly as it was.
+TEST(TextureEdit, AFailingImageLeavesTheMaterialAsItWas) {
+    const std::string directory = test::outputDirectory("textures");
+    Material material = Material::withDefaults("m", BrdfModel::CookTorrance);
+    putTexture(material, defaultTexture("roughness", &modelInfo(material.model).params[3], TextureKind::Marble));
+    const nlohmann::json before = materialToJson(material);
+    Status missing = setTextureImage(material, "diffuse_albedo", directory + "/absent.png");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().format().find("absent.png"), std::string::npos);
+    std::ofstream(directory + "/broken.png", std::ios::binary) << "\x89PNG\r\n\x1a\n";
+    EXPECT_FALSE(setTextureImage(material, "diffuse_albedo", directory + "/broken.png").ok());
+    EXPECT_FALSE(setTextureImage(material, "distribution", writeSmallPng(directory, "ok.png")).ok());
+    EXPECT_EQ(materialToJson(material), before);
+    ASSERT_TRUE(setTextureImage(material, "diffuse_albedo", directory + "/ok.png").ok());
+    ASSERT_EQ(material.textures.size(), 2u);
+    EXPECT_EQ(material.textures[0].parameter, "diffuse_albedo");  // table order kept
+    EXPECT_EQ(material.textures[0].colorSpace, TextureColorSpace::Srgb);
 }
 
 }  // namespace

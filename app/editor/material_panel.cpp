@@ -8,6 +8,7 @@
 #include <string>
 
 #include "editor/color_space.h"
+#include "editor/texture_panel.h"
 
 namespace glint {
 namespace {
@@ -114,7 +115,7 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
 
 }  // namespace
 
-bool drawMaterialPanel(Material& material, std::string& refusal) {
+bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest) {
     bool changed = false;
     const ModelInfo& current = modelInfo(material.model);
     if (ImGui::BeginCombo("Model", current.label)) {
@@ -122,14 +123,23 @@ bool drawMaterialPanel(Material& material, std::string& refusal) {
             if (ImGui::Selectable(info.label, info.model == material.model) && info.model != material.model) {
                 material.model = info.model;
                 material.values = defaultValues(info.params);
+                // Textures follow parameter names; only the normal map means the same in every model.
+                std::erase_if(material.textures, [](const MaterialTexture& t) { return t.parameter != kNormalMapKey; });
                 changed = true;
             }
         }
         ImGui::EndCombo();
     }
     const auto table = modelInfo(material.model).params;
-    for (size_t i = 0; i < table.size(); ++i)
+    for (size_t i = 0; i < table.size(); ++i) {
         changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
+        if (table[i].kind != ParamKind::Scalar && table[i].kind != ParamKind::Color) continue;
+        ImGui::SameLine();
+        changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
+    }
+    ImGui::TextUnformatted("Normal map");
+    ImGui::SameLine();
+    changed |= drawTextureControls(material, kNormalMapKey, nullptr, textureFileRequest, refusal);
     if (material.model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
         ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,

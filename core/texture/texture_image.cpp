@@ -9,6 +9,8 @@
 #include <mutex>
 #include <tuple>
 
+#include "display/display_chain.h"
+
 namespace glint {
 namespace {
 
@@ -49,7 +51,7 @@ Result<std::shared_ptr<const TextureImage>> decode(const std::string& path, long
                 if (!std::isfinite(value))
                     return makeError("texture image has a non-finite value (NaN or infinity) at texel (" +
                                          std::to_string(x) + ", " + std::to_string(y) + ")", {path});
-                if (c < 3 && colorSpace == TextureColorSpace::Srgb) value = srgbToLinear(value);
+                if (c < 3 && colorSpace == TextureColorSpace::Srgb) value = decodeSrgb(value);
                 target[c] = value;
             }
         }
@@ -58,10 +60,6 @@ Result<std::shared_ptr<const TextureImage>> decode(const std::string& path, long
 }
 
 }  // namespace
-
-float srgbToLinear(float encoded) {
-    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
 
 Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& path, TextureColorSpace colorSpace) {
     std::error_code error;

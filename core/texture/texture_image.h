@@ -14,11 +14,8 @@ namespace glint {
 // Largest side accepted [texels] (OpenGL 4.1 guarantees 16384).
 inline constexpr int kMaxTextureSize = 16384;
 
-// Decodes `path` (sRGB-encoded values are decoded to linear with the IEC 61966-2-1 curve).
+// Decodes `path` (sRGB-encoded values are decoded to linear, decodeSrgb() of display_chain.h).
 // Errors carry the file name and say what is wrong with it.
 Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& path, TextureColorSpace colorSpace);
-
-// sRGB electro-optical transfer (IEC 61966-2-1): encoded value in [0,1] → linear.
-float srgbToLinear(float encoded);
 
 }  // namespace glint

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "texture/texture_edit.h"
 #include "texture/texture_image.h"
 
 namespace glint {
@@ -16,20 +17,10 @@ constexpr const char* kColorSpaces[] = {"srgb", "linear"};
 constexpr const char* kFilters[] = {"nearest", "bilinear", "trilinear", "anisotropic"};
 constexpr const char* kChannels[] = {"r", "g", "b", "a"};
 
-const char* kindName(ParamKind kind) {
-    switch (kind) {
-        case ParamKind::Scalar: return "a scalar";
-        case ParamKind::Color: return "a colour";
-        case ParamKind::PerChannel: return "a per-channel quantity";
-        case ParamKind::Bool: return "a yes/no switch";
-        case ParamKind::Enum: return "a choice";
-    }
-    return "";
-}
-
 // One of the two values of a procedural texture: a number (scalars, or grey for colours) or
 // [r, g, b] for colours, inside the parameter's valid range.
 glm::vec3 readValue(ObjectReader& reader, const char* key, glm::vec3 fallback, const ParamSpec* spec) {
+    if (!reader.has(key)) return fallback;
     Bounds bounds = Bounds::between(0.0, 1.0);
     if (spec) {
         bounds = Bounds::between(spec->validMin, spec->validMax == kUnbounded ? std::numeric_limits<double>::max() : spec->validMax);
@@ -48,44 +39,33 @@ std::string resolve(const std::string& file, const std::string& referencingFile)
 
 MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, const ParamSpec* spec,
                             const std::string& referencingFile) {
-    MaterialTexture texture;
-    texture.parameter = parameter;
     if (!reader.has("type")) reader.failHere("a texture needs the key 'type' (image, checker, marble or wood)");
-    texture.kind = static_cast<TextureKind>(reader.choice("type", kKinds, 0));
-    if (!spec && texture.kind != TextureKind::Image) reader.fail("type", "the normal map must be an image");
-    const bool scalar = spec && spec->kind == ParamKind::Scalar;
-    if (texture.kind == TextureKind::Image) {
+    const auto kind = static_cast<TextureKind>(reader.choice("type", kKinds, 0));
+    if (!spec && kind != TextureKind::Image) reader.fail("type", "the normal map must be an image");
+    MaterialTexture texture = defaultTexture(parameter, spec, kind);
+    if (kind == TextureKind::Image) {
         const std::string file = reader.requiredString("file");
         texture.file = resolve(file, referencingFile);
-        const TextureColorSpace defaultSpace = spec && spec->kind == ParamKind::Color ? TextureColorSpace::Srgb
-                                                                                      : TextureColorSpace::Linear;
-        texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(defaultSpace)));
-        texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(TextureFilter::Trilinear)));
+        texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(texture.colorSpace)));
+        texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(texture.filter)));
         texture.tiling = reader.vec2("tiling", texture.tiling, Bounds::positive());
-        if (scalar) {
+        if (spec && spec->kind == ParamKind::Scalar) {
+            // value = mix(min, max, texel)
             texture.channel = static_cast<TextureChannel>(reader.choice("channel", kChannels, 0));
-            // value = mix(min, max, texel); by default the texel itself where the range allows.
-            texture.range.x = readValue(reader, "min", glm::vec3(std::max(spec->validMin, 0.0f)), spec).x;
-            texture.range.y = readValue(reader, "max", glm::vec3(std::min(spec->validMax, 1.0f)), spec).x;
+            texture.range.x = readValue(reader, "min", glm::vec3(texture.range.x), spec).x;
+            texture.range.y = readValue(reader, "max", glm::vec3(texture.range.y), spec).x;
         }
         auto image = loadTextureImage(texture.file, texture.colorSpace);
         if (!image) reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + image.error().format());
+        if (Status inRange = checkTexelRange(**image, texture, spec); !inRange)
+            reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + inRange.error().format() +
+                                    "; texture values must lie in [0, 1]");
         texture.image = *image;
-        // Texels drive reflectances and blend weights: they must lie in [0, 1].
-        const int channels = spec && spec->kind == ParamKind::Scalar ? 1 : 3;
-        for (size_t i = 0; i < texture.image->rgba.size(); i += 4)
-            for (int c = 0; c < channels; ++c) {
-                const float value = texture.image->rgba[i + (channels == 1 ? static_cast<int>(texture.channel) : c)];
-                if (value < 0.0f || value > 1.0f)
-                    reader.fail("file", "texture '" + file + "' for '" + parameter + "' has the value " + std::to_string(value) +
-                                            " at texel " + std::to_string(i / 4) + "; texture values must lie in [0, 1]");
-            }
     } else {
-        const bool checker = texture.kind == TextureKind::Checker;
-        texture.valueA = readValue(reader, "a", glm::vec3(spec->defaultValue[0], spec->defaultValue[1], spec->defaultValue[2]) * 0.2f, spec);
-        texture.valueB = readValue(reader, "b", glm::vec3(spec->defaultValue[0], spec->defaultValue[1], spec->defaultValue[2]), spec);
-        if (checker) {
-            texture.tiling = reader.vec2("tiling", {8.0f, 8.0f}, Bounds::positive());
+        texture.valueA = readValue(reader, "a", texture.valueA, spec);
+        texture.valueB = readValue(reader, "b", texture.valueB, spec);
+        if (kind == TextureKind::Checker) {
+            texture.tiling = reader.vec2("tiling", texture.tiling, Bounds::positive());
         } else {
             texture.frequency = static_cast<float>(reader.number("frequency", texture.frequency, Bounds::positive()));
             texture.turbulence = static_cast<float>(reader.number("turbulence", texture.turbulence, Bounds::between(0, 1000)));
@@ -103,38 +83,17 @@ void readMaterialTextures(ObjectReader& materialReader, Material& material, cons
     const json& node = materialReader.take("textures");
     if (!node.is_object()) materialReader.fail("textures", "must be an object keyed by parameter name");
     ObjectReader textures = materialReader.object("textures");
-    const auto table = modelInfo(material.model).params;
-    std::vector<MaterialTexture> read;
+    material.textures.clear();
     for (const auto& [parameter, value] : node.items()) {
-        const ParamSpec* spec = nullptr;
-        if (parameter != kNormalMapKey) {
-            const int index = findParam(table, parameter);
-            if (index < 0) {
-                std::string list;
-                for (const ParamSpec& candidate : table)
-                    if (candidate.kind == ParamKind::Scalar || candidate.kind == ParamKind::Color)
-                        list += std::string(list.empty() ? "" : ", ") + candidate.name;
-                textures.fail(parameter, "'" + parameter + "' is not a parameter of the model '" + modelInfo(material.model).id +
-                                             "' (textures can drive: " + list + (list.empty() ? "" : ", ") + "normal)");
-            }
-            spec = &table[index];
-            if (spec->kind != ParamKind::Scalar && spec->kind != ParamKind::Color)
-                textures.fail(parameter, "'" + parameter + "' is " + kindName(spec->kind) +
-                                             "; only scalar and colour parameters can be textured");
-        }
+        std::string error;
+        const ParamSpec* spec = texturableParam(material.model, parameter, error);
+        if (!error.empty()) textures.fail(parameter, error);
         if (!value.is_object()) textures.fail(parameter, "a texture is an object with a 'type'");
         ObjectReader reader = textures.object(parameter);
-        read.push_back(readTexture(reader, parameter, spec, referencingFile));
+        putTexture(material, readTexture(reader, parameter, spec, referencingFile));  // table order
     }
-    if (read.size() > static_cast<size_t>(kMaxMaterialTextures))
+    if (material.textures.size() > static_cast<size_t>(kMaxMaterialTextures))
         materialReader.fail("textures", "at most " + std::to_string(kMaxMaterialTextures) + " textures per material");
-    // Table order (the normal map last), so that equal materials list their textures alike.
-    const auto order = [&](const MaterialTexture& texture) {
-        const int index = findParam(table, texture.parameter);
-        return index < 0 ? static_cast<int>(table.size()) : index;
-    };
-    std::stable_sort(read.begin(), read.end(), [&](const auto& a, const auto& b) { return order(a) < order(b); });
-    material.textures = std::move(read);
 }
 
 json materialTexturesToJson(const Material& material, const std::string& targetFile) {

@@ -12,6 +12,7 @@
 #include "editor/document.h"
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
+#include "editor/texture_panel.h"
 #include "editor/shortcuts.h"
 
 namespace glint {
@@ -116,6 +117,7 @@ void handleFileBrowser(EditorState& state) {
             break;
         case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
+        case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

@@ -23,6 +23,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenMaterial: return "Open material###FileBrowser";
         case FilePurpose::SaveMaterialAs: return "Save material as###FileBrowser";
         case FilePurpose::SaveScreenshot: return "Save screenshot (.png or .exr)###FileBrowser";
+        case FilePurpose::OpenTexture: return "Open texture image###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -93,7 +94,9 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.requested = true;
     browser.purpose = purpose;
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
-                                                                : std::vector<std::string>{".json"};
+                         : purpose == FilePurpose::OpenTexture
+                             ? std::vector<std::string>{".png", ".jpg", ".jpeg", ".exr", ".hdr", ".tif", ".tiff"}
+                             : std::vector<std::string>{".json"};
     browser.error.clear();
     std::error_code error;
     fs::path start = startPath.empty() ? fs::current_path(error) : fs::absolute(startPath, error);
