@@ -70,15 +70,19 @@ void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
 
 TEST(TextureGpu, TexturedQuadMatchesGoldenAndCpu) {
     writeColourTexture();
-    const Scene scene = sceneFrom(kFrontOrtho, kSun,
-                                  R"({"name": "m", "model": "lambert", "textures": {"albedo": {"type": "image", "file": "colour.png"}}})",
-                                  R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})");
-    auto images = test::sharedHeadless().render(scene, 96, 96);
+    // The quad fills the 88×88 frame: 11 pixels a texel, so pixel (5, 5) sits on the centre of
+    // the top-left texel.
+    const Scene scene = sceneFrom(
+        R"({"projection": "orthographic", "position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "ortho_height": 2})",
+        kSun, R"({"name": "m", "model": "lambert", "textures": {"albedo": {"type": "image", "file": "colour.png"}}})",
+        R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})");
+    auto images = test::sharedHeadless().render(scene, 88, 88);
     ASSERT_TRUE(images.ok()) << images.error().format();
     expectMatchesGolden("textured_quad", images->display);
-    // E⊥ = π and f_r = ρ/π: the radiance is the albedo. The top-left texel is white (1, 1, 1).
-    const glm::vec3 topLeft = images->radiance.at(12, 12);
-    EXPECT_NEAR(topLeft.r, 1.0f, 1e-3f);
+    // E⊥ = π and f_r = ρ/π: the radiance is the albedo. The top-left texel is white (1, 1, 1); its
+    // right-hand neighbour has red 48/255 sRGB-encoded, linear 0.0296.
+    EXPECT_NEAR(images->radiance.at(5, 5).r, 1.0f, 1e-4f);
+    EXPECT_NEAR(images->radiance.at(16, 5).r, 0.0295568f, 1e-4f);
     const auto agreement = test::compareWithReference(scene, images->radiance);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
     EXPECT_GT(agreement.compared, 7000);
@@ -113,13 +117,15 @@ TEST(TextureGpu, GrazingCheckerTrilinearAndAnisotropic) {
     expectMatchesGolden("checker_grazing_trilinear", trilinear->display);
     expectMatchesGolden("checker_grazing_anisotropic", anisotropic->display);
     // Trilinear picks the mip level of the footprint's long axis and blurs the distant squares
-    // towards grey; anisotropic filtering keeps their contrast. Rows just below the horizon:
-    const float trilinearContrast = rowContrast(trilinear->radiance, 48, 55);
-    const float anisotropicContrast = rowContrast(anisotropic->radiance, 48, 55);
-    std::printf("checker contrast near the horizon: trilinear %.4f, anisotropic %.4f, max anisotropy %.0f\n",
-                trilinearContrast, anisotropicContrast, test::sharedHeadless().renderer().textureCache().maxAnisotropy());
-    if (test::sharedHeadless().renderer().textureCache().maxAnisotropy() > 1.0f)
-        EXPECT_GT(anisotropicContrast, 1.5f * trilinearContrast);
+    // to uniform grey; anisotropic filtering keeps some of their contrast. Rows 46-50 lie just
+    // below the far edge (measured here: trilinear 0.0000, anisotropic 0.015-0.045).
+    const float maxAnisotropy = test::sharedHeadless().renderer().textureCache().maxAnisotropy();
+    const float trilinearContrast = rowContrast(trilinear->radiance, 46, 50);
+    const float anisotropicContrast = rowContrast(anisotropic->radiance, 46, 50);
+    std::printf("checker contrast below the far edge: trilinear %.4f, anisotropic %.4f (max anisotropy %.0f)\n",
+                trilinearContrast, anisotropicContrast, maxAnisotropy);
+    if (maxAnisotropy > 1.0f) EXPECT_GT(anisotropicContrast, 3.0f * trilinearContrast + 0.01f);
+    else EXPECT_NEAR(anisotropicContrast, trilinearContrast, 1e-6f);  // the fallback is trilinear
     // Near the camera both are the same magnified checker.
     EXPECT_NEAR(rowContrast(trilinear->radiance, 88, 96), rowContrast(anisotropic->radiance, 88, 96), 0.02f);
 }
@@ -129,8 +135,11 @@ const char* kSphere = R"({"shape": "sphere", "center": [0, 0, 0], "radius": 1, "
 const char* kTwoLights = R"({"type": "directional", "direction": [-0.3, -0.5, -1], "irradiance": 3},
                            {"type": "point", "position": [2, 2, 3], "power": 300})";
 
-// Tolerance of the GPU-vs-CPU texture comparisons: 1e-3 relative + 1e-5 absolute per channel,
-// silhouettes excluded (compareWithReference), as for the untextured models.
+// Tolerance of the GPU-vs-CPU texture comparisons, silhouettes excluded (compareWithReference):
+// procedural textures 1e-3 relative + 1e-5 absolute per channel, as for the untextured models;
+// image textures 5e-3 relative: llvmpipe filters with weights of 8 bits (1/256 of a texel; the
+// CPU's are float), which moves a value between two texels that differ by 100% by up to 0.4%
+// (measured: 4.2e-3 worst, with bilinear and trilinear alike).
 TEST(TextureGpu, MarbleSphereMatchesCpuReference) {
     const Scene scene = sceneFrom(kCloseSphereCamera, kTwoLights,
                                   R"({"name": "m", "model": "cook_torrance", "roughness": 0.3, "textures": {
@@ -157,7 +166,7 @@ TEST(TextureGpu, ImageSphereMatchesCpuReferenceAtMagnification) {
     auto images = test::sharedHeadless().render(scene, 128, 128);
     ASSERT_TRUE(images.ok()) << images.error().format();
     (void)writeDisplayImage(images->display, textureDirectory() + "/image_sphere.png");
-    const auto agreement = test::compareWithReference(scene, images->radiance);
+    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
     std::printf("image sphere: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
                 agreement.excluded, agreement.disagreeing, agreement.worstRelative);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
