@@ -1,12 +1,26 @@
 #version 410 core
-// Surface vertex shader: world-space position, normal, tangent (along increasing u) and texture
-// coordinates for the fragment stage.
+// Surface vertex shader: world-space position (the object's placement applied), normal,
+// tangent (along increasing u) and texture coordinates for the fragment stage. With GLINT_GOURAUD
+// it also shades the vertex (shadeSurface(), the lecture's Gouraud shading) for the rasterizer to
+// interpolate.
 #include "common/uniforms.glsl"
+#ifdef GLINT_GOURAUD
+#include "common/frame.glsl"
+#include "common/lights.glsl"
+#include "common/background.glsl"
+#include "common/shape.glsl"
+#include "common/specular_transport.glsl"
+#include "generated/material.glsl"
+#include "common/shading.glsl"
+out vec3 vertexRadiance;  // W/(sr·m²)
+#endif
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inTangent;
 layout(location = 3) in vec2 inUv;
+
+uniform vec4 placement;  // xyz: offset [m], w: uniform scale (imported meshes; else 0, 0, 0, 1)
 
 out vec3 worldPosition;
 out vec3 worldNormal;
@@ -14,9 +28,24 @@ out vec3 worldTangent;
 out vec2 surfaceUv;
 
 void main() {
-    worldPosition = inPosition;
+    worldPosition = placement.xyz + placement.w * inPosition;
     worldNormal = inNormal;
     worldTangent = inTangent;
     surfaceUv = inUv;
-    gl_Position = viewProjection * vec4(inPosition, 1.0);
+    gl_Position = viewProjection * vec4(worldPosition, 1.0);
+#ifdef GLINT_GOURAUD
+    // Twin of gouraudRadiance() in core/render/triangle_shading.cpp: the vertex normal turned
+    // towards the viewer (two-sided surfaces), shaded as a pixel would be.
+    vec3 towardsViewer = towardsViewerFrom(worldPosition);
+    vec3 normal = normalize(inNormal);
+    if (dot(normal, towardsViewer) < 0.0) normal = -normal;
+#ifdef GLINT_TEXTURED
+    // Textures at the vertex (common/textures.glsl): its UV, no screen-space footprint (level 0).
+    textureCoordinates.uv = inUv;
+    textureCoordinates.uvDx = vec2(0.0);
+    textureCoordinates.uvDy = vec2(0.0);
+    textureCoordinates.objectPosition = worldPosition - objectCenter;
+#endif
+    vertexRadiance = shadeSurface(worldPosition, frameFromNormalAndTangent(normal, inTangent), towardsViewer);
+#endif
 }

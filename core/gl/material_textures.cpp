@@ -3,11 +3,12 @@
 
 #include <string>
 
+#include "texture/texture_eval.h"
+
 namespace glint {
 
 void bindMaterialTextures(const ShaderProgram& program, const Material& material, const Shape& shape, TextureCache& cache) {
-    const glm::vec3 center = std::holds_alternative<SphereShape>(shape) ? std::get<SphereShape>(shape).center
-                                                                        : std::get<PlaneShape>(shape).center;
+    const glm::vec3 center = shapeCenter(shape);
     glUniform3f(program.uniform("objectCenter"), center.x, center.y, center.z);
     // material.textures is in table order with the normal map last: its index is the slot.
     for (size_t slot = 0; slot < material.textures.size(); ++slot) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gl/material_glsl.h"
+#include "gl/gpu_mesh_cache.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
@@ -53,11 +54,6 @@ public:
     const ShaderSources& sources() const { return sources_; }
 
 private:
-    struct GpuMesh {
-        GLuint vertexArray = 0, vertexBuffer = 0, indexBuffer = 0;
-        GLsizei indexCount = 0;
-        Shape shape;
-    };
     struct SurfaceProgram {
         ShaderProgram program;
         std::vector<std::string> files;
@@ -66,9 +62,9 @@ private:
 
     Renderer(GlPlatform& platform, ShaderSources sources);
     Result<ShaderProgram> buildBackgroundProgram() const;
-    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, TexturedParams textured) const;
-    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, TexturedParams textured);
-    const GpuMesh& meshFor(size_t objectIndex, const Shape& shape);
+    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured) const;
+    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured);
+    const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
 
@@ -76,8 +72,8 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    // Keyed by model, MSAA samples and which parameters are textured (TexturedParams::mask).
-    std::map<std::tuple<BrdfModel, int, std::uint32_t>, SurfaceProgram> surfacePrograms_;
+    // Keyed by model, MSAA samples, Gouraud and which parameters are textured (TexturedParams::mask).
+    std::map<std::tuple<BrdfModel, int, bool, std::uint32_t>, SurfaceProgram> surfacePrograms_;
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
@@ -86,7 +82,7 @@ private:
     long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
-    std::vector<GpuMesh> meshes_;
+    std::unique_ptr<GpuMeshCache> meshes_ = std::make_unique<GpuMeshCache>();
     TextureCache textureCache_;
     long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};

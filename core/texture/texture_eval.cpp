@@ -16,20 +16,24 @@ float channelOf(glm::vec4 value, TextureChannel channel) { return value[static_c
 
 }  // namespace
 
-TexturePoint texturePointOn(const Shape& shape, glm::vec3 position) {
+glm::vec3 shapeCenter(const Shape& shape) {
+    return std::visit([](const auto& concrete) { return concrete.center; }, shape);
+}
+
+TexturePoint texturePointOn(const Shape& shape, glm::vec3 position, std::optional<glm::vec2> triangleUv) {
     TexturePoint point;
-    if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    point.objectPosition = position - shapeCenter(shape);
+    if (triangleUv) {
+        point.uv = *triangleUv;
+    } else if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
         const glm::vec3 n = (position - sphere->center) / sphere->radius;
         float u = std::atan2(-n.z, n.x) / (2.0f * kPi);
         if (u < 0.0f) u += 1.0f;
         point.uv = {u, 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
-        point.objectPosition = position - sphere->center;
-        return point;
+    } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
+        const glm::vec3 local = ShadingFrame::fromNormal(glm::normalize(plane->normal)).toLocal(position - plane->center);
+        point.uv = {local.x / plane->size.x + 0.5f, local.y / plane->size.y + 0.5f};
     }
-    const auto& plane = std::get<PlaneShape>(shape);
-    const glm::vec3 local = ShadingFrame::fromNormal(glm::normalize(plane.normal)).toLocal(position - plane.center);
-    point.uv = {local.x / plane.size.x + 0.5f, local.y / plane.size.y + 0.5f};
-    point.objectPosition = position - plane.center;
     return point;
 }
 

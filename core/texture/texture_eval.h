@@ -4,6 +4,7 @@
 // The GLSL twin is shaders/common/textures.glsl; the reference renderer calls this.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "math/frame.h"
@@ -16,9 +17,14 @@ struct TexturePoint {
     glm::vec3 objectPosition{0.0f};      // [m], world axes, origin at the shape's centre
 };
 
-// Sphere: u = azimuth/2π measured as the proxy mesh's (increasing along surfaceTangent()),
-// v = 1 − polar angle/π (1 at +y); plane: its own frame, (0, 0) at the corner −tangent −bitangent.
-TexturePoint texturePointOn(const Shape& shape, glm::vec3 position);
+// The shape's centre [m] (every shape has one): the origin of object-space positions.
+glm::vec3 shapeCenter(const Shape& shape);
+
+// `triangleUv`: for a hit on a shape drawn from triangles, its interpolated vertex UV (used as
+// is). Otherwise the analytic UV: sphere u = azimuth/2π measured as the proxy mesh's (increasing
+// along surfaceTangent()), v = 1 − polar angle/π (1 at +y); plane: its own frame, (0, 0) at the
+// corner −tangent −bitangent.
+TexturePoint texturePointOn(const Shape& shape, glm::vec3 position, std::optional<glm::vec2> triangleUv = std::nullopt);
 
 // OpenGL-style sampling of level 0: texel centres at (i + ½)/size, coordinates wrap (REPEAT).
 glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear);
