@@ -22,6 +22,7 @@ uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the 
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec3 worldTangent;
+in vec2 surfaceUv;
 #ifdef GLINT_GOURAUD
 in vec3 vertexRadiance;
 #endif
@@ -70,6 +71,11 @@ void main() {
         vec4 clip = viewProjection * vec4(position, 1.0);
         depth = 0.5 * (clip.z / clip.w) + 0.5;
     }
+#ifdef GLINT_TEXTURED
+    // Textures (common/textures.glsl): the sphere's exact (u, v), the mesh's interpolated UV.
+    vec2 uv = shapeKind == SHAPE_SPHERE ? sphereUv(normal) : surfaceUv;
+    textureCoordinates = textureCoordinatesAt(uv, position - objectCenter);
+#endif
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
     gl_FragDepth = depth;
 #ifdef GLINT_GOURAUD
@@ -77,5 +83,8 @@ void main() {
     return;
 #endif
     ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
+#ifdef GLINT_NORMAL_MAP_SLOT
+    frame = normalMappedFrame(GLINT_NORMAL_MAP_SLOT, frame);
+#endif
     outRadiance = vec4(shadeSurface(position, frame, -ray.direction), 1.0);
 }

@@ -1,7 +1,8 @@
 #version 410 core
-// Surface vertex shader: world-space position (the object's placement applied), normal and
-// tangent (along increasing u) for the fragment stage. With GLINT_GOURAUD it also shades the
-// vertex (shadeSurface(), the lecture's Gouraud shading) for the rasterizer to interpolate.
+// Surface vertex shader: world-space position (the object's placement applied), normal,
+// tangent (along increasing u) and texture coordinates for the fragment stage. With GLINT_GOURAUD
+// it also shades the vertex (shadeSurface(), the lecture's Gouraud shading) for the rasterizer to
+// interpolate.
 #include "common/uniforms.glsl"
 #ifdef GLINT_GOURAUD
 #include "common/frame.glsl"
@@ -17,17 +18,20 @@ out vec3 vertexRadiance;  // W/(sr·m²)
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inTangent;
+layout(location = 3) in vec2 inUv;
 
 uniform vec4 placement;  // xyz: offset [m], w: uniform scale (imported meshes; else 0, 0, 0, 1)
 
 out vec3 worldPosition;
 out vec3 worldNormal;
 out vec3 worldTangent;
+out vec2 surfaceUv;
 
 void main() {
     worldPosition = placement.xyz + placement.w * inPosition;
     worldNormal = inNormal;
     worldTangent = inTangent;
+    surfaceUv = inUv;
     gl_Position = viewProjection * vec4(worldPosition, 1.0);
 #ifdef GLINT_GOURAUD
     // Twin of gouraudRadiance() in core/render/triangle_shading.cpp: the vertex normal turned
@@ -35,6 +39,13 @@ void main() {
     vec3 towardsViewer = towardsViewerFrom(worldPosition);
     vec3 normal = normalize(inNormal);
     if (dot(normal, towardsViewer) < 0.0) normal = -normal;
+#ifdef GLINT_TEXTURED
+    // Textures at the vertex (common/textures.glsl): its UV, no screen-space footprint (level 0).
+    textureCoordinates.uv = inUv;
+    textureCoordinates.uvDx = vec2(0.0);
+    textureCoordinates.uvDy = vec2(0.0);
+    textureCoordinates.objectPosition = worldPosition - objectCenter;
+#endif
     vertexRadiance = shadeSurface(worldPosition, frameFromNormalAndTangent(normal, inTangent), towardsViewer);
 #endif
 }

@@ -66,6 +66,8 @@ expect_error editor_bad_scene "invalid\.json:4:" -- "$out/invalid.json"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "cook_torrance",\n   "ior": [1.5, 0, 1.5]}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/zero_ior.json"
 expect_error zero_ior "zero_ior\.json:3:[0-9]+: .*'ior\[1\]': 0 is out of range: must be greater than 0" -- render "$out/zero_ior.json" -o "$out/x.png"
 expect_error unknown_preset "unknown preset 'unobtainium'" -- presets unobtainium -o "$out/x.json"
+printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "lambert",\n   "textures": {"albedo": {"type": "image", "file": "maps/missing.png"}}}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/missing_texture.json"
+expect_error missing_texture "missing_texture\.json:3:[0-9]+: .*texture 'maps/missing\.png' for 'albedo': .*maps/missing\.png: texture image file not found" -- render "$out/missing_texture.json" -o "$out/x.png"
 
 # Good input: both outputs, the requested size, exit code 0.
 if "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.png" --size 100x60 &&
@@ -91,5 +93,5 @@ else
   echo "FAIL no display: no headless image"; failures=$((failures + 1))
 fi
 
-echo "$((18 - failures)) passed, $failures failed"
+echo "$((19 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

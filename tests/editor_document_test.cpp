@@ -12,6 +12,8 @@
 #include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/settings.h"
+#include "editor/texture_panel.h"
+#include "image/image_io.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
 
@@ -165,6 +167,37 @@ TEST_F(EditorDocument, CameraActionsAreUndoableEdits) {
     EXPECT_FALSE(state.session.dirty());
     resetView(state);
     EXPECT_EQ(state.session.scene().camera.position, defaultScene().camera.position);
+}
+
+
+// The material panel's "Image file…": a file that fails leaves the material and the history as
+// they were and says why; a good one becomes one undo step.
+TEST_F(EditorDocument, TextureImageFromTheFileBrowserIsOneUndoStepAndFailuresChangeNothing) {
+    EditorState state;
+    state.textureMaterialIndex = state.session.scene().objects[0].materialIndex;
+    state.textureParameter = "diffuse_albedo";  // the default sphere is Blinn-Phong
+    const std::string before = sceneToJson(state.session.scene()).dump();
+    openTextureFile(state, directory_ + "/absent.png");
+    EXPECT_NE(state.errorMessage.find("absent.png"), std::string::npos) << state.errorMessage;
+    EXPECT_NE(state.errorMessage.find("unchanged"), std::string::npos);
+    const std::string corrupt = write("corrupt.png", "\x89PNG\r\n\x1a\nnot really");
+    state.errorMessage.clear();
+    openTextureFile(state, corrupt);
+    EXPECT_FALSE(state.errorMessage.empty());
+    EXPECT_EQ(sceneToJson(state.session.scene()).dump(), before);
+    EXPECT_FALSE(state.session.canUndo());
+
+    DisplayImage image(4, 4);
+    const std::string good = directory_ + "/good.png";
+    ASSERT_TRUE(writeDisplayImage(image, good).ok());
+    state.errorMessage.clear();
+    openTextureFile(state, good);
+    EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    const Material& textured = state.session.scene().materials[state.textureMaterialIndex];
+    ASSERT_EQ(textured.textures.size(), 1u);
+    EXPECT_EQ(textured.textures[0].parameter, "diffuse_albedo");
+    EXPECT_TRUE(state.session.undo());
+    EXPECT_EQ(sceneToJson(state.session.scene()).dump(), before);
 }
 
 }  // namespace

@@ -1,15 +1,6 @@
 // sRGB ↔ linear conversions for colour pickers: the picker shows sRGB-encoded values while the
-// scene stores linear RGB (DESIGN.md, units and conventions).
+// scene stores linear RGB (DESIGN.md, units and conventions). Both curves live in
+// core/display/display_chain.h (encodeSrgb, decodeSrgb), shared with texture decoding.
 #pragma once
 
-#include <cmath>
-
 #include "display/display_chain.h"
-
-namespace glint {
-
-inline float decodeSrgb(float encoded) {
-    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
-}  // namespace glint

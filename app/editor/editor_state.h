@@ -51,6 +51,8 @@ struct EditorState {
     std::vector<RecoveredWork> recoveryOffer;  // at most one; a modal at start
     std::string recoveryOfferPath;
     FileBrowser fileBrowser;
+    int textureMaterialIndex = -1;  // the material and parameter an image file is being chosen for
+    std::string textureParameter;
     bool screenshotRequested = false;
     std::string screenshotPath;
     bool quitNow = false;

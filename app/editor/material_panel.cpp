@@ -10,6 +10,7 @@
 
 #include "editor/color_space.h"
 #include "editor/ior_presets.h"
+#include "editor/texture_panel.h"
 
 namespace glint {
 namespace {
@@ -116,7 +117,7 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
 
 }  // namespace
 
-bool drawMaterialPanel(Material& material, std::string& refusal) {
+bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest) {
     bool changed = false;
     const ModelInfo& current = modelInfo(material.model);
     if (ImGui::BeginCombo("Model", current.label)) {
@@ -124,6 +125,8 @@ bool drawMaterialPanel(Material& material, std::string& refusal) {
             if (ImGui::Selectable(info.label, info.model == material.model) && info.model != material.model) {
                 material.model = info.model;
                 material.values = defaultValues(info.params);
+                // Textures follow parameter names; only the normal map means the same in every model.
+                std::erase_if(material.textures, [](const MaterialTexture& t) { return t.parameter != kNormalMapKey; });
                 changed = true;
             }
         }
@@ -134,7 +137,13 @@ bool drawMaterialPanel(Material& material, std::string& refusal) {
         changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
         // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
         if (std::string_view(table[i].name) == "ior") changed |= drawIorPresetMenu(material);
+        if (table[i].kind != ParamKind::Scalar && table[i].kind != ParamKind::Color) continue;
+        ImGui::SameLine();
+        changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
     }
+    ImGui::TextUnformatted("Normal map");
+    ImGui::SameLine();
+    changed |= drawTextureControls(material, kNormalMapKey, nullptr, textureFileRequest, refusal);
     if (material.model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
         ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,

@@ -10,6 +10,8 @@
 
 namespace glint {
 
-bool drawMaterialPanel(Material& material, std::string& refusal);
+// Scalar and colour parameters and the normal map carry texture controls (texture_panel.h);
+// `textureFileRequest` is set to the parameter whose image file the user wants to choose.
+bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest);
 
 }  // namespace glint

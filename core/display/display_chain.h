@@ -17,6 +17,11 @@ inline float encodeSrgb(float linear) {
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
+// Its inverse, the electro-optical transfer: encoded value in [0,1] → linear.
+inline float decodeSrgb(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
 // Per-channel tone curves of the exposed value x ≥ 0.
 // Reinhard: x/(1+x) (Reinhard et al., Photographic Tone Reproduction for Digital Images, 2002, eq. 3).
 // ACES filmic: K. Narkowicz's fit of the ACES reference rendering transform (2015),

@@ -54,6 +54,8 @@ void GpuMeshCache::upload(GpuMesh& gpu, const Mesh& mesh) {
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, tangent)));
+    glEnableVertexAttribArray(3);  // texture coordinates (material textures)
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
     glBindVertexArray(0);
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
 }

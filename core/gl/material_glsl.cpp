@@ -1,6 +1,8 @@
 // GLSL generated from a model's parameter table (see material_glsl.h).
 #include "gl/material_glsl.h"
 
+#include "texture/procedural.h"
+
 namespace glint {
 namespace {
 
@@ -19,21 +21,36 @@ std::string hooks(const ModelInfo& model) {
 
 }  // namespace
 
-std::string generateMaterialGlsl(const ModelInfo& model) {
+TexturedParams TexturedParams::of(const Material& material) {
+    TexturedParams textured;
+    const auto table = modelInfo(material.model).params;
+    for (const MaterialTexture& texture : material.textures) {
+        const int index = findParam(table, texture.parameter);
+        textured.mask |= 1u << (index < 0 ? kNormalMapBit : index);
+    }
+    return textured;
+}
+
+std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured) {
     std::string fields, loads;
     int offset = 0;
-    for (const ParamSpec& spec : model.params) {
+    for (size_t index = 0; index < model.params.size(); ++index) {
+        const ParamSpec& spec = model.params[index];
         const std::string name = spec.name;
+        // A textured parameter reads its slot (common/textures.glsl) instead of MaterialBlock.
+        const std::string slot = std::to_string(textured.slotOf(static_cast<int>(index)));
+        const bool isTextured = textured.has(static_cast<int>(index));
         const auto at = [&](int component) { return "materialValue(" + std::to_string(offset + component) + ")"; };
         switch (spec.kind) {
             case ParamKind::Scalar:
                 fields += "    float " + name + ";\n";
-                loads += "    p." + name + " = " + at(0) + ";\n";
+                loads += "    p." + name + " = " + (isTextured ? "textureScalar(" + slot + ")" : at(0)) + ";\n";
                 break;
             case ParamKind::Color:
             case ParamKind::PerChannel:
                 fields += "    vec3 " + name + ";\n";
-                loads += "    p." + name + " = vec3(" + at(0) + ", " + at(1) + ", " + at(2) + ");\n";
+                loads += "    p." + name + " = " +
+                         (isTextured ? "textureColor(" + slot + ")" : "vec3(" + at(0) + ", " + at(1) + ", " + at(2) + ")") + ";\n";
                 break;
             case ParamKind::Bool:
                 fields += "    bool " + name + ";\n";
@@ -46,7 +63,12 @@ std::string generateMaterialGlsl(const ModelInfo& model) {
         }
         offset += componentCount(spec.kind);
     }
-    return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" +
+    std::string textures;
+    if (textured.mask != 0) {
+        textures = "#define GLINT_TEXTURED 1\n" + perlinTableGlsl() + "#include \"common/textures.glsl\"\n";
+        if (textured.hasNormalMap()) textures += "#define GLINT_NORMAL_MAP_SLOT " + std::to_string(textured.normalMapSlot()) + "\n";
+    }
+    return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures +
            "struct MaterialParams {\n" + fields + "};\n\n" +
            "MaterialParams loadMaterialParams() {\n    MaterialParams p;\n" + loads + "    return p;\n}\n\n" +
            "#include \"" + model.glslFile + "\"\n" + "#define GLINT_EVAL_BRDF " + model.glslEval + "\n" +

@@ -2,14 +2,33 @@
 // MaterialParams struct (one field per parameter, named as in the table), loadMaterialParams()
 // that unpacks MaterialBlock in table order, the model's GLSL twin and GLINT_EVAL_BRDF.
 // This is the table's "uniform packing" use; the C++ side packs with the same offsets.
+// Textured parameters (texture/material_texture.h) read their texture slot instead; the slots
+// are numbered in table order, the normal map last (material_textures.h binds them alike).
 #pragma once
 
+#include <bit>
+#include <cstdint>
 #include <string>
 
 #include "brdf/model_registry.h"
+#include "scene/scene.h"
 
 namespace glint {
 
-std::string generateMaterialGlsl(const ModelInfo& model);
+// Which parameters of a material are textured: bit i for the table's parameter i, bit 31 for
+// the normal map. Programs are built per model, MSAA samples and this mask.
+struct TexturedParams {
+    static constexpr int kNormalMapBit = 31;
+    std::uint32_t mask = 0;
+
+    static TexturedParams of(const Material& material);
+    bool has(int paramIndex) const { return (mask >> paramIndex) & 1u; }
+    bool hasNormalMap() const { return has(kNormalMapBit); }
+    // Slot = number of textured parameters before it in table order.
+    int slotOf(int paramIndex) const { return std::popcount(mask & ((1u << paramIndex) - 1u)); }
+    int normalMapSlot() const { return slotOf(kNormalMapBit); }
+};
+
+std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured = {});
 
 }  // namespace glint

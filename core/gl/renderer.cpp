@@ -11,6 +11,7 @@
 #include "gl/frame_uniforms.h"
 #include "gl/gl_loader.h"
 #include "gl/material_glsl.h"
+#include "gl/material_textures.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
 
@@ -88,11 +89,12 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
     return program;
 }
 
-Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples, bool gouraud) const {
+Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples, bool gouraud,
+                                                              TexturedParams textured) const {
     const ModelInfo& info = modelInfo(model);
     std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
     if (gouraud) prelude += "#define GLINT_GOURAUD 1\n";  // shading per vertex (surface.vert)
-    const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info)}};
+    const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info, textured)}};
     auto program = ShaderProgram::build(sources_, "surface.vert", "surface.frag", prelude, generated);
     if (!program) return program.error();
     program->bindBlock("FrameBlock", kFrameBinding);
@@ -106,11 +108,11 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
     return entry;
 }
 
-Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples, bool gouraud) {
-    const auto key = std::make_tuple(model, samples, gouraud);
+Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured) {
+    const auto key = std::make_tuple(model, samples, gouraud, textured.mask);
     if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end())
         return &found->second.program;
-    auto built = buildSurfaceProgram(model, samples, gouraud);
+    auto built = buildSurfaceProgram(model, samples, gouraud, textured);
     if (!built) return built.error();
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
@@ -125,7 +127,8 @@ bool Renderer::reloadChangedShaders() {
         if (newest <= entry.builtAt) continue;
         changed = true;
         entry.builtAt = newest;
-        if (auto rebuilt = buildSurfaceProgram(std::get<0>(key), std::get<1>(key), std::get<2>(key))) entry = std::move(*rebuilt);
+        const auto& [model, samples, gouraud, textured] = key;
+        if (auto rebuilt = buildSurfaceProgram(model, samples, gouraud, {textured})) entry = std::move(*rebuilt);
         else error = rebuilt.error().format();
     }
     const long long newestDisplay = newestModification(displayFiles_);
@@ -200,7 +203,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
         const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
-        auto program = surfaceProgram(material.model, samples, object.interpolation == SurfaceInterpolation::Gouraud);
+        auto program = surfaceProgram(material.model, samples, object.interpolation == SurfaceInterpolation::Gouraud,
+                                      TexturedParams::of(material));
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -216,6 +220,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const auto* sphere = triangles ? nullptr : std::get_if<SphereShape>(&object.shape);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
+        if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         // The proxy sphere's back faces would shade the same front hit a second time (gl_FragDepth
         // disables early depth rejection): cull them, unless part of the proxy lies before the near

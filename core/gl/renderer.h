@@ -9,11 +9,13 @@
 #include <tuple>
 #include <vector>
 
+#include "gl/material_glsl.h"
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
+#include "gl/texture_cache.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -49,6 +51,8 @@ public:
     const std::string& description() const { return description_; }
     // Triangles submitted by the last renderRadiance (proxy meshes included).
     long long trianglesDrawn() const { return trianglesDrawn_; }
+    // Material texture images on the GPU (uploaded once per file version).
+    TextureCache& textureCache() { return textureCache_; }
     const ShaderSources& sources() const { return sources_; }
 
 private:
@@ -60,8 +64,8 @@ private:
 
     Renderer(GlPlatform& platform, ShaderSources sources);
     Result<ShaderProgram> buildBackgroundProgram() const;
-    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, bool gouraud) const;
-    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, bool gouraud);
+    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured) const;
+    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured);
     const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
@@ -70,7 +74,8 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    std::map<std::tuple<BrdfModel, int, bool>, SurfaceProgram> surfacePrograms_;  // model, MSAA samples, Gouraud
+    // Keyed by model, MSAA samples, Gouraud and which parameters are textured (TexturedParams::mask).
+    std::map<std::tuple<BrdfModel, int, bool, std::uint32_t>, SurfaceProgram> surfacePrograms_;
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
@@ -82,6 +87,7 @@ private:
     std::unique_ptr<GpuMeshCache> meshes_ = std::make_unique<GpuMeshCache>();
     OverlayPass overlayPass_;
     std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
+    TextureCache textureCache_;
     long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};

@@ -9,6 +9,7 @@
 
 #include "math/frame.h"
 #include "render/specular_transport.h"
+#include "texture/texture_eval.h"
 #include "render/triangle_scene.h"
 
 namespace glint {
@@ -89,7 +90,16 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         return radiance;
     }
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
-    const ShadingFrame frame = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
+    // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
+    std::optional<glm::vec2> triangleUv;  // shapes drawn from triangles: the interpolated vertex UV
+    if (hit.triangle)
+        triangleUv = hit.triangle->barycentric[0] * hit.triangle->vertices[0].uv +
+                     hit.triangle->barycentric[1] * hit.triangle->vertices[1].uv +
+                     hit.triangle->barycentric[2] * hit.triangle->vertices[2].uv;
+    const TexturePoint texturePoint = texturePointOn(scene.objects.at(hit.objectIndex).shape, hit.position, triangleUv);
+    const std::vector<float> values = texturedValues(material, texturePoint);
+    const ShadingFrame frame =
+        normalMappedFrame(material, texturePoint, ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent));
     glm::vec3 radiance(0.0f);
     for (const Light& light : scene.lights) {
         if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below
@@ -97,21 +107,21 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f) continue;
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i.
-        radiance += evalBrdf(material.model, material.values, arrival.towardsLight, towardsViewer, frame) *
+        radiance += evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosTheta;
     }
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
-    radiance += ambientReflectance(material.model, material.values, towardsViewer, frame) * ambient;
+    radiance += ambientReflectance(material.model, values, towardsViewer, frame) * ambient;
     // Delta lobes (mirror, glass), traced against the background only.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
     std::optional<SphereGeometry> sphere;
     const auto* sphereShape = std::get_if<SphereShape>(&shape);
     const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
     if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
-                              hit.position, hit.normal, towardsViewer, hit.distance);
+    radiance += traceSpecular(material.model, values, scene.background, sphere ? &*sphere : nullptr,
+                              hit.position, frame.normal, towardsViewer, hit.distance);
     return radiance;
 }
 

@@ -4,7 +4,7 @@
 namespace glint {
 
 Material Material::withDefaults(std::string name, BrdfModel model) {
-    return Material{std::move(name), model, defaultValues(modelInfo(model).params)};
+    return Material{std::move(name), model, defaultValues(modelInfo(model).params), {}};
 }
 
 SurfaceInterpolation defaultInterpolation(const Shape& shape) {

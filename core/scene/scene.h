@@ -16,6 +16,7 @@
 #include "light/light.h"
 #include "scene/background.h"
 #include "scene/overlays.h"
+#include "texture/material_texture.h"
 
 namespace glint {
 
@@ -28,6 +29,7 @@ struct Material {
     std::string name;
     BrdfModel model = BrdfModel::Lambert;
     std::vector<float> values;  // packed per the model's parameter table
+    std::vector<MaterialTexture> textures;  // parameters driven by textures (texture/), table order
 
     static Material withDefaults(std::string name, BrdfModel model);
 };

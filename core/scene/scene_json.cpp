@@ -5,6 +5,7 @@
 #include <array>
 
 #include "scene/json_object_reader.h"
+#include "texture/texture_json.h"
 #include "scene/shape_json.h"
 #include "util/file_io.h"
 
@@ -36,7 +37,8 @@ void readHeader(ObjectReader& root, const char* expectedFormat) {
 
 constexpr const char* kMaterialReservedKeys[] = {"name", "model", "format", "version"};
 
-Material readMaterial(ObjectReader& reader) {
+// `file`: the scene or material file, against which texture paths are resolved.
+Material readMaterial(ObjectReader& reader, const std::string& file) {
     Material material;
     material.name = reader.string("name", "material");
     const std::string modelId = reader.requiredString("model");
@@ -78,11 +80,13 @@ Material readMaterial(ObjectReader& reader) {
             }
         }
     }
+    readMaterialTextures(reader, material, file);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
 }
 
-json materialBody(const Material& material) {
+// `file`: where the JSON goes, so that texture paths are written relative to it ("" for absolute).
+json materialBody(const Material& material, const std::string& file) {
     json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
     const auto table = modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i) {
@@ -96,6 +100,7 @@ json materialBody(const Material& material) {
             case ParamKind::Enum: out[spec.name] = spec.options[static_cast<int>(value[0])].id; break;
         }
     }
+    if (json textures = materialTexturesToJson(material, file); !textures.is_null()) out["textures"] = textures;
     return out;
 }
 
@@ -312,7 +317,7 @@ Scene readScene(const JsonDocument& document) {
         }
         display.rejectUnknownKeys();
     }
-    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader));
+    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader, document.file()));
     for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
         root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
@@ -343,7 +348,7 @@ Result<Scene> loadScene(const std::string& path) {
     return parseScene(*text, path);
 }
 
-json sceneToJson(const Scene& scene) {
+json sceneToJson(const Scene& scene, const std::string& file) {
     json out = {{"format", kSceneFormat}, {"version", kSceneFormatVersion}};
     out["output"] = {{"width", scene.width}, {"height", scene.height}, {"msaa", scene.msaaSamples}};
     const Camera& camera = scene.camera;
@@ -365,7 +370,7 @@ json sceneToJson(const Scene& scene) {
                                       {"normals", overlays.normals},
                                       {"normal_length", overlays.normalLength}};
     out["materials"] = json::array();
-    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material));
+    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material, file));
     out["lights"] = json::array();
     for (const Light& light : scene.lights) out["lights"].push_back(lightToJson(light));
     out["objects"] = json::array();
@@ -374,7 +379,7 @@ json sceneToJson(const Scene& scene) {
 }
 
 Status saveScene(const Scene& scene, const std::string& path) {
-    json out = sceneToJson(scene);
+    json out = sceneToJson(scene, path);  // texture paths relative to `path`
     relocateMeshPaths(scene, path, out);
     return writeFileAtomically(path, out.dump(2) + "\n");
 }
@@ -385,7 +390,7 @@ Result<Material> parseMaterial(const std::string& text, const std::string& file)
     try {
         ObjectReader root = readRoot(*document, "material");
         readHeader(root, kMaterialFormat);
-        return readMaterial(root);
+        return readMaterial(root, document->file());
     } catch (const JsonReadError& error) {
         return error.diagnostic;
     }
@@ -397,14 +402,14 @@ Result<Material> loadMaterial(const std::string& path) {
     return parseMaterial(*text, path);
 }
 
-json materialToJson(const Material& material) {
+json materialToJson(const Material& material, const std::string& file) {
     json out = {{"format", kMaterialFormat}, {"version", kSceneFormatVersion}};
-    out.update(materialBody(material));
+    out.update(materialBody(material, file));
     return out;
 }
 
 Status saveMaterial(const Material& material, const std::string& path) {
-    return writeFileAtomically(path, materialToJson(material).dump(2) + "\n");
+    return writeFileAtomically(path, materialToJson(material, path).dump(2) + "\n");
 }
 
 }  // namespace glint

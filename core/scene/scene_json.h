@@ -11,17 +11,19 @@
 
 namespace glint {
 
-// Parses scene JSON text; `file` names it in messages.
+// Parses scene JSON text; `file` names it in messages, and relative texture paths are resolved
+// against its directory (texture images are decoded while reading: a failing one fails the parse).
 Result<Scene> parseScene(const std::string& text, const std::string& file);
 Result<Scene> loadScene(const std::string& path);
 
-nlohmann::json sceneToJson(const Scene& scene);
+// `file`: where the JSON will be written; texture paths are made relative to it ("" keeps them absolute).
+nlohmann::json sceneToJson(const Scene& scene, const std::string& file = "");
 Status saveScene(const Scene& scene, const std::string& path);
 
 // A material file holds one material ("format": "glint-material").
 Result<Material> parseMaterial(const std::string& text, const std::string& file);
 Result<Material> loadMaterial(const std::string& path);
-nlohmann::json materialToJson(const Material& material);
+nlohmann::json materialToJson(const Material& material, const std::string& file = "");
 Status saveMaterial(const Material& material, const std::string& path);
 
 }  // namespace glint

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/headless.h"
+#include "frame_timing.h"
 #include "gl/frame_uniforms.h"
 #include "gl/material_glsl.h"
 #include "gl/render_target.h"
@@ -57,19 +58,6 @@ Scene benchScene(BrdfModel model) {
         scene.lights.push_back(light);
     }
     return scene;
-}
-
-double medianMs(std::vector<double> times) {
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
-}
-
-template <typename Draw>
-double timeFrame(Draw draw) {
-    const auto start = std::chrono::steady_clock::now();
-    draw();
-    glFinish();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 int run(int frames) {

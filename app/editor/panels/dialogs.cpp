@@ -13,6 +13,7 @@
 #include "editor/mesh_loading.h"
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
+#include "editor/texture_panel.h"
 #include "editor/shortcuts.h"
 
 namespace glint {
@@ -118,6 +119,7 @@ void handleFileBrowser(EditorState& state) {
         case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
         case FilePurpose::OpenMesh: startMeshLoad(state, *chosen); break;
+        case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

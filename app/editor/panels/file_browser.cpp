@@ -25,6 +25,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::SaveMaterialAs: return "Save material as###FileBrowser";
         case FilePurpose::SaveScreenshot: return "Save screenshot (.png or .exr)###FileBrowser";
         case FilePurpose::OpenMesh: return "Open mesh (adds an object)###FileBrowser";
+        case FilePurpose::OpenTexture: return "Open texture image###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -95,7 +96,9 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.requested = true;
     browser.purpose = purpose;
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
-                                                                : std::vector<std::string>{".json"};
+                         : purpose == FilePurpose::OpenTexture
+                             ? std::vector<std::string>{".png", ".jpg", ".jpeg", ".exr", ".hdr", ".tif", ".tiff"}
+                             : std::vector<std::string>{".json"};
     if (purpose == FilePurpose::OpenMesh) {
         browser.extensions.clear();
         for (const std::string& extension : meshFileExtensions()) browser.extensions.push_back("." + extension);

@@ -9,7 +9,7 @@
 
 namespace glint {
 
-enum class FilePurpose { OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh };
+enum class FilePurpose { OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh, OpenTexture };
 
 struct FileBrowser {
     bool requested = false;  // open the modal on the next frame

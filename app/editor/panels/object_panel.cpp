@@ -141,8 +141,14 @@ void drawObjectSection(EditorState& state) {
     Material edited = scene.materials[materialIndex];
     ImGui::Text("Material: %s", edited.name.c_str());
     ImGui::Separator();
-    if (drawMaterialPanel(edited, state.materialPanelMessage))
+    std::string textureFileRequest;
+    if (drawMaterialPanel(edited, state.materialPanelMessage, textureFileRequest))
         state.session.change("Edit " + edited.name).materials[materialIndex] = std::move(edited);
+    if (!textureFileRequest.empty()) {
+        state.textureMaterialIndex = materialIndex;
+        state.textureParameter = textureFileRequest;
+        requestFileBrowser(state.fileBrowser, FilePurpose::OpenTexture, state.session.path());
+    }
     if (!state.materialPanelMessage.empty()) {
         ImGui::PushTextWrapPos();
         ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.materialPanelMessage.c_str());

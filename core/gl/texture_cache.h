@@ -1,0 +1,42 @@
+// TextureCache: GL textures for decoded texture images, uploaded once per (path, modification
+// time, colour space) as linear RGBA32F with a full mipmap chain, and the sampler state of each
+// texture's filter (nearest, bilinear, trilinear, anisotropic where the context offers
+// GL_ARB/EXT_texture_filter_anisotropic; trilinear otherwise). Decoding is core/texture.
+#pragma once
+
+#include <map>
+#include <string>
+#include <tuple>
+
+#include <glad/gl.h>
+
+#include "texture/material_texture.h"
+
+namespace glint {
+
+class TextureCache {
+public:
+    TextureCache() = default;
+    ~TextureCache();  // the context must be current
+    TextureCache(const TextureCache&) = delete;
+    TextureCache& operator=(const TextureCache&) = delete;
+
+    // Binds the texture's image to `unit` with its filter. An image whose file changed since it
+    // was uploaded replaces the old upload.
+    void bind(GLenum unit, const MaterialTexture& texture);
+
+    // Largest anisotropy the context supports (1 when the extension is absent); queried on first use.
+    float maxAnisotropy();
+    // Images uploaded so far (the same image twice counts once).
+    int uploads() const { return uploads_; }
+
+private:
+    using Key = std::tuple<std::string, long long, TextureColorSpace>;
+    GLuint upload(const TextureImage& image);
+
+    std::map<Key, GLuint> textures_;
+    int uploads_ = 0;
+    float maxAnisotropy_ = 0.0f;  // 0: not queried yet
+};
+
+}  // namespace glint

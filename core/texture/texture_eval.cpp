@@ -1,0 +1,101 @@
+// CPU evaluation of material textures (see texture_eval.h).
+#include "texture/texture_eval.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/constants.h"
+#include "texture/procedural.h"
+
+namespace glint {
+namespace {
+
+int wrap(int index, int size) { return ((index % size) + size) % size; }
+
+float channelOf(glm::vec4 value, TextureChannel channel) { return value[static_cast<int>(channel)]; }
+
+}  // namespace
+
+glm::vec3 shapeCenter(const Shape& shape) {
+    return std::visit([](const auto& concrete) { return concrete.center; }, shape);
+}
+
+TexturePoint texturePointOn(const Shape& shape, glm::vec3 position, std::optional<glm::vec2> triangleUv) {
+    TexturePoint point;
+    point.objectPosition = position - shapeCenter(shape);
+    if (triangleUv) {
+        point.uv = *triangleUv;
+    } else if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+        const glm::vec3 n = (position - sphere->center) / sphere->radius;
+        float u = std::atan2(-n.z, n.x) / (2.0f * kPi);
+        if (u < 0.0f) u += 1.0f;
+        point.uv = {u, 1.0f - std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+    } else if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
+        const glm::vec3 local = ShadingFrame::fromNormal(glm::normalize(plane->normal)).toLocal(position - plane->center);
+        point.uv = {local.x / plane->size.x + 0.5f, local.y / plane->size.y + 0.5f};
+    }
+    return point;
+}
+
+glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear) {
+    const float x = uv.x * image.width, y = uv.y * image.height;
+    if (!bilinear)
+        return image.texel(wrap(static_cast<int>(std::floor(x)), image.width), wrap(static_cast<int>(std::floor(y)), image.height));
+    const float left = std::floor(x - 0.5f), bottom = std::floor(y - 0.5f);
+    const float fx = x - 0.5f - left, fy = y - 0.5f - bottom;
+    const int x0 = wrap(static_cast<int>(left), image.width), x1 = wrap(static_cast<int>(left) + 1, image.width);
+    const int y0 = wrap(static_cast<int>(bottom), image.height), y1 = wrap(static_cast<int>(bottom) + 1, image.height);
+    const glm::vec4 lower = glm::mix(image.texel(x0, y0), image.texel(x1, y0), fx);
+    const glm::vec4 upper = glm::mix(image.texel(x0, y1), image.texel(x1, y1), fx);
+    return glm::mix(lower, upper, fy);
+}
+
+glm::vec4 evaluateTexture(const MaterialTexture& texture, const TexturePoint& point) {
+    float weight = 0.0f;
+    switch (texture.kind) {
+        case TextureKind::Image:
+            return sampleImage(*texture.image, point.uv * texture.tiling, texture.filter != TextureFilter::Nearest);
+        case TextureKind::Checker: weight = checkerWeight(point.uv * texture.tiling); break;
+        case TextureKind::Marble:
+            weight = marbleWeight(point.objectPosition, texture.frequency, texture.turbulence, texture.octaves);
+            break;
+        case TextureKind::Wood:
+            weight = woodWeight(point.objectPosition, texture.frequency, texture.turbulence, texture.octaves);
+            break;
+    }
+    return glm::vec4(glm::mix(texture.valueA, texture.valueB, weight), 1.0f);
+}
+
+std::vector<float> texturedValues(const Material& material, const TexturePoint& point) {
+    std::vector<float> values = material.values;
+    if (material.textures.empty()) return values;
+    const auto table = modelInfo(material.model).params;
+    for (const MaterialTexture& texture : material.textures) {
+        const int index = findParam(table, texture.parameter);
+        if (index < 0) continue;  // the normal map
+        float* value = values.data() + packedOffset(table, index);
+        const glm::vec4 sampled = evaluateTexture(texture, point);
+        if (table[index].kind == ParamKind::Color) {
+            value[0] = sampled.r, value[1] = sampled.g, value[2] = sampled.b;
+        } else if (texture.kind == TextureKind::Image) {
+            value[0] = glm::mix(texture.range.x, texture.range.y, channelOf(sampled, texture.channel));
+        } else {
+            value[0] = sampled.r;
+        }
+    }
+    return values;
+}
+
+ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame) {
+    for (const MaterialTexture& texture : material.textures) {
+        if (texture.parameter != kNormalMapKey) continue;
+        const glm::vec3 tangentSpace = 2.0f * glm::vec3(evaluateTexture(texture, point)) - 1.0f;
+        const glm::vec3 normal = frame.toWorld(tangentSpace);
+        const float length = glm::length(normal);
+        if (length < 1e-6f) return frame;  // a (½, ½, ½) texel: no direction; keep the surface's
+        return ShadingFrame::fromNormalAndTangent(normal / length, frame.tangent);
+    }
+    return frame;
+}
+
+}  // namespace glint

@@ -1,0 +1,85 @@
+// Image textures through OpenImageIO (see texture_image.h).
+#include "texture/texture_image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include "display/display_chain.h"
+
+namespace glint {
+namespace {
+
+using CacheKey = std::tuple<std::string, long long, TextureColorSpace>;
+
+std::mutex cacheMutex;
+std::map<CacheKey, std::weak_ptr<const TextureImage>> cache;  // weak: unused images are freed
+
+Result<std::shared_ptr<const TextureImage>> decode(const std::string& path, long long modifiedAt,
+                                                   TextureColorSpace colorSpace) {
+    auto input = OIIO::ImageInput::open(path);
+    if (!input) return makeError("cannot read texture image: " + OIIO::geterror(), {path});
+    const OIIO::ImageSpec spec = input->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
+        return makeError("texture image has no pixels (" + std::to_string(spec.width) + "×" +
+                             std::to_string(spec.height) + ")", {path});
+    if (spec.width > kMaxTextureSize || spec.height > kMaxTextureSize)
+        return makeError("texture image is " + std::to_string(spec.width) + "×" + std::to_string(spec.height) +
+                             "; at most " + std::to_string(kMaxTextureSize) + " texels a side are supported", {path});
+    const int channels = spec.nchannels;
+    std::vector<float> all(static_cast<size_t>(spec.width) * spec.height * channels);
+    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data()))
+        return makeError("texture image is truncated or corrupt: " + input->geterror(), {path});
+    auto image = std::make_shared<TextureImage>();
+    image->path = path;
+    image->modifiedAt = modifiedAt;
+    image->colorSpace = colorSpace;
+    image->width = spec.width;
+    image->height = spec.height;
+    image->rgba.resize(static_cast<size_t>(spec.width) * spec.height * 4);
+    // Grey images fill r, g and b; a missing alpha is 1. Rows are flipped to bottom-up.
+    for (int y = 0; y < spec.height; ++y) {
+        for (int x = 0; x < spec.width; ++x) {
+            const float* source = &all[(static_cast<size_t>(y) * spec.width + x) * channels];
+            float* target = &image->rgba[(static_cast<size_t>(spec.height - 1 - y) * spec.width + x) * 4];
+            for (int c = 0; c < 4; ++c) {
+                float value = c < 3 ? source[channels >= 3 ? c : 0] : (channels == 4 || channels == 2 ? source[channels - 1] : 1.0f);
+                if (!std::isfinite(value))
+                    return makeError("texture image has a non-finite value (NaN or infinity) at texel (" +
+                                         std::to_string(x) + ", " + std::to_string(y) + ")", {path});
+                if (c < 3 && colorSpace == TextureColorSpace::Srgb) value = decodeSrgb(value);
+                target[c] = value;
+            }
+        }
+    }
+    return std::shared_ptr<const TextureImage>(std::move(image));
+}
+
+}  // namespace
+
+Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& path, TextureColorSpace colorSpace) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        return makeError("texture image file not found", {path});
+    const auto writeTime = std::filesystem::last_write_time(path, error);
+    if (error) return makeError("cannot read texture image: " + error.message(), {path});
+    const long long modifiedAt =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(writeTime.time_since_epoch()).count();
+    const CacheKey key{path, modifiedAt, colorSpace};
+    {
+        std::lock_guard lock(cacheMutex);
+        if (auto found = cache.find(key); found != cache.end())
+            if (auto image = found->second.lock()) return image;
+    }
+    auto decoded = decode(path, modifiedAt, colorSpace);
+    if (!decoded) return decoded.error();
+    std::lock_guard lock(cacheMutex);
+    cache[key] = *decoded;
+    return decoded;
+}
+
+}  // namespace glint

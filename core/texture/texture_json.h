@@ -1,0 +1,24 @@
+// The "textures" object of a material in scene and material files (docs/scene-format.md):
+// reading it with located errors (unknown parameter, a parameter that cannot be textured, a
+// missing or unreadable image) and writing it back with paths relative to the file.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/json_object_reader.h"
+#include "scene/scene.h"
+
+namespace glint {
+
+// Reads material["textures"] into material.textures (material.model already set); image files
+// are resolved against the directory of `referencingFile` and decoded. Throws JsonReadError
+// through `materialReader`, as every reader of the file format does.
+void readMaterialTextures(ObjectReader& materialReader, Material& material, const std::string& referencingFile);
+
+// The "textures" object, or null when the material has none. Image paths are written relative
+// to the directory of `targetFile` (absolute when it is empty).
+nlohmann::json materialTexturesToJson(const Material& material, const std::string& targetFile);
+
+}  // namespace glint

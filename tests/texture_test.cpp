@@ -1,0 +1,248 @@
+// Material textures on the CPU: the "textures" JSON (round trip, located errors for a missing
+// file, a corrupt or truncated PNG, NaN texels, an unknown parameter, an Enum parameter), image
+// decoding (sRGB → linear, bottom-up rows), sampling, Perlin noise and the shapes' (u, v).
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "display/display_chain.h"
+#include "geometry/mesh.h"
+#include "image/image_io.h"
+#include "scene/scene_json.h"
+#include "test_support.h"
+#include "texture/procedural.h"
+#include "texture/texture_edit.h"
+#include "texture/texture_eval.h"
+#include "texture/texture_image.h"
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 4×2 RGB PNG: top row red, green, blue, white; bottom row greys 0, 64, 128, 255.
+std::string writeSmallPng(const std::string& directory, const std::string& name) {
+    DisplayImage image(4, 2);
+    const uint8_t pixels[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 64, 64, 64, 128, 128, 128, 255, 255, 255};
+    std::copy(std::begin(pixels), std::end(pixels), image.pixels.begin());
+    const std::string path = directory + "/" + name;
+    EXPECT_TRUE(writeDisplayImage(image, path).ok());
+    return path;
+}
+
+std::string materialJson(const std::string& textures, const std::string& model = "lambert") {
+    return R"({"format": "glint-material", "version": 1, "name": "m", "model": ")" + model +
+           R"(", "textures": )" + textures + "}";
+}
+
+TEST(TextureImage, DecodesSrgbToLinearWithRowsBottomUp) {
+    const std::string path = writeSmallPng(test::outputDirectory("textures"), "small.png");
+    auto image = loadTextureImage(path, TextureColorSpace::Srgb);
+    ASSERT_TRUE(image.ok()) << image.error().format();
+    EXPECT_EQ((*image)->width, 4);
+    EXPECT_EQ((*image)->height, 2);
+    // Row 0 is the picture's bottom row: grey 64/255 decodes to 0.0513 linear.
+    EXPECT_NEAR((*image)->texel(1, 0).r, decodeSrgb(64.0f / 255.0f), 1e-6f);
+    EXPECT_NEAR(decodeSrgb(64.0f / 255.0f), 0.0512694f, 1e-5f);
+    EXPECT_EQ((*image)->texel(0, 1), glm::vec4(1, 0, 0, 1));  // top-left red
+    auto linear = loadTextureImage(path, TextureColorSpace::Linear);
+    ASSERT_TRUE(linear.ok());
+    EXPECT_NEAR((*linear)->texel(1, 0).r, 64.0f / 255.0f, 1e-6f);
+    // Decoded once per path, time and colour space.
+    EXPECT_EQ(loadTextureImage(path, TextureColorSpace::Srgb)->get(), image->get());
+}
+
+TEST(TextureImage, SamplesBilinearWithRepeatLikeOpenGl) {
+    TextureImage image;
+    image.width = 2, image.height = 1;
+    image.rgba = {0, 0, 0, 1, 1, 1, 1, 1};
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.25f, 0.5f}, true).r, 0.0f);  // texel centre
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.5f, 0.5f}, true).r, 0.5f);   // between the centres
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.0f, 0.5f}, true).r, 0.5f);   // wraps to the last texel
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.6f, 0.5f}, false).r, 1.0f);  // nearest
+}
+
+TEST(TextureImage, RefusesCorruptTruncatedAndNonFiniteFiles) {
+    const std::string directory = test::outputDirectory("textures");
+    const std::string corrupt = directory + "/corrupt.png";
+    std::ofstream(corrupt, std::ios::binary) << "\x89PNG\r\n\x1a\nthis is not a png";
+    auto image = loadTextureImage(corrupt, TextureColorSpace::Srgb);
+    ASSERT_FALSE(image.ok());
+    EXPECT_EQ(image.error().where.file, corrupt);
+
+    DisplayImage big(64, 64);
+    for (size_t i = 0; i < big.pixels.size(); ++i) big.pixels[i] = static_cast<uint8_t>(i * 7919 % 251);
+    const std::string whole = directory + "/whole.png", truncated = directory + "/truncated.png";
+    ASSERT_TRUE(writeDisplayImage(big, whole, 0).ok());
+    const auto size = fs::file_size(whole);
+    fs::copy_file(whole, truncated, fs::copy_options::overwrite_existing);
+    fs::resize_file(truncated, size / 2);
+    auto cut = loadTextureImage(truncated, TextureColorSpace::Srgb);
+    ASSERT_FALSE(cut.ok());
+    EXPECT_NE(cut.error().format().find("truncated.png"), std::string::npos);
+
+    RadianceImage withNan(2, 2);
+    withNan.pixels[4] = std::nanf("");
+    const std::string nanPath = directory + "/nan.exr";
+    ASSERT_TRUE(writeRadianceImage(withNan, nanPath).ok());
+    auto nan = loadTextureImage(nanPath, TextureColorSpace::Linear);
+    ASSERT_FALSE(nan.ok());
+    EXPECT_NE(nan.error().message.find("non-finite"), std::string::npos) << nan.error().format();
+
+    auto missing = loadTextureImage(directory + "/nowhere.png", TextureColorSpace::Srgb);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("not found"), std::string::npos);
+}
+
+TEST(TextureJson, MissingFileIsALocatedErrorNamingTheFile) {
+    const std::string file = test::outputDirectory("textures") + "/missing.material.json";
+    auto material = parseMaterial(materialJson(R"({
+  "albedo": {"type": "image", "file": "no_such_texture.png"}})"), file);
+    ASSERT_FALSE(material.ok());
+    const Diagnostic& error = material.error();
+    EXPECT_EQ(error.where.file, file);
+    EXPECT_EQ(error.where.line, 2);
+    EXPECT_NE(error.message.find("no_such_texture.png"), std::string::npos) << error.format();
+    EXPECT_NE(error.message.find("not found"), std::string::npos) << error.format();
+}
+
+TEST(TextureJson, CorruptPngIsALocatedError) {
+    const std::string directory = test::outputDirectory("textures");
+    std::ofstream(directory + "/bad.png", std::ios::binary) << "\x89PNG\r\n\x1a\ngarbage";
+    auto material = parseMaterial(materialJson(R"({"albedo": {"type": "image", "file": "bad.png"}})"), directory + "/m.json");
+    ASSERT_FALSE(material.ok());
+    EXPECT_NE(material.error().message.find("bad.png"), std::string::npos) << material.error().format();
+    EXPECT_EQ(material.error().where.line, 1);
+}
+
+TEST(TextureJson, RefusesUnknownParametersAndNonTexturableKinds) {
+    auto unknown = parseMaterial(materialJson(R"({"shininess": {"type": "checker"}})"), "m.json");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_NE(unknown.error().message.find("'shininess' is not a parameter of the model 'lambert'"), std::string::npos)
+        << unknown.error().format();
+    EXPECT_NE(unknown.error().message.find("albedo"), std::string::npos);
+
+    auto enumParam = parseMaterial(materialJson(R"({"distribution": {"type": "checker"}})", "cook_torrance"), "m.json");
+    ASSERT_FALSE(enumParam.ok());
+    EXPECT_NE(enumParam.error().message.find("is a choice; only scalar and colour parameters can be textured"),
+              std::string::npos) << enumParam.error().format();
+
+    auto perChannel = parseMaterial(materialJson(R"({"ior": {"type": "checker"}})", "cook_torrance"), "m.json");
+    ASSERT_FALSE(perChannel.ok());
+
+    auto outOfRange = parseMaterial(materialJson(R"({"roughness": {"type": "marble", "a": 0.1, "b": 7}})", "cook_torrance"), "m.json");
+    ASSERT_FALSE(outOfRange.ok());
+    EXPECT_NE(outOfRange.error().format().find("b'"), std::string::npos) << outOfRange.error().format();
+
+    auto proceduralNormal = parseMaterial(materialJson(R"({"normal": {"type": "checker"}})"), "m.json");
+    ASSERT_FALSE(proceduralNormal.ok());
+    EXPECT_NE(proceduralNormal.error().message.find("normal map must be an image"), std::string::npos);
+}
+
+TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
+    const std::string directory = test::outputDirectory("textures/roundtrip");
+    fs::create_directories(directory + "/maps");
+    writeSmallPng(directory + "/maps", "colour.png");
+    const std::string text = materialJson(R"({
+        "albedo": {"type": "image", "file": "maps/colour.png", "filter": "anisotropic", "tiling": [2, 3]},
+        "normal": {"type": "image", "file": "maps/colour.png"}})");
+    auto material = parseMaterial(text, directory + "/a.material.json");
+    ASSERT_TRUE(material.ok()) << material.error().format();
+    ASSERT_EQ(material->textures.size(), 2u);
+    EXPECT_EQ(material->textures[0].parameter, "albedo");
+    EXPECT_EQ(material->textures[0].colorSpace, TextureColorSpace::Srgb);     // colour default
+    EXPECT_EQ(material->textures[1].colorSpace, TextureColorSpace::Linear);   // normal map default
+    EXPECT_EQ(material->textures[0].filter, TextureFilter::Anisotropic);
+
+    const std::string saved = directory + "/maps/b.material.json";  // another folder
+    ASSERT_TRUE(saveMaterial(*material, saved).ok());
+    EXPECT_EQ(materialToJson(*material, saved)["textures"]["albedo"]["file"], "colour.png");
+    auto reread = loadMaterial(saved);
+    ASSERT_TRUE(reread.ok()) << reread.error().format();
+    EXPECT_EQ(materialToJson(*reread), materialToJson(*material));
+
+    Material procedural = Material::withDefaults("p", BrdfModel::CookTorrance);
+    auto marble = parseMaterial(materialJson(R"({"roughness": {"type": "marble", "a": 0.1, "b": 0.7, "frequency": 3},
+        "diffuse_albedo": {"type": "checker", "a": [0.1, 0.2, 0.3], "b": 0.9, "tiling": [4, 4]}})", "cook_torrance"), "m.json");
+    ASSERT_TRUE(marble.ok()) << marble.error().format();
+    auto again = parseMaterial(materialToJson(*marble).dump(), "m.json");
+    ASSERT_TRUE(again.ok()) << again.error().format();
+    EXPECT_EQ(materialToJson(*again), materialToJson(*marble));
+    EXPECT_EQ(again->textures[0].parameter, "diffuse_albedo");  // table order
+}
+
+TEST(Procedural, PerlinNoiseVanishesOnTheLatticeAndStaysBounded) {
+    EXPECT_FLOAT_EQ(perlinNoise({3, -2, 7}), 0.0f);
+    float largest = 0.0f;
+    for (int i = 0; i < 2000; ++i) {
+        const glm::vec3 point{i * 0.0137f, i * 0.0291f - 5.0f, std::sin(i * 0.1f) * 3.0f};
+        largest = std::max(largest, std::abs(perlinNoise(point)));
+        const float marble = marbleWeight(point, 2.0f, 5.0f, 5);
+        ASSERT_GE(marble, 0.0f);
+        ASSERT_LE(marble, 1.0f);
+        ASSERT_GE(turbulence(point, 4), 0.0f);
+    }
+    EXPECT_GT(largest, 0.3f);
+    EXPECT_LE(largest, 1.0f);
+    EXPECT_EQ(checkerWeight({0.5f, 0.5f}), 0.0f);
+    EXPECT_EQ(checkerWeight({1.5f, 0.5f}), 1.0f);
+    EXPECT_EQ(checkerWeight({-0.5f, 0.5f}), 1.0f);
+}
+
+// The analytic (u, v) of the reference renderer and the GPU equals the proxy mesh's vertex UVs.
+TEST(TexturePoint, SphereUvMatchesTheMeshConvention) {
+    const SphereShape sphere{{0.5f, -0.2f, 1.0f}, 2.0f};
+    const Mesh mesh = makeUvSphere(sphere.center, sphere.radius, 16, 8);
+    int checked = 0;
+    for (const Vertex& vertex : mesh.vertices) {
+        if (vertex.uv.x < 1e-3f || vertex.uv.x > 1.0f - 1e-3f || vertex.uv.y < 1e-3f || vertex.uv.y > 1.0f - 1e-3f) continue;
+        const TexturePoint point = texturePointOn(sphere, vertex.position);
+        EXPECT_NEAR(point.uv.x, vertex.uv.x, 1e-4f);
+        EXPECT_NEAR(point.uv.y, vertex.uv.y, 1e-4f);
+        ++checked;
+    }
+    EXPECT_GT(checked, 50);
+    const PlaneShape plane{{0, -1, 0}, {0, 1, 0}, {4, 2}};
+    const Mesh quad = makePlane(plane.center, plane.normal, plane.size);
+    for (const Vertex& vertex : quad.vertices) {
+        const TexturePoint point = texturePointOn(plane, vertex.position);
+        EXPECT_NEAR(point.uv.x, vertex.uv.x, 1e-5f);
+        EXPECT_NEAR(point.uv.y, vertex.uv.y, 1e-5f);
+    }
+}
+
+TEST(TextureEval, TexturedValuesReplaceTheConstants) {
+    auto material = parseMaterial(materialJson(R"({"roughness": {"type": "checker", "a": 0.2, "b": 0.6, "tiling": [2, 2]}})",
+                                               "cook_torrance"), "m.json");
+    ASSERT_TRUE(material.ok()) << material.error().format();
+    const auto table = modelInfo(BrdfModel::CookTorrance).params;
+    const int roughness = packedOffset(table, findParam(table, "roughness"));
+    EXPECT_FLOAT_EQ(texturedValues(*material, {{0.25f, 0.25f}, {}})[roughness], 0.2f);
+    EXPECT_FLOAT_EQ(texturedValues(*material, {{0.75f, 0.25f}, {}})[roughness], 0.6f);
+}
+
+// The editor's path: a file that fails leaves the material exactly as it was.
+TEST(TextureEdit, AFailingImageLeavesTheMaterialAsItWas) {
+    const std::string directory = test::outputDirectory("textures");
+    Material material = Material::withDefaults("m", BrdfModel::CookTorrance);
+    putTexture(material, defaultTexture("roughness", &modelInfo(material.model).params[3], TextureKind::Marble));
+    const nlohmann::json before = materialToJson(material);
+    Status missing = setTextureImage(material, "diffuse_albedo", directory + "/absent.png");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().format().find("absent.png"), std::string::npos);
+    std::ofstream(directory + "/broken.png", std::ios::binary) << "\x89PNG\r\n\x1a\n";
+    EXPECT_FALSE(setTextureImage(material, "diffuse_albedo", directory + "/broken.png").ok());
+    EXPECT_FALSE(setTextureImage(material, "distribution", writeSmallPng(directory, "ok.png")).ok());
+    EXPECT_EQ(materialToJson(material), before);
+    ASSERT_TRUE(setTextureImage(material, "diffuse_albedo", directory + "/ok.png").ok());
+    ASSERT_EQ(material.textures.size(), 2u);
+    EXPECT_EQ(material.textures[0].parameter, "diffuse_albedo");  // table order kept
+    EXPECT_EQ(material.textures[0].colorSpace, TextureColorSpace::Srgb);
+}
+
+}  // namespace
+}  // namespace glint
