@@ -18,6 +18,9 @@ namespace glint {
 
 class Renderer {
 public:
+    // The radiance targets' format (the bare shading pass of `glint bench` writes the same).
+    static constexpr GLenum kRadianceFormat = GL_RGBA32F;
+
     // Loads GL through the platform and builds the display program.
     static Result<std::unique_ptr<Renderer>> create(GlPlatform& platform, ShaderSources sources = ShaderSources());
     ~Renderer();
@@ -82,8 +85,8 @@ private:
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
     long long trianglesDrawn_ = 0;
-    RenderTarget multisampleTarget_{GL_RGBA32F, true};
-    RenderTarget radianceTarget_{GL_RGBA32F, true};
+    RenderTarget multisampleTarget_{kRadianceFormat, true};
+    RenderTarget radianceTarget_{kRadianceFormat, true};
     RenderTarget displayTarget_{GL_RGBA8, false};
 };
 
