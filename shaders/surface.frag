@@ -13,6 +13,7 @@
 #include "common/specular_transport.glsl"
 #include "generated/material.glsl"
 #include "common/shading.glsl"
+#include "common/display_output.glsl"
 
 #ifdef GLINT_MSAA_SAMPLES
 uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the pixel, [0,1)²
@@ -21,7 +22,6 @@ uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the 
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec3 worldTangent;
-out vec4 outRadiance;
 
 // Twin of surfaceTangent() in core/render/reference_renderer.cpp for a sphere: the direction of
 // increasing u, (+y) × n normalised, and the u = 0 meridian's tangent at the poles.
@@ -64,5 +64,5 @@ void main() {
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
     gl_FragDepth = depth;
     ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
-    outRadiance = vec4(shadeSurface(position, frame, -ray.direction), 1.0);
+    writeRadiance(shadeSurface(position, frame, -ray.direction));
 }

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,13 @@ public:
     // fails to compile is reported and the model's last good program, if any, is used.
     Status renderRadiance(const Scene& scene, int width, int height);
     // Display pass into the offscreen 8-bit target (same size as the last radiance render).
+    // Nothing to do when the last radiance render fused the same display settings.
     void displayOffscreen(const DisplaySettings& display);
+    // Fused display (off by default; headless renders turn it on): renders without MSAA also
+    // write the display-encoded image into the 8-bit target in the radiance pass itself
+    // (shaders/common/display_output.glsl), so that displayOffscreen() with the scene's display
+    // settings has nothing left to do. The float image is written all the same.
+    void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
     // Display pass into the default framebuffer, at the given lower-left corner.
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
     // reduced-resolution preview while dragging).
@@ -85,6 +92,8 @@ private:
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
     long long trianglesDrawn_ = 0;
+    bool fuseDisplay_ = false;
+    std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};
     RenderTarget radianceTarget_{kRadianceFormat, true};
     RenderTarget displayTarget_{GL_RGBA8, false};
