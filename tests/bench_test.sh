@@ -20,6 +20,8 @@ refused "--frames needs a number from 1 to 1000" --frames 0
 refused "--frames needs a number from 1 to 1000" --frames many
 refused "--frames needs a number" --frames
 refused "--json needs a file in an existing folder" --json "$out/no/such/folder/bench.json"
+refused "--json needs a file in an existing folder" --json ""
+refused "--json needs a file in an existing folder" --json "$out"
 refused "no standard scene is named \"teapot\"" --scene teapot
 refused "unknown option --fast" --fast
 refused "takes no arguments" extra

@@ -263,8 +263,9 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
         {{"--quick"}, "", [&](const std::string&) { options.quick = true; return std::string(); }},
         {{"--json"}, "a file",
          [&](const std::string& value) {
-             const fs::path folder = fs::absolute(value).parent_path();
-             if (value.empty() || fs::is_directory(value) || !fs::is_directory(folder))
+             std::error_code error;  // the non-throwing forms: no exception escapes
+             const fs::path folder = value.empty() ? fs::path() : fs::absolute(value, error).parent_path();
+             if (value.empty() || error || fs::is_directory(value, error) || !fs::is_directory(folder, error))
                  return "--json needs a file in an existing folder (got \"" + value + "\")";
              options.jsonPath = value;
              return std::string();
