@@ -48,7 +48,7 @@ for scene in bench["scenes"]:
         timing = scene[key]
         assert 0 < timing["min"] <= timing["q1"] <= timing["median"] <= timing["q3"] <= timing["max"], (scene["name"], key, timing)
     assert abs(scene["ratio"] - scene["frame_ms"]["median"] / scene["bare_ms"]["median"]) < 1e-9, scene["name"]
-    assert scene["family"] in ("diffuse", "phong", "microfacet", "anisotropic", "retroreflective", "specular"), scene["family"]
+    assert scene["family"] in ("diffuse", "phong", "microfacet", "anisotropic", "retroreflective", "specular", "mesh"), scene["family"]
 assert bench["cold_start_ms"]["median"] > 0 and bench["cold_start_runs"] == 3 and bench["cold_start_peak_mb"] > 0
 assert bench["thumbnails"] == 8 and bench["thumbnails_per_second"] > 0
 assert bench["peak_memory_mb"] > 0 and bench["renderer"]

@@ -65,6 +65,15 @@ std::vector<BenchScene> makeBenchScenes() {
         for (int lights : {1, 4})
             scenes.push_back({std::string(member.name) + "/" + std::to_string(lights), member.family,
                               [material = member.material, lights] { return frameFillingSphere(material, lights); }});
+    // A large mesh: the same sphere as 1,000,000 triangles (1000 segments × 500 rings) drawn
+    // through the triangle path with Phong interpolation, Blinn-Phong, 4 lights.
+    scenes.push_back({"mesh_1m_triangles/4", "mesh", [material = defaults(BrdfModel::BlinnPhong)] {
+                          Scene scene = frameFillingSphere(material, 4);
+                          auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
+                          sphere.segments = 1000, sphere.rings = 500;
+                          scene.objects[0].interpolation = SurfaceInterpolation::Phong;
+                          return scene;
+                      }});
     return scenes;
 }
 

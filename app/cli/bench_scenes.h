@@ -19,7 +19,8 @@ struct BenchScene {
 };
 
 // Every standard scene, in table order: a unit sphere filling a 1280×720 frame under 1 and under
-// 4 lights, for two models of each family (one for retroreflection).
+// 4 lights, for two models of each family (one for retroreflection), then the same sphere as a
+// 1M-triangle mesh.
 const std::vector<BenchScene>& benchScenes();
 
 }  // namespace glint
