@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/bench_command.h"
 #include "cli/headless.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
@@ -30,6 +31,8 @@ constexpr const char* kUsage =
     "                              compare a suite of scenes and materials with their goldens\n"
     "  glint thumbnails DIR -o OUTDIR [--size N] [--jobs N]\n"
     "                              one thumbnail per material and a labelled contact sheet\n"
+    "  glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]...\n"
+    "                              time the standard scenes against the bare shading pass\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
     "  glint --help | --version\n"
@@ -70,6 +73,8 @@ int main(int argc, char** argv) {
         return glint::runSnapshotCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "thumbnails")
         return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "bench")
+        return glint::runBenchCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")
         return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {

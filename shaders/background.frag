@@ -4,9 +4,8 @@
 #include "common/uniforms.glsl"
 #include "common/frame.glsl"
 #include "common/background.glsl"
-
-out vec4 outRadiance;
+#include "common/display_output.glsl"
 
 void main() {
-    outRadiance = vec4(backgroundRadiance(primaryRay(gl_FragCoord.xy).direction), 1.0);
+    writeRadiance(backgroundRadiance(primaryRay(gl_FragCoord.xy).direction));
 }

@@ -1,32 +1,16 @@
 #version 410 core
-// The display pass: radiance → exposure → tone map → clamp → sRGB or gamma → 8-bit quantisation.
-// GLSL twin of core/display/display_chain.h (same formulas and citations there).
+// The display pass: the display chain (common/display_encode.glsl) applied to the radiance
+// texture, into the 8-bit target or onto the screen. Headless renders without MSAA skip it: their
+// radiance passes write the same encoding into a second target (common/display_output.glsl).
+#include "common/display_encode.glsl"
 
 uniform sampler2D radiance;   // linear float, same size as the output
 uniform ivec2 sourceOffset;   // where the viewport's lower-left pixel reads from
 uniform int pixelScale;       // screen pixels per radiance pixel along each axis (1 = full resolution)
-uniform float exposureScale;  // 2^EV
-uniform int transfer;         // 0: sRGB, 1: gamma
-uniform float gamma;
-uniform int toneMap;          // 0: none (clip), 1: Reinhard x/(1+x), 2: ACES filmic (Narkowicz 2015)
 
 out vec4 outColor;
 
-float encodeSrgb(float linear) {
-    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
-}
-
-vec3 applyToneMap(vec3 exposed) {
-    if (toneMap == 1) return exposed / (1.0 + exposed);
-    if (toneMap == 2) return exposed * (2.51 * exposed + 0.03) / (exposed * (2.43 * exposed + 0.59) + 0.14);
-    return exposed;
-}
-
 void main() {
     vec3 value = texelFetch(radiance, (ivec2(gl_FragCoord.xy) - sourceOffset) / pixelScale, 0).rgb;
-    vec3 exposed = clamp(applyToneMap(max(value * exposureScale, 0.0)), 0.0, 1.0);
-    vec3 encoded = transfer == 0
-        ? vec3(encodeSrgb(exposed.r), encodeSrgb(exposed.g), encodeSrgb(exposed.b))
-        : pow(exposed, vec3(1.0 / gamma));
-    outColor = vec4(floor(encoded * 255.0 + 0.5) / 255.0, 1.0);
+    outColor = vec4(displayEncode(value), 1.0);
 }

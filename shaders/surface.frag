@@ -14,6 +14,7 @@
 #include "common/specular_transport.glsl"
 #include "generated/material.glsl"
 #include "common/shading.glsl"
+#include "common/display_output.glsl"
 
 #ifdef GLINT_MSAA_SAMPLES
 uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the pixel, [0,1)²
@@ -27,7 +28,6 @@ in vec2 surfaceUv;
 in vec3 vertexRadiance;
 #endif
 uniform int flatNormals;  // 1: flat interpolation, the triangle's own normal
-out vec4 outRadiance;
 
 // Twin of surfaceTangent() in core/render/reference_renderer.cpp for a sphere: the direction of
 // increasing u, (+y) × n normalised, and the u = 0 meridian's tangent at the poles.
@@ -79,12 +79,12 @@ void main() {
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
     gl_FragDepth = depth;
 #ifdef GLINT_GOURAUD
-    outRadiance = vec4(vertexRadiance, 1.0);
+    writeRadiance(vertexRadiance);
     return;
 #endif
     ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
 #ifdef GLINT_NORMAL_MAP_SLOT
     frame = normalMappedFrame(GLINT_NORMAL_MAP_SLOT, frame);
 #endif
-    outRadiance = vec4(shadeSurface(position, frame, -ray.direction), 1.0);
+    writeRadiance(shadeSurface(position, frame, -ray.direction));
 }

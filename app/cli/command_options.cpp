@@ -2,8 +2,17 @@
 #include "cli/command_options.h"
 
 #include <algorithm>
+#include <regex>
 
 namespace glint {
+
+std::function<std::string(const std::string& value)> wholeNumberOption(int& out, int low, int high, std::string message) {
+    return [&out, low, high, message = std::move(message)](const std::string& value) {
+        if (!std::regex_match(value, std::regex("[0-9]{1,5}")) || std::stoi(value) < low || std::stoi(value) > high) return message;
+        out = std::stoi(value);
+        return std::string();
+    };
+}
 
 Result<ParsedArguments> parseCommandOptions(const std::vector<std::string>& arguments, const std::vector<CommandOption>& options,
                                             const std::string& positionalName) {

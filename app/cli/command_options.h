@@ -23,6 +23,10 @@ struct ParsedArguments {
     std::vector<std::string> positionals;  // what is not an option (at most one)
 };
 
+// An option's `apply` that takes a whole number in [low, high] into `out`, or refuses it with
+// `message`. `out` must outlive the parse.
+std::function<std::string(const std::string& value)> wholeNumberOption(int& out, int low, int high, std::string message);
+
 // Walks `arguments`; an unknown option, a missing value, a refused one, or more than one
 // positional argument ("one `positionalName` at a time") is an error.
 Result<ParsedArguments> parseCommandOptions(const std::vector<std::string>& arguments, const std::vector<CommandOption>& options,

@@ -13,6 +13,7 @@ Result<std::unique_ptr<HeadlessRenderer>> HeadlessRenderer::create() {
     auto headless = std::make_unique<HeadlessRenderer>();
     headless->platform_ = std::move(*platform);
     headless->renderer_ = std::move(*renderer);
+    headless->renderer_->setFusedDisplay(true);  // render() needs the display image of the scene's settings
     return headless;
 }
 

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
-#include <regex>
 
 #include "cli/command_options.h"
 #include "cli/render_pool.h"
@@ -46,19 +45,11 @@ struct Thumbnail {
 int runThumbnailsCommand(const std::vector<std::string>& arguments) {
     std::string inputDirectory, outputDirectory;
     int size = 256, jobs = 1, columns = 0;
-    // A whole number in [low, high] from `value`, or the message that refuses it.
-    auto count = [](int& out, int low, int high, const std::string& message) {
-        return [&out, low, high, message](const std::string& value) {
-            if (!std::regex_match(value, std::regex("[0-9]{1,5}")) || std::stoi(value) < low || std::stoi(value) > high) return message;
-            out = std::stoi(value);
-            return std::string();
-        };
-    };
     const std::vector<CommandOption> known = {
         {{"-o", "--output"}, "a directory", [&](const std::string& value) { outputDirectory = value; return std::string(); }},
-        {{"--size"}, "a number of pixels", count(size, 8, 4096, "--size needs a number of pixels from 8 to 4096")},
-        {{"-j", "--jobs"}, "a number", count(jobs, 1, 999, "--jobs needs a number from 1 to 999")},
-        {{"--columns"}, "a number", count(columns, 1, 1000, "--columns needs a number from 1 to 1000")},
+        {{"--size"}, "a number of pixels", wholeNumberOption(size, 8, 4096, "--size needs a number of pixels from 8 to 4096")},
+        {{"-j", "--jobs"}, "a number", wholeNumberOption(jobs, 1, 999, "--jobs needs a number from 1 to 999")},
+        {{"--columns"}, "a number", wholeNumberOption(columns, 1, 1000, "--columns needs a number from 1 to 1000")},
     };
     auto parsed = parseCommandOptions(arguments, known, "directory");
     if (!parsed) return usageError(parsed.error().message);

@@ -30,6 +30,25 @@ bool proxyBeyondNearPlane(const Camera& camera, const SphereShape& sphere) {
     return glm::dot(sphere.center - camera.position, forward) - sphere.radius * kProxyScale > camera.nearPlane;
 }
 
+// The display chain's uniforms (shaders/common/display_encode.glsl) of a program that has them.
+void setDisplayUniforms(const ShaderProgram& program, const DisplaySettings& display) {
+    glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
+    glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
+    glUniform1f(program.uniform("gamma"), display.gamma);
+    glUniform1i(program.uniform("toneMap"), static_cast<int>(display.toneMap));
+}
+
+bool sameDisplay(const DisplaySettings& a, const DisplaySettings& b) {
+    static_assert(sizeof(DisplaySettings) == 4 * sizeof(float), "a new display setting: compare it here");
+    return a.exposureStops == b.exposureStops && a.transfer == b.transfer && a.gamma == b.gamma && a.toneMap == b.toneMap;
+}
+
+// The radiance passes' half of the fused display (display_output.glsl).
+void setFusedDisplayUniforms(const ShaderProgram& program, const std::optional<DisplaySettings>& fused) {
+    glUniform1i(program.uniform("fusedDisplay"), fused ? 1 : 0);
+    if (fused) setDisplayUniforms(program, *fused);
+}
+
 }  // namespace
 
 // --- creation -------------------------------------------------------------------------------
@@ -175,6 +194,17 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     radianceTarget_.ensure(width, height, 1);
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
     if (samples > 1) multisampleTarget_.ensure(width, height, samples);
+    // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
+    fusedDisplay_.reset();
+    if (fuseDisplay_ && samples == 1) {
+        displayTarget_.ensure(width, height, 1);
+        fusedDisplay_ = scene.display;
+    }
+    // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
+    glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
+    const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(fusedDisplay_ ? 2 : 1, drawBuffers);
 
     glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
     glViewport(0, 0, width, height);
@@ -212,6 +242,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         }
         const ShaderProgram& shader = **program;
         glUseProgram(shader.id());
+        setFusedDisplayUniforms(shader, fusedDisplay_);
         MaterialBlockStd140 materialBlock{};
         std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
                     materialBlock.values);
@@ -245,6 +276,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     glDepthFunc(GL_LEQUAL);
     glDepthRange(1.0, 1.0);
     glUseProgram(backgroundProgram_.id());
+    setFusedDisplayUniforms(backgroundProgram_, fusedDisplay_);
     glBindVertexArray(emptyVertexArray_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthRange(0.0, 1.0);
@@ -258,6 +290,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     if (result) shaderError_.clear();
+    else fusedDisplay_.reset();  // an object was left out: the display pass runs again
     if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
     return result;
 }
@@ -276,10 +309,7 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
     glUniform1i(program.uniform("radiance"), 0);
     glUniform2i(program.uniform("sourceOffset"), sourceOffset.x, sourceOffset.y);
     glUniform1i(program.uniform("pixelScale"), pixelScale);
-    glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
-    glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
-    glUniform1f(program.uniform("gamma"), display.gamma);
-    glUniform1i(program.uniform("toneMap"), static_cast<int>(display.toneMap));
+    setDisplayUniforms(program, display);
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -289,6 +319,7 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
 
 void Renderer::displayOffscreen(const DisplaySettings& display) {
     platform_.makeCurrent();
+    if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) return;  // the radiance pass wrote it already
     displayTarget_.ensure(radianceTarget_.width(), radianceTarget_.height(), 1);
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());

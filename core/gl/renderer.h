@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -23,6 +24,9 @@ namespace glint {
 
 class Renderer {
 public:
+    // The radiance targets' format (the bare shading pass of `glint bench` writes the same).
+    static constexpr GLenum kRadianceFormat = GL_RGBA32F;
+
     // Loads GL through the platform and builds the display program.
     static Result<std::unique_ptr<Renderer>> create(GlPlatform& platform, ShaderSources sources = ShaderSources());
     ~Renderer();
@@ -33,8 +37,14 @@ public:
     // fails to compile is reported and the model's last good program, if any, is used.
     Status renderRadiance(const Scene& scene, int width, int height);
     // Display pass into the offscreen 8-bit target (same size as the last radiance render), then
-    // the overlays display.overlays asks for, over the meshes of the last radiance render.
+    // the overlays display.overlays asks for, over the meshes of the last radiance render. The
+    // display pass itself is skipped when the last radiance render fused the same display settings.
     void displayOffscreen(const DisplaySettings& display);
+    // Fused display (off by default; headless renders turn it on): renders without MSAA also
+    // write the display-encoded image into the 8-bit target in the radiance pass itself
+    // (shaders/common/display_output.glsl), so that displayOffscreen() with the scene's display
+    // settings has nothing left to do. The float image is written all the same.
+    void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
     // Display pass into the default framebuffer, at the given lower-left corner.
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
     // reduced-resolution preview while dragging).
@@ -89,8 +99,10 @@ private:
     std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
     TextureCache textureCache_;
     long long trianglesDrawn_ = 0;
-    RenderTarget multisampleTarget_{GL_RGBA32F, true};
-    RenderTarget radianceTarget_{GL_RGBA32F, true};
+    bool fuseDisplay_ = false;
+    std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
+    RenderTarget multisampleTarget_{kRadianceFormat, true};
+    RenderTarget radianceTarget_{kRadianceFormat, true};
     RenderTarget displayTarget_{GL_RGBA8, false};
 };
 

@@ -1,0 +1,336 @@
+// `glint bench` (see bench_command.h).
+// Sections: options · statistics · child processes · scene timing · whole-program figures ·
+// output · the command.
+#include "cli/bench_command.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/bench_scenes.h"
+#include "cli/command_options.h"
+#include "cli/headless.h"
+#include "gl/bare_shading_pass.h"
+#include "scene/scene_json.h"
+#include "util/file_io.h"
+
+extern char** environ;
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// --- options ------------------------------------------------------------------------------------
+
+constexpr const char* kUsage =
+    "usage: glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]...\n"
+    "  --frames N   frames timed per scene, interleaved with the bare pass (default 11; --quick: 3)\n"
+    "  --quick      fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy\n"
+    "  --json FILE  also write the figures as JSON (\"format\": \"glint-bench\")\n"
+    "  --scene NAME time only this standard scene, no program figures (repeatable; e.g. lambert/4;\n"
+    "               `--scene list` lists them)\n";
+
+constexpr int kWidth = 1280, kHeight = 720;
+
+struct BenchOptions {
+    int frames = 0;  // 0: the default for the mode
+    bool quick = false;
+    std::string jsonPath;
+    std::vector<std::string> sceneNames;  // empty: every standard scene
+    int coldStarts() const { return quick ? 3 : 11; }
+    int thumbnails() const { return quick ? 8 : 40; }
+    int framesPerScene() const { return frames ? frames : quick ? 3 : 11; }
+};
+
+int usageError(const std::string& message) {
+    std::fprintf(stderr, "glint bench: %s\n%s", message.c_str(), kUsage);
+    return 2;
+}
+
+// --- statistics ---------------------------------------------------------------------------------
+
+struct Timing {
+    double median = 0, lowerQuartile = 0, upperQuartile = 0, min = 0, max = 0;  // [ms]
+};
+
+Timing summarize(std::vector<double> samples) {
+    std::sort(samples.begin(), samples.end());
+    const auto at = [&](double fraction) { return samples[static_cast<size_t>(fraction * (samples.size() - 1) + 0.5)]; };
+    return {at(0.5), at(0.25), at(0.75), samples.front(), samples.back()};
+}
+
+json toJson(const Timing& timing) {
+    return {{"median", timing.median}, {"q1", timing.lowerQuartile}, {"q3", timing.upperQuartile},
+            {"min", timing.min}, {"max", timing.max}};
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// --- child processes ----------------------------------------------------------------------------
+
+struct ChildRun {
+    double wallMs = 0;
+    double peakMegabytes = 0;  // the child's maximum resident set
+    bool succeeded = false;
+};
+
+// Runs this executable with `arguments`, output discarded, and waits for it.
+ChildRun runSelf(const std::vector<std::string>& arguments) {
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
+    std::vector<std::string> storage = {self};
+    storage.insert(storage.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    for (std::string& argument : storage) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    ChildRun run;
+    const auto start = std::chrono::steady_clock::now();
+    pid_t child = 0;
+    if (posix_spawn(&child, self.c_str(), &actions, nullptr, argv.data(), environ) == 0) {
+        int status = 0;
+        rusage usage{};
+        if (wait4(child, &status, 0, &usage) == child) {
+            run.wallMs = millisecondsSince(start);
+            run.peakMegabytes = usage.ru_maxrss / 1024.0;  // kB on Linux
+            run.succeeded = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        }
+    }
+    posix_spawn_file_actions_destroy(&actions);
+    return run;
+}
+
+// --- scene timing -------------------------------------------------------------------------------
+
+struct SceneResult {
+    std::string name, family;
+    Timing frame, radiance, display, bare;
+    double ratio = 0, radianceRatio = 0;
+};
+
+// Times `frames` frames of the scene (radiance pass, then display pass) and as many bare passes,
+// interleaved frame by frame, alternating which goes first, each ended by glFinish.
+Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benchScene, int frames) {
+    Renderer& renderer = headless.renderer();
+    const Scene scene = benchScene.build();
+    GLINT_CHECK(!scene.objects.empty());
+    auto bare = BareShadingPass::create(renderer.sources(), scene.materials.at(scene.objects[0].materialIndex));
+    if (!bare) return bare.error();
+    std::vector<double> frameMs, radianceMs, displayMs, bareMs;
+    Status failure = success();
+    const auto drawScene = [&] {
+        const auto start = std::chrono::steady_clock::now();
+        if (Status status = renderer.renderRadiance(scene, kWidth, kHeight); !status) failure = status;
+        glFinish();
+        const double radiance = millisecondsSince(start);
+        renderer.displayOffscreen(scene.display);
+        glFinish();
+        frameMs.push_back(millisecondsSince(start));
+        radianceMs.push_back(radiance);
+        displayMs.push_back(frameMs.back() - radiance);
+    };
+    const auto drawBare = [&] {
+        const auto start = std::chrono::steady_clock::now();
+        (*bare)->draw(scene, kWidth, kHeight);
+        glFinish();
+        bareMs.push_back(millisecondsSince(start));
+    };
+    drawScene();  // compiles the programs and allocates the targets: not counted
+    drawBare();
+    if (!failure) return failure.error();
+    frameMs.clear(), radianceMs.clear(), displayMs.clear(), bareMs.clear();
+    for (int i = 0; i < frames; ++i) {
+        if (i % 2 == 0) drawScene(), drawBare();
+        else drawBare(), drawScene();
+    }
+    if (!failure) return failure.error();
+    SceneResult result{benchScene.name, benchScene.family, summarize(frameMs), summarize(radianceMs),
+                       summarize(displayMs), summarize(bareMs)};
+    result.ratio = result.frame.median / result.bare.median;
+    result.radianceRatio = result.radiance.median / result.bare.median;
+    return result;
+}
+
+// --- whole-program figures ----------------------------------------------------------------------
+
+struct ProgramFigures {
+    Timing coldStart;
+    double coldStartPeakMegabytes = 0;
+    int thumbnailCount = 0;
+    double thumbnailsPerSecond = 0;
+    double peakMegabytes = 0;  // this process: VmHWM
+};
+
+double peakResidentMegabytes() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // "VmHWM:  123 kB"
+    return 0.0;
+}
+
+// Cold start: `glint render` of the default scene at 512×512 in a fresh process, `runs` times.
+// Thumbnails: one `glint thumbnails --jobs 1` process over `count` materials at 256×256, start-up
+// and contact sheet included (as tests/bench/thumbnails_bench.sh).
+Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::path& work) {
+    ProgramFigures figures;
+    const std::string scenePath = (work / "scene.json").string();
+    if (Status saved = saveScene(defaultScene(), scenePath); !saved) return saved.error();
+    std::vector<double> coldStartMs;
+    for (int i = 0; i < options.coldStarts(); ++i) {
+        const ChildRun run = runSelf({"render", scenePath, "-o", (work / "cold.png").string(), "--size", "512x512"});
+        if (!run.succeeded) return makeError("glint render " + scenePath + " failed in the cold-start run");
+        coldStartMs.push_back(run.wallMs);
+        figures.coldStartPeakMegabytes = std::max(figures.coldStartPeakMegabytes, run.peakMegabytes);
+    }
+    figures.coldStart = summarize(coldStartMs);
+    const fs::path materials = work / "materials";
+    fs::create_directories(materials);
+    for (int i = 0; i < options.thumbnails(); ++i) {
+        Material material = Material::withDefaults("bench", i % 2 ? BrdfModel::BlinnPhong : BrdfModel::Lambert);
+        material.values[0] = 0.05f + 0.9f * static_cast<float>(i % 7) / 7.0f;
+        const std::string path = (materials / ("material_" + std::to_string(i) + ".json")).string();
+        if (Status saved = saveMaterial(material, path); !saved) return saved.error();
+    }
+    figures.thumbnailCount = options.thumbnails();
+    const ChildRun thumbnails = runSelf({"thumbnails", materials.string(), "-o", (work / "thumbnails").string(), "--jobs", "1"});
+    if (!thumbnails.succeeded) return makeError("glint thumbnails " + materials.string() + " failed");
+    figures.thumbnailsPerSecond = 1000.0 * figures.thumbnailCount / thumbnails.wallMs;
+    figures.peakMegabytes = peakResidentMegabytes();
+    return figures;
+}
+
+// --- output -------------------------------------------------------------------------------------
+
+void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& program, const BenchOptions& options,
+                const std::string& rendererDescription) {
+    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the bare pass (%s)\n", kWidth, kHeight,
+                options.framesPerScene(), rendererDescription.c_str());
+    std::printf("%-20s %-16s %9s %9s %9s %9s %9s %7s %9s\n", "scene", "family", "frame ms", "IQR ms", "radiance", "display",
+                "bare ms", "ratio", "rad.ratio");
+    for (const SceneResult& scene : scenes)
+        std::printf("%-20s %-16s %9.2f %9.2f %9.2f %9.2f %9.2f %7.3f %9.3f\n", scene.name.c_str(), scene.family.c_str(),
+                    scene.frame.median, scene.frame.upperQuartile - scene.frame.lowerQuartile, scene.radiance.median,
+                    scene.display.median, scene.bare.median, scene.ratio, scene.radianceRatio);
+    if (!options.sceneNames.empty()) return;  // --scene: the scenes only
+    std::printf("cold start (glint render, 512x512, child process): median %.0f ms over %d runs (IQR %.0f ms), peak %.0f MB\n",
+                program.coldStart.median, options.coldStarts(), program.coldStart.upperQuartile - program.coldStart.lowerQuartile,
+                program.coldStartPeakMegabytes);
+    std::printf("thumbnails (glint thumbnails --jobs 1, %d materials at 256x256, one process): %.1f per second\n",
+                program.thumbnailCount, program.thumbnailsPerSecond);
+    std::printf("peak memory of this bench process (VmHWM): %.0f MB\n", program.peakMegabytes);
+}
+
+json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& program, const BenchOptions& options,
+            const std::string& rendererDescription) {
+    json sceneRows = json::array();
+    for (const SceneResult& scene : scenes)
+        sceneRows.push_back({{"name", scene.name}, {"family", scene.family}, {"frame_ms", toJson(scene.frame)},
+                             {"radiance_ms", toJson(scene.radiance)}, {"display_ms", toJson(scene.display)},
+                             {"bare_ms", toJson(scene.bare)}, {"ratio", scene.ratio}, {"radiance_ratio", scene.radianceRatio}});
+    json figures = {{"format", "glint-bench"}, {"version", 1}, {"renderer", rendererDescription},
+                    {"width", kWidth}, {"height", kHeight}, {"frames", options.framesPerScene()}, {"quick", options.quick},
+                    {"scenes", sceneRows}};
+    if (!options.sceneNames.empty()) return figures;  // --scene: the scenes only
+    figures.update(json{{"cold_start_ms", toJson(program.coldStart)}, {"cold_start_runs", options.coldStarts()},
+            {"cold_start_peak_mb", program.coldStartPeakMegabytes},
+            {"thumbnails", program.thumbnailCount}, {"thumbnails_per_second", program.thumbnailsPerSecond},
+            {"peak_memory_mb", program.peakMegabytes}});
+    return figures;
+}
+
+}  // namespace
+
+// --- the command --------------------------------------------------------------------------------
+
+int runBenchCommand(const std::vector<std::string>& arguments) {
+    BenchOptions options;
+    const std::vector<CommandOption> known = {
+        {{"--frames"}, "a number", wholeNumberOption(options.frames, 1, 1000, "--frames needs a number from 1 to 1000")},
+        {{"--quick"}, "", [&](const std::string&) { options.quick = true; return std::string(); }},
+        {{"--json"}, "a file",
+         [&](const std::string& value) {
+             std::error_code error;  // the non-throwing forms: no exception escapes
+             const fs::path folder = value.empty() ? fs::path() : fs::absolute(value, error).parent_path();
+             if (value.empty() || error || fs::is_directory(value, error) || !fs::is_directory(folder, error))
+                 return "--json needs a file in an existing folder (got \"" + value + "\")";
+             options.jsonPath = value;
+             return std::string();
+         }},
+        {{"--scene"}, "a scene name",
+         [&](const std::string& value) {
+             const auto& all = benchScenes();
+             const bool exists = std::any_of(all.begin(), all.end(), [&](const BenchScene& scene) { return scene.name == value; });
+             if (value != "list" && !exists) return "--scene: no standard scene is named \"" + value + "\" (`--scene list` lists them)";
+             options.sceneNames.push_back(value);
+             return std::string();
+         }},
+    };
+    auto parsed = parseCommandOptions(arguments, known, "argument");
+    if (!parsed) return usageError(parsed.error().message);
+    if (parsed->help) {
+        std::printf("%s", kUsage);
+        return 0;
+    }
+    if (!parsed->positionals.empty()) return usageError("takes no arguments (got " + parsed->positionals[0] + ")");
+    if (std::find(options.sceneNames.begin(), options.sceneNames.end(), "list") != options.sceneNames.end()) {
+        for (const BenchScene& scene : benchScenes()) std::printf("%-20s %s\n", scene.name.c_str(), scene.family.c_str());
+        return 0;
+    }
+
+    auto headless = HeadlessRenderer::create();
+    if (!headless) {
+        std::fprintf(stderr, "glint bench: %s\n", headless.error().format().c_str());
+        return 2;
+    }
+    std::vector<SceneResult> scenes;
+    for (const BenchScene& benchScene : benchScenes()) {
+        const auto& only = options.sceneNames;
+        if (!only.empty() && std::find(only.begin(), only.end(), benchScene.name) == only.end()) continue;
+        auto result = timeScene(**headless, benchScene, options.framesPerScene());
+        if (!result) {
+            std::fprintf(stderr, "glint bench: %s: %s\n", benchScene.name.c_str(), result.error().format().c_str());
+            return 1;
+        }
+        scenes.push_back(std::move(*result));
+    }
+    const std::string description = (*headless)->renderer().description();
+    ProgramFigures program;
+    if (options.sceneNames.empty()) {
+        const fs::path work = fs::temp_directory_path() / ("glint-bench-" + std::to_string(getpid()));
+        fs::create_directories(work);
+        auto measured = measureProgram(options, work);
+        std::error_code ignored;
+        fs::remove_all(work, ignored);
+        if (!measured) {
+            std::fprintf(stderr, "glint bench: %s\n", measured.error().format().c_str());
+            return 1;
+        }
+        program = *measured;
+    }
+    printTable(scenes, program, options, description);
+    if (!options.jsonPath.empty()) {
+        if (Status written = writeFileAtomically(options.jsonPath, toJson(scenes, program, options, description).dump(2) + "\n");
+            !written) {
+            std::fprintf(stderr, "glint bench: %s\n", written.error().format().c_str());
+            return 1;
+        }
+        std::printf("figures written to %s\n", options.jsonPath.c_str());
+    }
+    return 0;
+}
+
+}  // namespace glint

@@ -1,0 +1,87 @@
+// The standard scenes of `glint bench` (see bench_scenes.h).
+#include "cli/bench_scenes.h"
+
+#include "brdf/param_table.h"
+
+namespace glint {
+namespace {
+
+// A unit sphere at the origin seen from 1.5 m with the default 40° field of view: it covers every
+// pixel of the frame, so each pixel runs the surface shader once (the bare pass's pixel count).
+Scene frameFillingSphere(const Material& material, int lightCount) {
+    Scene scene;
+    scene.camera.position = {0.0f, 0.0f, 1.5f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.materials = {material};
+    scene.objects.push_back({"sphere", SphereShape{}, 0});
+    scene.background.kind = BackgroundKind::Sky;  // what mirror and glass reflect
+    const glm::vec3 positions[4] = {{2, 2, 2}, {-2, 1, 2}, {0, -2, 3}, {1, 0, 4}};
+    for (int i = 0; i < lightCount; ++i) {
+        Light light;
+        light.name = "bench " + std::to_string(i);
+        light.type = i % 2 ? LightType::Directional : LightType::Point;
+        light.position = positions[i];
+        light.direction = -positions[i];
+        light.irradiance = 1.0f;
+        scene.lights.push_back(light);
+    }
+    return scene;
+}
+
+// The model's defaults with one enum parameter set by its option id ("beckmann").
+Material withOption(BrdfModel model, const char* param, const char* option) {
+    Material material = Material::withDefaults(std::string(modelInfo(model).id), model);
+    const auto table = modelInfo(model).params;
+    const int index = findParam(table, param);
+    for (size_t i = 0; index >= 0 && i < table[index].options.size(); ++i)
+        if (std::string_view(table[index].options[i].id) == option)
+            material.values[packedOffset(table, index)] = static_cast<float>(i);
+    return material;
+}
+
+struct FamilyMember {
+    const char* family;
+    const char* name;  // the row's name before "/lights"
+    Material material;
+};
+
+std::vector<BenchScene> makeBenchScenes() {
+    auto defaults = [](BrdfModel model) { return Material::withDefaults(modelInfo(model).id, model); };
+    const FamilyMember members[] = {
+        {"diffuse", "lambert", defaults(BrdfModel::Lambert)},
+        {"diffuse", "oren_nayar", defaults(BrdfModel::OrenNayar)},
+        {"phong", "phong", defaults(BrdfModel::Phong)},
+        {"phong", "blinn_phong", defaults(BrdfModel::BlinnPhong)},
+        {"microfacet", "ggx", withOption(BrdfModel::CookTorrance, "distribution", "ggx")},
+        {"microfacet", "beckmann", withOption(BrdfModel::CookTorrance, "distribution", "beckmann")},
+        {"anisotropic", "ggx_anisotropic", defaults(BrdfModel::GgxAnisotropic)},
+        {"anisotropic", "ward", defaults(BrdfModel::Ward)},
+        {"retroreflective", "retroreflective", defaults(BrdfModel::Retroreflective)},
+        {"specular", "mirror", defaults(BrdfModel::Mirror)},
+        {"specular", "glass", defaults(BrdfModel::Glass)},
+    };
+    std::vector<BenchScene> scenes;
+    for (const FamilyMember& member : members)
+        for (int lights : {1, 4})
+            scenes.push_back({std::string(member.name) + "/" + std::to_string(lights), member.family,
+                              [material = member.material, lights] { return frameFillingSphere(material, lights); }});
+    // A large mesh: the same sphere as 1,000,000 triangles (1000 segments × 500 rings) drawn
+    // through the triangle path with Phong interpolation, Blinn-Phong, 4 lights.
+    scenes.push_back({"mesh_1m_triangles/4", "mesh", [material = defaults(BrdfModel::BlinnPhong)] {
+                          Scene scene = frameFillingSphere(material, 4);
+                          auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
+                          sphere.segments = 1000, sphere.rings = 500;
+                          scene.objects[0].interpolation = SurfaceInterpolation::Phong;
+                          return scene;
+                      }});
+    return scenes;
+}
+
+}  // namespace
+
+const std::vector<BenchScene>& benchScenes() {
+    static const std::vector<BenchScene> scenes = makeBenchScenes();
+    return scenes;
+}
+
+}  // namespace glint

@@ -1,0 +1,28 @@
+// The display chain in GLSL: radiance → exposure → tone map → clamp → sRGB or gamma → 8-bit
+// quantisation; twin of core/display/display_chain.h (same formulas and citations there). Used by
+// the display pass (display.frag) and, fused, by the passes that write radiance
+// (display_output.glsl). It does not read or write any image itself.
+
+uniform float exposureScale;  // 2^EV
+uniform int transfer;         // 0: sRGB, 1: gamma
+uniform float gamma;
+uniform int toneMap;          // 0: none (clip), 1: Reinhard x/(1+x), 2: ACES filmic (Narkowicz 2015)
+
+float encodeSrgb(float linear) {
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+vec3 applyToneMap(vec3 exposed) {
+    if (toneMap == 1) return exposed / (1.0 + exposed);
+    if (toneMap == 2) return exposed * (2.51 * exposed + 0.03) / (exposed * (2.43 * exposed + 0.59) + 0.14);
+    return exposed;
+}
+
+// The display-encoded value of a radiance, quantised to the 8-bit level it will be stored as.
+vec3 displayEncode(vec3 value) {
+    vec3 exposed = clamp(applyToneMap(max(value * exposureScale, 0.0)), 0.0, 1.0);
+    vec3 encoded = transfer == 0
+        ? vec3(encodeSrgb(exposed.r), encodeSrgb(exposed.g), encodeSrgb(exposed.b))
+        : pow(exposed, vec3(1.0 / gamma));
+    return floor(encoded * 255.0 + 0.5) / 255.0;
+}
