@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/headless.h"
+#include "cli/export_command.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
 #include "cli/snapshot_command.h"
@@ -27,6 +28,8 @@ constexpr const char* kUsage =
     "                              compare a suite of scenes and materials with their goldens\n"
     "  glint thumbnails DIR -o OUTDIR [--size N] [--jobs N]\n"
     "                              one thumbnail per material and a labelled contact sheet\n"
+    "  glint export IN -o OUT.mtl|OUT.gltf\n"
+    "                              write a material (file, scene, .mtl or .gltf) as .mtl or glTF\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
     "  glint --help | --version\n"
@@ -67,6 +70,8 @@ int main(int argc, char** argv) {
         return glint::runSnapshotCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "thumbnails")
         return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "export")
+        return glint::runExportCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")
         return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {

@@ -10,6 +10,7 @@
 #include <imgui_stdlib.h>
 
 #include "editor/key_events.h"
+#include "interchange/import_formats.h"
 
 namespace glint {
 namespace {
@@ -94,6 +95,8 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.purpose = purpose;
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
                                                                 : std::vector<std::string>{".json"};
+    if (purpose == FilePurpose::OpenScene || purpose == FilePurpose::OpenMaterial)  // .mtl, .gltf, ...
+        for (const ImportFormat& format : importFormats()) browser.extensions.push_back(format.extension);
     browser.error.clear();
     std::error_code error;
     fs::path start = startPath.empty() ? fs::current_path(error) : fs::absolute(startPath, error);
