@@ -404,6 +404,8 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
             root.failHere("the file has no material and no light (KHR_lights_punctual) for Glint to open");
     } catch (const JsonReadError& error) {
         return error.diagnostic;
+    } catch (const nlohmann::json::exception& error) {  // a shape no check above foresaw: still a message, never a crash
+        return makeError(std::string("malformed glTF: ") + error.what(), {file});
     }
     return result;
 }
