@@ -66,6 +66,13 @@ TEST(Mtl, IllumModelsMapToTheNearestGlintModel) {
     EXPECT_TRUE(hasWarning(file, "illum 4"));
 }
 
+// Found by fuzz_mtl: a line of only a form feed once indexed an empty word list.
+TEST(Mtl, LinesOfOtherWhitespaceAreBlank) {
+    const ImportedFile file = parseOk("newmtl a\n\f\n\v \x0c\nKd 0.5\n");
+    ASSERT_EQ(file.materials.size(), 1u);
+    EXPECT_EQ(paramValue(file.materials[0].material, "diffuse_albedo"), glm::vec3(0.5f));
+}
+
 TEST(Mtl, ValidButUnusedStatementsWarnWithTheirLine) {
     const ImportedFile file = parseOk("newmtl a\nKd 0.5\nKe 1 1 1\nTf 1 1 1\nsharpness 60\nPr 0.5\nd 0.5\n");
     EXPECT_TRUE(hasWarning(file, "test.mtl:3: warning: 'Ke'"));
@@ -153,6 +160,7 @@ TEST(Mtl, MalformedFilesGiveLocatedErrors) {
         {"newmtl caf\xc3\n", "test.mtl:1: the file is not UTF-8"},
         {"newmtl a\n\xff\xfe Kd 1\n", "test.mtl:2: the file is not UTF-8"},
         {"newmtl a\nKd 0.5 0.5 0.5 0.5\n", "'Kd' takes one (grey) or three"},
+        {"newmtl a\nmap_Kd \x01 -bm 0,5 bump.png\n", "test.mtl:2: control character 0x01"},
     };
     for (const auto& c : cases) {
         auto parsed = parseMtl(c.text, "test.mtl");

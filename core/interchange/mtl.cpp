@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <sstream>
 
@@ -56,10 +57,19 @@ std::vector<std::string> splitWords(const std::string& text) {
     return words;
 }
 
+std::string hexByte(char c) {
+    char text[3];
+    std::snprintf(text, sizeof text, "%02x", static_cast<unsigned char>(c));
+    return text;
+}
+
+// The whitespace of splitWords (std::isspace in the C locale), so that the two agree.
+constexpr const char* kWhitespace = " \t\r\n\f\v";
+
 std::string trim(const std::string& text) {
-    const size_t first = text.find_first_not_of(" \t\r");
+    const size_t first = text.find_first_not_of(kWhitespace);
     if (first == std::string::npos) return "";
-    return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+    return text.substr(first, text.find_last_not_of(kWhitespace) - first + 1);
 }
 
 // --- statements -----------------------------------------------------------------------------
@@ -271,10 +281,15 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
         int number = 0;
         for (std::string raw; std::getline(stream, raw);) {
             ++number;
+            for (const char c : raw)  // text, not binary: a NUL or an escape cannot be part of a name or path
+                if (static_cast<unsigned char>(c) < 0x20 && !std::strchr("\t\r\f\v", c))
+                    throw MtlError{makeError("control character 0x" + hexByte(c) + " in the line: not a text .mtl file",
+                                             {file, number, 0})};
             const size_t comment = raw.find('#');
             const std::string content = trim(comment == std::string::npos ? raw : raw.substr(0, comment));
             if (content.empty()) continue;
             Line line{&file, number, splitWords(content), ""};
+            if (line.words.empty()) continue;
             line.rest = trim(content.substr(line.words[0].size()));
             if (line.words[0] == "newmtl") {
                 if (line.rest.empty()) line.fail("'newmtl' needs a material name");
