@@ -135,7 +135,7 @@ TEST(Mtl, ExportWarnsAboutWhatMtlCannotHold) {
 // The malformed corpus: each entry must give an error naming file:line and the cause.
 TEST(Mtl, MalformedFilesGiveLocatedErrors) {
     const struct {
-        const char* text;
+        std::string text;
         const char* expected;
     } cases[] = {
         {"", "no material in the file"},
@@ -161,6 +161,7 @@ TEST(Mtl, MalformedFilesGiveLocatedErrors) {
         {"newmtl a\n\xff\xfe Kd 1\n", "test.mtl:2: the file is not UTF-8"},
         {"newmtl a\nKd 0.5 0.5 0.5 0.5\n", "'Kd' takes one (grey) or three"},
         {"newmtl a\nmap_Kd \x01 -bm 0,5 bump.png\n", "test.mtl:2: control character 0x01"},
+        {std::string("newmtl a\nmap_Kd x\0y.png\n", 24), "test.mtl:2: control character 0x00"},
     };
     for (const auto& c : cases) {
         auto parsed = parseMtl(c.text, "test.mtl");

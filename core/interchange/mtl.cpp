@@ -6,7 +6,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <set>
 #include <sstream>
 
@@ -282,7 +281,7 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
         for (std::string raw; std::getline(stream, raw);) {
             ++number;
             for (const char c : raw)  // text, not binary: a NUL or an escape cannot be part of a name or path
-                if (static_cast<unsigned char>(c) < 0x20 && !std::strchr("\t\r\f\v", c))
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v')
                     throw MtlError{makeError("control character 0x" + hexByte(c) + " in the line: not a text .mtl file",
                                              {file, number, 0})};
             const size_t comment = raw.find('#');
