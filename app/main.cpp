@@ -8,6 +8,7 @@
 
 #include "cli/bench_command.h"
 #include "cli/headless.h"
+#include "cli/export_command.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
 #include "cli/snapshot_command.h"
@@ -33,6 +34,8 @@ constexpr const char* kUsage =
     "                              one thumbnail per material and a labelled contact sheet\n"
     "  glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]...\n"
     "                              time the standard scenes against the bare shading pass\n"
+    "  glint export IN -o OUT.mtl|OUT.gltf\n"
+    "                              write a material (file, scene, .mtl or .gltf) as .mtl or glTF\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
     "  glint --help | --version\n"
@@ -75,6 +78,8 @@ int main(int argc, char** argv) {
         return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "bench")
         return glint::runBenchCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "export")
+        return glint::runExportCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")
         return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {

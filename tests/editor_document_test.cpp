@@ -15,27 +15,16 @@
 #include "editor/texture_panel.h"
 #include "image/image_io.h"
 #include "scene/scene_json.h"
+#include "editor_test_support.h"
 #include "test_support.h"
 
 namespace glint {
 namespace {
 
 // Each test gets its own state directory (recovery file, settings).
-class EditorDocument : public ::testing::Test {
+class EditorDocument : public test::EditorFixture {
 protected:
-    void SetUp() override {
-        directory_ = test::outputDirectory(std::string("editor_document/") +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        std::filesystem::remove_all(directory_ + "/state");
-        ::setenv("GLINT_STATE_DIR", (directory_ + "/state").c_str(), 1);
-    }
-    void TearDown() override { ::unsetenv("GLINT_STATE_DIR"); }
-    std::string write(const std::string& name, const std::string& text) {
-        const std::string path = directory_ + "/" + name;
-        std::ofstream(path) << text;
-        return path;
-    }
-    std::string directory_;
+    const char* suiteFolder() const override { return "editor_document"; }
 };
 
 TEST_F(EditorDocument, DroppedMaterialGoesOntoTheSelectedObjectAsOneUndoStep) {

@@ -14,7 +14,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference] [--wireframe] [--normals]\n"
-    "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256)\n"
+    "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256);\n"
+    "                     also a Wavefront .mtl or a glTF .gltf (its first material on the stage)\n"
     "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
@@ -82,7 +83,9 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
 
-    auto scene = loadRenderable(options.scenePath);  // a material file renders on the preview stage
+    std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
+    auto scene = loadRenderable(options.scenePath, 0, 0, &warnings);  // a material renders on the preview stage
+    for (const Diagnostic& warning : warnings) std::fprintf(stderr, "glint render: %s\n", warning.format().c_str());
     if (!scene) {
         std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
         return 2;

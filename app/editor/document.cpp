@@ -7,6 +7,7 @@
 
 #include "edit/crash_guard.h"
 #include "editor/mesh_loading.h"
+#include "editor/interchange_open.h"
 #include "editor/settings.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
@@ -87,6 +88,7 @@ bool saveMaterialTo(EditorState& state, const std::string& path) {
 
 void openDroppedFile(EditorState& state, const std::string& path) {
     if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
+    if (openInterchangeFile(state, path)) return;  // .mtl, .gltf: by extension (interchange/import_formats.h)
     auto text = readTextFile(path);
     if (text && text->find("\"glint-material\"") != std::string::npos) openMaterialFile(state, path);
     else openSceneGuarded(state, path);

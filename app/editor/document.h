@@ -17,8 +17,9 @@ bool saveSceneTo(EditorState& state, const std::string& path);
 void saveScene(EditorState& state);
 void openMaterialFile(EditorState& state, const std::string& path);  // into the selected object's material
 bool saveMaterialTo(EditorState& state, const std::string& path);
-// A file dropped on the window: a material file goes into the selected object, anything else
-// is opened as a scene.
+// A file dropped on the window or chosen in File ▸ Open: an interchange file (.mtl, .gltf) and a
+// material file go into the selected object (glTF lights into the scene), anything else is
+// opened as a scene.
 void openDroppedFile(EditorState& state, const std::string& path);
 
 // Runs `action` now when there are no unsaved changes, else asks first (Save / Don't save / Cancel).

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "scene/format_migration.h"
 #include "scene/json_object_reader.h"
 #include "texture/texture_json.h"
 #include "scene/shape_json.h"
@@ -30,7 +31,17 @@ void readHeader(ObjectReader& root, const char* expectedFormat) {
         root.fail("version", "the file is version " + std::to_string(version) +
                                  ", written by a newer Glint; this one reads up to version " +
                                  std::to_string(kSceneFormatVersion));
-    // Older versions would be migrated here, one step at a time; version 1 is the first.
+}
+
+// Upgrades a file written by an older Glint before it is read (format_migration.h).
+Status upgradeOlderVersion(JsonDocument& document, bool isScene) {
+    nlohmann::json& root = document.mutableRoot();
+    if (!root.is_object() || !root.contains("version") || !root["version"].is_number_integer()) return success();
+    const int version = root["version"].get<int>();
+    if (version < 1 || version >= kSceneFormatVersion) return success();  // readHeader judges these
+    Status upgraded = migrate(root, version, kSceneFormatVersion, formatMigrations(), isScene);
+    if (!upgraded) return makeError(upgraded.error().message, document.locate("/version"));
+    return success();
 }
 
 // --- materials ------------------------------------------------------------------------------
@@ -335,6 +346,7 @@ json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
 Result<Scene> parseScene(const std::string& text, const std::string& file) {
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
+    if (Status upgraded = upgradeOlderVersion(*document, true); !upgraded) return upgraded.error();
     try {
         return readScene(*document);
     } catch (const JsonReadError& error) {
@@ -387,6 +399,7 @@ Status saveScene(const Scene& scene, const std::string& path) {
 Result<Material> parseMaterial(const std::string& text, const std::string& file) {
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
+    if (Status upgraded = upgradeOlderVersion(*document, false); !upgraded) return upgraded.error();
     try {
         ObjectReader root = readRoot(*document, "material");
         readHeader(root, kMaterialFormat);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "interchange/import_formats.h"
 #include "scene/json_document.h"
 #include "scene/preview_stage.h"
 #include "scene/scene_json.h"
@@ -12,7 +13,15 @@
 
 namespace glint {
 
-Result<Scene> loadRenderable(const std::string& path, int width, int height) {
+Result<Scene> loadRenderable(const std::string& path, int width, int height, std::vector<Diagnostic>* warnings) {
+    if (const ImportFormat* format = findImportFormat(path)) {
+        auto imported = format->load(path);
+        if (!imported) return imported.error();
+        if (warnings) warnings->insert(warnings->end(), imported->warnings.begin(), imported->warnings.end());
+        if (imported->materials.empty()) return makeError("the file has no material to render", {path});
+        return previewStage(imported->materials.front().material, width > 0 ? width : kDefaultMaterialPreviewSize,
+                            height > 0 ? height : kDefaultMaterialPreviewSize);
+    }
     auto text = readTextFile(path);
     if (!text) return text.error();
     auto document = JsonDocument::parse(*text, path);

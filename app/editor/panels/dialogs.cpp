@@ -111,12 +111,12 @@ void handleFileBrowser(EditorState& state) {
         return;
     }
     switch (state.fileBrowser.purpose) {
-        case FilePurpose::OpenScene: openSceneGuarded(state, *chosen); break;
+        case FilePurpose::OpenScene: openDroppedFile(state, *chosen); break;  // scene, material or interchange file
         case FilePurpose::SaveSceneAs:
             if (saveSceneTo(state, *chosen) && state.continueAfterSaveAs) runActionAfterPrompt(state);
             state.continueAfterSaveAs = false;
             break;
-        case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
+        case FilePurpose::OpenMaterial: openDroppedFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
         case FilePurpose::OpenMesh: startMeshLoad(state, *chosen); break;
         case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;

@@ -11,6 +11,7 @@
 
 #include "editor/key_events.h"
 #include "geometry/mesh_import.h"
+#include "interchange/import_formats.h"
 
 namespace glint {
 namespace {
@@ -103,6 +104,8 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
         browser.extensions.clear();
         for (const std::string& extension : meshFileExtensions()) browser.extensions.push_back("." + extension);
     }
+    if (purpose == FilePurpose::OpenScene || purpose == FilePurpose::OpenMaterial)  // .mtl, .gltf, ...
+        for (const ImportFormat& format : importFormats()) browser.extensions.push_back(format.extension);
     browser.error.clear();
     std::error_code error;
     fs::path start = startPath.empty() ? fs::current_path(error) : fs::absolute(startPath, error);

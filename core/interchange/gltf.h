@@ -1,0 +1,33 @@
+// glTF 2.0 materials and lights: importing pbrMetallicRoughness (+ KHR_materials_ior, _specular,
+// _transmission, _volume; _clearcoat and _emissive_strength are read and reported, not rendered)
+// into Glint's Cook-Torrance / glass models and KHR_lights_punctual lights with their photometric
+// units converted; exporting a material on a UV sphere, plus lights, as a self-contained .gltf.
+// Meshes, textures' pixels, animations and cameras of an imported file are not read.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "interchange/imported.h"
+
+namespace glint {
+
+// Parses glTF 2.0 JSON text (not .glb); `file` names it in messages (file:line:column and the
+// JSON key). Every material becomes an ImportedMaterial, every light used by a node a Light.
+Result<ImportedFile> parseGltf(const std::string& text, const std::string& file);
+Result<ImportedFile> loadGltf(const std::string& path);
+
+// A .gltf with one node: a UV sphere of radius 1 carrying `material`, the buffer embedded as a
+// base64 data URI, and one node per light (KHR_lights_punctual). Warnings say what glTF cannot
+// hold (e.g. an ambient light, a Beckmann distribution).
+ExportedText writeGltf(const ImportedMaterial& material, std::span<const Light> lights);
+
+// Photometric ↔ radiometric light units at 683 lm/W weighted by the luminance Y of the colour
+// (light/photometry.h): glTF point and spot intensity in cd ↔ Glint's power Φ in W of the
+// isotropic light (I = Φ/4π); directional illuminance in lx ↔ irradiance M in W/m².
+float radiantPowerFromCandela(float candela, glm::vec3 color);
+float candelaFromRadiantPower(float radiantPower, glm::vec3 color);
+float irradianceFromLux(float lux, glm::vec3 color);
+float luxFromIrradiance(float irradiance, glm::vec3 color);
+
+}  // namespace glint

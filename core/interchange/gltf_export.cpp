@@ -1,0 +1,236 @@
+// glTF 2.0 export (see gltf.h): one UV sphere carrying the material, the lights as nodes with
+// KHR_lights_punctual, the geometry in one buffer embedded as a base64 data URI.
+// Sections: geometry buffer · material · lights · assembly.
+#include "interchange/gltf.h"
+
+#include <cmath>
+#include <algorithm>
+#include <set>
+
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include "brdf/fresnel.h"
+#include "geometry/mesh.h"
+#include "interchange/base64.h"
+#include "interchange/material_values.h"
+#include "light/photometry.h"
+
+namespace glint {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kSphereSegments = 48, kSphereRings = 24;
+// glTF component types and buffer-view targets (glTF 2.0 §5.1.3, §5.11.4).
+constexpr int kFloat = 5126, kUnsignedShort = 5123, kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+
+// --- geometry buffer ------------------------------------------------------------------------
+
+template <class T>
+void append(std::vector<uint8_t>& bytes, const T& value) {
+    const auto* raw = reinterpret_cast<const uint8_t*>(&value);
+    bytes.insert(bytes.end(), raw, raw + sizeof(T));
+}
+
+// Positions, normals (float VEC3 each) then indices (uint16), with accessors and views.
+void addSphere(json& gltf) {
+    const Mesh sphere = makeUvSphere(glm::vec3(0.0f), 1.0f, kSphereSegments, kSphereRings);
+    std::vector<uint8_t> bytes;
+    glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+    for (const Vertex& vertex : sphere.vertices) {
+        append(bytes, vertex.position);
+        low = glm::min(low, vertex.position);
+        high = glm::max(high, vertex.position);
+    }
+    const size_t positionBytes = bytes.size();
+    for (const Vertex& vertex : sphere.vertices) append(bytes, vertex.normal);
+    const size_t normalBytes = bytes.size() - positionBytes;
+    for (uint32_t index : sphere.indices) append(bytes, static_cast<uint16_t>(index));
+    const size_t indexBytes = bytes.size() - positionBytes - normalBytes;
+    while (bytes.size() % 4) bytes.push_back(0);  // buffer length a multiple of 4 (§5.9)
+    const int vertexCount = static_cast<int>(sphere.vertices.size());
+    gltf["buffers"] = json::array({{{"byteLength", bytes.size()},
+                                    {"uri", "data:application/octet-stream;base64," + encodeBase64(bytes)}}});
+    gltf["bufferViews"] = json::array({
+        {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positionBytes}, {"target", kArrayBuffer}},
+        {{"buffer", 0}, {"byteOffset", positionBytes}, {"byteLength", normalBytes}, {"target", kArrayBuffer}},
+        {{"buffer", 0}, {"byteOffset", positionBytes + normalBytes}, {"byteLength", indexBytes}, {"target", kElementArrayBuffer}},
+    });
+    gltf["accessors"] = json::array({
+        {{"bufferView", 0}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"},
+         {"min", {low.x, low.y, low.z}}, {"max", {high.x, high.y, high.z}}},
+        {{"bufferView", 1}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}},
+        {{"bufferView", 2}, {"componentType", kUnsignedShort}, {"count", sphere.indices.size()}, {"type", "SCALAR"}},
+    });
+    gltf["meshes"] = json::array({{{"name", "sphere"},
+                                   {"primitives", json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
+                                                                {"indices", 2},
+                                                                {"material", 0}}})}}});
+}
+
+// --- material -------------------------------------------------------------------------------
+
+json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
+
+// Glint → glTF: Cook-Torrance with κ = 0 is a dielectric (baseColor = ρ_d, ior = n); with κ > 0
+// a metal (baseColor = F0 of n + iκ); glass is a transmitting dielectric with volume absorption.
+// Other models go to the nearest metallic-roughness material, with a warning.
+json materialJson(const Material& material, std::set<std::string>& extensionsUsed, std::vector<Diagnostic>& warnings) {
+    auto lost = [&](const std::string& what) {
+        warnings.push_back(makeError("warning: '" + material.name + "' (" + modelInfo(material.model).id + "): " + what));
+    };
+    json out = {{"name", material.name}};
+    json pbr;
+    json extensions = json::object();
+    auto setIor = [&](float ior) {
+        extensions["KHR_materials_ior"] = {{"ior", ior}};
+        extensionsUsed.insert("KHR_materials_ior");
+    };
+    auto dielectric = [&](glm::vec3 diffuse, glm::vec3 ior, float roughness) {
+        pbr = {{"baseColorFactor", {diffuse.r, diffuse.g, diffuse.b, 1.0}}, {"metallicFactor", 0.0},
+               {"roughnessFactor", std::sqrt(roughness)}};
+        if (ior.r != ior.g || ior.g != ior.b) lost("a per-channel index is written as its green channel " + std::to_string(ior.g));
+        setIor(ior.g);
+    };
+    auto metal = [&](glm::vec3 diffuse, glm::vec3 ior, glm::vec3 extinction, float roughness) {
+        const glm::vec3 f0 = fresnelF0(ior, extinction);
+        pbr = {{"baseColorFactor", {f0.r, f0.g, f0.b, 1.0}}, {"metallicFactor", 1.0}, {"roughnessFactor", std::sqrt(roughness)}};
+        if (diffuse != glm::vec3(0.0f)) lost("a metal's diffuse albedo is not kept");
+        if (ior != glm::vec3(1.0f)) lost("n + iκ is written as its normal-incidence reflectance (imported back with n = 1)");
+    };
+    switch (material.model) {
+        case BrdfModel::CookTorrance:
+        case BrdfModel::GgxAnisotropic: {
+            const bool anisotropic = material.model == BrdfModel::GgxAnisotropic;
+            const float alpha = anisotropic ? std::sqrt(paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y"))
+                                            : paramScalar(material, "roughness");
+            if (anisotropic) lost("anisotropy is not kept (α = √(α_x α_y))");
+            const glm::vec3 extinction = paramValue(material, "extinction");
+            if (extinction == glm::vec3(0.0f)) dielectric(paramValue(material, "diffuse_albedo"), paramValue(material, "ior"), alpha);
+            else metal(paramValue(material, "diffuse_albedo"), paramValue(material, "ior"), extinction, alpha);
+            if (!anisotropic && (paramScalar(material, "distribution") != 1.0f || paramScalar(material, "geometry") != 1.0f))
+                lost("glTF's BRDF is GGX with Smith masking; other viewers render it so");
+            if (paramScalar(material, "fresnel") != 0.0f) lost("glTF's BRDF uses Schlick's Fresnel; other viewers render it so");
+            break;
+        }
+        case BrdfModel::Mirror:
+            metal(paramValue(material, "diffuse_albedo"), paramValue(material, "ior"), paramValue(material, "extinction"), 0.0f);
+            break;
+        case BrdfModel::Glass: {
+            pbr = {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.0}};
+            setIor(paramScalar(material, "ior"));
+            extensions["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+            extensionsUsed.insert("KHR_materials_transmission");
+            const glm::vec3 absorption = paramValue(material, "absorption");
+            const float strongest = std::max({absorption.r, absorption.g, absorption.b});
+            if (strongest > 0.0f) {
+                // KHR_materials_volume: σ = −ln(c)/d. Choosing d = 1/max σ keeps every c ≥ e^−1 (no underflow).
+                const float distance = 1.0f / strongest;
+                extensions["KHR_materials_volume"] = {{"thicknessFactor", 2.0},  // the sphere's diameter
+                                                      {"attenuationDistance", distance},
+                                                      {"attenuationColor", vec3Json(glm::exp(-absorption * distance))}};
+                extensionsUsed.insert("KHR_materials_volume");
+            }
+            if (paramScalar(material, "transparency") != 0.0f) lost("classic transparency k_t is not kept (glTF is Fresnel)");
+            break;
+        }
+        case BrdfModel::Lambert:
+        case BrdfModel::OrenNayar:
+        case BrdfModel::Retroreflective:
+            dielectric(paramValue(material, "albedo"), glm::vec3(1.5f), 1.0f);
+            lost("written as a rough dielectric (roughness 1) with base colour = albedo");
+            break;
+        case BrdfModel::BlinnPhong:
+        case BrdfModel::Phong:
+        case BrdfModel::Ward: {
+            const float exponent = material.model == BrdfModel::Ward
+                                       ? 2.0f / (paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y")) - 2.0f
+                                       : paramScalar(material, "exponent");
+            const float alpha = std::clamp(std::sqrt(2.0f / (exponent + 2.0f)), 0.001f, 1.0f);  // Walter et al. 2007, eq. 33
+            dielectric(paramValue(material, "diffuse_albedo"), glm::vec3(1.5f), alpha);
+            lost("written as a GGX dielectric (ior 1.5, α = √(2/(n + 2))); k_s is not kept");
+            break;
+        }
+    }
+    out["pbrMetallicRoughness"] = pbr;
+    if (!extensions.empty()) out["extensions"] = extensions;
+    return out;
+}
+
+// --- lights ---------------------------------------------------------------------------------
+
+// A node rotation taking glTF's light axis −Z onto `direction`.
+glm::quat rotationTowards(glm::vec3 direction) {
+    const glm::vec3 from(0, 0, -1), to = glm::normalize(direction);
+    const float cosine = glm::dot(from, to);
+    if (cosine < -0.999999f) return glm::quat(0, 0, 1, 0);  // half turn about +y
+    const glm::vec3 axis = glm::cross(from, to);
+    return glm::normalize(glm::quat(1.0f + cosine, axis.x, axis.y, axis.z));
+}
+
+void addLights(json& gltf, std::span<const Light> lights, std::vector<Diagnostic>& warnings) {
+    json punctual = json::array();
+    for (const Light& light : lights) {
+        auto lost = [&](const std::string& what) { warnings.push_back(makeError("warning: light '" + light.name + "': " + what)); };
+        if (light.type == LightType::Ambient) {
+            lost("glTF has no ambient light; not written");
+            continue;
+        }
+        if (!light.enabled) lost("written although it is switched off (glTF lights have no switch)");
+        if (light.attenuation.enabled) lost("the classic attenuation is not kept (glTF is inverse-square)");
+        json entry = {{"name", light.name}, {"color", vec3Json(light.color)}};
+        json node = {{"name", light.name}};
+        if (light.type == LightType::Directional) {
+            entry["type"] = "directional";
+            entry["intensity"] = luxFromIrradiance(light.irradiance, light.color);
+        } else {
+            entry["type"] = light.type == LightType::Point ? "point" : "spot";
+            entry["intensity"] = candelaFromRadiantPower(light.power, light.color);
+            node["translation"] = vec3Json(light.position);
+        }
+        if (light.type == LightType::Spot) {
+            const float outer = glm::radians(light.coneHalfAngleDegrees);
+            float inner = glm::radians(light.coneHalfAngleDegrees - light.edgeWidthDegrees);
+            if (!(inner < outer)) {
+                inner = outer * 0.999f;
+                lost("a hard edge is written with innerConeAngle just below outerConeAngle (glTF needs inner < outer)");
+            }
+            entry["spot"] = {{"innerConeAngle", inner}, {"outerConeAngle", outer}};
+            if (light.falloffExponent != 0.0f) lost("the cos^a falloff is not kept");
+        }
+        if (light.type != LightType::Point) {
+            const glm::quat rotation = rotationTowards(light.direction);
+            node["rotation"] = {rotation.x, rotation.y, rotation.z, rotation.w};
+        }
+        if (relativeLuminance(light.color) <= 0.0f) lost("a colour of zero luminance has no photometric intensity; written as 0");
+        node["extensions"] = {{"KHR_lights_punctual", {{"light", punctual.size()}}}};
+        punctual.push_back(entry);
+        gltf["nodes"].push_back(node);
+        gltf["scenes"][0]["nodes"].push_back(gltf["nodes"].size() - 1);
+    }
+    if (!punctual.empty()) gltf["extensions"]["KHR_lights_punctual"] = {{"lights", punctual}};
+}
+
+}  // namespace
+
+// --- assembly -------------------------------------------------------------------------------
+
+ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> lights) {
+    ExportedText out;
+    std::set<std::string> extensionsUsed;
+    json gltf = {{"asset", {{"version", "2.0"}, {"generator", "Glint"}}}, {"scene", 0}};
+    gltf["scenes"] = json::array({{{"nodes", json::array({0})}}});
+    gltf["nodes"] = json::array({{{"name", "sphere"}, {"mesh", 0}}});
+    addSphere(gltf);
+    gltf["materials"] = json::array({materialJson(imported.material, extensionsUsed, out.warnings)});
+    if (!imported.textures.empty())
+        out.warnings.push_back(makeError("warning: texture references are not written to glTF (Glint does not render them)"));
+    addLights(gltf, lights, out.warnings);
+    if (gltf.contains("extensions")) extensionsUsed.insert("KHR_lights_punctual");
+    if (!extensionsUsed.empty()) gltf["extensionsUsed"] = json(std::vector<std::string>(extensionsUsed.begin(), extensionsUsed.end()));
+    out.text = gltf.dump(2) + "\n";
+    return out;
+}
+
+}  // namespace glint

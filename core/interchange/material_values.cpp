@@ -1,0 +1,59 @@
+// Named access to packed material values (see material_values.h).
+#include "interchange/material_values.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace glint {
+namespace {
+
+float* slot(Material& material, std::string_view name, int* count) {
+    const auto table = modelInfo(material.model).params;
+    const int index = findParam(table, name);
+    GLINT_CHECK(index >= 0);
+    *count = componentCount(table[index].kind);
+    return material.values.data() + packedOffset(table, index);
+}
+
+}  // namespace
+
+glm::vec3 paramValue(const Material& material, std::string_view name) {
+    int count = 0;
+    const float* value = slot(const_cast<Material&>(material), name, &count);
+    return count == 3 ? glm::vec3(value[0], value[1], value[2]) : glm::vec3(value[0]);
+}
+
+float paramScalar(const Material& material, std::string_view name) { return paramValue(material, name).x; }
+
+void setParam(Material& material, std::string_view name, glm::vec3 value) {
+    int count = 0;
+    float* target = slot(material, name, &count);
+    for (int c = 0; c < count; ++c) target[c] = value[c];
+}
+
+void setParam(Material& material, std::string_view name, float value) { setParam(material, name, glm::vec3(value)); }
+
+std::optional<std::string> findOutOfRange(const Material& material) {
+    const auto table = modelInfo(material.model).params;
+    for (size_t i = 0; i < table.size(); ++i) {
+        const ParamSpec& spec = table[i];
+        const float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
+        for (int c = 0; c < componentCount(spec.kind); ++c) {
+            const float v = value[c];
+            const bool below = spec.validMinExclusive ? !(v > spec.validMin) : !(v >= spec.validMin);
+            if (std::isfinite(v) && !below && v <= spec.validMax) continue;
+            std::ostringstream message;
+            message << "'" << spec.name << "'";
+            if (componentCount(spec.kind) == 3) message << "[" << c << "]";
+            message << ": " << v << " is out of range for " << modelInfo(material.model).id << ": must be ";
+            if (spec.validMax == kUnbounded)
+                message << (spec.validMinExclusive ? "greater than " : "at least ") << spec.validMin;
+            else
+                message << "in [" << spec.validMin << ", " << spec.validMax << "]";
+            return message.str();
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace glint

@@ -1,0 +1,429 @@
+// Wavefront .mtl reader and writer (see mtl.h). Statement reference: Wavefront's "MTL material
+// format (Lightwave, OBJ)" specification, Advanced Visualizer manual, Appendix B1.
+// Sections: lexing · statements · illum mapping · reader entry points · writer.
+#include "interchange/mtl.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "brdf/fresnel.h"
+#include "interchange/material_values.h"
+#include "interchange/text_checks.h"
+#include "util/file_io.h"
+
+namespace glint {
+namespace {
+
+// --- lexing ---------------------------------------------------------------------------------
+
+struct MtlError {
+    Diagnostic diagnostic;
+};
+
+struct Line {
+    const std::string* file;
+    int number;
+    std::vector<std::string> words;
+    std::string rest;  // everything after the statement keyword, trimmed (names and paths keep spaces)
+
+    [[noreturn]] void fail(const std::string& message) const {
+        throw MtlError{makeError(message, {*file, number, 0})};
+    }
+    Diagnostic warning(const std::string& message) const { return makeError("warning: " + message, {*file, number, 0}); }
+
+    float number_(size_t index, const char* what) const {
+        if (index >= words.size()) fail("'" + words[0] + "' needs " + what);
+        const std::string& word = words[index];
+        float value = 0;
+        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+        if (error == std::errc::result_out_of_range) fail("'" + word + "' is out of range for a number");
+        if (error != std::errc() || end != word.data() + word.size()) fail("'" + word + "' is not a number");
+        if (!std::isfinite(value)) fail("'" + word + "' is not a finite number");
+        return value;
+    }
+    void expectWords(size_t least, size_t most, const char* what) const {
+        if (words.size() - 1 < least || words.size() - 1 > most) fail("'" + words[0] + "' takes " + what);
+    }
+};
+
+std::vector<std::string> splitWords(const std::string& text) {
+    std::vector<std::string> words;
+    std::istringstream stream(text);
+    for (std::string word; stream >> word;) words.push_back(word);
+    return words;
+}
+
+std::string hexByte(char c) {
+    char text[3];
+    std::snprintf(text, sizeof text, "%02x", static_cast<unsigned char>(c));
+    return text;
+}
+
+// The whitespace of splitWords (std::isspace in the C locale), so that the two agree.
+constexpr const char* kWhitespace = " \t\r\n\f\v";
+
+std::string trim(const std::string& text) {
+    const size_t first = text.find_first_not_of(kWhitespace);
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(kWhitespace) - first + 1);
+}
+
+// --- statements -----------------------------------------------------------------------------
+
+// Valid MTL that Glint reads but does not use: a warning each.
+const std::set<std::string> kUnusedStatements = {
+    "Ke", "Tf", "sharpness", "map_Ka", "map_Ke", "disp", "decal", "refl", "map_aat", "map_refl",
+    "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor", "map_Pr", "map_Pm", "map_Ps", "norm", "map_Ke"};
+// Texture statements kept as references.
+const std::set<std::string> kTextureStatements = {"map_Kd", "map_Ks", "map_Ns", "map_d", "map_bump", "bump"};
+// Texture options and how many numbers or words follow each (-o, -s, -t take 1 to 3 numbers).
+struct TextureOption {
+    const char* name;
+    int minArguments, maxArguments;
+    bool wordArguments;  // on/off, a channel or a type name rather than numbers
+};
+constexpr TextureOption kTextureOptions[] = {
+    {"-blendu", 1, 1, true}, {"-blendv", 1, 1, true}, {"-bm", 1, 1, false}, {"-boost", 1, 1, false},
+    {"-cc", 1, 1, true},     {"-clamp", 1, 1, true},  {"-imfchan", 1, 1, true}, {"-mm", 2, 2, false},
+    {"-o", 1, 3, false},     {"-s", 1, 3, false},     {"-t", 1, 3, false},     {"-texres", 1, 1, false},
+    {"-type", 1, 1, true}};
+
+bool isNumberWord(const std::string& word) {
+    float value = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    return error == std::errc() && end == word.data() + word.size();
+}
+
+TextureReference readTexture(const Line& line) {
+    TextureReference texture{line.words[0], "", ""};
+    size_t index = 1;
+    while (index < line.words.size() && line.words[index].size() > 1 && line.words[index][0] == '-') {
+        const TextureOption* option = nullptr;
+        for (const TextureOption& candidate : kTextureOptions)
+            if (line.words[index] == candidate.name) option = &candidate;
+        if (!option) line.fail("unknown texture option '" + line.words[index] + "'");
+        size_t end = index + 1;
+        while (end < line.words.size() && static_cast<int>(end - index - 1) < option->maxArguments &&
+               (option->wordArguments || isNumberWord(line.words[end])))
+            ++end;
+        if (static_cast<int>(end - index - 1) < option->minArguments)
+            line.fail("texture option '" + std::string(option->name) + "' needs " + std::to_string(option->minArguments) +
+                      " value(s)");
+        for (size_t i = index; i < end; ++i) texture.options += (texture.options.empty() ? "" : " ") + line.words[i];
+        index = end;
+    }
+    if (index >= line.words.size()) line.fail("'" + line.words[0] + "' needs a file name");
+    // The file name is the rest of the line: it may hold spaces.
+    std::string path;
+    for (size_t i = index; i < line.words.size(); ++i) path += (path.empty() ? "" : " ") + line.words[i];
+    texture.path = path;
+    return texture;
+}
+
+// One newmtl block as read, before it is mapped onto a Glint model.
+struct MtlBlock {
+    std::string name;
+    int line = 0;
+    glm::vec3 ambient{0.0f}, diffuse{0.8f}, specular{0.0f};  // the spec's defaults: Kd 0.8, Ks 0
+    bool hasAmbient = false;
+    float exponent = 0.0f;      // Ns
+    float ior = 1.0f;           // Ni
+    float dissolve = 1.0f;      // d (Tr = 1 − d)
+    int illum = 2;              // the spec's default when absent is undefined; 2 is what exporters mean
+    int dissolveLine = 0;
+    std::vector<TextureReference> textures;
+};
+
+glm::vec3 readColor(const Line& line, std::vector<Diagnostic>& warnings, bool* used) {
+    *used = true;
+    if (line.words.size() >= 2 && (line.words[1] == "spectral" || line.words[1] == "xyz")) {
+        warnings.push_back(line.warning("'" + line.words[0] + " " + line.words[1] +
+                                        "' is valid MTL but Glint reads only RGB colours; the value is ignored"));
+        *used = false;
+        return glm::vec3(0.0f);
+    }
+    line.expectWords(1, 3, "one (grey) or three (r g b) numbers");
+    if (line.words.size() == 3) line.fail("'" + line.words[0] + "' takes one (grey) or three (r g b) numbers, not two");
+    const float red = line.number_(1, "a colour");
+    glm::vec3 color(red);
+    if (line.words.size() == 4) color = {red, line.number_(2, "g"), line.number_(3, "b")};
+    for (int c = 0; c < 3; ++c)
+        if (color[c] < 0.0f || color[c] > 1.0f)
+            line.fail("'" + line.words[0] + "' component " + std::to_string(c) + " is " + std::to_string(color[c]) +
+                      ": Glint's reflectances must be in [0, 1]");
+    return color;
+}
+
+void readStatement(const Line& line, MtlBlock& block, std::vector<Diagnostic>& warnings) {
+    const std::string& keyword = line.words[0];
+    bool used = true;
+    if (keyword == "Ka") {
+        block.ambient = readColor(line, warnings, &used);
+        block.hasAmbient = used;
+    } else if (keyword == "Kd") {
+        const glm::vec3 color = readColor(line, warnings, &used);
+        if (used) block.diffuse = color;
+    } else if (keyword == "Ks") {
+        const glm::vec3 color = readColor(line, warnings, &used);
+        if (used) block.specular = color;
+    } else if (keyword == "Ns") {
+        line.expectWords(1, 1, "one number");
+        block.exponent = line.number_(1, "an exponent");
+        if (block.exponent < 0) line.fail("'Ns' must be at least 0");
+    } else if (keyword == "Ni") {
+        line.expectWords(1, 1, "one number");
+        block.ior = line.number_(1, "an index of refraction");
+        if (block.ior <= 0) line.fail("'Ni' must be greater than 0");
+    } else if (keyword == "d" || keyword == "Tr") {
+        // "d -halo 0.5" is valid MTL; Glint reads the factor and warns about the halo.
+        size_t index = 1;
+        if (keyword == "d" && line.words.size() > 1 && line.words[1] == "-halo") {
+            warnings.push_back(line.warning("'d -halo' is valid MTL but Glint has no halo dissolve; read as plain d"));
+            index = 2;
+        }
+        if (line.words.size() != index + 1) line.fail("'" + keyword + "' takes one number");
+        const float value = line.number_(index, "a number");
+        if (value < 0 || value > 1) line.fail("'" + keyword + "' must be in [0, 1]");
+        block.dissolve = keyword == "d" ? value : 1.0f - value;
+        block.dissolveLine = line.number;
+    } else if (keyword == "illum") {
+        line.expectWords(1, 1, "one integer 0-10");
+        const float value = line.number_(1, "an integer");
+        if (value != std::floor(value) || value < 0 || value > 10) line.fail("'illum' must be an integer 0-10");
+        block.illum = static_cast<int>(value);
+    } else if (kTextureStatements.count(keyword)) {
+        block.textures.push_back(readTexture(line));
+    } else if (kUnusedStatements.count(keyword)) {
+        warnings.push_back(line.warning("'" + keyword + "' is valid MTL but Glint does not use it; ignored"));
+    } else {
+        line.fail("unknown statement '" + keyword + "'");
+    }
+}
+
+// --- illum mapping --------------------------------------------------------------------------
+
+// Normal-incidence reflectance R of a mirror made of a conductor with n = 1: κ = 2√(R/(1−R))
+// inverts R = κ²/(4 + κ²) (Born & Wolf §14.2 at θ = 0).
+float extinctionForReflectance(float reflectance) { return 2.0f * std::sqrt(reflectance / (1.0f - reflectance)); }
+
+ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file, std::vector<Diagnostic>& warnings) {
+    const SourceLocation where{file, block.line, 0};
+    auto warn = [&](const std::string& message) { warnings.push_back(makeError("warning: " + message, where)); };
+    ImportedMaterial imported;
+    imported.textures = block.textures;
+    if (!block.textures.empty())
+        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint has no material textures yet)");
+    const bool reflective = block.illum == 3 || block.illum == 5 || block.illum == 8;
+    const bool refractive = block.illum == 4 || block.illum == 6 || block.illum == 7 || block.illum == 9;
+    if (block.dissolve < 1.0f && !refractive)
+        warn("'" + block.name + "': dissolve d = " + std::to_string(block.dissolve) +
+             " is ignored: Glint draws opaque surfaces (use illum 4-7 for glass)");
+    if (block.hasAmbient && block.ambient != block.diffuse && block.ambient != glm::vec3(0.0f))
+        warn("'" + block.name + "': Ka is ignored: Glint's ambient reflectance is the diffuse albedo Kd");
+    Material& material = imported.material;
+    if (refractive) {
+        material = Material::withDefaults(block.name, BrdfModel::Glass);
+        if (block.ior < 1.0f || block.ior > 4.0f)
+            throw MtlError{makeError("'" + block.name + "': Ni = " + std::to_string(block.ior) +
+                                         " is outside glass's range [1, 4]", where)};
+        setParam(material, "ior", block.ior);
+        if (block.illum != 7) warn("'" + block.name + "': illum " + std::to_string(block.illum) + " imported as Glint glass with exact Fresnel transparency");
+    } else if (reflective) {
+        material = Material::withDefaults(block.name, BrdfModel::Mirror);
+        glm::vec3 extinction;
+        for (int c = 0; c < 3; ++c) {
+            float reflectance = block.specular[c];
+            if (reflectance > 0.999f) {
+                warn("'" + block.name + "': Ks = 1 (a perfect mirror) is imported as reflectance 0.999");
+                reflectance = 0.999f;
+            }
+            extinction[c] = extinctionForReflectance(reflectance);
+        }
+        setParam(material, "ior", 1.0f);
+        setParam(material, "extinction", extinction);
+        setParam(material, "diffuse_albedo", block.diffuse);
+        if (block.illum != 3)
+            warn("'" + block.name + "': illum " + std::to_string(block.illum) + " imported as a Glint mirror (as illum 3)");
+    } else if (block.illum == 2) {
+        material = Material::withDefaults(block.name, BrdfModel::BlinnPhong);
+        setParam(material, "diffuse_albedo", block.diffuse);
+        setParam(material, "specular", block.specular);
+        setParam(material, "exponent", block.exponent);
+        setParam(material, "form", 0.0f);  // MTL's Ks·(N·H)^Ns is the lecture form
+    } else {
+        material = Material::withDefaults(block.name, BrdfModel::Lambert);
+        setParam(material, "albedo", block.diffuse);
+        if (block.illum == 0)
+            warn("'" + block.name + "': illum 0 (constant colour, unlit) has no Glint model; imported as Lambert with albedo Kd");
+        if (block.illum == 10)
+            warn("'" + block.name + "': illum 10 (shadow matte) has no Glint model; imported as Lambert");
+    }
+    if (auto problem = findOutOfRange(material)) throw MtlError{makeError("'" + block.name + "': " + *problem, where)};
+    return imported;
+}
+
+}  // namespace
+
+// --- reader entry points --------------------------------------------------------------------
+
+Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) {
+    ImportedFile result;
+    std::vector<MtlBlock> blocks;
+    try {
+        if (auto where = findInvalidUtf8(text))
+            throw MtlError{makeError("the file is not UTF-8 text (byte " + std::to_string(where->byteOffset) + ")",
+                                     {file, where->line, 0})};
+        std::istringstream stream(text);
+        int number = 0;
+        for (std::string raw; std::getline(stream, raw);) {
+            ++number;
+            for (const char c : raw)  // text, not binary: a NUL or an escape cannot be part of a name or path
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v')
+                    throw MtlError{makeError("control character 0x" + hexByte(c) + " in the line: not a text .mtl file",
+                                             {file, number, 0})};
+            const size_t comment = raw.find('#');
+            const std::string content = trim(comment == std::string::npos ? raw : raw.substr(0, comment));
+            if (content.empty()) continue;
+            Line line{&file, number, splitWords(content), ""};
+            if (line.words.empty()) continue;
+            line.rest = trim(content.substr(line.words[0].size()));
+            if (line.words[0] == "newmtl") {
+                if (line.rest.empty()) line.fail("'newmtl' needs a material name");
+                blocks.push_back(MtlBlock{.name = line.rest, .line = number});
+                continue;
+            }
+            if (blocks.empty()) line.fail("'" + line.words[0] + "' before the first 'newmtl'");
+            readStatement(line, blocks.back(), result.warnings);
+        }
+        if (blocks.empty()) throw MtlError{makeError("no material in the file (no 'newmtl' line)", {file, 0, 0})};
+        for (const MtlBlock& block : blocks) result.materials.push_back(mapBlock(block, file, result.warnings));
+    } catch (const MtlError& error) {
+        return error.diagnostic;
+    }
+    return result;
+}
+
+Result<ImportedFile> loadMtl(const std::string& path) {
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    return parseMtl(*text, path);
+}
+
+// --- writer ---------------------------------------------------------------------------------
+
+namespace {
+
+std::string numbers(glm::vec3 value) {
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "%.9g %.9g %.9g", value.r, value.g, value.b);
+    return buffer;
+}
+std::string number(float value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+// Names go on one line: control characters become spaces.
+std::string oneLine(std::string name) {
+    for (char& c : name)
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    name = trim(name);
+    return name.empty() ? "material" : name;
+}
+
+}  // namespace
+
+ExportedText writeMtl(std::span<const ImportedMaterial> materials) {
+    ExportedText out;
+    std::string& text = out.text;
+    text += "# Wavefront material library written by Glint\n";
+    for (const ImportedMaterial& imported : materials) {
+        const Material& material = imported.material;
+        const std::string name = oneLine(material.name);
+        auto lost = [&](const std::string& what) {
+            out.warnings.push_back(makeError("warning: '" + name + "' (" + modelInfo(material.model).id + "): " + what));
+        };
+        glm::vec3 diffuse(0.0f), specular(0.0f);
+        float exponent = 0.0f, ior = 1.0f;
+        int illum = 1;
+        switch (material.model) {
+            case BrdfModel::Lambert: diffuse = paramValue(material, "albedo"); break;
+            case BrdfModel::BlinnPhong:
+            case BrdfModel::Phong:
+                illum = 2;
+                diffuse = paramValue(material, "diffuse_albedo");
+                specular = paramValue(material, "specular");
+                exponent = paramScalar(material, "exponent");
+                if (paramScalar(material, "form") != 0.0f)
+                    lost("MTL's highlight is Ks·(N·H)^Ns (the lecture form); the BRDF form is not kept");
+                if (material.model == BrdfModel::Phong)
+                    lost("MTL has no Phong (mirror-direction) lobe; written as illum 2, which is Blinn's half-vector lobe");
+                break;
+            case BrdfModel::Mirror:
+                illum = 3;
+                diffuse = paramValue(material, "diffuse_albedo");
+                specular = fresnelF0(paramValue(material, "ior"), paramValue(material, "extinction"));
+                lost("the complex index n + iκ is written as its normal-incidence reflectance Ks");
+                break;
+            case BrdfModel::Glass:
+                illum = 7;
+                ior = paramScalar(material, "ior");
+                specular = glm::vec3(1.0f);
+                if (paramValue(material, "absorption") != glm::vec3(0.0f)) lost("absorption σ is not kept");
+                if (paramScalar(material, "transparency") != 0.0f) lost("classic transparency k_t is not kept");
+                break;
+            case BrdfModel::CookTorrance:
+            case BrdfModel::GgxAnisotropic: {
+                illum = 2;
+                diffuse = paramValue(material, "diffuse_albedo");
+                specular = fresnelF0(paramValue(material, "ior"), paramValue(material, "extinction"));
+                const float alpha = material.model == BrdfModel::CookTorrance
+                                        ? paramScalar(material, "roughness")
+                                        : std::sqrt(paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y"));
+                exponent = 2.0f / (alpha * alpha) - 2.0f;  // Walter et al. 2007, eq. 33: Phong n ≈ 2/α² − 2
+                if (exponent < 0.0f) exponent = 0.0f;
+                lost("the microfacet lobe is approximated by Blinn-Phong (Ks = F(0°), Ns = 2/α² − 2)");
+                break;
+            }
+            case BrdfModel::Ward:
+                illum = 2;
+                diffuse = paramValue(material, "diffuse_albedo");
+                specular = paramValue(material, "specular");
+                exponent = 2.0f / (paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y")) - 2.0f;
+                if (exponent < 0.0f) exponent = 0.0f;
+                lost("the Ward lobe is approximated by Blinn-Phong (Ns = 2/(α_x α_y) − 2)");
+                break;
+            case BrdfModel::OrenNayar:
+                diffuse = paramValue(material, "albedo");
+                lost("roughness σ is not kept (written as Lambert)");
+                break;
+            case BrdfModel::Retroreflective:
+                diffuse = paramValue(material, "albedo");
+                lost("the limb darkening and retroreflective lobe are not kept (written as Lambert)");
+                break;
+        }
+        text += "\nnewmtl " + name + "\n";
+        text += "# Glint model: " + std::string(modelInfo(material.model).id) + "\n";
+        text += "Ka " + numbers(diffuse) + "\n";
+        text += "Kd " + numbers(diffuse) + "\n";
+        text += "Ks " + numbers(specular) + "\n";
+        text += "Ns " + number(exponent) + "\n";
+        text += "Ni " + number(ior) + "\n";
+        text += "d 1\n";
+        text += "illum " + std::to_string(illum) + "\n";
+        for (const TextureReference& texture : imported.textures) {
+            if (!kTextureStatements.count(texture.slot)) {
+                lost("texture '" + texture.slot + "' has no MTL statement; not written");
+                continue;
+            }
+            text += texture.slot + (texture.options.empty() ? "" : " " + texture.options) + " " + oneLine(texture.path) + "\n";
+        }
+    }
+    return out;
+}
+
+}  // namespace glint

@@ -1,0 +1,21 @@
+// libFuzzer target: glTF material and light import must never crash or hang on any bytes; it
+// returns materials and lights (which must export and import again) or a Diagnostic.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "interchange/gltf.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    auto file = glint::parseGltf(text, "fuzz.gltf");
+    if (!file) {
+        if (file.error().message.empty()) __builtin_trap();  // every error says why
+        return 0;
+    }
+    const glint::ImportedMaterial material =
+        file->materials.empty() ? glint::ImportedMaterial{glint::Material::withDefaults("m", glint::BrdfModel::CookTorrance), {}}
+                                : file->materials.front();
+    if (!glint::parseGltf(glint::writeGltf(material, file->lights).text, "fuzz-out.gltf")) __builtin_trap();
+    return 0;
+}

@@ -1,0 +1,322 @@
+// glTF 2.0: pbrMetallicRoughness and the KHR_materials_* extensions map onto Cook-Torrance and
+// glass; KHR_lights_punctual units convert (cd, lx ↔ W, W/m²); the exported file is structurally
+// valid (accessor counts, bufferView lengths, min/max, embedded buffer); round trips keep every
+// parameter glTF holds; malformed files give located errors.
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "brdf/fresnel.h"
+#include "interchange/base64.h"
+#include "interchange/gltf.h"
+#include "interchange/material_values.h"
+#include "light/photometry.h"
+#include "math/constants.h"
+
+namespace glint {
+namespace {
+
+using nlohmann::json;
+
+ImportedFile parseOk(const std::string& text) {
+    auto parsed = parseGltf(text, "test.gltf");
+    EXPECT_TRUE(parsed.ok()) << (parsed ? "" : parsed.error().format());
+    return parsed ? *parsed : ImportedFile{};
+}
+
+std::string withMaterial(const json& material) {
+    return json{{"asset", {{"version", "2.0"}}}, {"materials", json::array({material})}}.dump(2);
+}
+
+bool hasWarning(const std::vector<Diagnostic>& warnings, const std::string& fragment) {
+    for (const Diagnostic& warning : warnings)
+        if (warning.format().find(fragment) != std::string::npos) return true;
+    return false;
+}
+
+TEST(Gltf, DielectricMapsToGgxSmithSchlickCookTorrance) {
+    const ImportedFile file = parseOk(withMaterial(
+        {{"name", "blue plastic"},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
+         {"extensions", {{"KHR_materials_ior", {{"ior", 1.4}}}}}}));
+    ASSERT_EQ(file.materials.size(), 1u);
+    const Material& material = file.materials[0].material;
+    EXPECT_EQ(material.name, "blue plastic");
+    ASSERT_EQ(material.model, BrdfModel::CookTorrance);
+    EXPECT_EQ(paramValue(material, "diffuse_albedo"), glm::vec3(0.1f, 0.2f, 0.8f));
+    EXPECT_EQ(paramValue(material, "ior"), glm::vec3(1.4f));
+    EXPECT_EQ(paramValue(material, "extinction"), glm::vec3(0.0f));
+    EXPECT_FLOAT_EQ(paramScalar(material, "roughness"), 0.25f);  // α = roughness²
+    EXPECT_EQ(paramScalar(material, "distribution"), 1.0f);
+    EXPECT_EQ(paramScalar(material, "geometry"), 1.0f);
+    EXPECT_EQ(paramScalar(material, "fresnel"), 0.0f);
+    EXPECT_TRUE(file.warnings.empty());
+}
+
+TEST(Gltf, MetalAndSpecularGiveTheRightNormalReflectance) {
+    const ImportedFile metal = parseOk(withMaterial(
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {0.95, 0.64, 0.54, 1.0}}, {"metallicFactor", 1.0}, {"roughnessFactor", 0.3}}}}));
+    const Material& copper = metal.materials[0].material;
+    EXPECT_EQ(paramValue(copper, "diffuse_albedo"), glm::vec3(0.0f));
+    const glm::vec3 f0 = fresnelF0(paramValue(copper, "ior"), paramValue(copper, "extinction"));
+    EXPECT_NEAR(f0.r, 0.95f, 1e-5f);
+    EXPECT_NEAR(f0.g, 0.64f, 1e-5f);
+    EXPECT_NEAR(f0.b, 0.54f, 1e-5f);
+    // KHR_materials_specular scales the dielectric F0 = ((n−1)/(n+1))² per channel.
+    const ImportedFile specular = parseOk(withMaterial(
+        {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+         {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {1.0, 0.5, 0.25}}}}}}}));
+    const Material& tinted = specular.materials[0].material;
+    const glm::vec3 tintedF0 = fresnelF0(paramValue(tinted, "ior"), paramValue(tinted, "extinction"));
+    EXPECT_NEAR(tintedF0.r, 0.04f * 0.5f, 1e-6f);
+    EXPECT_NEAR(tintedF0.g, 0.04f * 0.5f * 0.5f, 1e-6f);
+    EXPECT_NEAR(tintedF0.b, 0.04f * 0.25f * 0.5f, 1e-6f);
+}
+
+TEST(Gltf, TransmissionAndVolumeMakeAbsorbingGlass) {
+    const ImportedFile file = parseOk(withMaterial(
+        {{"pbrMetallicRoughness", {{"roughnessFactor", 0.0}}},
+         {"extensions",
+          {{"KHR_materials_ior", {{"ior", 1.33}}},
+           {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+           {"KHR_materials_volume", {{"thicknessFactor", 1.0}, {"attenuationDistance", 2.0}, {"attenuationColor", {0.5, 0.9, 1.0}}}}}}}));
+    const Material& water = file.materials[0].material;
+    ASSERT_EQ(water.model, BrdfModel::Glass);
+    EXPECT_FLOAT_EQ(paramScalar(water, "ior"), 1.33f);
+    const glm::vec3 absorption = paramValue(water, "absorption");  // σ = −ln(c)/d
+    EXPECT_NEAR(absorption.r, -std::log(0.5f) / 2.0f, 1e-6f);
+    EXPECT_NEAR(absorption.g, -std::log(0.9f) / 2.0f, 1e-6f);
+    EXPECT_NEAR(absorption.b, 0.0f, 1e-7f);
+}
+
+TEST(Gltf, ClearcoatEmissionTexturesAndAlphaAreReportedNotDropped) {
+    const ImportedFile file = parseOk(json{
+        {"asset", {{"version", "2.0"}}},
+        {"images", {{{"uri", "albedo.png"}}}},
+        {"textures", {{{"source", 0}}}},
+        {"materials",
+         {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+           {"emissiveFactor", {1.0, 0.5, 0.0}},
+           {"alphaMode", "BLEND"},
+           {"extensions",
+            {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}},
+             {"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}},
+             {"VENDOR_sparkle", json::object()}}}}}}}.dump(2));
+    EXPECT_TRUE(hasWarning(file.warnings, "clear-coat"));
+    EXPECT_TRUE(hasWarning(file.warnings, "emission"));
+    EXPECT_TRUE(hasWarning(file.warnings, "opaque"));
+    EXPECT_TRUE(hasWarning(file.warnings, "VENDOR_sparkle"));
+    ASSERT_EQ(file.materials[0].textures.size(), 1u);
+    EXPECT_EQ(file.materials[0].textures[0].path, "albedo.png");
+    EXPECT_EQ(file.materials[0].textures[0].slot, "baseColorTexture");
+}
+
+TEST(Gltf, PunctualLightUnitsConvertAt683LumensPerWatt) {
+    const glm::vec3 warm(1.0f, 0.8f, 0.6f);
+    const float luminanceWeight = kLumensPerWatt * relativeLuminance(warm);
+    const ImportedFile file = parseOk(json{
+        {"asset", {{"version", "2.0"}}},
+        {"extensions",
+         {{"KHR_lights_punctual",
+           {{"lights",
+             {{{"type", "point"}, {"color", {1.0, 0.8, 0.6}}, {"intensity", 100.0}, {"name", "bulb"}},
+              {{"type", "directional"}, {"intensity", 1000.0}},
+              {{"type", "spot"}, {"intensity", 50.0}, {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", 0.5}}}}}}}}}},
+        {"nodes",
+         {{{"translation", {1.0, 2.0, 3.0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+          {{"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
+          {{"translation", {0.0, 1.0, 0.0}}, {"children", {3}}},
+          {{"translation", {0.0, 1.0, 0.0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}}}}.dump(2));
+    ASSERT_EQ(file.lights.size(), 3u);
+    const Light& bulb = file.lights[0];
+    EXPECT_EQ(bulb.type, LightType::Point);
+    EXPECT_EQ(bulb.name, "bulb");
+    EXPECT_EQ(bulb.position, glm::vec3(1, 2, 3));
+    EXPECT_NEAR(bulb.power, 4.0f * kPi * 100.0f / luminanceWeight, 1e-3f);
+    EXPECT_NEAR(lightPhotometry(bulb).candelas, 100.0f, 1e-3f);  // the editor shows the same candelas back
+    const Light& sun = file.lights[1];
+    EXPECT_EQ(sun.type, LightType::Directional);
+    EXPECT_NEAR(sun.irradiance, 1000.0f / kLumensPerWatt, 1e-4f);
+    EXPECT_NEAR(sun.direction.y, -1.0f, 1e-5f);  // −Z rotated −90° about x points down
+    const Light& spot = file.lights[2];
+    EXPECT_EQ(spot.position, glm::vec3(0, 2, 0));  // parent and child translations compose
+    EXPECT_NEAR(spot.coneHalfAngleDegrees, glm::degrees(0.5f), 1e-4f);
+    EXPECT_NEAR(spot.edgeWidthDegrees, glm::degrees(0.2f), 1e-4f);
+}
+
+// Glint → glTF → Glint keeps every parameter glTF holds.
+TEST(Gltf, RoundTripKeepsEveryParameterGltfHolds) {
+    Material dielectric = Material::withDefaults("varnish", BrdfModel::CookTorrance);
+    setParam(dielectric, "diffuse_albedo", glm::vec3(0.3f, 0.2f, 0.1f));
+    setParam(dielectric, "ior", 1.6f);
+    setParam(dielectric, "extinction", 0.0f);
+    setParam(dielectric, "roughness", 0.09f);
+    setParam(dielectric, "fresnel", 0.0f);
+    Material metal = Material::withDefaults("gold", BrdfModel::CookTorrance);
+    setParam(metal, "diffuse_albedo", 0.0f);
+    setParam(metal, "ior", 1.0f);
+    setParam(metal, "extinction", glm::vec3(6.0f, 3.0f, 1.0f));
+    setParam(metal, "roughness", 0.3f);
+    setParam(metal, "fresnel", 0.0f);
+    Material glass = Material::withDefaults("bottle", BrdfModel::Glass);
+    setParam(glass, "ior", 1.52f);
+    setParam(glass, "absorption", glm::vec3(0.5f, 0.1f, 2.0f));
+
+    std::vector<Light> lights(3);
+    lights[0].name = "key";
+    lights[0].type = LightType::Point;
+    lights[0].color = {1.0f, 0.9f, 0.8f};
+    lights[0].power = 250.0f;
+    lights[0].position = {1, 3, 2};
+    lights[1].name = "sun";
+    lights[1].type = LightType::Directional;
+    lights[1].irradiance = 4.5f;
+    lights[1].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    lights[2].name = "spot";
+    lights[2].type = LightType::Spot;
+    lights[2].power = 80.0f;
+    lights[2].position = {0, 2, 0};
+    lights[2].direction = {0, -1, 0};
+    lights[2].coneHalfAngleDegrees = 40.0f;
+    lights[2].edgeWidthDegrees = 10.0f;
+
+    for (const Material& before : {dielectric, metal, glass}) {
+        const ExportedText written = writeGltf({before, {}}, lights);
+        EXPECT_TRUE(written.warnings.empty()) << before.name << ": " << written.warnings.front().format();
+        const ImportedFile read = parseOk(written.text);
+        ASSERT_EQ(read.materials.size(), 1u);
+        const Material& after = read.materials[0].material;
+        EXPECT_EQ(after.name, before.name);
+        ASSERT_EQ(after.model, before.model);
+        for (size_t v = 0; v < before.values.size(); ++v)
+            EXPECT_NEAR(after.values[v], before.values[v], 2e-5f * std::max(1.0f, std::abs(before.values[v])))
+                << before.name << " value " << v;
+        ASSERT_EQ(read.lights.size(), lights.size());
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const Light& a = lights[i];
+            const Light& b = read.lights[i];
+            EXPECT_EQ(b.name, a.name);
+            EXPECT_EQ(b.type, a.type);
+            EXPECT_LT(glm::length(b.color - a.color), 1e-6f);
+            EXPECT_NEAR(b.power, a.power, 1e-4f * a.power);
+            EXPECT_NEAR(b.irradiance, a.irradiance, 1e-4f * a.irradiance);
+            if (a.type != LightType::Directional) {
+                EXPECT_LT(glm::length(b.position - a.position), 1e-5f);
+            }
+            if (a.type != LightType::Point) {
+                EXPECT_LT(glm::length(b.direction - a.direction), 1e-5f) << a.name;
+            }
+            EXPECT_NEAR(b.coneHalfAngleDegrees, a.coneHalfAngleDegrees, 1e-3f);
+            if (a.type == LightType::Spot) {
+                EXPECT_NEAR(b.edgeWidthDegrees, a.edgeWidthDegrees, 1e-3f);
+            }
+        }
+    }
+}
+
+// What a viewer checks: counts, byte lengths, POSITION min/max, indices in range.
+TEST(Gltf, ExportedSphereIsStructurallyValid) {
+    const ExportedText written = writeGltf({Material::withDefaults("m", BrdfModel::CookTorrance), {}}, {});
+    const json gltf = json::parse(written.text);
+    EXPECT_EQ(gltf["asset"]["version"], "2.0");
+    const std::string uri = gltf["buffers"][0]["uri"];
+    const std::string prefix = "data:application/octet-stream;base64,";
+    ASSERT_EQ(uri.rfind(prefix, 0), 0u);
+    const auto bytes = decodeBase64(uri.substr(prefix.size()));
+    ASSERT_TRUE(bytes.has_value());
+    EXPECT_EQ(bytes->size(), gltf["buffers"][0]["byteLength"].get<size_t>());
+    EXPECT_EQ(bytes->size() % 4, 0u);
+    const size_t componentBytes[] = {4, 2};  // FLOAT, UNSIGNED_SHORT
+    for (const json& accessor : gltf["accessors"]) {
+        const json& view = gltf["bufferViews"][accessor["bufferView"].get<int>()];
+        const size_t components = accessor["type"] == "VEC3" ? 3 : 1;
+        const size_t size = componentBytes[accessor["componentType"] == 5126 ? 0 : 1];
+        EXPECT_EQ(view["byteLength"].get<size_t>(), accessor["count"].get<size_t>() * components * size);
+        EXPECT_LE(view["byteOffset"].get<size_t>() + view["byteLength"].get<size_t>(), bytes->size());
+        EXPECT_EQ(view["byteOffset"].get<size_t>() % size, 0u);
+    }
+    const json& position = gltf["accessors"][0];
+    const size_t vertexCount = position["count"];
+    glm::vec3 low(1e9f), high(-1e9f);
+    for (size_t i = 0; i < vertexCount; ++i) {
+        glm::vec3 p;
+        std::memcpy(&p, bytes->data() + i * 12, 12);
+        EXPECT_NEAR(glm::length(p), 1.0f, 1e-5f);
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(position["min"][c].get<float>(), low[c]);
+        EXPECT_EQ(position["max"][c].get<float>(), high[c]);
+    }
+    const json& indices = gltf["accessors"][2];
+    const size_t indexOffset = gltf["bufferViews"][2]["byteOffset"];
+    for (size_t i = 0; i < indices["count"].get<size_t>(); ++i) {
+        uint16_t index;
+        std::memcpy(&index, bytes->data() + indexOffset + 2 * i, 2);
+        ASSERT_LT(index, vertexCount);
+    }
+    EXPECT_EQ(indices["count"].get<size_t>() % 3, 0u);
+}
+
+TEST(Gltf, Base64RoundTripsAndRefusesBadText) {
+    for (size_t length = 0; length < 7; ++length) {
+        std::vector<uint8_t> bytes;
+        for (size_t i = 0; i < length; ++i) bytes.push_back(static_cast<uint8_t>(0xF0 + 7 * i));
+        EXPECT_EQ(decodeBase64(encodeBase64(bytes)), bytes);
+    }
+    EXPECT_EQ(encodeBase64({'M', 'a', 'n'}), "TWFu");
+    EXPECT_FALSE(decodeBase64("TWF").has_value());
+    EXPECT_FALSE(decodeBase64("TW=u").has_value());
+    EXPECT_FALSE(decodeBase64("TW!u").has_value());
+}
+
+TEST(Gltf, MalformedFilesGiveLocatedErrors) {
+    const struct {
+        std::string text;
+        const char* expected;
+    } cases[] = {
+        {"", "test.gltf"},
+        {"{\"asset\": {\"version\": \"2.0\"}", "test.gltf:1"},  // truncated
+        {"[1, 2]", "test.gltf:1:1: glTF must be a JSON object"},
+        {"{\"materials\": []}", "not a glTF file"},
+        {"{\"asset\": {\"version\": \"1.0\"}, \"materials\": [{}]}", "glTF 1.0 is not supported"},
+        {"{\"asset\": {\"version\": \"2.0\"}}", "no material and no light"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"extensionsRequired\": [\"KHR_draco_mesh_compression\"], \"materials\": [{}]}",
+         "requires \"KHR_draco_mesh_compression\""},
+        {withMaterial({{"pbrMetallicRoughness", {{"roughnessFactor", 1.5}}}}), "'roughnessFactor'"},
+        {withMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1}}}}}), "expected an array of 4 numbers"},
+        {withMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {1, "x", 1, 1}}}}}), "baseColorFactor[1]"},
+        {withMaterial({{"pbrMetallicRoughness", {{"metalicFactor", 1}}}}), "unknown key"},
+        {withMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}}), "'ior'"},
+        {withMaterial({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 3}}}}}}), "texture 3 does not exist"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"pbrMetallicRoughness\": {\"metallicFactor\": 1e999}}]}",
+         "test.gltf:1"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"\xff\"}]}", "test.gltf"},
+        {json{{"asset", {{"version", "2.0"}}},
+              {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "area"}}}}}}}}}.dump(),
+         "'type'"},
+        {json{{"asset", {{"version", "2.0"}}},
+              {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "spot"}, {"spot", {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.5}}}}}}}}}},
+              {"nodes", {{{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}}}}.dump(),
+         "must be less than outerConeAngle"},
+        {json{{"asset", {{"version", "2.0"}}},
+              {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}}}}}}}},
+              {"nodes", {{{"extensions", {{"KHR_lights_punctual", {{"light", 4}}}}}}}}}.dump(),
+         "no such light"},
+        {json{{"asset", {{"version", "2.0"}}},
+              {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}}}}}}}},
+              {"nodes", {{{"children", {1}}}, {{"children", {0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}}}}.dump(),
+         "cycle"},
+    };
+    for (const auto& c : cases) {
+        auto parsed = parseGltf(c.text, "test.gltf");
+        ASSERT_FALSE(parsed.ok()) << c.text;
+        EXPECT_NE(parsed.error().format().find(c.expected), std::string::npos)
+            << "input: " << c.text << "\nmessage: " << parsed.error().format();
+    }
+}
+
+}  // namespace
+}  // namespace glint
