@@ -38,8 +38,10 @@ void setDisplayUniforms(const ShaderProgram& program, const DisplaySettings& dis
     glUniform1i(program.uniform("toneMap"), static_cast<int>(display.toneMap));
 }
 
+// Same encoding (the overlays are drawn over the encoded image afterwards, fused or not).
 bool sameDisplay(const DisplaySettings& a, const DisplaySettings& b) {
-    static_assert(sizeof(DisplaySettings) == 4 * sizeof(float), "a new display setting: compare it here");
+    static_assert(sizeof(DisplaySettings) == 4 * sizeof(float) + sizeof(OverlaySettings),
+                  "a new display setting: compare it here");
     return a.exposureStops == b.exposureStops && a.transfer == b.transfer && a.gamma == b.gamma && a.toneMap == b.toneMap;
 }
 
@@ -319,11 +321,12 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
 
 void Renderer::displayOffscreen(const DisplaySettings& display) {
     platform_.makeCurrent();
-    if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) return;  // the radiance pass wrote it already
     displayTarget_.ensure(radianceTarget_.width(), radianceTarget_.height(), 1);
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
-    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
+    // Skipped when the radiance pass already wrote the encoded image with these settings (fused).
+    if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display))
+        runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
 }
 
