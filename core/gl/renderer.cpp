@@ -235,7 +235,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
-        auto program = surfaceProgram(material.model, samples);
+        auto program = material.custom ? customPrograms_.program(sources_, *material.custom, samples)
+                                       : surfaceProgram(material.model, samples);
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -243,6 +244,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         }
         const ShaderProgram& shader = **program;
         glUseProgram(shader.id());
+        if (material.custom) setCustomBrdfUniforms(shader, *material.custom, material.values);
         MaterialBlockStd140 materialBlock{};
         std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
                     materialBlock.values);

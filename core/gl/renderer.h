@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/custom_brdf_program.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
@@ -72,6 +73,7 @@ private:
     std::string description_;
     std::string shaderError_;
     std::map<std::pair<BrdfModel, int>, SurfaceProgram> surfacePrograms_;
+    CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;

@@ -3,6 +3,7 @@
 // drawing in the CPU reference (render/) and the GL renderer (core/gl).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -21,10 +22,15 @@ inline constexpr int kSceneFormatVersion = 1;
 // 16 KiB that OpenGL 4.1 guarantees per uniform block); the shader loops only over those present.
 inline constexpr int kMaxLights = 64;
 
+struct CustomBrdf;  // interchange/custom_brdf.h
+
 struct Material {
     std::string name;
     BrdfModel model = BrdfModel::Lambert;
     std::vector<float> values;  // packed per the model's parameter table
+    // A BRDF Explorer .brdf file (GPU only). When set, `model` is unused and `values` are packed
+    // per custom->table.
+    std::shared_ptr<const CustomBrdf> custom;
 
     static Material withDefaults(std::string name, BrdfModel model);
 };

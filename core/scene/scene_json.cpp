@@ -4,7 +4,9 @@
 
 #include <array>
 
+#include "interchange/custom_material_json.h"
 #include "scene/json_object_reader.h"
+#include "scene/param_values_json.h"
 #include "util/file_io.h"
 
 namespace glint {
@@ -38,6 +40,7 @@ constexpr const char* kMaterialReservedKeys[] = {"name", "model", "format", "ver
 Material readMaterial(ObjectReader& reader) {
     Material material;
     material.name = reader.string("name", "material");
+    if (reader.has("brdf_file")) return readCustomBrdfMaterial(reader, std::move(material.name));  // a .brdf file
     const std::string modelId = reader.requiredString("model");
     const auto model = findModel(modelId);
     if (!model) {
@@ -46,55 +49,15 @@ Material readMaterial(ObjectReader& reader) {
         reader.fail("model", "unknown model '" + modelId + "' (known models: " + list + ")");
     }
     material.model = *model;
-    const auto table = modelInfo(*model).params;
-    material.values = defaultValues(table);
-    for (size_t i = 0; i < table.size(); ++i) {
-        const ParamSpec& spec = table[i];
-        float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
-        Bounds bounds = Bounds::between(spec.validMin, spec.validMax == kUnbounded ? std::numeric_limits<double>::max()
-                                                                             : spec.validMax);
-        bounds.minExclusive = spec.validMinExclusive;
-        switch (spec.kind) {
-            case ParamKind::Scalar: value[0] = static_cast<float>(reader.number(spec.name, value[0], bounds)); break;
-            case ParamKind::Color:
-            case ParamKind::PerChannel: {
-                // A colour or per-channel quantity may be written as [r, g, b] or as one number for all three.
-                if (reader.has(spec.name) && reader.take(spec.name).is_number()) {
-                    const float grey = static_cast<float>(reader.number(spec.name, 0, bounds));
-                    value[0] = value[1] = value[2] = grey;
-                } else {
-                    const glm::vec3 color = reader.vec3(spec.name, {value[0], value[1], value[2]}, bounds);
-                    value[0] = color.r, value[1] = color.g, value[2] = color.b;
-                }
-                break;
-            }
-            case ParamKind::Bool: value[0] = reader.boolean(spec.name, value[0] != 0.0f) ? 1.0f : 0.0f; break;
-            case ParamKind::Enum: {
-                std::vector<const char*> ids;
-                for (const EnumOption& option : spec.options) ids.push_back(option.id);
-                value[0] = static_cast<float>(reader.choice(spec.name, ids, static_cast<int>(value[0])));
-                break;
-            }
-        }
-    }
+    material.values = readParamValues(reader, modelInfo(*model).params);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
 }
 
-json materialBody(const Material& material) {
+json materialBody(const Material& material, const std::string& savedTo) {
+    if (material.custom) return customBrdfMaterialBody(material, savedTo);
     json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
-    const auto table = modelInfo(material.model).params;
-    for (size_t i = 0; i < table.size(); ++i) {
-        const ParamSpec& spec = table[i];
-        const float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
-        switch (spec.kind) {
-            case ParamKind::Scalar: out[spec.name] = value[0]; break;
-            case ParamKind::Color:
-            case ParamKind::PerChannel: out[spec.name] = {value[0], value[1], value[2]}; break;
-            case ParamKind::Bool: out[spec.name] = value[0] != 0.0f; break;
-            case ParamKind::Enum: out[spec.name] = spec.options[static_cast<int>(value[0])].id; break;
-        }
-    }
+    writeParamValues(out, modelInfo(material.model).params, material.values);
     return out;
 }
 
@@ -348,7 +311,7 @@ Result<Scene> loadScene(const std::string& path) {
     return parseScene(*text, path);
 }
 
-json sceneToJson(const Scene& scene) {
+json sceneToJson(const Scene& scene, const std::string& savedTo) {
     json out = {{"format", kSceneFormat}, {"version", kSceneFormatVersion}};
     out["output"] = {{"width", scene.width}, {"height", scene.height}, {"msaa", scene.msaaSamples}};
     const Camera& camera = scene.camera;
@@ -366,7 +329,7 @@ json sceneToJson(const Scene& scene) {
                       {"gamma", scene.display.gamma},
                       {"tone_map", kToneMaps[static_cast<int>(scene.display.toneMap)]}};
     out["materials"] = json::array();
-    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material));
+    for (const Material& material : scene.materials) out["materials"].push_back(materialBody(material, savedTo));
     out["lights"] = json::array();
     for (const Light& light : scene.lights) out["lights"].push_back(lightToJson(light));
     out["objects"] = json::array();
@@ -375,7 +338,7 @@ json sceneToJson(const Scene& scene) {
 }
 
 Status saveScene(const Scene& scene, const std::string& path) {
-    return writeFileAtomically(path, sceneToJson(scene).dump(2) + "\n");
+    return writeFileAtomically(path, sceneToJson(scene, path).dump(2) + "\n");
 }
 
 Result<Material> parseMaterial(const std::string& text, const std::string& file) {
@@ -396,14 +359,14 @@ Result<Material> loadMaterial(const std::string& path) {
     return parseMaterial(*text, path);
 }
 
-json materialToJson(const Material& material) {
+json materialToJson(const Material& material, const std::string& savedTo) {
     json out = {{"format", kMaterialFormat}, {"version", kSceneFormatVersion}};
-    out.update(materialBody(material));
+    out.update(materialBody(material, savedTo));
     return out;
 }
 
 Status saveMaterial(const Material& material, const std::string& path) {
-    return writeFileAtomically(path, materialToJson(material).dump(2) + "\n");
+    return writeFileAtomically(path, materialToJson(material, path).dump(2) + "\n");
 }
 
 }  // namespace glint

@@ -15,13 +15,14 @@ namespace glint {
 Result<Scene> parseScene(const std::string& text, const std::string& file);
 Result<Scene> loadScene(const std::string& path);
 
-nlohmann::json sceneToJson(const Scene& scene);
+// `savedTo`: the file being written, so that .brdf paths are written relative to its folder.
+nlohmann::json sceneToJson(const Scene& scene, const std::string& savedTo = "");
 Status saveScene(const Scene& scene, const std::string& path);
 
 // A material file holds one material ("format": "glint-material").
 Result<Material> parseMaterial(const std::string& text, const std::string& file);
 Result<Material> loadMaterial(const std::string& path);
-nlohmann::json materialToJson(const Material& material);
+nlohmann::json materialToJson(const Material& material, const std::string& savedTo = "");
 Status saveMaterial(const Material& material, const std::string& path);
 
 }  // namespace glint

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
@@ -116,6 +117,8 @@ void handleFileBrowser(EditorState& state) {
             break;
         case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
+        case FilePurpose::OpenBrdf: openDroppedFile(state, *chosen); break;  // routes .brdf and .bparam
+        case FilePurpose::SaveBparamAs: saveBparamTo(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

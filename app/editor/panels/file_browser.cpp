@@ -23,6 +23,8 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenMaterial: return "Open material###FileBrowser";
         case FilePurpose::SaveMaterialAs: return "Save material as###FileBrowser";
         case FilePurpose::SaveScreenshot: return "Save screenshot (.png or .exr)###FileBrowser";
+        case FilePurpose::OpenBrdf: return "Open BRDF Explorer file (.brdf, .bparam)###FileBrowser";
+        case FilePurpose::SaveBparamAs: return "Save parameter values as (.bparam)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -85,7 +87,7 @@ std::optional<std::string> confirm(FileBrowser& browser) {
 }  // namespace
 
 bool purposeSaves(FilePurpose purpose) {
-    return purpose == FilePurpose::SaveSceneAs || purpose == FilePurpose::SaveMaterialAs ||
+    return purpose == FilePurpose::SaveSceneAs || purpose == FilePurpose::SaveMaterialAs || purpose == FilePurpose::SaveBparamAs ||
            purpose == FilePurpose::SaveScreenshot;
 }
 
@@ -93,6 +95,8 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.requested = true;
     browser.purpose = purpose;
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
+                         : purpose == FilePurpose::OpenBrdf     ? std::vector<std::string>{".brdf", ".bparam"}
+                         : purpose == FilePurpose::SaveBparamAs ? std::vector<std::string>{".bparam"}
                                                                 : std::vector<std::string>{".json"};
     browser.error.clear();
     std::error_code error;

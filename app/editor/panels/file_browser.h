@@ -9,7 +9,7 @@
 
 namespace glint {
 
-enum class FilePurpose { OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot };
+enum class FilePurpose { OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenBrdf, SaveBparamAs };
 
 struct FileBrowser {
     bool requested = false;  // open the modal on the next frame
