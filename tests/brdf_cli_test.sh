@@ -51,7 +51,7 @@ expect_image material_json "$out/material.png" -- render "$out/ggx_material.json
 sed 's/"roughness": 0.5/"roughness": 5/' "$out/ggx_material.json" >"$out/out_of_range.json"
 expect_error material_out_of_range "out_of_range.json:4:.*roughness" -- render "$out/out_of_range.json" -o "$out/x.png"
 sed 's/"ggx.brdf"/"missing.brdf"/' "$out/ggx_material.json" >"$out/missing.json"
-expect_error material_missing_brdf "missing.json:4:.*brdf_file.*missing.brdf" -- render "$out/missing.json" -o "$out/x.png"
+expect_error material_missing_brdf "missing.json:3:.*brdf_file.*missing.brdf" -- render "$out/missing.json" -o "$out/x.png"
 
 expect_error reference_refused "custom .brdf shaders run only on the GPU preview" -- \
   render --reference "$examples/lambert.brdf" -o "$out/x.png"

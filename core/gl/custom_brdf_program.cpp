@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <regex>
+#include <sstream>
 
 #include "gl/uniform_blocks.h"
 
@@ -17,6 +18,26 @@ bool keepsItsName(const std::string& name) {
 std::string includeName(const BrdfFile& file) {
     const bool plain = !file.path.empty() && file.path.find_first_of("\"\n\r") == std::string::npos;
     return plain ? file.path : "custom.brdf";
+}
+
+// Mesa names the right line but not always the right source string (some errors from included
+// text come back as string 0, surface.frag). So the .brdf text is numbered from this offset on,
+// and any error line above it is the .brdf file's line (offset + N), whatever file Mesa named.
+constexpr int kBrdfLineOffset = 100000;
+
+std::string renameBrdfLines(const std::string& log, const std::string& brdfPath) {
+    static const std::regex located(R"(^(.*?):(\d+):(\d+):)");
+    std::istringstream lines(log);
+    std::string line, out;
+    while (std::getline(lines, line)) {
+        std::smatch match;
+        if (std::regex_search(line, match, located) && match[2].length() < 9 && std::stoi(match[2]) > kBrdfLineOffset)
+            line = brdfPath + ":" + std::to_string(std::stoi(match[2]) - kBrdfLineOffset) + ":" + match[3].str() + ":" +
+                   match.suffix().str();
+        out += line + "\n";
+    }
+    if (!out.empty()) out.pop_back();
+    return out;
 }
 
 const char* glslType(ParamKind kind) {
@@ -58,7 +79,8 @@ GeneratedShaderFiles customBrdfShaderFiles(const CustomBrdf& brdf) {
         "// A custom BRDF reflects no ambient light (its albedo is unknown without integrating it).\n"
         "vec3 glintCustomNoAmbient(MaterialParams p, vec3 wo, ShadingFrame frame) { return vec3(0.0); }\n"
         "#define GLINT_AMBIENT_REFLECTANCE glintCustomNoAmbient\n";
-    return {{"generated/material.glsl", std::move(wrapper)}, {name, file.shaderText}};
+    return {{"generated/material.glsl", std::move(wrapper)},
+            {name, "#line " + std::to_string(kBrdfLineOffset + 1) + "\n" + file.shaderText}};
 }
 
 Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& sources, const CustomBrdf& brdf,
@@ -77,7 +99,7 @@ Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& so
             built->bindBlock("MaterialBlock", kMaterialBinding);
             entry = std::move(*built);
         } else {
-            entry = built.error();
+            entry = makeError(renameBrdfLines(built.error().message, brdf.file.path), {brdf.file.path});
         }
     }
     if (const auto* error = std::get_if<Diagnostic>(&entry)) return *error;
