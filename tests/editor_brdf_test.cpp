@@ -47,11 +47,11 @@ protected:
         std::ofstream(path) << text;
         return path;
     }
-    // Polls as the frame loop does until no probe is pending (at most 60 s).
-    static void settle(EditorState& state) {
-        double now = 0.0;
+    // Polls as the frame loop does (its clock a second further each time) until no probe is
+    // pending (at most 60 s).
+    void settle(EditorState& state) {
         for (int i = 0; i < 600; ++i) {
-            pollCustomBrdfs(state, now += 1.0);
+            pollCustomBrdfs(state, clockSeconds_ += 1.0);
             if (!state.customBrdfs.pending) return;
             std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }
@@ -62,6 +62,7 @@ protected:
         return scene.materials[scene.objects[state.selectedObject].materialIndex];
     }
     std::string directory_;
+    double clockSeconds_ = 0.0;
 };
 
 TEST_F(EditorBrdf, DroppedBrdfAndBparamSetTheMaterial) {
@@ -86,8 +87,9 @@ TEST_F(EditorBrdf, DroppedBrdfAndBparamSetTheMaterial) {
     // Material JSON keeps a relative path to the .brdf and the values.
     const std::string json = directory_ + "/material.json";
     ASSERT_TRUE(saveMaterialTo(state, json));
-    const std::string text = *readTextFile(json);
-    EXPECT_NE(text.find("\"brdf_file\": \"tinted.brdf\""), std::string::npos) << text;
+    auto text = readTextFile(json);
+    ASSERT_TRUE(text) << text.error().format();
+    EXPECT_NE(text->find("\"brdf_file\": \"tinted.brdf\""), std::string::npos) << *text;
     auto reread = loadMaterial(json);
     ASSERT_TRUE(reread) << reread.error().format();
     EXPECT_EQ(reread->values, selected(state).values);
@@ -115,7 +117,7 @@ TEST_F(EditorBrdf, ChangedFileReloadsAndBrokenChangesKeepTheLastGoodVersion) {
     settle(state);
     ASSERT_TRUE(selected(state).custom);
     const auto firstVersion = selected(state).custom;
-    const auto touch = [&](const std::string& text) {
+    const auto touch = [&, this](const std::string& text) {
         write("live.brdf", text);
         std::filesystem::last_write_time(path, std::filesystem::last_write_time(path) + std::chrono::seconds(5));
         settle(state);  // notices the change and starts the probe

@@ -375,16 +375,17 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
     if (!names.hasBrdf)
         return makeError("the shader block defines no 'vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)'",
                          {path, file.shaderLine, 1});
-    for (const auto& [type, name, offset] : names.uniforms) {
+    for (const ShaderNames::Uniform& uniform : names.uniforms) {
         const auto param = std::find_if(file.params.begin(), file.params.end(),
-                                        [&](const BrdfFileParam& p) { return p.name == name; });
+                                        [&](const BrdfFileParam& p) { return p.name == uniform.name; });
         if (param == file.params.end()) continue;  // a uniform of the shader's own: left at zero
-        if (type != glslTypeOf(param->kind))
-            return makeError("'uniform " + type + " " + name + "' does not match the parameter declared at line " +
-                                 std::to_string(param->line) + " (a " + glslTypeOf(param->kind) + ")",
-                             {path, 1 + static_cast<int>(std::count(code.begin(), code.begin() + offset, '\n')),
-                              static_cast<int>(offset - code.rfind('\n', offset)) });
-        file.declaredUniforms.push_back(name);
+        if (uniform.type != glslTypeOf(param->kind))
+            return makeError("'uniform " + uniform.type + " " + uniform.name +
+                                 "' does not match the parameter declared at line " + std::to_string(param->line) +
+                                 " (a " + glslTypeOf(param->kind) + ")",
+                             {path, 1 + static_cast<int>(std::count(code.begin(), code.begin() + uniform.offset, '\n')),
+                              static_cast<int>(uniform.offset - code.rfind('\n', uniform.offset))});
+        file.declaredUniforms.push_back(uniform.name);
     }
     file.shaderText = std::move(shaderLines);
     file.sourceText = std::string(text);
