@@ -84,14 +84,15 @@ GeneratedShaderFiles customBrdfShaderFiles(const CustomBrdf& brdf) {
 }
 
 Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& sources, const CustomBrdf& brdf,
-                                                        int samples) {
+                                                        int samples, bool gouraud) {
     const GeneratedShaderFiles files = customBrdfShaderFiles(brdf);
     std::string key;
     for (const auto& [path, text] : files) key += path + '\n' + text + '\0';
-    const auto found = programs_.find({key, samples});
-    auto& entry = found != programs_.end() ? found->second : programs_[{key, samples}];
+    const auto found = programs_.find({key, samples, gouraud});
+    auto& entry = found != programs_.end() ? found->second : programs_[{key, samples, gouraud}];
     if (found == programs_.end()) {
-        const std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
+        std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
+        if (gouraud) prelude += "#define GLINT_GOURAUD 1\n";  // shading per vertex, as Renderer's own programs
         auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", prelude, files);
         if (built) {
             built->bindBlock("FrameBlock", kFrameBinding);

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <tuple>
 #include <variant>
 
 #include "gl/shader_program.h"
@@ -25,10 +26,12 @@ class CustomBrdfPrograms {
 public:
     // The surface program for `brdf`; a compile error is kept and returned again (not rebuilt
     // every frame) until the source changes.
-    Result<const ShaderProgram*> program(const ShaderSources& sources, const CustomBrdf& brdf, int samples);
+    // `gouraud`: shaded per vertex (GLINT_GOURAUD), as the built-in models' programs.
+    Result<const ShaderProgram*> program(const ShaderSources& sources, const CustomBrdf& brdf, int samples,
+                                         bool gouraud = false);
 
 private:
-    std::map<std::pair<std::string, int>, std::variant<ShaderProgram, Diagnostic>> programs_;
+    std::map<std::tuple<std::string, int, bool>, std::variant<ShaderProgram, Diagnostic>> programs_;
 };
 
 // Sets the parameter uniforms of a bound custom-BRDF program from packed values.
