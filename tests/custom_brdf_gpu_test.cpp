@@ -89,28 +89,16 @@ vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)
 ::end shader
 )";
 
-// Line 7 holds the error (a float assigned a vec3).
-constexpr const char* kGlslError = R"(analytic
-::begin parameters
-float gain 0 2 1
-::end parameters
-::begin shader
-vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {
-    float wrong = L;
-    return vec3(gain);
+// Test files shared with brdf_cli_test.sh: glsl_error.brdf has its error on line 7 (a float
+// assigned a vec3); endless.brdf loops forever.
+std::shared_ptr<const CustomBrdf> loadTestBrdf(const std::string& name) {
+    auto brdf = loadCustomBrdf(std::string(GLINT_TEST_DATA_DIR) + "/brdf_files/" + name);
+    if (!brdf) {
+        ADD_FAILURE() << brdf.error().format();
+        return nullptr;
+    }
+    return *brdf;
 }
-::end shader
-)";
-
-constexpr const char* kEndlessLoop = R"(analytic
-::begin shader
-vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {
-    float sum = 0.0;
-    while (L.x < 2.0) sum += 1.0;  // |L.x| <= 1: never ends
-    return vec3(sum);
-}
-::end shader
-)";
 
 // Renders `custom` with `values` on the preview stage and compares with the CPU reference of the
 // same stage carrying `twin`.
@@ -152,12 +140,12 @@ TEST(CustomBrdfGpu, GgxMatchesCookTorranceGgxSmithSchlick) {
 }
 
 TEST(CustomBrdfGpu, GlslErrorNamesTheBrdfLine) {
-    auto custom = parseCustom(kGlslError, "broken.brdf");
+    auto custom = loadTestBrdf("glsl_error.brdf");
     ASSERT_TRUE(custom);
     const Scene stage = previewStage(customBrdfMaterial(custom), 32, 32);
     auto images = test::sharedHeadless().render(stage, 32, 32);
     ASSERT_FALSE(images);
-    EXPECT_NE(images.error().message.find("broken.brdf:7:"), std::string::npos) << images.error().message;
+    EXPECT_NE(images.error().message.find("glsl_error.brdf:7:"), std::string::npos) << images.error().message;
 }
 
 TEST(CustomBrdfGpu, ReferenceRefusesCustomBrdfs) {
@@ -172,16 +160,16 @@ TEST(CustomBrdfProbe, GoodShaderPassesAndErrorsComeBackWithLines) {
     auto good = parseCustom(kGgx, "ggx.brdf");
     ASSERT_TRUE(good);
     EXPECT_TRUE(probeCustomBrdf(*good, defaultValues(good->table), 60.0));
-    auto broken = parseCustom(kGlslError, "broken.brdf");
+    auto broken = loadTestBrdf("glsl_error.brdf");
     ASSERT_TRUE(broken);
     const Status probed = probeCustomBrdf(*broken, defaultValues(broken->table), 60.0);
     ASSERT_FALSE(probed);
-    EXPECT_NE(probed.error().message.find("broken.brdf:7:"), std::string::npos) << probed.error().message;
+    EXPECT_NE(probed.error().message.find("glsl_error.brdf:7:"), std::string::npos) << probed.error().message;
 }
 
 TEST(CustomBrdfProbe, EndlessLoopTimesOutWithoutHanging) {
     setBrdfProbeExecutable(GLINT_EXECUTABLE);
-    auto endless = parseCustom(kEndlessLoop, "endless.brdf");
+    auto endless = loadTestBrdf("endless.brdf");
     ASSERT_TRUE(endless);
     const auto start = std::chrono::steady_clock::now();
     const Status probed = probeCustomBrdf(*endless, {}, 3.0);
