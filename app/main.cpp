@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/bench_command.h"
+#include "cli/brdf_probe.h"
 #include "cli/headless.h"
 #include "cli/export_command.h"
 #include "cli/presets_command.h"
@@ -72,6 +73,8 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 1, argv + argc);
     if (!arguments.empty() && arguments[0] == "render")
         return glint::runRenderCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "probe-brdf")  // hidden: the custom-BRDF safety probe's child
+        return glint::runProbeBrdfCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "snapshot")
         return glint::runSnapshotCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "thumbnails")
@@ -104,6 +107,11 @@ int main(int argc, char** argv) {
         auto loaded = glint::loadScene(scenePath);
         if (!loaded) {
             std::fprintf(stderr, "glint: %s\n", loaded.error().format().c_str());
+            return 2;
+        }
+        // Custom .brdf shaders are proven to finish (in a child) before this process draws them.
+        if (glint::Status probed = glint::probeSceneBrdfs(*loaded, glint::brdfProbeTimeoutSeconds()); !probed) {
+            std::fprintf(stderr, "glint: %s\n", probed.error().format().c_str());
             return 2;
         }
         scene = std::move(*loaded);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <regex>
 
+#include "cli/brdf_probe.h"
 #include "cli/headless.h"
 #include "display/display_chain.h"
 #include "render/reference_renderer.h"
@@ -16,6 +17,7 @@ constexpr const char* kUsage =
     "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference] [--wireframe] [--normals]\n"
     "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256);\n"
     "                     also a Wavefront .mtl or a glTF .gltf (its first material on the stage)\n"
+    "                     or a BRDF Explorer .brdf file (preview stage, GPU only)\n"
     "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
@@ -84,7 +86,9 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
-    auto scene = loadRenderable(options.scenePath, 0, 0, &warnings);  // a material renders on the preview stage
+    // A material, interchange or .brdf file renders on the preview stage.
+    auto scene = isBrdfFilePath(options.scenePath) ? loadBrdfPreviewStage(options.scenePath)
+                                                   : loadRenderable(options.scenePath, 0, 0, &warnings);
     for (const Diagnostic& warning : warnings) std::fprintf(stderr, "glint render: %s\n", warning.format().c_str());
     if (!scene) {
         std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
@@ -96,6 +100,15 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     const int width = options.width > 0 ? options.width : scene->width;
     const int height = options.height > 0 ? options.height : scene->height;
 
+    // Custom .brdf shaders: GPU only, and proven to finish in a child process before drawing here.
+    if (Status gpuOnly = referenceCanRender(*scene); !gpuOnly && options.reference) {
+        std::fprintf(stderr, "glint render: %s\n", gpuOnly.error().format().c_str());
+        return 2;
+    }
+    if (Status probed = probeSceneBrdfs(*scene, brdfProbeTimeoutSeconds()); !probed) {
+        std::fprintf(stderr, "glint render: %s\n", probed.error().format().c_str());
+        return 2;
+    }
     RenderedImages images;
     if (options.reference) {
         images.radiance = renderReference(*scene, width, height);

@@ -5,9 +5,12 @@
 #include <filesystem>
 #include <system_error>
 
+#include "cli/brdf_probe.h"
 #include "edit/crash_guard.h"
 #include "editor/mesh_loading.h"
 #include "editor/interchange_open.h"
+#include "editor/custom_brdf_editor.h"
+#include "interchange/custom_brdf.h"
 #include "editor/settings.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
@@ -20,6 +23,10 @@ void openSceneFile(EditorState& state, const std::string& path) {
     auto loaded = loadScene(path);
     if (!loaded) {
         state.errorMessage = "Could not open the scene; your work is unchanged.\n\n" + loaded.error().format();
+        return;
+    }
+    if (Status probed = probeSceneBrdfs(*loaded, brdfProbeTimeoutSeconds()); !probed) {  // .brdf materials
+        state.errorMessage = "Could not open the scene; your work is unchanged.\n\n" + probed.error().format();
         return;
     }
     const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
@@ -64,6 +71,9 @@ void openMaterialFile(EditorState& state, const std::string& path) {
         return;
     }
     auto loaded = loadMaterial(path);
+    if (loaded && loaded->custom)  // a .brdf material: proven to finish before it is drawn
+        if (Status probed = probeCustomBrdf(*loaded->custom, loaded->values, brdfProbeTimeoutSeconds()); !probed)
+            loaded = probed.error();
     if (!loaded) {
         state.errorMessage = "Could not open the material; your work is unchanged.\n\n" + loaded.error().format();
         return;
@@ -88,6 +98,8 @@ bool saveMaterialTo(EditorState& state, const std::string& path) {
 
 void openDroppedFile(EditorState& state, const std::string& path) {
     if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
+    if (isBrdfFilePath(path)) return openBrdfFile(state, path);  // BRDF Explorer files
+    if (std::filesystem::path(path).extension() == ".bparam") return openBparamFile(state, path);
     if (openInterchangeFile(state, path)) return;  // .mtl, .gltf: by extension (interchange/import_formats.h)
     auto text = readTextFile(path);
     if (text && text->find("\"glint-material\"") != std::string::npos) openMaterialFile(state, path);

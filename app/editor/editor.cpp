@@ -20,6 +20,7 @@
 
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
+#include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/key_events.h"
 #include "editor/light_handles.h"
@@ -166,14 +167,18 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     double fullResolutionMilliseconds = 0.0;
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
+    double secondsToBrdfPoll = 1e9;
+    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     while (!state.quitNow) {
         gEventSeen = false;
+        const double secondsToWake = std::min(secondsToAutosave, secondsToBrdfPoll);
         if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
         else if (framesToDraw > 0) glfwPollEvents();
-        else if (secondsToAutosave < 1e8) glfwWaitEventsTimeout(std::max(secondsToAutosave, 0.01));
+        else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
         else glfwWaitEvents();
         const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
         if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
+        secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());  // .brdf probes and hot reload
         if (gCloseRequested) {
             gCloseRequested = false;
             requestQuit(state);

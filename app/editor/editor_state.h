@@ -11,6 +11,7 @@
 
 #include "edit/edit_session.h"
 #include "edit/recovery.h"
+#include "editor/custom_brdf_state.h"
 #include "editor/panels/file_browser.h"
 #include "editor/settings.h"
 
@@ -63,6 +64,8 @@ struct EditorState {
     std::uint64_t crashCopyRevision = 0;
     double lastAutosaveSeconds = -1e9;  // glfwGetTime() of the last recovery write
     bool wroteRecovery = false;         // the recovery file on disk is this editor's
+
+    CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
 };
 
 }  // namespace glint

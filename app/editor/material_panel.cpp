@@ -11,6 +11,7 @@
 #include "editor/color_space.h"
 #include "editor/ior_presets.h"
 #include "editor/texture_panel.h"
+#include "interchange/custom_brdf.h"
 
 namespace glint {
 namespace {
@@ -120,26 +121,37 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
 bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest) {
     bool changed = false;
     const ModelInfo& current = modelInfo(material.model);
-    if (ImGui::BeginCombo("Model", current.label)) {
+    const bool custom = material.custom != nullptr;  // a .brdf file: its own table, GPU only
+    if (ImGui::BeginCombo("Model", custom ? material.custom->displayName.c_str() : current.label)) {
         for (const ModelInfo& info : allModels()) {
-            if (ImGui::Selectable(info.label, info.model == material.model) && info.model != material.model) {
+            if (ImGui::Selectable(info.label, !custom && info.model == material.model) && (custom || info.model != material.model)) {
                 material.model = info.model;
                 material.values = defaultValues(info.params);
                 // Textures follow parameter names; only the normal map means the same in every model.
                 std::erase_if(material.textures, [](const MaterialTexture& t) { return t.parameter != kNormalMapKey; });
+                material.custom = nullptr;
                 changed = true;
             }
         }
         ImGui::EndCombo();
     }
-    const auto table = modelInfo(material.model).params;
+    const auto table = material.custom ? std::span<const ParamSpec>(material.custom->table) : modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i) {
         changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
+        if (material.custom) continue;  // a .brdf file's parameters: no IOR presets, no textures
         // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
         if (std::string_view(table[i].name) == "ior") changed |= drawIorPresetMenu(material);
         if (table[i].kind != ParamKind::Scalar && table[i].kind != ParamKind::Color) continue;
         ImGui::SameLine();
         changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
+    }
+    if (material.custom) {
+        ImGui::PushTextWrapPos();
+        ImGui::TextDisabled("BRDF Explorer file %s (reloads when it changes)", material.custom->file.path.c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f),
+                           "GPU preview only: the CPU reference (glint render --reference) cannot run .brdf shaders.");
+        ImGui::PopTextWrapPos();
+        return changed;
     }
     ImGui::TextUnformatted("Normal map");
     ImGui::SameLine();

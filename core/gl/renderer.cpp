@@ -235,8 +235,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
         const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
-        auto program = surfaceProgram(material.model, samples, object.interpolation == SurfaceInterpolation::Gouraud,
-                                      TexturedParams::of(material));
+        const bool gouraud = object.interpolation == SurfaceInterpolation::Gouraud;
+        auto program = material.custom ? customPrograms_.program(sources_, *material.custom, samples, gouraud)
+                                       : surfaceProgram(material.model, samples, gouraud, TexturedParams::of(material));
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -245,6 +246,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const ShaderProgram& shader = **program;
         glUseProgram(shader.id());
         setFusedDisplayUniforms(shader, fusedDisplay_);
+        if (material.custom) setCustomBrdfUniforms(shader, *material.custom, material.values);
         MaterialBlockStd140 materialBlock{};
         std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
                     materialBlock.values);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gl/material_glsl.h"
+#include "gl/custom_brdf_program.h"
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
 #include "gl/platform.h"
@@ -86,6 +87,7 @@ private:
     std::string shaderError_;
     // Keyed by model, MSAA samples, Gouraud and which parameters are textured (TexturedParams::mask).
     std::map<std::tuple<BrdfModel, int, bool, std::uint32_t>, SurfaceProgram> surfacePrograms_;
+    CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;

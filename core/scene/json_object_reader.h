@@ -42,6 +42,7 @@ public:
 
     bool has(const std::string& key) const { return node_.contains(key); }
     const std::string& pointer() const { return pointer_; }
+    const std::string& file() const { return document_.file(); }  // the JSON file, for relative paths
 
     double number(const std::string& key, double fallback, Bounds bounds = Bounds::any());
     double requiredNumber(const std::string& key, Bounds bounds = Bounds::any());

@@ -25,11 +25,16 @@ inline constexpr int kSceneFormatVersion = 1;
 // 16 KiB that OpenGL 4.1 guarantees per uniform block); the shader loops only over those present.
 inline constexpr int kMaxLights = 64;
 
+struct CustomBrdf;  // interchange/custom_brdf.h
+
 struct Material {
     std::string name;
     BrdfModel model = BrdfModel::Lambert;
     std::vector<float> values;  // packed per the model's parameter table
     std::vector<MaterialTexture> textures;  // parameters driven by textures (texture/), table order
+    // A BRDF Explorer .brdf file (GPU only). When set, `model` is unused and `values` are packed
+    // per custom->table.
+    std::shared_ptr<const CustomBrdf> custom;
 
     static Material withDefaults(std::string name, BrdfModel model);
 };

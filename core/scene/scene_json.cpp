@@ -4,8 +4,10 @@
 
 #include <array>
 
+#include "interchange/custom_material_json.h"
 #include "scene/format_migration.h"
 #include "scene/json_object_reader.h"
+#include "scene/param_values_json.h"
 #include "texture/texture_json.h"
 #include "scene/shape_json.h"
 #include "util/file_io.h"
@@ -52,6 +54,7 @@ constexpr const char* kMaterialReservedKeys[] = {"name", "model", "format", "ver
 Material readMaterial(ObjectReader& reader, const std::string& file) {
     Material material;
     material.name = reader.string("name", "material");
+    if (reader.has("brdf_file")) return readCustomBrdfMaterial(reader, std::move(material.name));  // a .brdf file
     const std::string modelId = reader.requiredString("model");
     const auto model = findModel(modelId);
     if (!model) {
@@ -60,57 +63,17 @@ Material readMaterial(ObjectReader& reader, const std::string& file) {
         reader.fail("model", "unknown model '" + modelId + "' (known models: " + list + ")");
     }
     material.model = *model;
-    const auto table = modelInfo(*model).params;
-    material.values = defaultValues(table);
-    for (size_t i = 0; i < table.size(); ++i) {
-        const ParamSpec& spec = table[i];
-        float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
-        Bounds bounds = Bounds::between(spec.validMin, spec.validMax == kUnbounded ? std::numeric_limits<double>::max()
-                                                                             : spec.validMax);
-        bounds.minExclusive = spec.validMinExclusive;
-        switch (spec.kind) {
-            case ParamKind::Scalar: value[0] = static_cast<float>(reader.number(spec.name, value[0], bounds)); break;
-            case ParamKind::Color:
-            case ParamKind::PerChannel: {
-                // A colour or per-channel quantity may be written as [r, g, b] or as one number for all three.
-                if (reader.has(spec.name) && reader.take(spec.name).is_number()) {
-                    const float grey = static_cast<float>(reader.number(spec.name, 0, bounds));
-                    value[0] = value[1] = value[2] = grey;
-                } else {
-                    const glm::vec3 color = reader.vec3(spec.name, {value[0], value[1], value[2]}, bounds);
-                    value[0] = color.r, value[1] = color.g, value[2] = color.b;
-                }
-                break;
-            }
-            case ParamKind::Bool: value[0] = reader.boolean(spec.name, value[0] != 0.0f) ? 1.0f : 0.0f; break;
-            case ParamKind::Enum: {
-                std::vector<const char*> ids;
-                for (const EnumOption& option : spec.options) ids.push_back(option.id);
-                value[0] = static_cast<float>(reader.choice(spec.name, ids, static_cast<int>(value[0])));
-                break;
-            }
-        }
-    }
+    material.values = readParamValues(reader, modelInfo(*model).params);
     readMaterialTextures(reader, material, file);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
 }
 
-// `file`: where the JSON goes, so that texture paths are written relative to it ("" for absolute).
+// `file`: where the JSON goes, so that texture and .brdf paths are written relative to it ("" for absolute).
 json materialBody(const Material& material, const std::string& file) {
+    if (material.custom) return customBrdfMaterialBody(material, file);
     json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
-    const auto table = modelInfo(material.model).params;
-    for (size_t i = 0; i < table.size(); ++i) {
-        const ParamSpec& spec = table[i];
-        const float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
-        switch (spec.kind) {
-            case ParamKind::Scalar: out[spec.name] = value[0]; break;
-            case ParamKind::Color:
-            case ParamKind::PerChannel: out[spec.name] = {value[0], value[1], value[2]}; break;
-            case ParamKind::Bool: out[spec.name] = value[0] != 0.0f; break;
-            case ParamKind::Enum: out[spec.name] = spec.options[static_cast<int>(value[0])].id; break;
-        }
-    }
+    writeParamValues(out, modelInfo(material.model).params, material.values);
     if (json textures = materialTexturesToJson(material, file); !textures.is_null()) out["textures"] = textures;
     return out;
 }
@@ -391,7 +354,7 @@ json sceneToJson(const Scene& scene, const std::string& file) {
 }
 
 Status saveScene(const Scene& scene, const std::string& path) {
-    json out = sceneToJson(scene, path);  // texture paths relative to `path`
+    json out = sceneToJson(scene, path);  // texture and .brdf paths relative to `path`
     relocateMeshPaths(scene, path, out);
     return writeFileAtomically(path, out.dump(2) + "\n");
 }

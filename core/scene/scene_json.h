@@ -16,7 +16,8 @@ namespace glint {
 Result<Scene> parseScene(const std::string& text, const std::string& file);
 Result<Scene> loadScene(const std::string& path);
 
-// `file`: where the JSON will be written; texture paths are made relative to it ("" keeps them absolute).
+// `file`: where the JSON will be written; texture and .brdf paths are made relative to it ("" keeps
+// them absolute).
 nlohmann::json sceneToJson(const Scene& scene, const std::string& file = "");
 Status saveScene(const Scene& scene, const std::string& path);
 

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/mesh_loading.h"
 #include "editor/key_events.h"
@@ -120,6 +121,8 @@ void handleFileBrowser(EditorState& state) {
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
         case FilePurpose::OpenMesh: startMeshLoad(state, *chosen); break;
         case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;
+        case FilePurpose::OpenBrdf: openDroppedFile(state, *chosen); break;  // routes .brdf and .bparam
+        case FilePurpose::SaveBparamAs: saveBparamTo(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

@@ -27,6 +27,8 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::SaveScreenshot: return "Save screenshot (.png or .exr)###FileBrowser";
         case FilePurpose::OpenMesh: return "Open mesh (adds an object)###FileBrowser";
         case FilePurpose::OpenTexture: return "Open texture image###FileBrowser";
+        case FilePurpose::OpenBrdf: return "Open BRDF Explorer file (.brdf, .bparam)###FileBrowser";
+        case FilePurpose::SaveBparamAs: return "Save parameter values as (.bparam)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -89,7 +91,7 @@ std::optional<std::string> confirm(FileBrowser& browser) {
 }  // namespace
 
 bool purposeSaves(FilePurpose purpose) {
-    return purpose == FilePurpose::SaveSceneAs || purpose == FilePurpose::SaveMaterialAs ||
+    return purpose == FilePurpose::SaveSceneAs || purpose == FilePurpose::SaveMaterialAs || purpose == FilePurpose::SaveBparamAs ||
            purpose == FilePurpose::SaveScreenshot;
 }
 
@@ -99,7 +101,9 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
                          : purpose == FilePurpose::OpenTexture
                              ? std::vector<std::string>{".png", ".jpg", ".jpeg", ".exr", ".hdr", ".tif", ".tiff"}
-                             : std::vector<std::string>{".json"};
+                         : purpose == FilePurpose::OpenBrdf     ? std::vector<std::string>{".brdf", ".bparam"}
+                         : purpose == FilePurpose::SaveBparamAs ? std::vector<std::string>{".bparam"}
+                                                                : std::vector<std::string>{".json"};
     if (purpose == FilePurpose::OpenMesh) {
         browser.extensions.clear();
         for (const std::string& extension : meshFileExtensions()) browser.extensions.push_back("." + extension);

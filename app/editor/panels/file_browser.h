@@ -9,7 +9,9 @@
 
 namespace glint {
 
-enum class FilePurpose { OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh, OpenTexture };
+enum class FilePurpose {
+    OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh, OpenTexture, OpenBrdf, SaveBparamAs
+};
 
 struct FileBrowser {
     bool requested = false;  // open the modal on the next frame

@@ -34,6 +34,12 @@ void drawFileMenu(EditorState& state) {
         requestFileBrowser(state.fileBrowser, FilePurpose::OpenMaterial, "");
     if (ImGui::MenuItem("Save material as…", nullptr, false, hasObject))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveMaterialAs, "material.json");
+    if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))
+        requestFileBrowser(state.fileBrowser, FilePurpose::OpenBrdf, "");
+    const bool customMaterial =
+        hasObject && state.session.scene().materials[state.session.scene().objects[state.selectedObject].materialIndex].custom;
+    if (ImGui::MenuItem("Save parameter values as .bparam…", nullptr, false, customMaterial))
+        requestFileBrowser(state.fileBrowser, FilePurpose::SaveBparamAs, "values.bparam");
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot of the viewport…", "F12"))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");

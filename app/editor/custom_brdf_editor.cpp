@@ -1,0 +1,194 @@
+// Editor actions for .brdf and .bparam files (see custom_brdf_editor.h).
+// Sections: probing · open and save · hot reload.
+#include "editor/custom_brdf_editor.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include "cli/brdf_probe.h"
+#include "interchange/bparam_file.h"
+
+namespace glint {
+namespace {
+
+// --- probing --------------------------------------------------------------------------------
+
+long long modificationTime(const std::string& path) {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(path, error);
+    return error ? 0 : static_cast<long long>(time.time_since_epoch().count());
+}
+
+std::string secondsText(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds);
+    return text;
+}
+
+void startProbe(EditorState& state, std::shared_ptr<const CustomBrdf> brdf, std::vector<float> values, bool reload,
+                int materialIndex) {
+    const double timeout = brdfProbeTimeoutSeconds();
+    std::function<void()> wake = state.customBrdfs.wake;
+    PendingBrdfProbe pending{brdf, values, reload, materialIndex, {}};
+    pending.result = std::async(std::launch::async, [brdf, values, timeout, wake] {
+        Status probed = probeCustomBrdf(*brdf, values, timeout);
+        if (wake) wake();
+        return probed;
+    });
+    state.customBrdfs.pending = std::move(pending);
+    state.statusMessage = "Checking " + brdf->displayName + " (compiles, and finishes within " + secondsText(timeout) +
+                          " s)…";
+}
+
+// Values for a reloaded BRDF: each parameter keeps its value when the new file has it with the
+// same kind and the value still lies in its range; otherwise it takes the new default.
+std::vector<float> carryValues(const CustomBrdf& before, const std::vector<float>& values, const CustomBrdf& after) {
+    std::vector<float> carried = defaultValues(after.table);
+    for (size_t i = 0; i < after.table.size(); ++i) {
+        const ParamSpec& spec = after.table[i];
+        const int old = findParam(before.table, spec.name);
+        if (old < 0 || before.table[old].kind != spec.kind) continue;
+        const float* value = values.data() + packedOffset(before.table, old);
+        bool fits = true;
+        for (int c = 0; c < componentCount(spec.kind); ++c)
+            fits = fits && value[c] >= spec.validMin && value[c] <= spec.validMax;
+        if (!fits) continue;
+        std::copy(value, value + componentCount(spec.kind), carried.begin() + packedOffset(after.table, static_cast<int>(i)));
+    }
+    return carried;
+}
+
+void finishProbe(EditorState& state, PendingBrdfProbe& pending, const Status& verdict) {
+    const CustomBrdf& brdf = *pending.brdf;
+    state.customBrdfs.seenModification[brdf.file.path] = modificationTime(brdf.file.path);
+    if (!verdict) {
+        const std::string message = brdf.displayName + " was not used:\n" + verdict.error().format();
+        if (pending.reload) {
+            state.materialPanelMessage = message + "\nThe last good version stays on screen.";
+            state.statusMessage = brdf.displayName + " changed but was not used (see the material panel)";
+        } else {
+            state.errorMessage = message + "\n\nYour material is unchanged.";
+            state.statusMessage.clear();
+        }
+        return;
+    }
+    const Scene& scene = state.session.scene();
+    if (!pending.reload) {
+        if (pending.materialIndex >= static_cast<int>(scene.materials.size())) return;
+        Material material = customBrdfMaterial(pending.brdf);
+        material.name = scene.materials[pending.materialIndex].name;
+        state.session.change("Open " + brdf.displayName).materials[pending.materialIndex] = std::move(material);
+        state.statusMessage = "Custom BRDF from " + brdf.file.path;
+    } else {
+        Scene& changed = state.session.change("Reload " + brdf.displayName);
+        for (Material& material : changed.materials) {
+            if (!material.custom || material.custom->file.path != brdf.file.path) continue;
+            material.values = carryValues(*material.custom, material.values, brdf);
+            material.custom = pending.brdf;
+        }
+        state.materialPanelMessage.clear();
+        state.statusMessage = "Reloaded " + brdf.file.path;
+    }
+    state.session.settle(false);
+}
+
+}  // namespace
+
+// --- open and save --------------------------------------------------------------------------
+
+void openBrdfFile(EditorState& state, const std::string& path) {
+    const Scene& scene = state.session.scene();
+    if (scene.objects.empty()) {
+        state.errorMessage = "The scene has no object to put the BRDF on.";
+        return;
+    }
+    if (state.customBrdfs.pending) {
+        state.errorMessage = "Another .brdf file is still being checked; try again in a moment.";
+        return;
+    }
+    const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+    auto brdf = loadCustomBrdf(absolute);
+    if (!brdf) {
+        state.errorMessage = "Could not open the BRDF; your work is unchanged.\n\n" + brdf.error().format();
+        return;
+    }
+    const int materialIndex = scene.objects[state.selectedObject].materialIndex;
+    const std::vector<float> values = defaultValues((*brdf)->table);
+    startProbe(state, std::move(*brdf), values, false, materialIndex);
+}
+
+void openBparamFile(EditorState& state, const std::string& path) {
+    const Scene& scene = state.session.scene();
+    const int materialIndex = scene.objects.empty() ? -1 : scene.objects[state.selectedObject].materialIndex;
+    if (materialIndex < 0 || !scene.materials[materialIndex].custom) {
+        state.errorMessage = "A .bparam file holds parameter values for a .brdf material: open the .brdf file first "
+                             "(File ▸ Open BRDF Explorer file…), then its .bparam.";
+        return;
+    }
+    const Material& material = scene.materials[materialIndex];
+    auto values = loadBparam(path, *material.custom, material.values);
+    if (!values) {
+        state.errorMessage = "Could not read the parameter values; your material is unchanged.\n\n" + values.error().format();
+        return;
+    }
+    state.session.change("Open " + std::filesystem::path(path).filename().string()).materials[materialIndex].values =
+        std::move(*values);
+    state.session.settle(false);
+    state.statusMessage = "Parameter values from " + path;
+}
+
+bool saveBparamTo(EditorState& state, const std::string& path) {
+    const Scene& scene = state.session.scene();
+    if (scene.objects.empty()) return false;
+    const Material& material = scene.materials[scene.objects[state.selectedObject].materialIndex];
+    if (!material.custom) {
+        state.errorMessage = "The selected material is not a .brdf material; .bparam files hold .brdf parameter values.";
+        return false;
+    }
+    if (Status saved = saveBparam(path, *material.custom, material.values); !saved) {
+        state.errorMessage = "Could not save the parameter values.\n\n" + saved.error().format();
+        return false;
+    }
+    state.statusMessage = "Saved parameter values " + path;
+    return true;
+}
+
+// --- hot reload -----------------------------------------------------------------------------
+
+double pollCustomBrdfs(EditorState& state, double nowSeconds) {
+    constexpr double kPollInterval = 0.5;
+    CustomBrdfEditorState& brdfs = state.customBrdfs;
+    if (brdfs.pending) {
+        if (brdfs.pending->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return kPollInterval;
+        PendingBrdfProbe finished = std::move(*brdfs.pending);
+        brdfs.pending.reset();
+        finishProbe(state, finished, finished.result.get());
+    }
+    bool anyCustom = false;
+    for (const Material& material : state.session.scene().materials) anyCustom |= material.custom != nullptr;
+    if (!anyCustom) return 1e9;
+    if (nowSeconds - brdfs.lastPollSeconds < kPollInterval) return brdfs.lastPollSeconds + kPollInterval - nowSeconds;
+    brdfs.lastPollSeconds = nowSeconds;
+    for (const Material& material : state.session.scene().materials) {
+        if (!material.custom) continue;
+        const std::string& path = material.custom->file.path;
+        const long long modified = modificationTime(path);
+        auto [seen, added] = brdfs.seenModification.try_emplace(path, modified);
+        if (added || modified == seen->second || modified == 0) continue;
+        seen->second = modified;
+        auto reloaded = loadCustomBrdf(path);
+        if (!reloaded) {
+            state.materialPanelMessage = material.custom->displayName + " changed but cannot be used:\n" +
+                                         reloaded.error().format() + "\nThe last good version stays on screen.";
+            continue;
+        }
+        startProbe(state, *reloaded, carryValues(*material.custom, material.values, **reloaded), true, 0);
+        break;  // one probe at a time
+    }
+    return kPollInterval;
+}
+
+}  // namespace glint

@@ -1,0 +1,67 @@
+// A .brdf file as a Glint model (see custom_brdf.h).
+#include "interchange/custom_brdf.h"
+
+#include <cctype>
+#include <filesystem>
+
+#include "scene/preview_stage.h"
+#include "scene/scene.h"
+#include "snapshot/case_source.h"
+
+namespace glint {
+
+std::shared_ptr<const CustomBrdf> makeCustomBrdf(BrdfFile file) {
+    auto custom = std::make_shared<CustomBrdf>();
+    custom->file = std::move(file);
+    custom->displayName = std::filesystem::path(custom->file.path).filename().string();
+    for (const BrdfFileParam& param : custom->file.params) {
+        ParamSpec spec{param.name.c_str(), param.name.c_str(), "", param.kind};
+        if (param.kind == ParamKind::Scalar) {
+            spec.sliderMin = spec.validMin = param.min;
+            spec.sliderMax = spec.validMax = param.max;
+        } else if (param.kind == ParamKind::Color) {
+            spec.validMax = kUnbounded;  // BRDF Explorer colours may exceed 1 (a scale, not an albedo)
+        }
+        spec.defaultValue = param.defaultValue;
+        spec.help = "From the .brdf file's parameters block";
+        custom->table.push_back(spec);
+    }
+    return custom;
+}
+
+Result<std::shared_ptr<const CustomBrdf>> loadCustomBrdf(const std::string& path) {
+    auto file = loadBrdfFile(path);
+    if (!file) return file.error();
+    return makeCustomBrdf(std::move(*file));
+}
+
+Material customBrdfMaterial(std::shared_ptr<const CustomBrdf> brdf) {
+    Material material;
+    material.name = std::filesystem::path(brdf->displayName).stem().string();
+    material.values = defaultValues(brdf->table);
+    material.custom = std::move(brdf);
+    return material;
+}
+
+bool isBrdfFilePath(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".brdf";
+}
+
+Result<Scene> loadBrdfPreviewStage(const std::string& path, int width, int height) {
+    auto brdf = loadCustomBrdf(path);
+    if (!brdf) return brdf.error();
+    return previewStage(customBrdfMaterial(std::move(*brdf)), width > 0 ? width : kDefaultMaterialPreviewSize,
+                        height > 0 ? height : kDefaultMaterialPreviewSize);
+}
+
+Status referenceCanRender(const Scene& scene) {
+    for (const Material& material : scene.materials)
+        if (material.custom)
+            return makeError("material '" + material.name + "' uses the custom BRDF " + material.custom->file.path +
+                             ": custom .brdf shaders run only on the GPU preview, not on the CPU reference");
+    return success();
+}
+
+}  // namespace glint
