@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "math/frame.h"
+#include "environment/environment_lighting.h"
+#include "render/environment_sampling.h"
 #include "render/specular_transport.h"
 
 namespace glint {
@@ -74,7 +76,8 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
     return nearest;
 }
 
-glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer) {
+glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
+                   uint32_t pixelSeed) {
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
     const ShadingFrame frame = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
     glm::vec3 radiance(0.0f);
@@ -91,26 +94,33 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
     radiance += ambientReflectance(material.model, material.values, towardsViewer, frame) * ambient;
-    // Delta lobes (mirror, glass), traced against the background only.
+    // Environment light: the GPU's image-based lighting, or sampled.
+    radiance += options.sampleEnvironment
+                    ? sampleEnvironmentLighting(material.model, material.values, towardsViewer, frame, scene.environment,
+                                                pixelSeed, options.environmentSamples)
+                    : environmentLighting(material.model, material.values, towardsViewer, frame, scene.environment);
+    // Delta lobes (mirror, glass), traced against the environment or the background.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
     std::optional<SphereGeometry> sphere;
     if (const auto* sphereShape = std::get_if<SphereShape>(&shape)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
+    radiance += traceSpecular(material.model, material.values, MissRadiance(scene.background, &scene.environment), sphere ? &*sphere : nullptr,
                               hit.position, hit.normal, towardsViewer, hit.distance);
     return radiance;
 }
 
-RadianceImage renderReference(const Scene& scene, int width, int height) {
+RadianceImage renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options) {
     if (width <= 0 || height <= 0) width = scene.width, height = scene.height;
     RadianceImage image(width, height);
     const glm::mat4 inverseViewProjection =
         glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
+    const MissRadiance miss(scene.background, &scene.environment);
     auto renderRows = [&](int firstRow, int rowStep) {
         for (int y = firstRow; y < height; y += rowStep) {
             for (int x = 0; x < width; ++x) {
                 const Ray ray = primaryRay(inverseViewProjection, x + 0.5f, y + 0.5f, width, height);
                 const auto hit = intersectScene(scene, ray);
-                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : backgroundRadiance(scene.background, ray.direction));
+                const uint32_t pixelSeed = static_cast<uint32_t>(y) * static_cast<uint32_t>(width) + static_cast<uint32_t>(x);
+                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction, options, pixelSeed) : miss.primary(ray.direction));
             }
         }
     };

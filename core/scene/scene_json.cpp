@@ -3,7 +3,9 @@
 #include "scene/scene_json.h"
 
 #include <array>
+#include <filesystem>
 
+#include "scene/environment_json.h"
 #include "scene/json_object_reader.h"
 #include "util/file_io.h"
 
@@ -309,6 +311,7 @@ Scene readScene(const JsonDocument& document) {
         scene.camera = readCamera(camera);
     }
     scene.background = readBackground(root);
+    scene.environment = readEnvironment(root, std::filesystem::path(document.file()).parent_path().string());
     if (root.has("display")) {
         ObjectReader display = root.object("display");
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
@@ -361,6 +364,7 @@ json sceneToJson(const Scene& scene) {
                      {"near", camera.nearPlane},
                      {"far", camera.farPlane}};
     out["background"] = backgroundToJson(scene.background);
+    if (scene.environment.kind != EnvironmentKind::None) out["environment"] = environmentToJson(scene.environment);
     out["display"] = {{"exposure", scene.display.exposureStops},
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
                       {"gamma", scene.display.gamma},
