@@ -38,16 +38,23 @@ std::array<float, 9> shBasis(glm::vec3 d) {
             1.092548f * d.x * d.z, 0.546274f * (d.x * d.x - d.y * d.y)};
 }
 
-// L_lm = Σ L(texel) Y_lm(texel centre) Δω(texel).
+// L_lm = Σ L(texel) ∫_texel Y_lm dω, each texel's integral taken over `strips` strips in θ with
+// their exact solid angles (the basis varies along θ within a tall texel; along φ the column
+// centres already integrate sin and cos of φ and 2φ exactly). Enough strips that a texel is at most
+// 1/256 of π high: a uniform map then projects to L_00 alone within 1e-5.
 std::array<glm::vec3, 9> projectSh(const EquirectImage& image) {
     std::array<glm::vec3, 9> coefficients{};
+    const int strips = std::clamp(256 / image.height, 1, 64);
     for (int y = 0; y < image.height; ++y) {
-        const float solidAngle = texelSolidAngle(y, image.width, image.height);
-        for (int x = 0; x < image.width; ++x) {
-            const glm::vec3 direction =
-                equirectDirection({(x + 0.5f) / image.width, (y + 0.5f) / image.height});
-            const std::array<float, 9> basis = shBasis(direction);
-            for (int i = 0; i < 9; ++i) coefficients[i] += image.at(x, y) * (basis[i] * solidAngle);
+        for (int strip = 0; strip < strips; ++strip) {
+            const float top = kPi * (y + static_cast<float>(strip) / strips) / image.height;
+            const float bottom = kPi * (y + static_cast<float>(strip + 1) / strips) / image.height;
+            const float solidAngle = 2.0f * kPi / image.width * (std::cos(top) - std::cos(bottom));
+            const float v = 0.5f * (top + bottom) * kInvPi;
+            for (int x = 0; x < image.width; ++x) {
+                const std::array<float, 9> basis = shBasis(equirectDirection({(x + 0.5f) / image.width, v}));
+                for (int i = 0; i < 9; ++i) coefficients[i] += image.at(x, y) * (basis[i] * solidAngle);
+            }
         }
     }
     return coefficients;

@@ -21,7 +21,7 @@ namespace glint {
 inline constexpr int kPrefilteredLevels = 5;
 inline constexpr int kPrefilteredWidth = 128, kPrefilteredHeight = 64;
 // GGX samples per prefiltered texel (Hammersley points, filtered importance sampling).
-inline constexpr int kPrefilterSamples = 192;
+inline constexpr int kPrefilterSamples = 128;
 
 struct EnvironmentMap {
     EquirectImage radiance;                       // base level [W/(sr·m²)], as loaded or baked

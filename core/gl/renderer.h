@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/environment_textures.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
@@ -82,6 +83,7 @@ private:
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
     long long trianglesDrawn_ = 0;
+    std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};
     RenderTarget displayTarget_{GL_RGBA8, false};

@@ -44,9 +44,12 @@ glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> valu
     const bool glossy = environmentRoughness(model, values) > 0.0f;
     const glm::vec2 shift{hashToUnit(2u * pixelSeed), hashToUnit(2u * pixelSeed + 1u)};
     glm::vec3 sum(0.0f);
+    // Glossy models: the first half of the samples cosine-weighted, the second half GGX, each
+    // half its own Hammersley set (interleaving one set would give each strategy half the azimuths).
+    const int perStrategy = glossy ? (sampleCount + 1) / 2 : sampleCount;
     for (int i = 0; i < sampleCount; ++i) {
-        const glm::vec2 u = glm::fract(hammersley(i, sampleCount) + shift);
-        const bool useGgx = glossy && (i % 2 == 1);
+        const bool useGgx = glossy && i >= perStrategy;
+        const glm::vec2 u = glm::fract(hammersley(useGgx ? i - perStrategy : i, perStrategy) + shift);
         glm::vec3 light;
         if (useGgx) {
             const glm::vec3 halfway = sampleGgxVisibleNormal(view, u, alpha);

@@ -116,6 +116,7 @@ void handleFileBrowser(EditorState& state) {
             break;
         case FilePurpose::OpenMaterial: openMaterialFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
+        case FilePurpose::OpenEnvironment: openEnvironmentFile(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

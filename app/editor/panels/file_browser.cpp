@@ -23,6 +23,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenMaterial: return "Open material###FileBrowser";
         case FilePurpose::SaveMaterialAs: return "Save material as###FileBrowser";
         case FilePurpose::SaveScreenshot: return "Save screenshot (.png or .exr)###FileBrowser";
+        case FilePurpose::OpenEnvironment: return "Open environment (.hdr or .exr)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -92,8 +93,9 @@ bool purposeSaves(FilePurpose purpose) {
 void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::string& startPath) {
     browser.requested = true;
     browser.purpose = purpose;
-    browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
-                                                                : std::vector<std::string>{".json"};
+    browser.extensions = purpose == FilePurpose::SaveScreenshot    ? std::vector<std::string>{".png", ".exr"}
+                         : purpose == FilePurpose::OpenEnvironment ? std::vector<std::string>{".hdr", ".exr"}
+                                                                   : std::vector<std::string>{".json"};
     browser.error.clear();
     std::error_code error;
     fs::path start = startPath.empty() ? fs::current_path(error) : fs::absolute(startPath, error);
