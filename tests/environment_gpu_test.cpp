@@ -67,7 +67,9 @@ TEST(EnvironmentGpu, GgxWhiteFurnaceWithinTheSplitSumTolerance) {
         const RadianceImage sampled = renderReference(scene, 32, 32, {true, 512});
         forDiscPixels(gpu, 0.2f, [&](int x, int y, float cosine) {
             ASSERT_NEAR(gpu.at(x, y).g, sampled.at(x, y).g, 0.03f) << "α " << roughness << " at " << x << "," << y;
-            if (roughness < 0.2f && cosine >= 0.7f) ASSERT_NEAR(gpu.at(x, y).g, 1.0f, 0.025f) << x << "," << y;
+            if (roughness < 0.2f && cosine >= 0.7f) {
+                ASSERT_NEAR(gpu.at(x, y).g, 1.0f, 0.025f) << x << "," << y;
+            }
         });
     }
 }

@@ -24,9 +24,9 @@ Result<EquirectImage> readEquirectFile(const std::string& path) {
     if (spec.nchannels < 3)
         return makeError("the environment image has " + std::to_string(spec.nchannels) +
                              " channel(s); it needs red, green and blue", where);
-    if (spec.width != 2 * spec.height || spec.height < 2 || spec.height > 8192)
+    if (spec.width != 2 * spec.height || spec.height < 2 || spec.height > 4096)
         return makeError("the environment image is " + std::to_string(spec.width) + "×" + std::to_string(spec.height) +
-                             "; an equirectangular map is twice as wide as it is high (from 4×2 to 16384×8192)",
+                             "; an equirectangular map is twice as wide as it is high (from 4×2 to 8192×4096)",
                          where);
     std::vector<float> all(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
     if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))

@@ -78,8 +78,8 @@ vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness)
                                      sampleEnvironmentLevel(lower + 1, d) * t);
 }
 
-// Split-sum (A, B): twin of sampleSplitSum().
-vec2 environmentSplitSum(float cosOut, float perceptualRoughness) {
+// Split-sum (A, B): twin of sampleSplitSum() in environment_map.cpp.
+vec2 sampleSplitSum(float cosOut, float perceptualRoughness) {
     float last = float(SPLIT_SUM_SIZE - 1);
     float x = clamp(cosOut * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
     float y = clamp(perceptualRoughness * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
@@ -107,7 +107,7 @@ float environmentFormWeight(int form, float cosOut, float normalization) {
 
 vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
     float perceptual = sqrt(alpha);
-    vec2 scaleBias = environmentSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
+    vec2 scaleBias = sampleSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
     return environmentSpecularRadiance(environmentMirrorDirection(wo, frame), perceptual) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
