@@ -45,7 +45,7 @@ struct ModelInfo {
     // lighting, shaders/common/environment.glsl), at the end of the model's GLSL file; C++ twin: a
     // case in environmentLighting() (environment/environment_lighting.cpp). nullptr: none.
     const char* glslEnvironment = nullptr;
-    // How the environment lights the model, in words (docs and the material panel's tooltip).
+    // How the environment lights the model, in words (shown under the material panel).
     const char* environmentResponse = "not lit by the environment (only its delta lobes see it)";
 };
 
