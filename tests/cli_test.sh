@@ -65,6 +65,17 @@ expect_error overlays_reference "not with --reference" -- render "$here/scenes/l
 expect_error editor_bad_scene "invalid\.json:4:" -- "$out/invalid.json"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "cook_torrance",\n   "ior": [1.5, 0, 1.5]}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/zero_ior.json"
 expect_error zero_ior "zero_ior\.json:3:[0-9]+: .*'ior\[1\]': 0 is out of range: must be greater than 0" -- render "$out/zero_ior.json" -o "$out/x.png"
+# An environment image that is not one: a truncated Radiance header, named at the scene's "file" key.
+printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n\x02\x02' >"$out/truncated.hdr"
+printf '{\n  "format": "glint-scene", "version": 1,\n  "environment": {"type": "file", "file": "truncated.hdr"},\n  "materials": [{"name": "m", "model": "lambert"}],\n  "objects": [{"shape": "sphere", "material": "m"}]\n}\n' >"$out/bad_hdr.json"
+expect_error truncated_hdr "bad_hdr\.json:3:[0-9]+: environment 'file': .*truncated\.hdr: cannot read the environment image" -- render "$out/bad_hdr.json" -o "$out/x.png"
+# A built-in environment renders with no file at all.
+printf '{\n  "format": "glint-scene", "version": 1,\n  "environment": {"type": "studio"},\n  "materials": [{"name": "m", "model": "cook_torrance"}],\n  "objects": [{"shape": "sphere", "material": "m"}]\n}\n' >"$out/studio.json"
+if ! "$glint" render "$out/studio.json" -o "$out/studio.png" --size 64x64 || [[ ! -s "$out/studio.png" ]]; then
+  echo "FAIL studio environment: no image"; failures=$((failures + 1))
+else
+  echo "ok   studio environment renders"
+fi
 expect_error unknown_preset "unknown preset 'unobtainium'" -- presets unobtainium -o "$out/x.json"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "lambert",\n   "textures": {"albedo": {"type": "image", "file": "maps/missing.png"}}}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/missing_texture.json"
 expect_error missing_texture "missing_texture\.json:3:[0-9]+: .*texture 'maps/missing\.png' for 'albedo': .*maps/missing\.png: texture image file not found" -- render "$out/missing_texture.json" -o "$out/x.png"
@@ -93,5 +104,5 @@ else
   echo "FAIL no display: no headless image"; failures=$((failures + 1))
 fi
 
-echo "$((19 - failures)) passed, $failures failed"
+echo "$((21 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

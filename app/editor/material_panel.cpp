@@ -163,6 +163,7 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     }
     ImGui::PushTextWrapPos();
     ImGui::TextDisabled("%s", modelInfo(material.model).citation);
+    ImGui::TextDisabled("Environment light: %s", modelInfo(material.model).environmentResponse);
     ImGui::PopTextWrapPos();
     return changed;
 }

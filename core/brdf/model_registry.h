@@ -40,6 +40,13 @@ struct ModelInfo {
     // (common/specular_transport.glsl); C++ twin: a case in traceSpecular() in
     // render/specular_transport.cpp. nullptr: none.
     const char* glslTransport = nullptr;
+    // Environment hook: the GLSL function `vec3 f(MaterialParams, vec3 wo, ShadingFrame)` giving
+    // the radiance the model's non-delta lobes reflect from the environment map (image-based
+    // lighting, shaders/common/environment.glsl), at the end of the model's GLSL file; C++ twin: a
+    // case in environmentLighting() (environment/environment_lighting.cpp). nullptr: none.
+    const char* glslEnvironment = nullptr;
+    // How the environment lights the model, in words (shown under the material panel).
+    const char* environmentResponse = "not lit by the environment (only its delta lobes see it)";
 };
 
 std::span<const ModelInfo> allModels();

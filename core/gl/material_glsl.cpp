@@ -6,7 +6,8 @@
 namespace glint {
 namespace {
 
-// The registry's optional hooks: ambient reflectance (zero when absent) and specular transport.
+// The registry's optional hooks: ambient reflectance (zero when absent), specular transport and
+// environment lighting.
 std::string hooks(const ModelInfo& model) {
     std::string glsl;
     if (model.glslAmbient) {
@@ -16,6 +17,10 @@ std::string hooks(const ModelInfo& model) {
                 "#define GLINT_AMBIENT_REFLECTANCE noAmbientReflectance\n";
     }
     if (model.glslTransport) glsl += "#define GLINT_SPECULAR_TRANSPORT " + std::string(model.glslTransport) + "\n";
+    // The environment hook exists only where common/environment.glsl was included first.
+    if (model.glslEnvironment)
+        glsl += "#ifdef GLINT_HAS_ENVIRONMENT\n#define GLINT_ENVIRONMENT_LIGHTING " + std::string(model.glslEnvironment) +
+                "\n#endif\n";
     return glsl;
 }
 

@@ -62,6 +62,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     if (Status loaded = loadGlFunctions(platform); !loaded) return loaded.error();
     std::unique_ptr<Renderer> renderer(new Renderer(platform, std::move(sources)));
     renderer->description_ = glDescription();
+    renderer->environment_ = std::make_unique<EnvironmentTextures>();
     auto program = ShaderProgram::build(renderer->sources_, "fullscreen.vert", "display.frag");
     if (!program) return program.error();
     renderer->displayProgram_ = std::move(*program);
@@ -107,6 +108,7 @@ long long Renderer::newestModification(const std::vector<std::string>& files) co
 Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
     auto program = ShaderProgram::build(sources_, "fullscreen.vert", "background.frag");
     if (program) program->bindBlock("FrameBlock", kFrameBinding);
+    if (program) EnvironmentTextures::connect(*program);
     return program;
 }
 
@@ -121,6 +123,7 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
     program->bindBlock("FrameBlock", kFrameBinding);
     program->bindBlock("LightBlock", kLightBinding);
     program->bindBlock("MaterialBlock", kMaterialBinding);
+    EnvironmentTextures::connect(*program);
     SurfaceProgram entry{std::move(*program), {}, 0};
     if (auto assembled = assembleShader(sources_, "surface.vert", prelude, generated)) entry.files = assembled->files;
     if (auto assembled = assembleShader(sources_, "surface.frag", prelude, generated))
@@ -219,6 +222,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     if (samples > 1) glEnable(GL_MULTISAMPLE);
     glClear(GL_DEPTH_BUFFER_BIT);
     uploadFrame(scene, width, height);
+    environment_->prepare(scene.environment);  // uploads only when the map changed
 
     std::vector<float> sampleOffsets;
     for (int i = 0; i < samples && samples > 1; ++i) {

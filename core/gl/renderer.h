@@ -12,6 +12,7 @@
 
 #include "gl/material_glsl.h"
 #include "gl/custom_brdf_program.h"
+#include "gl/environment_textures.h"
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
 #include "gl/platform.h"
@@ -101,6 +102,7 @@ private:
     std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
     TextureCache textureCache_;
     long long trianglesDrawn_ = 0;
+    std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
     bool fuseDisplay_ = false;
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "math/frame.h"
+#include "environment/environment_lighting.h"
+#include "render/environment_sampling.h"
 #include "render/specular_transport.h"
 #include "texture/texture_eval.h"
 #include "render/triangle_scene.h"
@@ -81,12 +83,14 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
     return nearest;
 }
 
-glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer) {
+glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
+                   uint32_t pixelSeed) {
     if (hit.triangle && scene.objects.at(hit.objectIndex).interpolation == SurfaceInterpolation::Gouraud) {
         // Gouraud: shade the corners, interpolate the radiance (render/triangle_scene.h).
         glm::vec3 radiance(0.0f);
         const auto corners = gouraudCorners(scene, hit);
-        for (int k = 0; k < 3; ++k) radiance += hit.triangle->barycentric[k] * shadeHit(scene, corners[k].first, corners[k].second);
+        for (int k = 0; k < 3; ++k)
+            radiance += hit.triangle->barycentric[k] * shadeHit(scene, corners[k].first, corners[k].second, options, pixelSeed);
         return radiance;
     }
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
@@ -114,28 +118,35 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
     radiance += ambientReflectance(material.model, values, towardsViewer, frame) * ambient;
-    // Delta lobes (mirror, glass), traced against the background only.
+    // Environment light: the GPU's image-based lighting, or sampled.
+    radiance += options.sampleEnvironment
+                    ? sampleEnvironmentLighting(material.model, values, towardsViewer, frame, scene.environment,
+                                                pixelSeed, options.environmentSamples)
+                    : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
+    // Delta lobes (mirror, glass), traced against the environment or the background.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
     std::optional<SphereGeometry> sphere;
     const auto* sphereShape = std::get_if<SphereShape>(&shape);
     const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
     if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    radiance += traceSpecular(material.model, values, scene.background, sphere ? &*sphere : nullptr,
-                              hit.position, frame.normal, towardsViewer, hit.distance);
+    radiance += traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment),
+                              sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
     return radiance;
 }
 
-RadianceImage renderReference(const Scene& scene, int width, int height) {
+RadianceImage renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options) {
     if (width <= 0 || height <= 0) width = scene.width, height = scene.height;
     RadianceImage image(width, height);
     const glm::mat4 inverseViewProjection =
         glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
+    const MissRadiance miss(scene.background, &scene.environment);
     auto renderRows = [&](int firstRow, int rowStep) {
         for (int y = firstRow; y < height; y += rowStep) {
             for (int x = 0; x < width; ++x) {
                 const Ray ray = primaryRay(inverseViewProjection, x + 0.5f, y + 0.5f, width, height);
                 const auto hit = intersectScene(scene, ray);
-                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction) : backgroundRadiance(scene.background, ray.direction));
+                const uint32_t pixelSeed = static_cast<uint32_t>(y) * static_cast<uint32_t>(width) + static_cast<uint32_t>(x);
+                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction, options, pixelSeed) : miss.primary(ray.direction));
             }
         }
     };

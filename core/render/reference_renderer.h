@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 
 #include "camera/camera.h"
@@ -39,12 +40,22 @@ glm::vec3 surfaceTangent(const Shape& shape, glm::vec3 outwardNormal);
 // Nearest intersection of a ray with the scene's objects, if any.
 std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray);
 
+// How the reference lights surfaces by the environment: by default with the GPU's own image-based
+// lighting (environment/environment_lighting.h, so GPU and CPU agree per pixel); with
+// `sampleEnvironment`, by Monte-Carlo sampling of the true integral (render/environment_sampling.h).
+struct ReferenceOptions {
+    bool sampleEnvironment = false;
+    int environmentSamples = 512;  // per pixel, when sampling
+};
+
 // Outgoing radiance [W/(sr·m²)] at a hit towards `towardsViewer`: Σ f_r·E⊥·cos θ over the delta
 // lights, plus k_a·L_a for the ambient lights, plus the model's traced delta lobes (mirror, glass)
-// whose secondary rays see only the background. Twin of shadeSurface() in common/shading.glsl.
-glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer);
+// whose secondary rays see the environment or the background, plus the environment's light.
+// Twin of shadeSurface() in common/shading.glsl. `pixelSeed` seeds the environment sampling.
+glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer,
+                   const ReferenceOptions& options = {}, uint32_t pixelSeed = 0);
 
 // Renders the whole scene at width×height (the scene's own size when zero).
-RadianceImage renderReference(const Scene& scene, int width = 0, int height = 0);
+RadianceImage renderReference(const Scene& scene, int width = 0, int height = 0, const ReferenceOptions& options = {});
 
 }  // namespace glint

@@ -7,18 +7,18 @@
 
 namespace glint {
 
-glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Background& background,
+glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const MissRadiance& miss,
                         const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer,
                         float viewerDistance) {
     switch (model) {
         case BrdfModel::Mirror: {
             const MirrorParams mirror = unpackMirror(values.data());
-            return traceMirror(mirror.ior, mirror.extinction, background, normal, towardsViewer);
+            return traceMirror(mirror.ior, mirror.extinction, miss, normal, towardsViewer);
         }
         case BrdfModel::Glass: {
             const GlassParams glass = unpackGlass(values.data());
             const GlassInterface glassInterface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
-            return traceGlass(glassInterface, glass.absorption, background, sphere, position, normal, towardsViewer,
+            return traceGlass(glassInterface, glass.absorption, miss, sphere, position, normal, towardsViewer,
                               viewerDistance);
         }
         default: return glm::vec3(0.0f);  // no delta lobes (ModelInfo::glslTransport == nullptr)

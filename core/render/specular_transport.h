@@ -1,8 +1,8 @@
 // Specular transport of the delta-lobe materials (mirror, glass), traced analytically: ideal
 // reflection weighted by exact Fresnel; ideal refraction (Snell) through a sphere with internal
 // reflections, Beer-Lambert absorption e^(−σ·d) and the (η_t/η_i)² radiance scaling; and the
-// classic Hearn-Baker transparency I = (1−k_t)·I_refl + k_t·I_trans. Secondary rays see only the
-// background (not other objects) until environments and ray tracing arrive.
+// classic Hearn-Baker transparency I = (1−k_t)·I_refl + k_t·I_trans. Secondary rays see the
+// environment map, or the background when there is none (MissRadiance), not other objects.
 // GLSL twin: shaders/common/specular_transport.glsl. It does not evaluate f_r for lights.
 #pragma once
 
@@ -14,7 +14,7 @@
 
 #include "brdf/fresnel.h"
 #include "brdf/model_registry.h"
-#include "scene/background.h"
+#include "render/miss_radiance.h"
 
 namespace glint {
 
@@ -55,10 +55,10 @@ inline float sphereExitDistance(const SphereGeometry& sphere, glm::vec3 origin, 
 }
 
 // Ideal conductor mirror: L_o = F(θ_o; n + iκ) · L_background(reflected direction).
-inline glm::vec3 traceMirror(glm::vec3 eta, glm::vec3 kappa, const Background& background, glm::vec3 normal,
+inline glm::vec3 traceMirror(glm::vec3 eta, glm::vec3 kappa, const MissRadiance& miss, glm::vec3 normal,
                              glm::vec3 towardsViewer) {
     const float cosOut = glm::dot(normal, towardsViewer);
-    return fresnelConductor(cosOut, eta, kappa) * backgroundRadiance(background, reflectDirection(-towardsViewer, normal));
+    return fresnelConductor(cosOut, eta, kappa) * miss(reflectDirection(-towardsViewer, normal));
 }
 
 // How a glass surface splits light: exact Fresnel, or the classic constant k_t.
@@ -79,7 +79,7 @@ inline float glassReflectance(const GlassInterface& glass, float cosIncident, fl
 // and throughput `throughput` (absorption so far included): at each wall it splits into the part
 // that leaves (Fresnel 1 − F, radiance scaled by 1/η², seeing the background) and the part
 // reflected inside (F; 1 under total internal reflection), for kMaxInternalBounces walls.
-inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorption, const Background& background,
+inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorption, const MissRadiance& miss,
                                    const SphereGeometry& sphere, glm::vec3 origin, glm::vec3 direction,
                                    glm::vec3 throughput) {
     glm::vec3 radiance(0.0f);
@@ -89,7 +89,7 @@ inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorp
         if (exitReflectance < 1.0f) {
             const glm::vec3 leaving = refractDirection(direction, inwardNormal, glass.ior);
             radiance += throughput * ((1.0f - exitReflectance) / (glass.ior * glass.ior)) *
-                        backgroundRadiance(background, leaving);
+                        miss(leaving);
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);
@@ -110,29 +110,29 @@ inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorp
 // through two interfaces, weighted (1 − F)², with no absorption and no reflections inside.
 // Radiance is scaled by (η_t/η_i)² at each refraction (radiance/η² is invariant, Veach 1997
 // §5.2); for a path that enters and leaves into air the factors cancel exactly.
-inline glm::vec3 traceGlass(const GlassInterface& glass, glm::vec3 absorption, const Background& background,
+inline glm::vec3 traceGlass(const GlassInterface& glass, glm::vec3 absorption, const MissRadiance& miss,
                             const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal,
                             glm::vec3 towardsViewer, float viewerDistance) {
     const glm::vec3 incoming = -towardsViewer;
     if (sphere && glm::dot(normal, position - sphere->center) < 0.0f)
-        return traceInsideSphere(glass, absorption, background, *sphere, position, incoming,
+        return traceInsideSphere(glass, absorption, miss, *sphere, position, incoming,
                                  glm::exp(-absorption * viewerDistance));
     const float entryReflectance = glassReflectance(glass, glm::dot(normal, towardsViewer), glass.ior);
-    glm::vec3 radiance = entryReflectance * backgroundRadiance(background, reflectDirection(incoming, normal));
+    glm::vec3 radiance = entryReflectance * miss(reflectDirection(incoming, normal));
     if (!sphere) {
         const float paneTransmittance = (1.0f - entryReflectance) * (1.0f - entryReflectance);
-        return radiance + paneTransmittance * backgroundRadiance(background, incoming);
+        return radiance + paneTransmittance * miss(incoming);
     }
     const glm::vec3 refracted = refractDirection(incoming, normal, 1.0f / glass.ior);
     const float chord = sphereExitDistance(*sphere, position, refracted);
     const glm::vec3 throughput = (1.0f - entryReflectance) * glass.ior * glass.ior * glm::exp(-absorption * chord);
-    return radiance + traceInsideSphere(glass, absorption, background, *sphere, position + chord * refracted, refracted,
+    return radiance + traceInsideSphere(glass, absorption, miss, *sphere, position + chord * refracted, refracted,
                                         throughput);
 }
 
 // The specular-transport hook of the model registry (ModelInfo::glslTransport): the radiance
 // its traced delta lobes send towards the viewer; zero for models without one.
-glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Background& background,
+glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const MissRadiance& miss,
                         const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer,
                         float viewerDistance);
 

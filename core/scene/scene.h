@@ -17,6 +17,7 @@
 #include "scene/background.h"
 #include "scene/overlays.h"
 #include "texture/material_texture.h"
+#include "scene/environment.h"
 
 namespace glint {
 
@@ -120,6 +121,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<SceneObject> objects;
     Background background;  // radiance [W/(sr·m²)] seen where no object is hit (and by secondary rays)
+    Environment environment;  // environment light (none by default); see scene/environment.h
     DisplaySettings display;
     int width = 960;   // output size in pixels
     int height = 720;

@@ -3,9 +3,11 @@
 #include "scene/scene_json.h"
 
 #include <array>
+#include <filesystem>
 
 #include "interchange/custom_material_json.h"
 #include "scene/format_migration.h"
+#include "scene/environment_json.h"
 #include "scene/json_object_reader.h"
 #include "scene/param_values_json.h"
 #include "texture/texture_json.h"
@@ -275,6 +277,7 @@ Scene readScene(const JsonDocument& document) {
         scene.camera = readCamera(camera);
     }
     scene.background = readBackground(root);
+    scene.environment = readEnvironment(root, std::filesystem::path(document.file()).parent_path().string());
     if (root.has("display")) {
         ObjectReader display = root.object("display");
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
@@ -336,6 +339,7 @@ json sceneToJson(const Scene& scene, const std::string& file) {
                      {"near", camera.nearPlane},
                      {"far", camera.farPlane}};
     out["background"] = backgroundToJson(scene.background);
+    if (scene.environment.kind != EnvironmentKind::None) out["environment"] = environmentToJson(scene.environment);
     out["display"] = {{"exposure", scene.display.exposureStops},
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
                       {"gamma", scene.display.gamma},

@@ -30,3 +30,11 @@ vec3 evalCookTorrance(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
 vec3 ambientReflectanceCookTorrance(MaterialParams p, vec3 wo, ShadingFrame frame) {
     return p.diffuse_albedo;
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingCookTorrance in core/environment/environment_lighting.cpp.
+vec3 environmentLightingCookTorrance(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
+           environmentSplitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame);
+}
+#endif

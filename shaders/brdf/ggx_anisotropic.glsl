@@ -23,3 +23,11 @@ vec3 evalGgxAnisotropic(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) 
 vec3 ambientReflectanceGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame frame) {
     return p.diffuse_albedo;
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingGgxAnisotropic in core/environment/environment_lighting.cpp.
+vec3 environmentLightingGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
+           environmentSplitSumSpecular(p.ior, p.extinction, sqrt(p.roughness_x * p.roughness_y), wo, frame);
+}
+#endif

@@ -9,3 +9,10 @@ vec3 evalLambert(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
 vec3 ambientReflectanceLambert(MaterialParams p, vec3 wo, ShadingFrame frame) {
     return p.albedo;
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingLambert in core/environment/environment_lighting.cpp.
+vec3 environmentLightingLambert(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.albedo * environmentDiffuseRadiance(frame.normal);
+}
+#endif

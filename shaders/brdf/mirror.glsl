@@ -12,3 +12,10 @@ vec3 ambientReflectanceMirror(MaterialParams p, vec3 wo, ShadingFrame frame) {
 vec3 transportMirror(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     return traceMirror(p.ior, p.extinction, frame.normal, towardsViewer);
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingMirror in core/environment/environment_lighting.cpp.
+vec3 environmentLightingMirror(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal);
+}
+#endif

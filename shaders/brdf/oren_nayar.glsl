@@ -16,3 +16,10 @@ vec3 evalOrenNayar(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
 vec3 ambientReflectanceOrenNayar(MaterialParams p, vec3 wo, ShadingFrame frame) {
     return p.albedo;
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingOrenNayar in core/environment/environment_lighting.cpp.
+vec3 environmentLightingOrenNayar(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return p.albedo * environmentDiffuseRadiance(frame.normal);
+}
+#endif

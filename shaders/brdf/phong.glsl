@@ -20,3 +20,13 @@ vec3 evalPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
 vec3 ambientReflectancePhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
     return p.diffuse_albedo;
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingPhong in core/environment/environment_lighting.cpp.
+vec3 environmentLightingPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float weight = environmentFormWeight(p.form, cosTheta(frame, wo), (p.exponent + 2.0) / (2.0 * PI));
+    return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
+           p.specular * weight *
+               environmentSpecularRadiance(environmentMirrorDirection(wo, frame), sqrt(sqrt(2.0 / (4.0 * p.exponent + 2.0))));
+}
+#endif

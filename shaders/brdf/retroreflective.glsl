@@ -20,3 +20,10 @@ vec3 ambientReflectanceRetroreflective(MaterialParams p, vec3 wo, ShadingFrame f
     if (p.limb_darkening == 0) return p.albedo * pow(cosOut, p.minnaert_k - 1.0);
     return p.albedo * (0.5 * (1.0 - cosOut * log(1.0 + 1.0 / cosOut)));
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingRetroreflective in core/environment/environment_lighting.cpp.
+vec3 environmentLightingRetroreflective(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    return ambientReflectanceRetroreflective(p, wo, frame) * environmentDiffuseRadiance(frame.normal);
+}
+#endif

@@ -22,3 +22,12 @@ vec3 evalWard(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
 vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
     return p.diffuse_albedo;
 }
+
+#ifdef GLINT_HAS_ENVIRONMENT
+// Environment hook: twin of environmentLightingWard in core/environment/environment_lighting.cpp.
+vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float perceptual = sqrt(sqrt(p.roughness_x * p.roughness_y));
+    return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
+           p.specular * environmentSpecularRadiance(environmentMirrorDirection(wo, frame), perceptual);
+}
+#endif

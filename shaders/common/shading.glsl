@@ -16,6 +16,10 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     }
     // Ambient: k_a · L_a (GLINT_AMBIENT_REFLECTANCE is the registry's hook, zero when absent).
     radiance += GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;
+#ifdef GLINT_ENVIRONMENT_LIGHTING
+    // Environment light: the model's image-based lighting hook (registry glslEnvironment).
+    if (environmentFlags.x != 0) radiance += GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame);
+#endif
 #ifdef GLINT_SPECULAR_TRANSPORT
     radiance += GLINT_SPECULAR_TRANSPORT(params, position, frame, towardsViewer);
 #endif

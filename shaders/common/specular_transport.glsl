@@ -1,6 +1,6 @@
 // Specular transport of mirror and glass, traced analytically: GLSL twin of
 // core/render/specular_transport.h (see there for the physics and the limits: secondary rays
-// see only the background). Needs background.glsl and brdf/fresnel.glsl.
+// see the environment or the background, not other objects). Needs environment.glsl.
 #include "brdf/fresnel.glsl"
 
 const int MAX_INTERNAL_BOUNCES = 6;  // kMaxInternalBounces
@@ -25,7 +25,7 @@ float sphereExitDistance(vec4 sphereGeometry, vec3 origin, vec3 direction) {
 
 vec3 traceMirror(vec3 eta, vec3 kappa, vec3 normal, vec3 towardsViewer) {
     float cosOut = dot(normal, towardsViewer);
-    return fresnelConductor(cosOut, eta, kappa) * backgroundRadiance(reflectDirection(-towardsViewer, normal));
+    return fresnelConductor(cosOut, eta, kappa) * missRadiance(reflectDirection(-towardsViewer, normal));
 }
 
 float glassReflectance(bool classic, float transmission, float cosIncident, float eta) {
@@ -43,7 +43,7 @@ vec3 traceInsideSphere(float ior, bool classic, float transmission, vec3 absorpt
         float exitReflectance = glassReflectance(classic, transmission, -dot(direction, inwardNormal), 1.0 / ior);
         if (exitReflectance < 1.0) {
             vec3 leaving = refractDirection(direction, inwardNormal, ior);
-            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * backgroundRadiance(leaving);
+            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * missRadiance(leaving);
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);
@@ -62,10 +62,10 @@ vec3 traceGlass(float ior, bool classic, float transmission, vec3 absorption, bo
         return traceInsideSphere(ior, classic, transmission, absorption, sphereGeometry, position, incoming,
                                  exp(-absorption * viewerDistance));
     float entryReflectance = glassReflectance(classic, transmission, dot(normal, towardsViewer), ior);
-    vec3 radiance = entryReflectance * backgroundRadiance(reflectDirection(incoming, normal));
+    vec3 radiance = entryReflectance * missRadiance(reflectDirection(incoming, normal));
     if (!isSphere) {
         float paneTransmittance = (1.0 - entryReflectance) * (1.0 - entryReflectance);
-        return radiance + paneTransmittance * backgroundRadiance(incoming);
+        return radiance + paneTransmittance * missRadiance(incoming);
     }
     vec3 refracted = refractDirection(incoming, normal, 1.0 / ior);
     float chord = sphereExitDistance(sphereGeometry, position, refracted);

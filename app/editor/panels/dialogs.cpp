@@ -123,6 +123,7 @@ void handleFileBrowser(EditorState& state) {
         case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;
         case FilePurpose::OpenBrdf: openDroppedFile(state, *chosen); break;  // routes .brdf and .bparam
         case FilePurpose::SaveBparamAs: saveBparamTo(state, *chosen); break;
+        case FilePurpose::OpenEnvironment: openEnvironmentFile(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

@@ -1,6 +1,7 @@
 // The display section: exposure (stops), tone map (none, Reinhard, ACES filmic), the transfer
 // function (sRGB or a pure gamma), and the background (a constant radiance or the sky
-// gradient). Each change goes through the edit API.
+// gradient), then the Environment section (environment_section.cpp). Each change goes through
+// the edit API.
 #include <imgui.h>
 
 #include "editor/panels/panels.h"
@@ -49,6 +50,7 @@ void drawDisplaySection(EditorState& state) {
         backgroundChanged |= linearColorEdit("Ground", background.ground, "Radiance straight down");
     }
     if (backgroundChanged) state.session.change("Edit background").background = background;
+    drawEnvironmentSection(state);
 }
 
 }  // namespace glint

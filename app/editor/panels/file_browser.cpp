@@ -29,6 +29,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenTexture: return "Open texture image###FileBrowser";
         case FilePurpose::OpenBrdf: return "Open BRDF Explorer file (.brdf, .bparam)###FileBrowser";
         case FilePurpose::SaveBparamAs: return "Save parameter values as (.bparam)###FileBrowser";
+        case FilePurpose::OpenEnvironment: return "Open environment (.hdr or .exr)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -101,6 +102,7 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
                          : purpose == FilePurpose::OpenTexture
                              ? std::vector<std::string>{".png", ".jpg", ".jpeg", ".exr", ".hdr", ".tif", ".tiff"}
+                         : purpose == FilePurpose::OpenEnvironment ? std::vector<std::string>{".hdr", ".exr"}
                          : purpose == FilePurpose::OpenBrdf     ? std::vector<std::string>{".brdf", ".bparam"}
                          : purpose == FilePurpose::SaveBparamAs ? std::vector<std::string>{".bparam"}
                                                                 : std::vector<std::string>{".json"};

@@ -1,6 +1,6 @@
 // The file browser: an ImGui modal listing a directory (folders first, files filtered by
 // extension), with a typed path field, for opening and saving scenes, materials and
-// screenshots. It only picks a path; it reads and writes no file.
+// screenshots, and opening environment images. It only picks a path; it reads and writes no file.
 #pragma once
 
 #include <optional>
@@ -10,7 +10,8 @@
 namespace glint {
 
 enum class FilePurpose {
-    OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh, OpenTexture, OpenBrdf, SaveBparamAs
+    OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh, OpenTexture, OpenBrdf, SaveBparamAs,
+    OpenEnvironment
 };
 
 struct FileBrowser {

@@ -1,0 +1,171 @@
+// Image-based lighting per model (see environment_lighting.h). Each environmentLighting<Model>
+// below has its GLSL twin of the same name at the end of shaders/brdf/<model>.glsl.
+// Sections: lookups · roughness mapping · per-model hooks · dispatch.
+#include "environment/environment_lighting.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "brdf/blinn_phong.h"
+#include "brdf/cook_torrance.h"
+#include "brdf/ggx_anisotropic.h"
+#include "brdf/lambert.h"
+#include "brdf/mirror.h"
+#include "brdf/oren_nayar.h"
+#include "brdf/phong.h"
+#include "brdf/retroreflective.h"
+#include "brdf/ward.h"
+#include "environment/environment_map.h"
+#include "math/constants.h"
+
+namespace glint {
+
+// --- lookups --------------------------------------------------------------------------------
+
+glm::vec3 environmentMapDirection(const Environment& environment, glm::vec3 d) {
+    const float angle = environment.rotationDegrees * (kPi / 180.0f);
+    const float cosAngle = std::cos(angle), sinAngle = std::sin(angle);
+    return {cosAngle * d.x - sinAngle * d.z, d.y, sinAngle * d.x + cosAngle * d.z};
+}
+
+glm::vec3 environmentRadiance(const Environment& environment, glm::vec3 worldDirection) {
+    return environment.intensity * sampleEquirect(environment.map->radiance, environmentMapDirection(environment, worldDirection));
+}
+
+glm::vec3 environmentDiffuseRadiance(const Environment& environment, glm::vec3 normal) {
+    return environment.intensity * kInvPi *
+           shIrradiance(environment.map->irradianceSh, environmentMapDirection(environment, normal));
+}
+
+glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 worldDirection, float perceptualRoughness) {
+    return environment.intensity *
+           prefilteredRadiance(*environment.map, environmentMapDirection(environment, worldDirection), perceptualRoughness);
+}
+
+// --- roughness mapping ----------------------------------------------------------------------
+
+namespace {
+
+float blinnAlpha(float exponent) { return std::sqrt(2.0f / (exponent + 2.0f)); }
+float phongAlpha(float exponent) { return std::sqrt(2.0f / (4.0f * exponent + 2.0f)); }
+
+glm::vec3 mirrorDirection(glm::vec3 wo, const ShadingFrame& frame) {
+    return 2.0f * frame.cosTheta(wo) * frame.normal - wo;
+}
+
+// A lobe form's value at the mirror configuration (θ_i = θ_o = θ, |ω_i + ω_o|² = 4cos²θ) over the
+// normalised form's: the normalised lobe reflects about all of a uniform environment, so this
+// weights the other forms by how much more or less they reflect. Lecture and max-cosine: 1/cos θ;
+// half-vector: 1/(4 cos²θ).
+float formWeight(int form, float cosOut, float normalization) {
+    const float cosine = std::max(cosOut, 1e-3f);
+    switch (form) {
+        case 0:
+        case 1: return 1.0f / (cosine * normalization);
+        case 2: return 1.0f / (4.0f * cosine * cosine * normalization);
+        default: return 1.0f;
+    }
+}
+
+// --- per-model hooks ------------------------------------------------------------------------
+
+glm::vec3 environmentLightingLambert(const LambertParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
+    return p.albedo * environmentDiffuseRadiance(e, frame.normal);
+}
+
+glm::vec3 environmentLightingOrenNayar(const OrenNayarParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
+    return p.albedo * environmentDiffuseRadiance(e, frame.normal);
+}
+
+glm::vec3 environmentLightingRetroreflective(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame,
+                                             const Environment& e) {
+    return ambientReflectanceRetroreflective(p, wo, frame) * environmentDiffuseRadiance(e, frame.normal);
+}
+
+glm::vec3 environmentLightingMirror(const MirrorParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal);
+}
+
+glm::vec3 environmentLightingBlinnPhong(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame,
+                                        const Environment& e) {
+    const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 8.0f) / (8.0f * kPi));
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           p.specular * weight *
+               environmentSpecularRadiance(e, mirrorDirection(wo, frame), std::sqrt(blinnAlpha(p.exponent)));
+}
+
+glm::vec3 environmentLightingPhong(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 2.0f) / (2.0f * kPi));
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           p.specular * weight *
+               environmentSpecularRadiance(e, mirrorDirection(wo, frame), std::sqrt(phongAlpha(p.exponent)));
+}
+
+glm::vec3 environmentLightingWard(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const float perceptual = std::sqrt(std::sqrt(p.roughnessX * p.roughnessY));
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           p.specular * environmentSpecularRadiance(e, mirrorDirection(wo, frame), perceptual);
+}
+
+// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(R, α) · (F0·A + B) with F0 from n + iκ.
+glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm::vec3 wo, const ShadingFrame& frame,
+                           const Environment& e) {
+    const float perceptual = std::sqrt(alpha);
+    const glm::vec2 scaleBias = sampleSplitSum(splitSumLut(), std::max(frame.cosTheta(wo), 0.0f), perceptual);
+    return environmentSpecularRadiance(e, mirrorDirection(wo, frame), perceptual) *
+           (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
+}
+
+glm::vec3 environmentLightingCookTorrance(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
+                                          const Environment& e) {
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e);
+}
+
+glm::vec3 environmentLightingGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingFrame& frame,
+                                            const Environment& e) {
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           splitSumSpecular(p.ior, p.extinction, std::sqrt(p.roughnessX * p.roughnessY), wo, frame, e);
+}
+
+}  // namespace
+
+float environmentRoughness(BrdfModel model, std::span<const float> values) {
+    switch (model) {
+        case BrdfModel::BlinnPhong: return blinnAlpha(unpackBlinnPhong(values.data()).exponent);
+        case BrdfModel::Phong: return phongAlpha(unpackPhong(values.data()).exponent);
+        case BrdfModel::Ward: {
+            const WardParams p = unpackWard(values.data());
+            return std::sqrt(p.roughnessX * p.roughnessY);
+        }
+        case BrdfModel::CookTorrance: return unpackCookTorrance(values.data()).roughness;
+        case BrdfModel::GgxAnisotropic: {
+            const GgxAnisotropicParams p = unpackGgxAnisotropic(values.data());
+            return std::sqrt(p.roughnessX * p.roughnessY);
+        }
+        default: return 0.0f;
+    }
+}
+
+// --- dispatch -------------------------------------------------------------------------------
+
+glm::vec3 environmentLighting(BrdfModel model, std::span<const float> values, glm::vec3 wo, const ShadingFrame& frame,
+                              const Environment& e) {
+    if (!e.enabled()) return glm::vec3(0.0f);
+    const float* v = values.data();
+    switch (model) {
+        case BrdfModel::Lambert: return environmentLightingLambert(unpackLambert(v), wo, frame, e);
+        case BrdfModel::BlinnPhong: return environmentLightingBlinnPhong(unpackBlinnPhong(v), wo, frame, e);
+        case BrdfModel::OrenNayar: return environmentLightingOrenNayar(unpackOrenNayar(v), wo, frame, e);
+        case BrdfModel::Phong: return environmentLightingPhong(unpackPhong(v), wo, frame, e);
+        case BrdfModel::CookTorrance: return environmentLightingCookTorrance(unpackCookTorrance(v), wo, frame, e);
+        case BrdfModel::GgxAnisotropic: return environmentLightingGgxAnisotropic(unpackGgxAnisotropic(v), wo, frame, e);
+        case BrdfModel::Ward: return environmentLightingWard(unpackWard(v), wo, frame, e);
+        case BrdfModel::Retroreflective: return environmentLightingRetroreflective(unpackRetroreflective(v), wo, frame, e);
+        case BrdfModel::Mirror: return environmentLightingMirror(unpackMirror(v), wo, frame, e);
+        case BrdfModel::Glass: break;  // delta lobes only: traced (specular_transport.h)
+    }
+    return glm::vec3(0.0f);
+}
+
+}  // namespace glint

@@ -1,0 +1,38 @@
+// Image-based lighting of a surface by the scene's environment, as the GPU computes it (twin of
+// shaders/common/environment.glsl and of each model's environmentLighting<Model> GLSL hook):
+// diffuse terms take the SH9 irradiance E(n)/π, glossy terms the GGX-prefiltered radiance along
+// the mirror direction at the model's equivalent roughness, microfacet models the split-sum
+// scale and bias. The Monte-Carlo ground truth is render/environment_sampling.h.
+#pragma once
+
+#include <span>
+
+#include <glm/glm.hpp>
+
+#include "brdf/model_registry.h"
+#include "math/frame.h"
+#include "scene/environment.h"
+
+namespace glint {
+
+// A world direction in the map's own frame: turned by −rotation about +y.
+glm::vec3 environmentMapDirection(const Environment& environment, glm::vec3 worldDirection);
+// Radiance [W/(sr·m²)] arriving from a world direction: intensity × bilinear base level.
+glm::vec3 environmentRadiance(const Environment& environment, glm::vec3 worldDirection);
+// E(n)/π: the radiance a white Lambert surface with unit normal n reflects.
+glm::vec3 environmentDiffuseRadiance(const Environment& environment, glm::vec3 normal);
+// Prefiltered radiance along a world direction for perceptual roughness r = √α.
+glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 worldDirection, float perceptualRoughness);
+
+// The GGX roughness α a model's glossy lobe is prefiltered with (0 when it has none): microfacet
+// α itself (√(α_x α_y) when anisotropic), Ward √(α_x α_y), Blinn-Phong √(2/(n+2)) (Walter et al.
+// 2007, after eq. 30: the Beckmann α of a Blinn exponent n), Phong √(2/(4n+2)) (a Phong lobe
+// around R of exponent n is about a Blinn lobe of exponent 4n, since θ_h ≈ δ/2).
+float environmentRoughness(BrdfModel model, std::span<const float> values);
+
+// The model's environment hook (ModelInfo::glslEnvironment): radiance reflected towards wo
+// from the environment by the model's non-delta lobes. Zero for models without one (glass).
+glm::vec3 environmentLighting(BrdfModel model, std::span<const float> values, glm::vec3 wo, const ShadingFrame& frame,
+                              const Environment& environment);
+
+}  // namespace glint

@@ -1,0 +1,31 @@
+// Where environment maps come from: equirectangular HDR files (.hdr, .exr) read through
+// OpenImageIO and checked (readable to the end, 2:1 size, finite non-negative texels), and the
+// built-ins that need no file (studio, sky, uniform white), baked procedurally and made once per
+// process. Returns the map with its lighting precomputed. No JSON here (environment_json.h).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "environment/environment_map.h"
+#include "scene/environment.h"
+#include "util/diagnostic.h"
+
+namespace glint {
+
+// An equirectangular image from an HDR file; the Diagnostic names the file and what is wrong
+// (cannot open, truncated, not 2:1, a NaN, infinite or negative texel and where it is).
+Result<EquirectImage> readEquirectFile(const std::string& path);
+
+// The procedural radiance of a built-in environment (kind Studio, Sky or White).
+EquirectImage bakeBuiltinEnvironment(EnvironmentKind kind);
+
+// The map of an environment kind: a file read (and precomputed) each call, a built-in made once
+// and shared. None has no map.
+Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file);
+
+// Fills `environment.map` for its kind and file (making `file` absolute); on failure the
+// environment is left as it was.
+Status loadEnvironment(Environment& environment);
+
+}  // namespace glint

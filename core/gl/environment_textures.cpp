@@ -1,0 +1,104 @@
+// Environment textures and uniform block (see environment_textures.h).
+#include "gl/environment_textures.h"
+
+#include <cmath>
+#include <vector>
+
+#include "environment/environment_map.h"
+#include "math/constants.h"
+
+namespace glint {
+namespace {
+
+void setNearestClamp(GLenum target) {
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+std::vector<float> rgba(const EquirectImage& image) {
+    std::vector<float> texels;
+    texels.reserve(image.texels.size() * 4);
+    for (const glm::vec3& texel : image.texels) texels.insert(texels.end(), {texel.r, texel.g, texel.b, 1.0f});
+    return texels;
+}
+
+}  // namespace
+
+EnvironmentTextures::EnvironmentTextures() {
+    glGenTextures(1, &baseTexture_);
+    glGenTextures(1, &prefilteredTexture_);
+    glGenTextures(1, &splitSumTexture_);
+    glGenBuffers(1, &uniformBuffer_);
+    glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
+    glBufferData(GL_UNIFORM_BUFFER, sizeof(EnvironmentBlockStd140), nullptr, GL_DYNAMIC_DRAW);
+    // Placeholders until a map arrives, so that every sampler has a complete texture.
+    const float black[4] = {0, 0, 0, 1};
+    glBindTexture(GL_TEXTURE_2D, baseTexture_);
+    setNearestClamp(GL_TEXTURE_2D);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, black);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
+    setNearestClamp(GL_TEXTURE_2D_ARRAY);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, 1, 1, 1, 0, GL_RGBA, GL_FLOAT, black);
+    // The split-sum table depends on no map: uploaded once.
+    const SplitSumLut& lut = splitSumLut();
+    glBindTexture(GL_TEXTURE_2D, splitSumTexture_);
+    setNearestClamp(GL_TEXTURE_2D);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kSplitSumLutSize, kSplitSumLutSize, 0, GL_RG, GL_FLOAT, lut.texels.data());
+}
+
+EnvironmentTextures::~EnvironmentTextures() {
+    glDeleteTextures(1, &baseTexture_);
+    glDeleteTextures(1, &prefilteredTexture_);
+    glDeleteTextures(1, &splitSumTexture_);
+    glDeleteBuffers(1, &uniformBuffer_);
+}
+
+void EnvironmentTextures::connect(const ShaderProgram& program) {
+    program.bindBlock("EnvironmentBlock", kEnvironmentBinding);
+    glUseProgram(program.id());
+    glUniform1i(program.uniform("environmentBase"), kEnvironmentBaseUnit);
+    glUniform1i(program.uniform("environmentPrefiltered"), kEnvironmentPrefilteredUnit);
+    glUniform1i(program.uniform("environmentSplitSum"), kEnvironmentSplitSumUnit);
+    glUseProgram(0);
+}
+
+void EnvironmentTextures::prepare(const Environment& environment) {
+    const EnvironmentMap* map = environment.enabled() ? environment.map.get() : nullptr;
+    if (map && map != uploadedMap_) {
+        glBindTexture(GL_TEXTURE_2D, baseTexture_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, map->radiance.width, map->radiance.height, 0, GL_RGBA, GL_FLOAT,
+                     rgba(map->radiance).data());
+        std::vector<float> layers;
+        for (const EquirectImage& level : map->prefiltered) {
+            const std::vector<float> texels = rgba(level);
+            layers.insert(layers.end(), texels.begin(), texels.end());
+        }
+        glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, kPrefilteredWidth, kPrefilteredHeight, kPrefilteredLevels, 0,
+                     GL_RGBA, GL_FLOAT, layers.data());
+        uploadedMap_ = map;
+        keepAlive_ = environment.map;
+    }
+    EnvironmentBlockStd140 block{};
+    const float angle = environment.rotationDegrees * (kPi / 180.0f);
+    block.transform = {std::cos(angle), std::sin(angle), environment.intensity, 0.0f};
+    block.flags = {map ? 1 : 0, map && environment.showAsBackground ? 1 : 0, 0, 0};
+    if (map) {
+        block.sizes = {map->radiance.width, map->radiance.height, kPrefilteredWidth, kPrefilteredHeight};
+        for (int i = 0; i < 9; ++i) block.sh[i] = glm::vec4(map->irradianceSh[i], 0.0f);
+    }
+    glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kEnvironmentBinding, uniformBuffer_);
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentBaseUnit);
+    glBindTexture(GL_TEXTURE_2D, baseTexture_);
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentPrefilteredUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentSplitSumUnit);
+    glBindTexture(GL_TEXTURE_2D, splitSumTexture_);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace glint

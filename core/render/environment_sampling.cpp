@@ -1,0 +1,70 @@
+// Monte-Carlo environment lighting (see environment_sampling.h).
+#include "render/environment_sampling.h"
+
+#include <cmath>
+
+#include "brdf/microfacet.h"
+#include "environment/environment_lighting.h"
+#include "environment/ggx_sampling.h"
+#include "math/constants.h"
+
+namespace glint {
+namespace {
+
+// A 32-bit integer hash (the PCG output permutation, O'Neill 2014) to [0,1).
+float hashToUnit(uint32_t value) {
+    uint32_t state = value * 747796405u + 2891336453u;
+    const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return static_cast<float>((word >> 22u) ^ word) * 2.3283064365386963e-10f;
+}
+
+glm::vec3 cosineDirection(glm::vec2 u) {
+    const float radius = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+    return {radius * std::cos(phi), radius * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
+}
+
+// Density of the light direction `light` (local) under visible-normal sampling for `view`:
+// G1(v) D(h) / (4 cos θ_v) (Heitz 2018, eq. 17 with the reflection Jacobian 1/(4 v·h)).
+float visibleNormalPdf(glm::vec3 view, glm::vec3 light, float alpha) {
+    const glm::vec3 halfway = glm::normalize(view + light);
+    const float sin2Half = std::max(0.0f, 1.0f - halfway.z * halfway.z);
+    const float maskingView = 1.0f / (1.0f + lambdaGgx(view.z, alpha));
+    return maskingView * distributionGgx(halfway.z, sin2Half, alpha) / (4.0f * view.z);
+}
+
+}  // namespace
+
+glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> values, glm::vec3 wo,
+                                    const ShadingFrame& frame, const Environment& environment, uint32_t pixelSeed,
+                                    int sampleCount) {
+    if (!environment.enabled() || model == BrdfModel::Glass) return glm::vec3(0.0f);
+    const glm::vec3 view = frame.toLocal(wo);
+    if (view.z <= 0.0f) return glm::vec3(0.0f);
+    const float alpha = std::max(environmentRoughness(model, values), 1e-3f);
+    const bool glossy = environmentRoughness(model, values) > 0.0f;
+    const glm::vec2 shift{hashToUnit(2u * pixelSeed), hashToUnit(2u * pixelSeed + 1u)};
+    glm::vec3 sum(0.0f);
+    // Glossy models: the first half of the samples cosine-weighted, the second half GGX, each
+    // half its own Hammersley set (interleaving one set would give each strategy half the azimuths).
+    const int perStrategy = glossy ? (sampleCount + 1) / 2 : sampleCount;
+    for (int i = 0; i < sampleCount; ++i) {
+        const bool useGgx = glossy && i >= perStrategy;
+        const glm::vec2 u = glm::fract(hammersley(useGgx ? i - perStrategy : i, perStrategy) + shift);
+        glm::vec3 light;
+        if (useGgx) {
+            const glm::vec3 halfway = sampleGgxVisibleNormal(view, u, alpha);
+            light = 2.0f * glm::dot(view, halfway) * halfway - view;
+        } else {
+            light = cosineDirection(u);
+        }
+        if (light.z <= 0.0f) continue;
+        const float cosinePdf = light.z * kInvPi;
+        const float pdf = glossy ? 0.5f * (cosinePdf + visibleNormalPdf(view, light, alpha)) : cosinePdf;
+        const glm::vec3 lightWorld = frame.toWorld(light);
+        sum += evalBrdf(model, values, lightWorld, wo, frame) * environmentRadiance(environment, lightWorld) *
+               (light.z / pdf);
+    }
+    return sum / static_cast<float>(sampleCount);
+}
+
+}  // namespace glint

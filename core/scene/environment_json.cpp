@@ -1,0 +1,44 @@
+// "environment" in scene files (see environment_json.h).
+#include "scene/environment_json.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "environment/environment_source.h"
+
+namespace glint {
+
+Environment readEnvironment(ObjectReader& root, const std::string& sceneDirectory) {
+    Environment environment;
+    if (!root.has("environment")) return environment;
+    ObjectReader reader = root.object("environment");
+    environment.kind = static_cast<EnvironmentKind>(reader.choice("type", kEnvironmentKindIds, 0));
+    if (environment.kind == EnvironmentKind::File) {
+        const std::string written = reader.requiredString("file");
+        if (written.empty()) reader.fail("file", "names no file");
+        const std::filesystem::path path(written);
+        environment.file = path.is_absolute() || sceneDirectory.empty()
+                               ? written
+                               : (std::filesystem::path(sceneDirectory) / path).string();
+    }
+    environment.rotationDegrees =
+        static_cast<float>(reader.number("rotation_degrees", environment.rotationDegrees, Bounds::between(-360, 360)));
+    environment.intensity = static_cast<float>(reader.number("intensity", environment.intensity, Bounds::nonNegative()));
+    environment.showAsBackground = reader.boolean("show_as_background", environment.showAsBackground);
+    reader.rejectUnknownKeys();
+    if (Status loaded = loadEnvironment(environment); !loaded)
+        reader.fail(environment.kind == EnvironmentKind::File ? "file" : "type", loaded.error().format());
+    return environment;
+}
+
+nlohmann::json environmentToJson(const Environment& environment) {
+    if (environment.kind == EnvironmentKind::None) return nullptr;
+    nlohmann::json out = {{"type", kEnvironmentKindIds[static_cast<int>(environment.kind)]}};
+    if (environment.kind == EnvironmentKind::File) out["file"] = environment.file;
+    out["rotation_degrees"] = environment.rotationDegrees;
+    out["intensity"] = environment.intensity;
+    out["show_as_background"] = environment.showAsBackground;
+    return out;
+}
+
+}  // namespace glint

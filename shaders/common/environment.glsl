@@ -1,0 +1,123 @@
+// The environment map on the GPU: GLSL twin of core/environment (equirect.cpp's bilinear lookup,
+// environment_map.cpp's SH9 irradiance, prefiltered levels and split-sum table, and
+// environment_lighting.cpp's lookups) and of render/miss_radiance.h. Every lookup is a manual
+// bilinear of texelFetch'ed float texels, so the CPU reference computes the same numbers.
+// Needs frame.glsl and background.glsl first. Defines GLINT_HAS_ENVIRONMENT for the model hooks.
+#include "brdf/fresnel.glsl"
+#define GLINT_HAS_ENVIRONMENT
+
+const int PREFILTERED_LEVELS = 5;  // kPrefilteredLevels
+const int SPLIT_SUM_SIZE = 32;     // kSplitSumLutSize
+
+layout(std140) uniform EnvironmentBlock {
+    vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity
+    ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background
+    ivec4 environmentSizes;     // x, y: base level size; z, w: prefiltered level size
+    vec4 environmentSh[9];      // rgb: SH coefficients L_lm of the radiance
+};
+uniform sampler2D environmentBase;             // the radiance image
+uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/5
+uniform sampler2D environmentSplitSum;         // rg: split-sum scale A and bias B
+
+vec3 environmentMapDirection(vec3 d) {
+    float c = environmentTransform.x, s = environmentTransform.y;
+    return vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
+}
+
+vec3 fetchEnvironmentLevel(int level, ivec2 texel) {
+    if (level == 0) return texelFetch(environmentBase, texel, 0).rgb;
+    return texelFetch(environmentPrefiltered, ivec3(texel, level - 1), 0).rgb;
+}
+
+// Bilinear at one level (0: base, k: prefiltered k): twin of sampleEquirect().
+vec3 sampleEnvironmentLevel(int level, vec3 d) {
+    ivec2 size = level == 0 ? environmentSizes.xy : environmentSizes.zw;
+    float u = 0.5 + atan(d.x, -d.z) * (0.5 * INV_PI);
+    float v = acos(clamp(d.y, -1.0, 1.0)) * INV_PI;
+    float x = u * float(size.x) - 0.5, y = v * float(size.y) - 0.5;
+    float x0 = floor(x), y0 = floor(y);
+    float fx = x - x0, fy = y - y0;
+    int column0 = int(x0);
+    if (column0 < 0) column0 += size.x;
+    if (column0 >= size.x) column0 -= size.x;
+    int column1 = column0 + 1 == size.x ? 0 : column0 + 1;
+    int row0 = clamp(int(y0), 0, size.y - 1), row1 = clamp(int(y0) + 1, 0, size.y - 1);
+    vec3 top = fetchEnvironmentLevel(level, ivec2(column0, row0)) * (1.0 - fx) +
+               fetchEnvironmentLevel(level, ivec2(column1, row0)) * fx;
+    vec3 bottom = fetchEnvironmentLevel(level, ivec2(column0, row1)) * (1.0 - fx) +
+                  fetchEnvironmentLevel(level, ivec2(column1, row1)) * fx;
+    return top * (1.0 - fy) + bottom * fy;
+}
+
+// Radiance arriving from a world direction: intensity × base level.
+vec3 environmentRadiance(vec3 worldDirection) {
+    return environmentTransform.z * sampleEnvironmentLevel(0, environmentMapDirection(worldDirection));
+}
+
+// E(n)/π from the SH coefficients (Ramamoorthi & Hanrahan 2001): twin of shIrradiance().
+vec3 environmentDiffuseRadiance(vec3 normal) {
+    vec3 d = environmentMapDirection(normal);
+    float basis[9] = float[9](0.282095, 0.488603 * d.y, 0.488603 * d.z, 0.488603 * d.x,
+                              1.092548 * d.x * d.y, 1.092548 * d.y * d.z, 0.315392 * (3.0 * d.z * d.z - 1.0),
+                              1.092548 * d.x * d.z, 0.546274 * (d.x * d.x - d.y * d.y));
+    vec3 irradiance = vec3(0.0);
+    for (int i = 0; i < 9; ++i) {
+        float band = i == 0 ? PI : (i < 4 ? 2.0 * PI / 3.0 : PI / 4.0);
+        irradiance += environmentSh[i].rgb * (band * basis[i]);
+    }
+    return environmentTransform.z * INV_PI * max(irradiance, vec3(0.0));
+}
+
+// Prefiltered radiance for perceptual roughness r: twin of prefilteredRadiance().
+vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness) {
+    vec3 d = environmentMapDirection(worldDirection);
+    float level = clamp(perceptualRoughness, 0.0, 1.0) * float(PREFILTERED_LEVELS);
+    int lower = min(int(level), PREFILTERED_LEVELS - 1);
+    float t = level - float(lower);
+    return environmentTransform.z * (sampleEnvironmentLevel(lower, d) * (1.0 - t) +
+                                     sampleEnvironmentLevel(lower + 1, d) * t);
+}
+
+// Split-sum (A, B): twin of sampleSplitSum() in environment_map.cpp.
+vec2 sampleSplitSum(float cosOut, float perceptualRoughness) {
+    float last = float(SPLIT_SUM_SIZE - 1);
+    float x = clamp(cosOut * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
+    float y = clamp(perceptualRoughness * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
+    int x0 = int(x), y0 = int(y);
+    int x1 = min(x0 + 1, SPLIT_SUM_SIZE - 1), y1 = min(y0 + 1, SPLIT_SUM_SIZE - 1);
+    float fx = x - float(x0), fy = y - float(y0);
+    vec2 top = texelFetch(environmentSplitSum, ivec2(x0, y0), 0).rg * (1.0 - fx) +
+               texelFetch(environmentSplitSum, ivec2(x1, y0), 0).rg * fx;
+    vec2 bottom = texelFetch(environmentSplitSum, ivec2(x0, y1), 0).rg * (1.0 - fx) +
+                  texelFetch(environmentSplitSum, ivec2(x1, y1), 0).rg * fx;
+    return top * (1.0 - fy) + bottom * fy;
+}
+
+// Helpers of the model hooks (twins of environment_lighting.cpp).
+vec3 environmentMirrorDirection(vec3 wo, ShadingFrame frame) {
+    return 2.0 * cosTheta(frame, wo) * frame.normal - wo;
+}
+
+float environmentFormWeight(int form, float cosOut, float normalization) {
+    float cosine = max(cosOut, 1e-3);
+    if (form == 0 || form == 1) return 1.0 / (cosine * normalization);
+    if (form == 2) return 1.0 / (4.0 * cosine * cosine * normalization);
+    return 1.0;
+}
+
+vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
+    float perceptual = sqrt(alpha);
+    vec2 scaleBias = sampleSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
+    return environmentSpecularRadiance(environmentMirrorDirection(wo, frame), perceptual) *
+           (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
+}
+
+// What a secondary ray sees (twin of MissRadiance::operator()), and a primary ray (::primary).
+vec3 missRadiance(vec3 direction) {
+    return environmentFlags.x != 0 ? environmentRadiance(direction) : backgroundRadiance(direction);
+}
+
+vec3 primaryMissRadiance(vec3 direction) {
+    return environmentFlags.x != 0 && environmentFlags.y != 0 ? environmentRadiance(direction)
+                                                              : backgroundRadiance(direction);
+}

@@ -1,0 +1,54 @@
+// Scenes and HDR files for the environment tests: a sphere of one material under an environment
+// and no lights, and a smooth equirectangular HDR image written through OpenImageIO.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include <OpenImageIO/imageio.h>
+
+#include "environment/environment_source.h"
+#include "scene/scene.h"
+
+namespace glint::test {
+
+// A unit sphere of `material` seen from +z (orthographic, filling most of the frame).
+inline Scene sphereUnderEnvironment(const Material& material, EnvironmentKind kind, const std::string& file = {}) {
+    Scene scene;
+    scene.camera.projection = Projection::Orthographic;
+    scene.camera.position = {0.0f, 0.0f, 5.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.orthoHeight = 2.2f;
+    scene.materials = {material};
+    scene.objects.push_back({"sphere", SphereShape{}, 0});
+    scene.environment.kind = kind;
+    scene.environment.file = file;
+    if (Status loaded = loadEnvironment(scene.environment); !loaded) ADD_FAILURE() << loaded.error().format();
+    return scene;
+}
+
+// Writes a width×(width/2) float image: a smooth sky (bluish above, brown below) with a bright warm
+// blob towards (0.5, 0.6, 0.6), so reflections and refractions have structure.
+inline void writeTestHdr(const std::string& path, int width, float poisonValue = 0.0f, bool poison = false) {
+    const int height = width / 2;
+    std::vector<float> texels(static_cast<size_t>(width) * height * 3);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const glm::vec3 d = equirectDirection({(x + 0.5f) / width, (y + 0.5f) / height});
+            const glm::vec3 sun = glm::normalize(glm::vec3(0.5f, 0.6f, 0.6f));
+            const float blob = std::exp(8.0f * (glm::dot(d, sun) - 1.0f));
+            glm::vec3 radiance = d.y > 0 ? glm::mix(glm::vec3(0.8f, 0.85f, 0.9f), glm::vec3(0.2f, 0.35f, 0.8f), d.y)
+                                         : glm::mix(glm::vec3(0.8f, 0.85f, 0.9f), glm::vec3(0.25f, 0.2f, 0.15f), -d.y);
+            radiance += glm::vec3(6.0f, 5.0f, 3.5f) * blob + glm::vec3(0.3f * (0.5f + 0.5f * std::sin(3.0f * d.x)));
+            float* texel = &texels[(static_cast<size_t>(y) * width + x) * 3];
+            texel[0] = radiance.r, texel[1] = radiance.g, texel[2] = radiance.b;
+        }
+    if (poison) texels[(static_cast<size_t>(height / 2) * width + 3) * 3 + 1] = poisonValue;
+    auto output = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(output) << OIIO::geterror();
+    ASSERT_TRUE(output->open(path, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT)));
+    ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, texels.data()));
+    ASSERT_TRUE(output->close());
+}
+
+}  // namespace glint::test
