@@ -70,6 +70,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
         glBindBufferBase(GL_UNIFORM_BUFFER, i, renderer->uniformBuffers_[i]);
     }
     glGenVertexArrays(1, &renderer->emptyVertexArray_);
+    auto shadowMaps = ShadowMaps::create(renderer->sources_);
+    if (!shadowMaps) return shadowMaps.error();
+    renderer->shadowMaps_ = std::move(*shadowMaps);
     if (Status errors = takeGlErrors("renderer creation"); !errors) return errors.error();
     return renderer;
 }
@@ -206,6 +209,11 @@ void Renderer::uploadFrame(const Scene& scene, int width, int height) {
 Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     platform_.makeCurrent();
     GLINT_CHECK(width > 0 && height > 0);
+    shadowMaps_->update(scene, sameShape, [&](size_t objectIndex) {
+        const GpuMesh& mesh = meshFor(objectIndex, scene.objects[objectIndex].shape);
+        glBindVertexArray(mesh.vertexArray);
+        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    });
     const int samples = std::max(1, scene.msaaSamples);
     radianceTarget_.ensure(width, height, 1);
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
@@ -243,6 +251,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         }
         const ShaderProgram& shader = **program;
         glUseProgram(shader.id());
+        shadowMaps_->bind(shader);
         MaterialBlockStd140 materialBlock{};
         std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
                     materialBlock.values);

@@ -11,6 +11,7 @@
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
+#include "gl/shadow_maps.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -46,6 +47,8 @@ public:
     // Triangles submitted by the last renderRadiance (proxy meshes included).
     long long trianglesDrawn() const { return trianglesDrawn_; }
     const ShaderSources& sources() const { return sources_; }
+    // How many times the shadow maps were re-rendered (only when shadowed lights or geometry change).
+    long long shadowMapRenders() const { return shadowMaps_->renderCount(); }
 
 private:
     struct GpuMesh {
@@ -81,6 +84,7 @@ private:
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     std::vector<GpuMesh> meshes_;
+    std::unique_ptr<ShadowMaps> shadowMaps_;
     long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};
     RenderTarget radianceTarget_{GL_RGBA32F, true};

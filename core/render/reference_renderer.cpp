@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "math/frame.h"
+#include "render/shadow_rays.h"
 #include "render/specular_transport.h"
 
 namespace glint {
@@ -83,7 +84,9 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         const LightArrival arrival = lightArrival(light, hit.position);
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f) continue;
-        // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i.
+        // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
+        const float visibility = lightVisibility(scene, light, hit, arrival);
+        if (visibility == 0.0f) continue;
         radiance += evalBrdf(material.model, material.values, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosTheta;
     }

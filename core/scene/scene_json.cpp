@@ -5,6 +5,7 @@
 #include <array>
 
 #include "scene/json_object_reader.h"
+#include "scene/shadow_json.h"
 #include "util/file_io.h"
 
 namespace glint {
@@ -149,6 +150,7 @@ Light readLight(ObjectReader& reader) {
             light.ambientRadiance = static_cast<float>(reader.number("radiance", light.ambientRadiance, Bounds::nonNegative()));
             break;
     }
+    readLightShadows(reader, light);
     reader.rejectUnknownKeys();
     return light;
 }
@@ -180,6 +182,7 @@ json lightToJson(const Light& light) {
             break;
         case LightType::Ambient: out["radiance"] = light.ambientRadiance; break;
     }
+    writeLightShadows(light, out);
     return out;
 }
 
@@ -321,6 +324,7 @@ Scene readScene(const JsonDocument& document) {
     for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
         root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
+    checkShadowedLightCount(root, scene.lights);
     for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials));
     root.rejectUnknownKeys();
     return scene;

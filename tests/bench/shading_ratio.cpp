@@ -14,6 +14,7 @@
 #include "gl/frame_uniforms.h"
 #include "gl/material_glsl.h"
 #include "gl/render_target.h"
+#include "gl/shadow_maps.h"
 #include "gl/uniform_blocks.h"
 
 namespace glint {
@@ -100,6 +101,8 @@ int run(int frames) {
         bare->bindBlock("FrameBlock", kBareBinding + 0);
         bare->bindBlock("LightBlock", kBareBinding + 1);
         bare->bindBlock("MaterialBlock", kBareBinding + 2);
+        glUseProgram(bare->id());
+        assignShadowSamplerUnits(*bare);  // shading.glsl reads the (empty) shadow block
         // The bare pass's uniforms: the scene's own, packed by the renderer's code (same lights,
         // same light count for the dynamic loop, same material block).
         const FrameUniforms uniforms = packFrameUniforms(scene, kWidth, kHeight);
