@@ -29,7 +29,7 @@ std::vector<ShadowedLight> shadowedLights(const Scene& scene) {
         if (!light.enabled || light.type == LightType::Ambient) continue;
         if (lightBlockIndex == kMaxLights) break;
         const int index = lightBlockIndex++;
-        if (!light.castsShadows || shadowed.size() == kMaxShadowedLights) continue;
+        if (!light.castsShadows || static_cast<int>(shadowed.size()) == kMaxShadowedLights) continue;
         shadowed.push_back({&light, index, *shadowProjection(light, bounds)});
     }
     return shadowed;
