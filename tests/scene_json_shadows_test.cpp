@@ -7,6 +7,7 @@
 #include "render/shadow_projection.h"
 #include "render/shadow_rays.h"
 #include "scene/scene_json.h"
+#include "located_error_support.h"
 #include "test_support.h"
 
 namespace glint {
@@ -18,16 +19,7 @@ std::string sceneWithLights(const std::string& lightsJson) {
            "  \"objects\": [{\"shape\": \"sphere\", \"material\": \"m\"}]\n}";
 }
 
-void expectLocatedError(const std::string& text, int line, const std::string& key, const std::string& message) {
-    auto scene = parseScene(text, "bad.json");
-    ASSERT_FALSE(scene.ok()) << text;
-    const Diagnostic& error = scene.error();
-    EXPECT_EQ(error.where.file, "bad.json");
-    EXPECT_EQ(error.where.line, line) << error.format();
-    EXPECT_GT(error.where.column, 0);
-    EXPECT_NE(error.message.find("'" + key), std::string::npos) << error.format();
-    EXPECT_NE(error.message.find(message), std::string::npos) << error.format();
-}
+using test::expectLocatedError;
 
 TEST(SceneJsonShadows, SettingsLoadAndRoundTrip) {
     Scene scene = test::loadTestScene("scenes/shadows.json");
