@@ -26,7 +26,6 @@ Scene defaultScene() {
     key.type = LightType::Directional;
     key.direction = glm::normalize(glm::vec3(-0.5f, -1.0f, -0.6f));
     key.irradiance = 2.5f;
-    key.castsShadows = true;  // the floor catches the sphere's shadow
     Light fill;
     fill.name = "fill";
     fill.type = LightType::Point;
