@@ -4,10 +4,11 @@
 layout(location = 0) in vec3 inPosition;
 
 uniform mat4 lightViewProjection;  // world → clip of the map (or of one cube face)
+uniform vec4 placement;            // as surface.vert: xyz offset [m], w uniform scale
 
 out vec3 worldPosition;
 
 void main() {
-    worldPosition = inPosition;
+    worldPosition = placement.xyz + placement.w * inPosition;
     gl_Position = lightViewProjection * vec4(inPosition, 1.0);
 }

@@ -1,7 +1,8 @@
 #version 410 core
 // Surface fragment shader: finds the exact surface point under the pixel (analytic sphere, or
-// the interpolated point of a planar mesh), then shades it (common/shading.glsl): the lights,
-// the ambient light and the traced delta lobes of mirror and glass.
+// the interpolated point of a triangle mesh with its interpolated (Phong) or face (flat) normal),
+// then shades it (common/shading.glsl): the lights, the ambient light and the traced delta lobes
+// of mirror and glass. With GLINT_GOURAUD it outputs the radiance interpolated between vertices.
 // generated/material.glsl is made per model from its parameter table (MaterialParams,
 // loadMaterialParams(), the model's GLSL twin and GLINT_EVAL_BRDF); the prelude defines
 // GLINT_MSAA_SAMPLES when rendering multisampled.
@@ -21,6 +22,10 @@ uniform vec2 sampleOffsets[GLINT_MSAA_SAMPLES];  // sample positions within the 
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec3 worldTangent;
+#ifdef GLINT_GOURAUD
+in vec3 vertexRadiance;
+#endif
+uniform int flatNormals;  // 1: flat interpolation, the triangle's own normal
 out vec4 outRadiance;
 
 // Twin of surfaceTangent() in core/render/reference_renderer.cpp for a sphere: the direction of
@@ -35,8 +40,12 @@ void main() {
     Ray ray = primaryRay(gl_FragCoord.xy);
     vec3 position = worldPosition;
     vec3 normal = normalize(worldNormal);
-    vec3 tangent = worldTangent;  // planes: the mesh tangent
+    vec3 tangent = worldTangent;  // meshes: the interpolated tangent
     float depth = gl_FragCoord.z;
+    // The plane of the triangle from the position's screen-space derivatives (exact for a
+    // linearly interpolated attribute); its orientation does not matter (two-sided, below).
+    vec3 faceNormal = cross(dFdx(worldPosition), dFdy(worldPosition));
+    if (flatNormals == 1 && dot(faceNormal, faceNormal) > 0.0) normal = normalize(faceNormal);
     if (shapeKind == SHAPE_SPHERE) {
         float t = intersectSphere(ray);
 #ifdef GLINT_MSAA_SAMPLES
@@ -63,6 +72,10 @@ void main() {
     }
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
     gl_FragDepth = depth;
+#ifdef GLINT_GOURAUD
+    outRadiance = vec4(vertexRadiance, 1.0);
+    return;
+#endif
     ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
     outRadiance = vec4(shadeSurface(position, frame, -ray.direction), 1.0);
 }

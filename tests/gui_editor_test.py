@@ -12,8 +12,8 @@ screenshots. One scenario per ctest entry:
   screenshot   F12 through the file browser writes the viewport as PNG and as EXR
   crash_signal SIGSEGV right after an edit (autosave 30 s away): the crash guard's copy is
                offered on the next start and restores the edit
-  shadow_toggle untick the key light's "Casts shadows": the floor under the sphere brightens;
-               Ctrl+Z brings the shadow back (one click = one step)
+  shadow_toggle tick the key light's "Casts shadows": its shadow darkens the floor beside the
+               sphere; Ctrl+Z takes it away (one click = one step)
   corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
                naming file:line, the work and its undo history untouched
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
@@ -397,20 +397,20 @@ def scenario_shadow_toggle(x, glint, output, state):
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "shadow_0_start")
-        shadowed = sum(pixel(base, *SHADOW_ON_FLOOR))
+        unshadowed = sum(pixel(base, *SHADOW_ON_FLOOR))
         x.run("xdotool", "mousemove", "--sync", str(CASTS_SHADOWS_BOX[0]), str(CASTS_SHADOWS_BOX[1]))
         time.sleep(0.5)  # a frame that sees the hover before the press (frames are slow on llvmpipe)
         x.click(*CASTS_SHADOWS_BOX)
         x.run("xdotool", "mousemove", "--sync", "1100", "600")  # no tooltip over the viewport
-        unshadowed = x.wait_for(lambda shot: sum(pixel(shot, *SHADOW_ON_FLOOR)) > shadowed + 60,
-                                "the floor under the sphere to brighten with the shadow off")
-        save(unshadowed, output, "shadow_1_off")
+        shadowed = x.wait_for(lambda shot: sum(pixel(shot, *SHADOW_ON_FLOOR)) < unshadowed - 60,
+                              "the key light's shadow to darken the floor beside the sphere")
+        save(shadowed, output, "shadow_1_on")
         x.key("ctrl+z")
-        x.wait_for(matches(base), "Ctrl+Z to bring the shadow back (one click = one step)")
+        x.wait_for(matches(base), "Ctrl+Z to take the shadow away again (one click = one step)")
         close_window(x, editor)
         assert editor.wait_exit() == 0
-        print(f"ok: shadow off brightened the floor {pixel(base, *SHADOW_ON_FLOOR)} -> "
-              f"{pixel(unshadowed, *SHADOW_ON_FLOOR)}, undone")
+        print(f"ok: shadow on darkened the floor {pixel(base, *SHADOW_ON_FLOOR)} -> "
+              f"{pixel(shadowed, *SHADOW_ON_FLOOR)}, undone")
     finally:
         editor.kill()
 

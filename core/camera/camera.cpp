@@ -27,4 +27,18 @@ Ray primaryRay(const glm::mat4& inverseViewProjection, float x, float y, int wid
     return {origin, glm::normalize(end - origin)};
 }
 
+glm::vec3 towardsViewerFrom(const Camera& camera, glm::vec3 position) {
+    if (camera.projection == Projection::Perspective) return glm::normalize(camera.position - position);
+    return glm::normalize(camera.position - camera.target);
+}
+
+float viewerDistance(const Camera& camera, glm::vec3 position) {
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    const glm::vec3 offset = position - camera.position;
+    if (camera.projection == Projection::Orthographic) return glm::dot(offset, forward) - camera.nearPlane;
+    // Along the line from the eye: the near plane lies at depth `near`, i.e. near / cos of the way.
+    const float length = glm::length(offset);
+    return length - camera.nearPlane * length / glm::dot(offset, forward);
+}
+
 }  // namespace glint

@@ -33,4 +33,12 @@ struct Ray {
 // width×height image, from the inverse view-projection matrix.
 Ray primaryRay(const glm::mat4& inverseViewProjection, float x, float y, int width, int height);
 
+// Unit direction from a world point towards the viewer: the eye of a perspective camera, the
+// view axis of an orthographic one. GLSL twin: towardsViewerFrom() in shaders/common/frame.glsl.
+glm::vec3 towardsViewerFrom(const Camera& camera, glm::vec3 position);
+
+// Distance from a world point back to the origin of the primary ray that reaches it (on the
+// near plane), as a hit's distance. GLSL: length(position − rayTowards(position).origin).
+float viewerDistance(const Camera& camera, glm::vec3 position);
+
 }  // namespace glint

@@ -1,4 +1,4 @@
-// Procedural meshes: UV sphere and plane (see mesh.h).
+// Procedural meshes: UV sphere, plane, cube and torus (see mesh.h).
 #include "geometry/mesh.h"
 
 #include <cmath>
@@ -48,6 +48,52 @@ Mesh makePlane(glm::vec3 center, glm::vec3 normal, glm::vec2 size) {
         {center - halfU + halfV, frame.normal, {0, 1}, frame.tangent},
     };
     mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+}
+
+Mesh makeCube(glm::vec3 center, float size) {
+    GLINT_CHECK(size > 0.0f);
+    Mesh mesh;
+    const float half = 0.5f * size;
+    // Each face: its outward normal and a tangent; the bitangent n × t completes the square.
+    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const glm::vec3 tangents[6] = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
+    for (int face = 0; face < 6; ++face) {
+        const glm::vec3 normal = normals[face], tangent = tangents[face];
+        const glm::vec3 bitangent = glm::cross(normal, tangent);
+        const auto first = static_cast<uint32_t>(mesh.vertices.size());
+        const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (const glm::vec2 corner : corners)
+            mesh.vertices.push_back({center + half * (normal + corner.x * tangent + corner.y * bitangent), normal,
+                                     0.5f * (corner + 1.0f), tangent});
+        mesh.indices.insert(mesh.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+    }
+    return mesh;
+}
+
+Mesh makeTorus(glm::vec3 center, float majorRadius, float minorRadius, int segments, int rings) {
+    GLINT_CHECK(segments >= 3 && rings >= 3 && majorRadius > 0.0f && minorRadius > 0.0f);
+    Mesh mesh;
+    mesh.vertices.reserve(static_cast<size_t>(segments + 1) * (rings + 1));
+    for (int ring = 0; ring <= rings; ++ring) {
+        const float v = static_cast<float>(ring) / rings;
+        const float tubeAngle = v * 2.0f * kPi;
+        for (int segment = 0; segment <= segments; ++segment) {
+            const float u = static_cast<float>(segment) / segments;
+            const float azimuth = u * 2.0f * kPi;
+            const glm::vec3 radial{std::cos(azimuth), 0.0f, -std::sin(azimuth)};
+            const glm::vec3 normal = std::cos(tubeAngle) * radial + glm::vec3(0.0f, std::sin(tubeAngle), 0.0f);
+            const glm::vec3 tangent{-std::sin(azimuth), 0.0f, -std::cos(azimuth)};
+            mesh.vertices.push_back({center + majorRadius * radial + minorRadius * normal, normal, {u, v}, tangent});
+        }
+    }
+    const int stride = segments + 1;
+    for (int ring = 0; ring < rings; ++ring) {
+        for (int segment = 0; segment < segments; ++segment) {
+            const uint32_t a = ring * stride + segment, b = a + stride, c = b + 1, d = a + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, d, c, a, c, b});
+        }
+    }
     return mesh;
 }
 

@@ -23,11 +23,31 @@ struct Mesh {
     size_t triangleCount() const { return indices.size() / 3; }
 };
 
+// What the importer found in a mesh file (geometry/mesh_import.h); shown in the editor.
+struct MeshStatistics {
+    size_t vertexCount = 0;
+    size_t triangleCount = 0;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // in the file's own units, before centring
+    bool hadNormals = false;  // false: smooth normals were generated
+    bool hadUvs = false;      // false: tangents are a fallback, not from UVs
+    size_t degenerateTrianglesDropped = 0;  // zero-area faces removed
+    size_t meshesMerged = 0;                // meshes of the file's node tree merged into one
+    double loadSeconds = 0.0;               // wall time of the whole import
+};
+
 // A UV sphere of `segments` slices around the pole axis (+y) and `rings` stacks from pole to
 // pole (segments ≥ 3, rings ≥ 2). Vertices lie on the sphere of the given radius.
 Mesh makeUvSphere(glm::vec3 center, float radius, int segments, int rings);
 
 // A rectangle `size.x` by `size.y` centred at `center`, facing `normal`.
 Mesh makePlane(glm::vec3 center, glm::vec3 normal, glm::vec2 size);
+
+// An axis-aligned cube of edge `size`: 24 vertices (four per face, with the face's normal), 12
+// triangles.
+Mesh makeCube(glm::vec3 center, float size);
+
+// A torus around +y (segments ≥ 3 around the axis, rings ≥ 3 around the tube) with analytic
+// normals; u runs around the axis, v around the tube.
+Mesh makeTorus(glm::vec3 center, float majorRadius, float minorRadius, int segments, int rings);
 
 }  // namespace glint

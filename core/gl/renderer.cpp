@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "geometry/mesh.h"
+#include "geometry/shape_mesh.h"
 #include "gl/frame_uniforms.h"
 #include "gl/gl_loader.h"
 #include "gl/material_glsl.h"
@@ -26,17 +27,6 @@ const float kProxyScale = 1.001f / std::cos(kPi / kProxySegments + kPi / kProxyR
 bool proxyBeyondNearPlane(const Camera& camera, const SphereShape& sphere) {
     const glm::vec3 forward = glm::normalize(camera.target - camera.position);
     return glm::dot(sphere.center - camera.position, forward) - sphere.radius * kProxyScale > camera.nearPlane;
-}
-
-bool sameShape(const Shape& a, const Shape& b) {
-    if (a.index() != b.index()) return false;
-    if (const auto* sphere = std::get_if<SphereShape>(&a)) {
-        const auto& other = std::get<SphereShape>(b);
-        return sphere->center == other.center && sphere->radius == other.radius;
-    }
-    const auto& plane = std::get<PlaneShape>(a);
-    const auto& other = std::get<PlaneShape>(b);
-    return plane.center == other.center && plane.normal == other.normal && plane.size == other.size;
 }
 
 }  // namespace
@@ -79,11 +69,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
 
 Renderer::~Renderer() {
     platform_.makeCurrent();
-    for (GpuMesh& mesh : meshes_) {
-        glDeleteVertexArrays(1, &mesh.vertexArray);
-        glDeleteBuffers(1, &mesh.vertexBuffer);
-        glDeleteBuffers(1, &mesh.indexBuffer);
-    }
+    meshes_.reset();
     glDeleteBuffers(3, uniformBuffers_);
     glDeleteVertexArrays(1, &emptyVertexArray_);
 }
@@ -102,27 +88,29 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
     return program;
 }
 
-Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples) const {
+Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples, bool gouraud) const {
     const ModelInfo& info = modelInfo(model);
-    const std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
+    std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
+    if (gouraud) prelude += "#define GLINT_GOURAUD 1\n";  // shading per vertex (surface.vert)
     const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info)}};
     auto program = ShaderProgram::build(sources_, "surface.vert", "surface.frag", prelude, generated);
     if (!program) return program.error();
     program->bindBlock("FrameBlock", kFrameBinding);
     program->bindBlock("LightBlock", kLightBinding);
     program->bindBlock("MaterialBlock", kMaterialBinding);
-    SurfaceProgram entry{std::move(*program), {"surface.vert"}, 0};
+    SurfaceProgram entry{std::move(*program), {}, 0};
+    if (auto assembled = assembleShader(sources_, "surface.vert", prelude, generated)) entry.files = assembled->files;
     if (auto assembled = assembleShader(sources_, "surface.frag", prelude, generated))
         entry.files.insert(entry.files.end(), assembled->files.begin(), assembled->files.end());
     entry.builtAt = newestModification(entry.files);
     return entry;
 }
 
-Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples) {
-    const auto key = std::make_pair(model, samples);
+Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples, bool gouraud) {
+    const auto key = std::make_tuple(model, samples, gouraud);
     if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end())
         return &found->second.program;
-    auto built = buildSurfaceProgram(model, samples);
+    auto built = buildSurfaceProgram(model, samples, gouraud);
     if (!built) return built.error();
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
@@ -137,7 +125,7 @@ bool Renderer::reloadChangedShaders() {
         if (newest <= entry.builtAt) continue;
         changed = true;
         entry.builtAt = newest;
-        if (auto rebuilt = buildSurfaceProgram(key.first, key.second)) entry = std::move(*rebuilt);
+        if (auto rebuilt = buildSurfaceProgram(std::get<0>(key), std::get<1>(key), std::get<2>(key))) entry = std::move(*rebuilt);
         else error = rebuilt.error().format();
     }
     const long long newestDisplay = newestModification(displayFiles_);
@@ -161,37 +149,8 @@ bool Renderer::reloadChangedShaders() {
 
 // --- meshes ---------------------------------------------------------------------------------
 
-const Renderer::GpuMesh& Renderer::meshFor(size_t objectIndex, const Shape& shape) {
-    if (meshes_.size() <= objectIndex) meshes_.resize(objectIndex + 1);
-    GpuMesh& gpu = meshes_[objectIndex];
-    if (gpu.vertexArray && sameShape(gpu.shape, shape)) return gpu;
-    Mesh mesh;
-    if (const auto* sphere = std::get_if<SphereShape>(&shape))
-        mesh = makeUvSphere(sphere->center, sphere->radius * kProxyScale, kProxySegments, kProxyRings);
-    else {
-        const auto& plane = std::get<PlaneShape>(shape);
-        mesh = makePlane(plane.center, plane.normal, plane.size);
-    }
-    if (!gpu.vertexArray) {
-        glGenVertexArrays(1, &gpu.vertexArray);
-        glGenBuffers(1, &gpu.vertexBuffer);
-        glGenBuffers(1, &gpu.indexBuffer);
-    }
-    glBindVertexArray(gpu.vertexArray);
-    glBindBuffer(GL_ARRAY_BUFFER, gpu.vertexBuffer);
-    glBufferData(GL_ARRAY_BUFFER, mesh.vertices.size() * sizeof(Vertex), mesh.vertices.data(), GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indexBuffer);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, tangent)));
-    glBindVertexArray(0);
-    gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
-    gpu.shape = shape;
-    return gpu;
+const GpuMesh& Renderer::meshFor(size_t objectIndex, const SceneObject& object) {
+    return meshes_->forObject(objectIndex, object, kProxySegments, kProxyRings, kProxyScale);
 }
 
 // --- per-frame uniforms ---------------------------------------------------------------------
@@ -209,8 +168,9 @@ void Renderer::uploadFrame(const Scene& scene, int width, int height) {
 Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     platform_.makeCurrent();
     GLINT_CHECK(width > 0 && height > 0);
-    shadowMaps_->update(scene, sameShape, [&](size_t objectIndex) {
-        const GpuMesh& mesh = meshFor(objectIndex, scene.objects[objectIndex].shape);
+    shadowMaps_->update(scene, [&](size_t objectIndex, const ShaderProgram& depthProgram) {
+        setTriangleUniforms(depthProgram, scene.objects[objectIndex]);  // gl/gpu_mesh_cache.h
+        const GpuMesh& mesh = meshFor(objectIndex, scene.objects[objectIndex]);
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     });
@@ -240,10 +200,12 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
 
     Status result = success();
     trianglesDrawn_ = 0;
+    meshes_->releaseUnused();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Material& material = scene.materials.at(object.materialIndex);
-        auto program = surfaceProgram(material.model, samples);
+        const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
+        auto program = surfaceProgram(material.model, samples, object.interpolation == SurfaceInterpolation::Gouraud);
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -257,8 +219,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
                     materialBlock.values);
         glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kMaterialBinding]);
         glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
-        const auto* sphere = std::get_if<SphereShape>(&object.shape);
+        const auto* sphere = triangles ? nullptr : std::get_if<SphereShape>(&object.shape);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
+        setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         // The proxy sphere's back faces would shade the same front hit a second time (gl_FragDepth
         // disables early depth rejection): cull them, unless part of the proxy lies before the near
@@ -267,7 +230,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         if (sphere && proxyBeyondNearPlane(scene.camera, *sphere)) glEnable(GL_CULL_FACE);
         else glDisable(GL_CULL_FACE);
         if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
-        const GpuMesh& mesh = meshFor(i, object.shape);
+        const GpuMesh& mesh = meshFor(i, object);
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;

@@ -6,8 +6,10 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "gl/gpu_mesh_cache.h"
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
@@ -51,11 +53,6 @@ public:
     long long shadowMapRenders() const { return shadowMaps_->renderCount(); }
 
 private:
-    struct GpuMesh {
-        GLuint vertexArray = 0, vertexBuffer = 0, indexBuffer = 0;
-        GLsizei indexCount = 0;
-        Shape shape;
-    };
     struct SurfaceProgram {
         ShaderProgram program;
         std::vector<std::string> files;
@@ -64,9 +61,9 @@ private:
 
     Renderer(GlPlatform& platform, ShaderSources sources);
     Result<ShaderProgram> buildBackgroundProgram() const;
-    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples) const;
-    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples);
-    const GpuMesh& meshFor(size_t objectIndex, const Shape& shape);
+    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, bool gouraud) const;
+    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, bool gouraud);
+    const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
 
@@ -74,7 +71,7 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    std::map<std::pair<BrdfModel, int>, SurfaceProgram> surfacePrograms_;
+    std::map<std::tuple<BrdfModel, int, bool>, SurfaceProgram> surfacePrograms_;  // model, MSAA samples, Gouraud
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
@@ -83,7 +80,7 @@ private:
     long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
-    std::vector<GpuMesh> meshes_;
+    std::unique_ptr<GpuMeshCache> meshes_ = std::make_unique<GpuMeshCache>();
     std::unique_ptr<ShadowMaps> shadowMaps_;
     long long trianglesDrawn_ = 0;
     RenderTarget multisampleTarget_{GL_RGBA32F, true};

@@ -3,9 +3,11 @@
 #include "gl/shadow_maps.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "gl/gl_loader.h"
 #include "render/shadow_projection.h"
+#include "scene/scene_json.h"
 
 namespace glint {
 namespace {
@@ -108,23 +110,32 @@ std::vector<float> lightKey(const Scene& scene) {
     return key;
 }
 
+// The objects as the scene file writes them (shape, placement, interpolation), and each imported
+// mesh's identity (a reload makes a new one).
+std::string geometryKey(const Scene& scene) {
+    std::string key = sceneToJson(scene)["objects"].dump();
+    for (const SceneObject& object : scene.objects)
+        if (const auto* mesh = std::get_if<MeshShape>(&object.shape))
+            key += " " + std::to_string(reinterpret_cast<std::uintptr_t>(mesh->mesh.get()));
+    return key;
+}
+
 }  // namespace
 
-bool ShadowMaps::needsRender(const Scene& scene, SameShape sameShape) const {
-    if (!rendered_ || lightKey(scene) != lightKey_ || scene.objects.size() != shapes_.size()) return true;
-    for (size_t i = 0; i < shapes_.size(); ++i)
-        if (!sameShape(shapes_[i], scene.objects[i].shape)) return true;
-    return false;
+bool ShadowMaps::needsRender(const Scene& scene) const {
+    return !rendered_ || lightKey(scene) != lightKey_ || geometryKey(scene) != geometryKey_;
 }
 
 // --- rendering --------------------------------------------------------------------------------
 
 void ShadowMaps::drawObjects(const Scene& scene, const DrawObject& drawObject) const {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const auto* sphere = std::get_if<SphereShape>(&scene.objects[i].shape);
+        const SceneObject& object = scene.objects[i];
+        // As the surface pass: an exact sphere is ray-cast, any other surface keeps its triangles.
+        const auto* sphere = drawnAsTriangles(object.shape, object.interpolation) ? nullptr : std::get_if<SphereShape>(&object.shape);
         glUniform1i(depthProgram_.uniform("shapeKind"), sphere ? 1 : 0);
         if (sphere) glUniform4f(depthProgram_.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
-        drawObject(i);
+        drawObject(i, depthProgram_);
     }
 }
 
@@ -173,12 +184,11 @@ void ShadowMaps::renderMaps(const Scene& scene, const DrawObject& drawObject) {
     ++renderCount_;
 }
 
-void ShadowMaps::update(const Scene& scene, SameShape sameShape, const DrawObject& drawObject) {
-    if (needsRender(scene, sameShape)) {
+void ShadowMaps::update(const Scene& scene, const DrawObject& drawObject) {
+    if (needsRender(scene)) {
         renderMaps(scene, drawObject);
         lightKey_ = lightKey(scene);
-        shapes_.clear();
-        for (const SceneObject& object : scene.objects) shapes_.push_back(object.shape);
+        geometryKey_ = geometryKey(scene);
         rendered_ = true;
     }
     // The block is cheap: always rebuilt, so bias and filter edits need no new maps.

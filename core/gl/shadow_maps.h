@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -42,12 +43,12 @@ public:
     ShadowMaps(const ShadowMaps&) = delete;
     ShadowMaps& operator=(const ShadowMaps&) = delete;
 
-    using SameShape = bool (*)(const Shape&, const Shape&);
-    using DrawObject = std::function<void(size_t objectIndex)>;
-    // Re-renders the maps when a shadowed light or any object changed since the last call (compared
-    // with `sameShape`; `drawObject` draws one object's mesh), and uploads the ShadowBlock.
-    // Changes GL state: framebuffer, viewport, depth test, program.
-    void update(const Scene& scene, SameShape sameShape, const DrawObject& drawObject);
+    // Draws one object's mesh (or a sphere's proxy) with the depth program, after setting the
+    // program's per-object placement uniforms.
+    using DrawObject = std::function<void(size_t objectIndex, const ShaderProgram& depthProgram)>;
+    // Re-renders the maps when a shadowed light or any object changed since the last call, and
+    // uploads the ShadowBlock. Changes GL state: framebuffer, viewport, depth test, program.
+    void update(const Scene& scene, const DrawObject& drawObject);
     // Binds the maps to their texture units and points `program`'s samplers at them.
     void bind(const ShaderProgram& program) const;
     // How many times update() re-rendered the maps (for tests of the caching).
@@ -59,7 +60,7 @@ private:
         int resolution2D = 0, resolutionCube = 0;
     };
     ShadowMaps() = default;
-    bool needsRender(const Scene& scene, SameShape sameShape) const;
+    bool needsRender(const Scene& scene) const;
     void renderMaps(const Scene& scene, const DrawObject& drawObject);
     void drawObjects(const Scene& scene, const DrawObject& drawObject) const;
 
@@ -68,7 +69,7 @@ private:
     Slot slots_[kMaxShadowedLights];
     ShadowBlockStd140 block_{};
     std::vector<float> lightKey_;  // what of the lights the maps depend on, at the last render
-    std::vector<Shape> shapes_;    // the objects at the last render
+    std::string geometryKey_;      // the objects at the last render
     bool rendered_ = false;
     long long renderCount_ = 0;
 };

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <thread>
 #include <vector>
 
 #include "math/frame.h"
 #include "render/shadow_rays.h"
 #include "render/specular_transport.h"
+#include "render/triangle_scene.h"
 
 namespace glint {
 namespace {
@@ -59,6 +61,7 @@ glm::vec3 surfaceTangent(const Shape& shape, glm::vec3 outwardNormal) {
 std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
     std::optional<SurfaceHit> nearest;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
+        if (tracedAsTriangles(scene.objects[i])) continue;  // below, through the BVH
         const Shape& shape = scene.objects[i].shape;
         std::optional<float> t;
         if (const auto* sphere = std::get_if<SphereShape>(&shape)) t = intersectSphere(*sphere, ray);
@@ -72,10 +75,20 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
         if (glm::dot(normal, ray.direction) > 0.0f) normal = -normal;  // surfaces are two-sided
         nearest = SurfaceHit{*t, position, glm::normalize(normal), tangent, static_cast<int>(i)};
     }
+    // Meshes, cubes, tori and tessellated spheres (render/triangle_scene.h).
+    const float limit = nearest ? nearest->distance : std::numeric_limits<float>::infinity();
+    if (auto triangleHit = triangleSceneFor(scene)->intersect(scene, ray, limit)) nearest = std::move(triangleHit);
     return nearest;
 }
 
 glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer) {
+    if (hit.triangle && scene.objects.at(hit.objectIndex).interpolation == SurfaceInterpolation::Gouraud) {
+        // Gouraud: shade the corners, interpolate the radiance (render/triangle_scene.h).
+        glm::vec3 radiance(0.0f);
+        const auto corners = gouraudCorners(scene, hit);
+        for (int k = 0; k < 3; ++k) radiance += hit.triangle->barycentric[k] * shadeHit(scene, corners[k].first, corners[k].second);
+        return radiance;
+    }
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
     const ShadingFrame frame = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
     glm::vec3 radiance(0.0f);
@@ -97,7 +110,9 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     // Delta lobes (mirror, glass), traced against the background only.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
     std::optional<SphereGeometry> sphere;
-    if (const auto* sphereShape = std::get_if<SphereShape>(&shape)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
+    const auto* sphereShape = std::get_if<SphereShape>(&shape);
+    const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
+    if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
     radiance += traceSpecular(material.model, material.values, scene.background, sphere ? &*sphere : nullptr,
                               hit.position, hit.normal, towardsViewer, hit.distance);
     return radiance;

@@ -3,13 +3,23 @@
 // radiance. It is the ground truth the GL renderer is tested against; it is not fast.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "camera/camera.h"
+#include "geometry/mesh.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
 namespace glint {
+
+// The triangle a ray hit (render/triangle_scene.h): its corners in world space and the hit's
+// barycentric weights, for Gouraud shading.
+struct TriangleCorners {
+    std::array<Vertex, 3> vertices;
+    glm::vec3 barycentric;
+    int index;  // the triangle's index within its object's mesh
+};
 
 struct SurfaceHit {
     float distance;       // along the ray [m]
@@ -17,6 +27,7 @@ struct SurfaceHit {
     glm::vec3 normal;     // unit, facing the ray's origin
     glm::vec3 tangent;    // unit, ⟂ normal: direction of increasing u (see surfaceTangent)
     int objectIndex;
+    std::optional<TriangleCorners> triangle = std::nullopt;  // set for shapes drawn from triangles
 };
 
 // The shading tangent of a shape at a point, before any two-sided flip: for a sphere the

@@ -19,21 +19,28 @@ glm::vec3 upFor(glm::vec3 forward) {
 }  // namespace
 
 BoundingSphere sceneBounds(const Scene& scene) {
-    static_assert(std::variant_size_v<Shape> == 2, "give the new shape's extent to sceneBounds");
+    static_assert(std::variant_size_v<Shape> == 5, "give the new shape's extent to sceneBounds");
     glm::vec3 low(INFINITY), high(-INFINITY);
+    const auto include = [&](glm::vec3 centre, glm::vec3 halfExtent) {
+        low = glm::min(low, centre - halfExtent);
+        high = glm::max(high, centre + halfExtent);
+    };
     for (const SceneObject& object : scene.objects) {
         if (const auto* sphere = std::get_if<SphereShape>(&object.shape)) {
-            low = glm::min(low, sphere->center - glm::vec3(sphere->radius));
-            high = glm::max(high, sphere->center + glm::vec3(sphere->radius));
-        } else {
-            const auto& plane = std::get<PlaneShape>(object.shape);
-            const ShadingFrame frame = ShadingFrame::fromNormal(glm::normalize(plane.normal));
+            include(sphere->center, glm::vec3(sphere->radius));
+        } else if (const auto* plane = std::get_if<PlaneShape>(&object.shape)) {
+            const ShadingFrame frame = ShadingFrame::fromNormal(glm::normalize(plane->normal));
             for (float u : {-0.5f, 0.5f})
-                for (float v : {-0.5f, 0.5f}) {
-                    const glm::vec3 corner = plane.center + u * plane.size.x * frame.tangent + v * plane.size.y * frame.bitangent;
-                    low = glm::min(low, corner);
-                    high = glm::max(high, corner);
-                }
+                for (float v : {-0.5f, 0.5f})
+                    include(plane->center + u * plane->size.x * frame.tangent + v * plane->size.y * frame.bitangent, glm::vec3(0.0f));
+        } else if (const auto* cube = std::get_if<CubeShape>(&object.shape)) {
+            include(cube->center, glm::vec3(0.5f * cube->size));
+        } else if (const auto* torus = std::get_if<TorusShape>(&object.shape)) {  // around +y
+            const float outer = torus->majorRadius + torus->minorRadius;
+            include(torus->center, glm::vec3(outer, torus->minorRadius, outer));
+        } else {
+            const auto& mesh = std::get<MeshShape>(object.shape);  // inside the sphere of radius `scale`
+            include(mesh.center, glm::vec3(mesh.scale));
         }
     }
     if (scene.objects.empty()) return {};

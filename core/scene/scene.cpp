@@ -7,6 +7,14 @@ Material Material::withDefaults(std::string name, BrdfModel model) {
     return Material{std::move(name), model, defaultValues(modelInfo(model).params)};
 }
 
+SurfaceInterpolation defaultInterpolation(const Shape& shape) {
+    return std::holds_alternative<SphereShape>(shape) ? SurfaceInterpolation::Exact : SurfaceInterpolation::Phong;
+}
+
+bool drawnAsTriangles(const Shape& shape, SurfaceInterpolation interpolation) {
+    return !(std::holds_alternative<SphereShape>(shape) && interpolation == SurfaceInterpolation::Exact);
+}
+
 Scene defaultScene() {
     Scene scene;
     scene.camera.position = {0.0f, 0.9f, 4.2f};
@@ -19,7 +27,7 @@ Scene defaultScene() {
     scene.materials = {sphereMaterial, floorMaterial};
 
     scene.objects.push_back({"sphere", SphereShape{}, 0});
-    scene.objects.push_back({"floor", PlaneShape{}, 1});
+    scene.objects.push_back({"floor", PlaneShape{}, 1, SurfaceInterpolation::Phong});
 
     Light key;
     key.name = "key";

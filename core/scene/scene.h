@@ -3,6 +3,7 @@
 // drawing in the CPU reference (render/) and the GL renderer (core/gl).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -11,6 +12,7 @@
 
 #include "brdf/model_registry.h"
 #include "camera/camera.h"
+#include "geometry/mesh.h"
 #include "light/light.h"
 #include "scene/background.h"
 
@@ -42,12 +44,53 @@ struct PlaneShape {
     glm::vec2 size{6, 6};  // [m]
 };
 
-using Shape = std::variant<SphereShape, PlaneShape>;
+// An axis-aligned cube; `size` is its edge length [m].
+struct CubeShape {
+    glm::vec3 center{0.0f};
+    float size = 1.5f;
+};
+
+// A torus around the +y axis: a tube of `minorRadius` whose centre line is a circle of
+// `majorRadius` [m]; `segments` around the y axis, `rings` around the tube.
+struct TorusShape {
+    glm::vec3 center{0.0f};
+    float majorRadius = 0.75f;
+    float minorRadius = 0.3f;
+    int segments = 64;
+    int rings = 32;
+};
+
+// A triangle mesh loaded from a file (geometry/mesh_import.h). The importer centres it and
+// scales it into the unit sphere; `center` and `scale` place that unit-sized mesh in the scene.
+struct MeshShape {
+    std::string path;          // as written in the scene file (relative to the scene file's folder)
+    std::string resolvedPath;  // the file actually read
+    glm::vec3 center{0.0f};
+    float scale = 1.0f;  // radius of the mesh's bounding sphere [m]
+    float smoothingAngleDegrees = 60.0f;  // crease angle for normals the file lacks (mesh_import.h)
+    std::shared_ptr<const Mesh> mesh;  // shared between copies of the scene (undo history)
+    MeshStatistics statistics;
+};
+
+using Shape = std::variant<SphereShape, PlaneShape, CubeShape, TorusShape, MeshShape>;
+
+// How a surface is drawn (the lecture's interpolation schemes). Exact ray-casts the analytic
+// sphere (spheres only: the GPU-vs-CPU tests use it); the others draw the triangle mesh of the
+// shape (a sphere's UV tessellation, segments × rings): Flat uses each face's normal, Gouraud
+// shades the vertices and interpolates the radiance, Phong interpolates the normal and shades
+// every pixel. On planes and cubes, whose faces are flat, Exact is Phong.
+enum class SurfaceInterpolation { Exact, Flat, Gouraud, Phong };
+
+// Exact for spheres, Phong for everything else.
+SurfaceInterpolation defaultInterpolation(const Shape& shape);
+// Whether a shape with this mode is drawn from triangles (everything but an exact sphere).
+bool drawnAsTriangles(const Shape& shape, SurfaceInterpolation interpolation);
 
 struct SceneObject {
     std::string name;
     Shape shape;
     int materialIndex = 0;  // into Scene::materials
+    SurfaceInterpolation interpolation = SurfaceInterpolation::Exact;  // see defaultInterpolation
 };
 
 enum class Transfer { Srgb, Gamma };

@@ -6,6 +6,7 @@
 
 #include "scene/json_object_reader.h"
 #include "scene/shadow_json.h"
+#include "scene/shape_json.h"
 #include "util/file_io.h"
 
 namespace glint {
@@ -220,29 +221,25 @@ json backgroundToJson(const Background& background) {
 
 // --- objects --------------------------------------------------------------------------------
 
-constexpr const char* kShapes[] = {"sphere", "plane"};
+constexpr const char* kShapes[] = {"sphere", "plane", "cube", "torus", "mesh"};  // order of Shape
+constexpr const char* kInterpolations[] = {"exact", "flat", "gouraud", "phong"};  // order of SurfaceInterpolation
 
-SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materials) {
+SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materials, const std::string& sceneFile) {
     SceneObject object;
-    if (!reader.has("shape")) reader.failHere("an object needs the key 'shape' (sphere or plane)");
+    if (!reader.has("shape")) reader.failHere("an object needs the key 'shape' (sphere, plane, cube, torus or mesh)");
     const int shape = reader.choice("shape", kShapes, 0);
     object.name = reader.string("name", kShapes[shape]);
-    if (shape == 0) {
-        SphereShape sphere;
-        sphere.center = reader.vec3("center", sphere.center);
-        sphere.radius = static_cast<float>(reader.number("radius", sphere.radius, Bounds::positive()));
-        sphere.segments = reader.integer("segments", sphere.segments, 3, 1024);
-        sphere.rings = reader.integer("rings", sphere.rings, 2, 512);
-        object.shape = sphere;
-    } else {
-        PlaneShape plane;
-        plane.center = reader.vec3("center", plane.center);
-        plane.normal = reader.vec3("normal", plane.normal);
-        if (glm::length(plane.normal) < 1e-6f) reader.fail("normal", "must not be the zero vector");
-        plane.normal = glm::normalize(plane.normal);
-        plane.size = reader.vec2("size", plane.size, Bounds::positive());
-        object.shape = plane;
+    switch (shape) {
+        case 0: object.shape = readSphereShape(reader); break;
+        case 1: object.shape = readPlaneShape(reader); break;
+        default: object.shape = readMeshLikeShape(reader, shape, sceneFile); break;
     }
+    object.interpolation = static_cast<SurfaceInterpolation>(
+        reader.choice("interpolation", kInterpolations, static_cast<int>(defaultInterpolation(object.shape))));
+    if (object.interpolation == SurfaceInterpolation::Exact &&
+        (std::holds_alternative<TorusShape>(object.shape) || std::holds_alternative<MeshShape>(object.shape)))
+        reader.fail("interpolation", "'exact' needs an analytic surface (sphere, plane or cube); a " +
+                                         std::string(kShapes[shape]) + " is drawn from triangles: use flat, gouraud or phong");
     const std::string materialName = reader.requiredString("material");
     object.materialIndex = -1;
     for (size_t i = 0; i < materials.size(); ++i)
@@ -253,20 +250,10 @@ SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materi
 }
 
 json objectToJson(const SceneObject& object, const std::vector<Material>& materials) {
-    json out = {{"name", object.name}};
-    if (const auto* sphere = std::get_if<SphereShape>(&object.shape)) {
-        out["shape"] = "sphere";
-        out["center"] = {sphere->center.x, sphere->center.y, sphere->center.z};
-        out["radius"] = sphere->radius;
-        out["segments"] = sphere->segments;
-        out["rings"] = sphere->rings;
-    } else {
-        const auto& plane = std::get<PlaneShape>(object.shape);
-        out["shape"] = "plane";
-        out["center"] = {plane.center.x, plane.center.y, plane.center.z};
-        out["normal"] = {plane.normal.x, plane.normal.y, plane.normal.z};
-        out["size"] = {plane.size.x, plane.size.y};
-    }
+    json out = {{"name", object.name}, {"shape", kShapes[object.shape.index()]}};
+    out.update(shapeToJson(object.shape));
+    if (object.interpolation != defaultInterpolation(object.shape))
+        out["interpolation"] = kInterpolations[static_cast<int>(object.interpolation)];
     out["material"] = materials.at(object.materialIndex).name;
     return out;
 }
@@ -325,7 +312,7 @@ Scene readScene(const JsonDocument& document) {
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
         root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
     checkShadowedLightCount(root, scene.lights);
-    for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials));
+    for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials, document.file()));
     root.rejectUnknownKeys();
     return scene;
 }
@@ -379,7 +366,9 @@ json sceneToJson(const Scene& scene) {
 }
 
 Status saveScene(const Scene& scene, const std::string& path) {
-    return writeFileAtomically(path, sceneToJson(scene).dump(2) + "\n");
+    json out = sceneToJson(scene);
+    relocateMeshPaths(scene, path, out);
+    return writeFileAtomically(path, out.dump(2) + "\n");
 }
 
 Result<Material> parseMaterial(const std::string& text, const std::string& file) {

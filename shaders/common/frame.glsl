@@ -61,3 +61,19 @@ Ray primaryRay(vec2 windowPoint) {
     ray.direction = normalize(farPoint.xyz / farPoint.w - ray.origin);
     return ray;
 }
+
+// The primary ray that reaches a world point: the ray through the point's own window position
+// (twin of rayTowards() in core/camera/camera.cpp). Usable in every shader stage.
+Ray rayTowards(vec3 position) {
+    vec4 clip = viewProjection * vec4(position, 1.0);
+    vec2 windowPoint = (0.5 * clip.xy / clip.w + 0.5) * viewportSize.xy;
+    return primaryRay(windowPoint);
+}
+
+// Unit direction from a world point towards the viewer: towards the eye of a perspective camera,
+// along the view axis of an orthographic one (the eye is NDC (0, 0, −1, 0) unprojected: a point,
+// or a direction when w = 0). Twin of towardsViewerFrom() in core/camera/camera.cpp.
+vec3 towardsViewerFrom(vec3 position) {
+    vec4 eye = inverseViewProjection * vec4(0.0, 0.0, -1.0, 0.0);
+    return abs(eye.w) > 1e-12 ? normalize(eye.xyz / eye.w - position) : normalize(eye.xyz);
+}

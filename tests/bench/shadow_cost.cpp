@@ -26,7 +26,7 @@ int run(int frames, int width, int height) {
         return 2;
     }
     Scene shadowed = defaultScene(), unshadowed = defaultScene(), moving = defaultScene();
-    unshadowed.lights[0].castsShadows = false;
+    shadowed.lights[0].castsShadows = moving.lights[0].castsShadows = true;  // the key light
     std::vector<double> off, cached, redrawn;
     const auto timeRender = [&](const Scene& scene) {
         const auto start = std::chrono::steady_clock::now();

@@ -1,0 +1,52 @@
+// Mesh import through assimp: OBJ (+MTL, whose materials are ignored), PLY, STL, glTF 2.0
+// (.gltf, .glb) and FBX, merged into one indexed triangle Mesh centred and scaled into the unit
+// sphere, with statistics. It loads geometry only (no materials, textures, animation, cameras).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "util/diagnostic.h"
+
+namespace glint {
+
+struct MeshImportOptions {
+    // Vertex normals are generated where the file has none; faces meeting at a crease sharper
+    // than this angle keep separate normals [degrees, in (0, 180]].
+    float smoothingAngleDegrees = 60.0f;
+};
+
+// Called with the fraction done, in [0, 1], from the thread that imports; returning false
+// cancels the import, which then fails with a Diagnostic for which isImportCancellation() is
+// true. Assimp reports progress while it parses OBJ text and between its processing steps;
+// other formats are parsed in one step, so a cancel there takes effect after the parse.
+using MeshImportProgress = std::function<bool(float fraction)>;
+
+struct ImportedMesh {
+    std::shared_ptr<const Mesh> mesh;  // centred at the origin, bounding radius 1
+    MeshStatistics statistics;
+};
+
+// Loads a mesh file. Nothing is returned half-loaded: any problem (missing, empty, truncated
+// or malformed file, NaN coordinates, indices out of range, no triangles) is a Diagnostic
+// naming the file, and the line where assimp reports one.
+Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions& options = {},
+                                const MeshImportProgress& progress = {});
+
+// The same from bytes in memory; `formatHint` is the file extension without the dot ("obj",
+// "ply", "glb", ...); `name` names the data in messages.
+Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const std::string& formatHint,
+                                          const std::string& name, const MeshImportOptions& options = {},
+                                          const MeshImportProgress& progress = {});
+
+bool isImportCancellation(const Diagnostic& diagnostic);
+
+// The extensions Glint offers to import, lower case without the dot.
+const std::vector<std::string>& meshFileExtensions();
+// Whether a path ends in one of meshFileExtensions() (case-insensitive).
+bool isMeshFile(const std::string& path);
+
+}  // namespace glint

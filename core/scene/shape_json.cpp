@@ -1,0 +1,102 @@
+// Shape JSON (see shape_json.h).
+#include "scene/shape_json.h"
+
+#include <filesystem>
+
+#include "geometry/mesh_import.h"
+
+namespace glint {
+namespace {
+
+using nlohmann::json;
+
+json vec3(glm::vec3 v) { return {v.x, v.y, v.z}; }
+
+std::filesystem::path folderOf(const std::string& file) {
+    if (file.empty()) return std::filesystem::current_path();
+    return std::filesystem::absolute(std::filesystem::path(file)).parent_path();
+}
+
+MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
+    MeshShape mesh;
+    mesh.path = reader.requiredString("path");
+    if (mesh.path.empty()) reader.fail("path", "must name a mesh file");
+    mesh.center = reader.vec3("center", mesh.center);
+    mesh.scale = static_cast<float>(reader.number("scale", mesh.scale, Bounds::positive()));
+    mesh.smoothingAngleDegrees = static_cast<float>(
+        reader.number("smoothing_angle_degrees", mesh.smoothingAngleDegrees, {0.0, 180.0, true}));
+    const std::filesystem::path written(mesh.path);
+    mesh.resolvedPath = (written.is_absolute() ? written : folderOf(sceneFile) / written).lexically_normal().string();
+    auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees});
+    if (!imported) reader.fail("path", imported.error().format());
+    mesh.mesh = imported->mesh;
+    mesh.statistics = imported->statistics;
+    return mesh;
+}
+
+}  // namespace
+
+SphereShape readSphereShape(ObjectReader& reader) {
+    SphereShape sphere;
+    sphere.center = reader.vec3("center", sphere.center);
+    sphere.radius = static_cast<float>(reader.number("radius", sphere.radius, Bounds::positive()));
+    sphere.segments = reader.integer("segments", sphere.segments, 3, 1024);
+    sphere.rings = reader.integer("rings", sphere.rings, 2, 512);
+    return sphere;
+}
+
+PlaneShape readPlaneShape(ObjectReader& reader) {
+    PlaneShape plane;
+    plane.center = reader.vec3("center", plane.center);
+    plane.normal = reader.vec3("normal", plane.normal);
+    if (glm::length(plane.normal) < 1e-6f) reader.fail("normal", "must not be the zero vector");
+    plane.normal = glm::normalize(plane.normal);
+    plane.size = reader.vec2("size", plane.size, Bounds::positive());
+    return plane;
+}
+
+Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string& sceneFile) {
+    if (shapeIndex == 2) {
+        CubeShape cube;
+        cube.center = reader.vec3("center", cube.center);
+        cube.size = static_cast<float>(reader.number("size", cube.size, Bounds::positive()));
+        return cube;
+    }
+    if (shapeIndex == 3) {
+        TorusShape torus;
+        torus.center = reader.vec3("center", torus.center);
+        torus.majorRadius = static_cast<float>(reader.number("major_radius", torus.majorRadius, Bounds::positive()));
+        torus.minorRadius = static_cast<float>(reader.number("minor_radius", torus.minorRadius, Bounds::positive()));
+        torus.segments = reader.integer("segments", torus.segments, 3, 1024);
+        torus.rings = reader.integer("rings", torus.rings, 3, 512);
+        return torus;
+    }
+    return readMeshShape(reader, sceneFile);
+}
+
+json shapeToJson(const Shape& shape) {
+    if (const auto* sphere = std::get_if<SphereShape>(&shape))
+        return {{"center", vec3(sphere->center)}, {"radius", sphere->radius}, {"segments", sphere->segments},
+                {"rings", sphere->rings}};
+    if (const auto* plane = std::get_if<PlaneShape>(&shape))
+        return {{"center", vec3(plane->center)}, {"normal", vec3(plane->normal)}, {"size", {plane->size.x, plane->size.y}}};
+    if (const auto* cube = std::get_if<CubeShape>(&shape)) return {{"center", vec3(cube->center)}, {"size", cube->size}};
+    if (const auto* torus = std::get_if<TorusShape>(&shape))
+        return {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
+                {"segments", torus->segments}, {"rings", torus->rings}};
+    const auto& mesh = std::get<MeshShape>(shape);
+    return {{"path", mesh.path}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
+            {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
+}
+
+void relocateMeshPaths(const Scene& scene, const std::string& sceneFile, json& out) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const auto* mesh = std::get_if<MeshShape>(&scene.objects[i].shape);
+        if (!mesh || mesh->resolvedPath.empty() || std::filesystem::path(mesh->path).is_absolute()) continue;
+        std::error_code code;
+        const auto relative = std::filesystem::relative(mesh->resolvedPath, folderOf(sceneFile), code);
+        if (!code && !relative.empty()) out["objects"][i]["path"] = relative.generic_string();
+    }
+}
+
+}  // namespace glint

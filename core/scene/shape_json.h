@@ -1,0 +1,28 @@
+// The JSON of each shape of a scene object (sphere, plane, cube, torus, mesh): located reads,
+// writes, and mesh paths kept relative to the scene file. The object's common keys (name,
+// shape, interpolation, material) are read by scene_json.cpp.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/json_object_reader.h"
+#include "scene/scene.h"
+
+namespace glint {
+
+SphereShape readSphereShape(ObjectReader& reader);
+PlaneShape readPlaneShape(ObjectReader& reader);
+// `shapeIndex` is 2 cube, 3 torus, 4 mesh (Shape's alternatives). A mesh is imported here, its
+// path resolved against the folder of `sceneFile`; an import error fails at the "path" key.
+Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string& sceneFile);
+
+// The shape's own keys (not "shape" itself).
+nlohmann::json shapeToJson(const Shape& shape);
+
+// Rewrites the relative "path" of each mesh object in `out` (sceneToJson's output) so that it
+// still names the same file when the scene is saved to `sceneFile`.
+void relocateMeshPaths(const Scene& scene, const std::string& sceneFile, nlohmann::json& out);
+
+}  // namespace glint
