@@ -8,6 +8,7 @@
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/background.glsl"
+#include "common/environment.glsl"
 #include "common/shape.glsl"
 #include "common/specular_transport.glsl"
 #include "generated/material.glsl"

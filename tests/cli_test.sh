@@ -53,6 +53,10 @@ scene wide_cone '{"type": "spot", "cone_half_angle_degrees": 120}'
 expect_error spot_cone "wide_cone\.json:4:[0-9]+: .*'cone_half_angle_degrees': 120 is out of range" -- render "$out/wide_cone.json" -o "$out/x.png"
 scene zero_attenuation '{"type": "point", "attenuation": [0, 0, 0]}'
 expect_error zero_attenuation "zero_attenuation\.json:4:[0-9]+: .*'attenuation'.*must not all be zero" -- render "$out/zero_attenuation.json" -o "$out/x.png"
+scene negative_bias '{"type": "directional", "casts_shadows": true, "shadow": {"depth_bias": -1}}'
+expect_error negative_shadow_bias "negative_bias\.json:4:[0-9]+: .*'depth_bias': -1 is out of range" -- render "$out/negative_bias.json" -o "$out/x.png"
+scene zero_resolution '{"type": "point", "casts_shadows": true, "shadow": {"map_resolution": 0}}'
+expect_error zero_shadow_resolution "zero_resolution\.json:4:[0-9]+: .*'map_resolution'" -- render "$out/zero_resolution.json" -o "$out/x.png"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "g", "model": "glass",\n   "ior": -1.5}],\n "objects": [{"shape": "sphere", "material": "g"}]}\n' >"$out/negative_ior.json"
 expect_error negative_ior "negative_ior\.json:3:[0-9]+: .*'ior': -1\.5 is out of range" -- render "$out/negative_ior.json" -o "$out/x.png"
 mkdir -p "$out/a_directory.json"

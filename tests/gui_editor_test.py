@@ -12,6 +12,8 @@ screenshots. One scenario per ctest entry:
   screenshot   F12 through the file browser writes the viewport as PNG and as EXR
   crash_signal SIGSEGV right after an edit (autosave 30 s away): the crash guard's copy is
                offered on the next start and restores the edit
+  shadow_toggle tick the key light's "Casts shadows": its shadow darkens the floor beside the
+               sphere; Ctrl+Z takes it away (one click = one step)
   corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
                naming file:line, the work and its undo history untouched
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
@@ -32,6 +34,8 @@ SPHERE_CENTRE = (625, 375)
 BACKGROUND_SPOT = (350, 60)         # dark background inside the viewport, above the floor
 EXPONENT_SLIDER = (1018, 198)        # Blinn-Phong exponent n (64) in the material column
 ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
+CASTS_SHADOWS_BOX = (19, 388)        # the selected key light's "Casts shadows" checkbox
+SHADOW_ON_FLOOR = (362, 556)         # a floor point in the key light's shadow (default scene)
 VIEWPORT_PIXELS = (590, 752)         # 1280 − 330 − 360 wide, between menu bar and status bar
 
 
@@ -383,6 +387,29 @@ def scenario_light_handle(x, glint, output, state):
         close_window(x, editor)  # back at the opened state: nothing to save, no prompt
         assert editor.wait_exit() == 0
         print(f"ok: handle at {handle} dragged to {moved_to}, undone and redone")
+    finally:
+        editor.kill()
+
+
+def scenario_shadow_toggle(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        save(base, output, "shadow_0_start")
+        unshadowed = sum(pixel(base, *SHADOW_ON_FLOOR))
+        x.run("xdotool", "mousemove", "--sync", str(CASTS_SHADOWS_BOX[0]), str(CASTS_SHADOWS_BOX[1]))
+        time.sleep(0.5)  # a frame that sees the hover before the press (frames are slow on llvmpipe)
+        x.click(*CASTS_SHADOWS_BOX)
+        x.run("xdotool", "mousemove", "--sync", "1100", "600")  # no tooltip over the viewport
+        shadowed = x.wait_for(lambda shot: sum(pixel(shot, *SHADOW_ON_FLOOR)) < unshadowed - 60,
+                              "the key light's shadow to darken the floor beside the sphere")
+        save(shadowed, output, "shadow_1_on")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to take the shadow away again (one click = one step)")
+        close_window(x, editor)
+        assert editor.wait_exit() == 0
+        print(f"ok: shadow on darkened the floor {pixel(base, *SHADOW_ON_FLOOR)} -> "
+              f"{pixel(shadowed, *SHADOW_ON_FLOOR)}, undone")
     finally:
         editor.kill()
 

@@ -4,6 +4,7 @@
 
 #include "brdf/glass.h"
 #include "scene/scene_json.h"
+#include "located_error_support.h"
 #include "test_support.h"
 
 namespace glint {
@@ -16,17 +17,7 @@ std::string sceneWith(const std::string& lightJson, const std::string& extra = "
            "  \"objects\": [{\"shape\": \"sphere\", \"material\": \"m\"}]" + extra + "\n}";
 }
 
-// The diagnostic for bad text: it must name bad.json, `line` and `key`.
-void expectLocatedError(const std::string& text, int line, const std::string& key, const std::string& message) {
-    auto scene = parseScene(text, "bad.json");
-    ASSERT_FALSE(scene.ok()) << text;
-    const Diagnostic& error = scene.error();
-    EXPECT_EQ(error.where.file, "bad.json");
-    EXPECT_EQ(error.where.line, line) << error.format();
-    EXPECT_GT(error.where.column, 0);
-    EXPECT_NE(error.message.find("'" + key), std::string::npos) << error.format();
-    EXPECT_NE(error.message.find(message), std::string::npos) << error.format();
-}
+using test::expectLocatedError;
 
 TEST(SceneJsonLights, SpotAmbientAttenuationAndSkyRoundTrip) {
     Scene scene = test::loadTestScene("scenes/spot_light.json");

@@ -58,6 +58,9 @@ TEST(Snapshot, SpotLights) { expectSceneMatchesGolden("spot_light"); }
 
 TEST(Snapshot, GlassAndMirrorUnderTheSky) { expectSceneMatchesGolden("glass_sphere"); }
 
+// A ball over a floor under a shadowed sun, spot and bulb (2D, perspective and cube shadow maps).
+TEST(Snapshot, Shadows) { expectSceneMatchesGolden("shadows"); }
+
 TEST(Snapshot, DefaultScene) {
     const Scene scene = defaultScene();
     auto images = test::sharedHeadless().render(scene, 320, 240);

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 
+#include "gl/environment_textures.h"
 #include "gl/frame_uniforms.h"
 #include "gl/material_glsl.h"
+#include "gl/shadow_maps.h"
 #include "gl/uniform_blocks.h"
 
 namespace glint {
@@ -16,6 +18,10 @@ Result<std::unique_ptr<BareShadingPass>> BareShadingPass::create(const ShaderSou
     program->bindBlock("FrameBlock", kFirstBinding + 0);
     program->bindBlock("LightBlock", kFirstBinding + 1);
     program->bindBlock("MaterialBlock", kFirstBinding + 2);
+    // The environment and shadow maps are the renderer's, as its last frame of the same scene left
+    // them bound: the bare pass evaluates the same lighting code on the same data.
+    EnvironmentTextures::connect(*program);
+    assignShadowSamplerUnits(*program);
     return std::unique_ptr<BareShadingPass>(new BareShadingPass(std::move(*program), material));
 }
 

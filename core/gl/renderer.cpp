@@ -86,6 +86,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
         glBindBufferBase(GL_UNIFORM_BUFFER, i, renderer->uniformBuffers_[i]);
     }
     glGenVertexArrays(1, &renderer->emptyVertexArray_);
+    auto shadowMaps = ShadowMaps::create(renderer->sources_);
+    if (!shadowMaps) return shadowMaps.error();
+    renderer->shadowMaps_ = std::move(*shadowMaps);
     if (Status errors = takeGlErrors("renderer creation"); !errors) return errors.error();
     return renderer;
 }
@@ -195,6 +198,12 @@ void Renderer::uploadFrame(const Scene& scene, int width, int height) {
 Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     platform_.makeCurrent();
     GLINT_CHECK(width > 0 && height > 0);
+    shadowMaps_->update(scene, [&](size_t objectIndex, const ShaderProgram& depthProgram) {
+        setTriangleUniforms(depthProgram, scene.objects[objectIndex]);  // gl/gpu_mesh_cache.h
+        const GpuMesh& mesh = meshFor(objectIndex, scene.objects[objectIndex]);
+        glBindVertexArray(mesh.vertexArray);
+        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    });
     const int samples = std::max(1, scene.msaaSamples);
     radianceTarget_.ensure(width, height, 1);
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
@@ -251,6 +260,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         glUseProgram(shader.id());
         setFusedDisplayUniforms(shader, fusedDisplay_);
         if (material.custom) setCustomBrdfUniforms(shader, *material.custom, material.values);
+        shadowMaps_->bind(shader);
         MaterialBlockStd140 materialBlock{};
         std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
                     materialBlock.values);

@@ -19,6 +19,7 @@
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
 #include "gl/texture_cache.h"
+#include "gl/shadow_maps.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -66,6 +67,8 @@ public:
     // Material texture images on the GPU (uploaded once per file version).
     TextureCache& textureCache() { return textureCache_; }
     const ShaderSources& sources() const { return sources_; }
+    // How many times the shadow maps were re-rendered (only when shadowed lights or geometry change).
+    long long shadowMapRenders() const { return shadowMaps_->renderCount(); }
 
 private:
     struct SurfaceProgram {
@@ -101,6 +104,7 @@ private:
     OverlayPass overlayPass_;
     std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
     TextureCache textureCache_;
+    std::unique_ptr<ShadowMaps> shadowMaps_;
     long long trianglesDrawn_ = 0;
     std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
     bool fuseDisplay_ = false;

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "light/shadow_settings.h"
 #include "math/constants.h"
 
 namespace glint {
@@ -40,6 +41,8 @@ struct Light {
     float edgeWidthDegrees = 5.0f;       // spot: smooth edge w ∈ [0, θ_c] inside the cone
     float ambientRadiance = 0.1f;        // L_a [W/(sr·m²)], ambient only
     ClassicAttenuation attenuation;      // point and spot only; off by default
+    bool castsShadows = false;           // delta lights only (light/shadow_settings.h)
+    ShadowSettings shadow;
 };
 
 // A spot light's angular factor for cos α, α the angle between its axis and the direction

@@ -10,6 +10,7 @@
 #include "math/frame.h"
 #include "environment/environment_lighting.h"
 #include "render/environment_sampling.h"
+#include "render/shadow_rays.h"
 #include "render/specular_transport.h"
 #include "texture/texture_eval.h"
 #include "render/triangle_scene.h"
@@ -110,7 +111,9 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         const LightArrival arrival = lightArrival(light, hit.position);
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f) continue;
-        // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i.
+        // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
+        const float visibility = lightVisibility(scene, light, hit, arrival);
+        if (visibility == 0.0f) continue;
         radiance += evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame) *
                     arrival.normalIrradiance * cosTheta;
     }

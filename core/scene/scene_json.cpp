@@ -11,6 +11,7 @@
 #include "scene/json_object_reader.h"
 #include "scene/param_values_json.h"
 #include "texture/texture_json.h"
+#include "scene/shadow_json.h"
 #include "scene/shape_json.h"
 #include "util/file_io.h"
 
@@ -131,6 +132,7 @@ Light readLight(ObjectReader& reader) {
             light.ambientRadiance = static_cast<float>(reader.number("radiance", light.ambientRadiance, Bounds::nonNegative()));
             break;
     }
+    readLightShadows(reader, light);
     reader.rejectUnknownKeys();
     return light;
 }
@@ -162,6 +164,7 @@ json lightToJson(const Light& light) {
             break;
         case LightType::Ambient: out["radiance"] = light.ambientRadiance; break;
     }
+    writeLightShadows(light, out);
     return out;
 }
 
@@ -298,6 +301,7 @@ Scene readScene(const JsonDocument& document) {
     for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
         root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
+    checkShadowedLightCount(root, scene.lights);
     for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials, document.file()));
     root.rejectUnknownKeys();
     return scene;

@@ -2,6 +2,7 @@
 // ambient light and the model's traced delta lobes, with the model's generated MaterialParams.
 // GLSL twin of shadeHit() in core/render/reference_renderer.cpp.
 // Needs uniforms.glsl, frame.glsl, lights.glsl and generated/material.glsl first.
+#include "common/shadows.glsl"
 
 vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     MaterialParams params = loadMaterialParams();
@@ -10,9 +11,11 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
         LightArrival arrival = lightArrival(lights[i], position);
         float cosIn = cosTheta(frame, arrival.towardsLight);
         if (cosIn <= 0.0) continue;
-        // L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i for each delta light.
+        // L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V for each delta light (V: shadows.glsl).
+        float visibility = shadowVisibility(i, position, frame.normal, arrival.towardsLight);
+        if (visibility == 0.0) continue;
         radiance += GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) *
-                    arrival.normalIrradiance * cosIn;
+                    arrival.normalIrradiance * cosIn * visibility;
     }
     // Ambient: k_a · L_a (GLINT_AMBIENT_REFLECTANCE is the registry's hook, zero when absent).
     radiance += GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;

@@ -2,8 +2,8 @@
 // the selected light's type (directional, point, spot, ambient), colour (sRGB picker, stored
 // linear) and strength in radiometric units (irradiance M [W/m²], radiant power Φ [W] or
 // radiance L_a) with the photometric value beside (lx, lm and cd, nit), direction, position,
-// spot cone and the optional classic attenuation. Values that make no sense are refused with a
-// message.
+// spot cone, the optional classic attenuation and the shadow settings (shadow_widgets.h).
+// Values that make no sense are refused with a message.
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -11,6 +11,7 @@
 #include <string>
 
 #include "editor/panels/panels.h"
+#include "editor/panels/shadow_widgets.h"
 #include "editor/panels/widgets.h"
 #include "light/photometry.h"
 
@@ -74,6 +75,7 @@ void drawLightButtons(EditorState& state) {
     if (ImGui::Button("Duplicate") && selected) {
         Light copy = scene.lights[state.selectedLight];
         copy.name += " copy";
+        if (shadowedLightsOtherThan(scene, -1) >= kMaxShadowedLights) copy.castsShadows = false;  // the limit
         addLight(state, std::move(copy), "Duplicate light");
     }
     ImGui::EndDisabled();
@@ -180,8 +182,9 @@ void drawLightsSection(EditorState& state) {
     ImGui::Separator();
     ImGui::PushID("selected light");
     Light edited = scene.lights[state.selectedLight];
-    if (drawLightEditor(edited, state.lightPanelMessage))
-        state.session.change("Edit light").lights[state.selectedLight] = std::move(edited);
+    bool changed = drawLightEditor(edited, state.lightPanelMessage);
+    changed |= drawShadowSettings(edited, shadowedLightsOtherThan(scene, state.selectedLight), state.lightPanelMessage);
+    if (changed) state.session.change("Edit light").lights[state.selectedLight] = std::move(edited);
     if (!state.lightPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.lightPanelMessage.c_str());
     ImGui::PopID();
 }
