@@ -97,10 +97,12 @@ bool saveMaterialTo(EditorState& state, const std::string& path) {
 }
 
 void openDroppedFile(EditorState& state, const std::string& path) {
-    if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
     if (isBrdfFilePath(path)) return openBrdfFile(state, path);  // BRDF Explorer files
     if (std::filesystem::path(path).extension() == ".bparam") return openBparamFile(state, path);
-    if (openInterchangeFile(state, path)) return;  // .mtl, .gltf: by extension (interchange/import_formats.h)
+    // .mtl, .gltf: a material (and glTF lights), by extension (interchange/import_formats.h). A
+    // .gltf dropped is read for its material; File ▸ Open mesh… reads it as a mesh.
+    if (openInterchangeFile(state, path)) return;
+    if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
     auto text = readTextFile(path);
     if (text && text->find("\"glint-material\"") != std::string::npos) openMaterialFile(state, path);
     else openSceneGuarded(state, path);

@@ -21,7 +21,6 @@ Result<std::unique_ptr<BareShadingPass>> BareShadingPass::create(const ShaderSou
     // The environment and shadow maps are the renderer's, as its last frame of the same scene left
     // them bound: the bare pass evaluates the same lighting code on the same data.
     EnvironmentTextures::connect(*program);
-    assignShadowSamplerUnits(*program);
     return std::unique_ptr<BareShadingPass>(new BareShadingPass(std::move(*program), material));
 }
 
@@ -52,6 +51,7 @@ void BareShadingPass::draw(const Scene& scene, int width, int height) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glUseProgram(program_.id());
+    assignShadowSamplerUnits(program_);  // sets uniforms of the program in use
     SphereShape sphere;
     for (const SceneObject& object : scene.objects)
         if (const auto* found = std::get_if<SphereShape>(&object.shape)) {
