@@ -415,8 +415,7 @@ def scenario_shadow_toggle(x, glint, output, state):
 
 
 def main():
-    run_scenario_from_arguments({name[len("scenario_"):]: function for name, function in globals().items()
-                                 if name.startswith("scenario_")})
+    run_scenario_from_arguments(globals())
 
 
 if __name__ == "__main__":

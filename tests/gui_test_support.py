@@ -184,9 +184,10 @@ def write_png(image, path):
         out.write(chunk(b"IEND", b""))
 
 
-def run_scenario_from_arguments(scenarios, width=1280, height=800):
-    """argv: GLINT OUTPUT_DIR SCENARIO. Runs scenarios[SCENARIO](x, glint, output, state) in a fresh
-    Xvfb with its own output folder (failure screenshots go there) and an empty state folder."""
+def run_scenario_from_arguments(namespace, width=1280, height=800):
+    """argv: GLINT OUTPUT_DIR SCENARIO. Runs namespace["scenario_" + SCENARIO](x, glint, output,
+    state) (a test module passes its globals()) in a fresh Xvfb with its own output folder
+    (failure screenshots go there) and an empty state folder."""
     import shutil
     import sys
     glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -196,4 +197,4 @@ def run_scenario_from_arguments(scenarios, width=1280, height=800):
     state = os.path.join(output, "state")
     shutil.rmtree(state, ignore_errors=True)
     with XServer(width, height) as x:
-        scenarios[scenario](x, glint, output, state)
+        namespace["scenario_" + scenario](x, glint, output, state)
