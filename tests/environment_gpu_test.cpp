@@ -14,11 +14,7 @@
 namespace glint {
 namespace {
 
-RadianceImage renderGpu(const Scene& scene, int width, int height) {
-    auto images = test::sharedHeadless().render(scene, width, height);
-    EXPECT_TRUE(images.ok()) << images.error().format();
-    return images.ok() ? images->radiance : RadianceImage(width, height);
-}
+using test::renderGpu;
 
 void expectAgreesWithReference(const Scene& scene, int size, float relativeTolerance = 1e-3f) {
     const RadianceImage gpu = renderGpu(scene, size, size);

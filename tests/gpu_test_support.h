@@ -23,6 +23,14 @@ inline HeadlessRenderer& sharedHeadless() {
     return *headless;
 }
 
+// The shared renderer's radiance image of `scene`; a failed render is a test failure (and a black
+// image, so that the test goes on to report what it compares).
+inline RadianceImage renderGpu(const Scene& scene, int width, int height) {
+    auto images = sharedHeadless().render(scene, width, height);
+    EXPECT_TRUE(images.ok()) << images.error().format();
+    return images.ok() ? images->radiance : RadianceImage(width, height);
+}
+
 struct PixelAgreement {
     long compared = 0;
     long excluded = 0;   // silhouette pixels

@@ -11,11 +11,7 @@
 namespace glint {
 namespace {
 
-RadianceImage renderGpu(const Scene& scene, int width, int height) {
-    auto images = test::sharedHeadless().render(scene, width, height);
-    EXPECT_TRUE(images.ok()) << images.error().format();
-    return images.ok() ? images->radiance : RadianceImage(width, height);
-}
+using test::renderGpu;
 
 void expectAgreement(const Scene& scene, int width, int height, long minimumCompared) {
     const RadianceImage gpu = renderGpu(scene, width, height);
