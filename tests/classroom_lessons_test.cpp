@@ -12,6 +12,8 @@
 namespace glint {
 namespace {
 
+using test::dataPath;
+
 TEST(Lessons, ShippedListHasTheLectureOrderAndEverySceneLoads) {
     auto list = loadLessonList(dataPath("../lessons/lessons.json"));
     ASSERT_TRUE(list.ok()) << list.error().format();

@@ -3,6 +3,8 @@
 // dispersion through a glass sphere (core/colour/). Renders stay at 48×48 and 8 wavelengths.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "colour/cie_cmf.h"
 #include "colour/spectral_render.h"
 #include "scene/scene_json.h"
@@ -10,6 +12,8 @@
 
 namespace glint {
 namespace {
+
+using test::dataPath;
 
 struct ColourTestTabulated {
     float wavelength;
@@ -113,30 +117,40 @@ TEST(Colour, LambertSunUnderAFlatSpectrumRendersTheSameGreyAsRgb) {
     EXPECT_NEAR(centre.b, 0.5f, 0.01f);
 }
 
-TEST(Colour, GlassSphereDispersesBlueFurtherThanRed) {
-    auto scene = loadScene(dataPath("../examples/spectral/dispersion.json"));
-    ASSERT_TRUE(scene.ok()) << scene.error().format();
-    SpectralSettings dispersive;
-    dispersive.cauchyB = 0.03f;
-    dispersive.wavelengthSamples = 8;
-    auto xyz = renderSpectralXyz(*scene, dispersive, 48, 48);
-    ASSERT_TRUE(xyz.ok()) << xyz.error().format();
-    const RadianceImage rgb = spectralImageToRgb(*xyz);
-    // Brightness-weighted mean row of red and of blue inside the sphere's image (radius 20 px).
-    double redWeight = 0, redRows = 0, blueWeight = 0, blueRows = 0;
-    for (int y = 0; y < rgb.height; ++y)
+// Mean linear red and blue over the lower half of the ball's image, inside 0.8 of its radius
+// (48×48 pixels, orthographic, radius 20 pixels).
+glm::vec2 colourTestLowerHalfRedBlue(const RadianceImage& rgb) {
+    glm::dvec2 sum{0.0};
+    int count = 0;
+    for (int y = 24; y < rgb.height; ++y)
         for (int x = 0; x < rgb.width; ++x) {
             const float dx = x + 0.5f - 24.0f, dy = y + 0.5f - 24.0f;
-            if (dx * dx + dy * dy > 18.0f * 18.0f) continue;
-            const glm::vec3 pixel = glm::max(rgb.at(x, y), glm::vec3(0.0f));
-            redWeight += pixel.r, redRows += pixel.r * y;
-            blueWeight += pixel.b, blueRows += pixel.b * y;
+            if (dx * dx + dy * dy > 16.0f * 16.0f) continue;
+            sum += glm::dvec2(rgb.at(x, y).r, rgb.at(x, y).b);
+            ++count;
         }
-    ASSERT_GT(redWeight, 0.0);
-    ASSERT_GT(blueWeight, 0.0);
-    // The ball is a lens that shows the sky upside down (bright ground side at the bottom of the
-    // image); blue, with the larger n(λ), is bent further, so its bright image sits lower.
-    EXPECT_GT(blueRows / blueWeight, redRows / redWeight + 0.05);
+    return glm::vec2(sum / static_cast<double>(std::max(count, 1)));
+}
+
+TEST(Colour, GlassSphereDispersesBlueFurtherThanRed) {
+    // The ball is a lens that shows the sky upside down: its lower half looks up into the sky,
+    // whose radiance grows with elevation (examples/spectral/dispersion.json). Blue, with the larger
+    // n(λ) of Cauchy's equation, is bent further, looks higher up the gradient and comes out brighter
+    // than red there; without dispersion (B = 0) the same region is grey.
+    auto scene = loadScene(dataPath("../examples/spectral/dispersion.json"));
+    ASSERT_TRUE(scene.ok()) << scene.error().format();
+    SpectralSettings settings;
+    settings.wavelengthSamples = 8;
+    settings.cauchyB = 0.0f;
+    auto plain = renderSpectralXyz(*scene, settings, 48, 48);
+    settings.cauchyB = 0.03f;
+    auto dispersed = renderSpectralXyz(*scene, settings, 48, 48);
+    ASSERT_TRUE(plain.ok() && dispersed.ok());
+    const glm::vec2 grey = colourTestLowerHalfRedBlue(spectralImageToRgb(*plain));
+    const glm::vec2 split = colourTestLowerHalfRedBlue(spectralImageToRgb(*dispersed));
+    ASSERT_GT(grey.x, 0.1f);
+    EXPECT_NEAR(grey.y / grey.x, 1.0f, 0.01f);
+    EXPECT_GT(split.y / split.x, 1.03f) << "red " << split.x << ", blue " << split.y;
 }
 
 }  // namespace

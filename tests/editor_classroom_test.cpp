@@ -19,7 +19,7 @@ protected:
     const char* suiteFolder() const override { return "editor_classroom"; }
     void SetUp() override {
         test::EditorFixture::SetUp();
-        ::setenv("GLINT_LESSONS", dataPath("../lessons/lessons.json").c_str(), 1);
+        ::setenv("GLINT_LESSONS", test::dataPath("../lessons/lessons.json").c_str(), 1);
     }
     void TearDown() override {
         ::unsetenv("GLINT_LESSONS");

@@ -5,9 +5,12 @@
 #include <glad/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 
+#include "colour/cie_cmf.h"
 #include "display/display_chain.h"
 #include "interchange/custom_brdf.h"
 

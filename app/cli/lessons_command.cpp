@@ -2,8 +2,10 @@
 // classroom lesson list. It parses nothing itself: lists and scenes load through core.
 #include "cli/lessons_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "classroom/lessons.h"
 #include "cli/command_options.h"
@@ -72,10 +74,9 @@ int runLessonsCommand(const std::vector<std::string>& arguments) {
         if (!headless) continue;
         const int height = std::max(1, width * scene->height / std::max(scene->width, 1));
         auto images = headless->render(*scene, width, height);
-        char prefix[8];
-        std::snprintf(prefix, sizeof prefix, "%02zu_", index + 1);
+        const std::string number = (index + 1 < 10 ? "0" : "") + std::to_string(index + 1);
         const std::string output = (std::filesystem::path(renderDirectory) /
-                                    (prefix + std::filesystem::path(lesson.scenePath).stem().string() + ".png")).string();
+                                    (number + "_" + std::filesystem::path(lesson.scenePath).stem().string() + ".png")).string();
         const Status written = images ? writeRenderedImage(*images, output) : Status(images.error());
         if (!written) {
             std::fprintf(stderr, "glint lessons: lesson %zu (%s): %s\n", index + 1, lesson.title.c_str(), written.error().format().c_str());

@@ -109,7 +109,16 @@ Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettin
     if (Status valid = checkSpectralSettings(settings); !valid) return valid.error();
     const int outputWidth = width > 0 ? width : scene.width;
     const int outputHeight = height > 0 ? height : scene.height;
-    const float normalisation = 1.0f / equalEnergyXyz().y;
+    // XYZ relative to the equal-energy white's Y. With a flat spectrum each component is also
+    // corrected by the exact equal-energy integral over its N-sample estimate, so that a grey
+    // scene stays exactly grey at any N (the quadrature error of a few bins would tint it).
+    glm::vec3 normalisation(1.0f / equalEnergyXyz().y);
+    if (settings.spectrum == EmitterSpectrum::Flat) {
+        glm::vec3 sampledFlat{0.0f};
+        for (const WavelengthSample& sample : spectralSamples(settings))
+            sampledFlat += sample.weight * cieColourMatching(sample.wavelengthNanometres);
+        normalisation *= equalEnergyXyz() / sampledFlat;
+    }
     Scene atWavelength = scene;
     RadianceImage xyzImage(outputWidth, outputHeight);
     for (const WavelengthSample& sample : spectralSamples(settings)) {

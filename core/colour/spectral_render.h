@@ -56,7 +56,8 @@ glm::vec3 spectralXyzToRgb(glm::vec3 xyz);
 // Renders `scene` at width×height (its own size when zero): for each wavelength, every glass
 // index becomes n(λ), the RGB reference render's channel mean is the radiance at λ (lights,
 // background and material colours act as their grey mean), and the weighted sum against the
-// matching functions gives XYZ (relative to equal-energy white, as spectrumXyz).
+// matching functions gives XYZ (relative to equal-energy white, as spectrumXyz; with a flat
+// spectrum each component is corrected for the N-sample quadrature, so grey stays grey).
 Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettings& settings, int width = 0, int height = 0);
 // The XYZ image as linear sRGB radiance (spectralXyzToRgb per pixel).
 RadianceImage spectralImageToRgb(const RadianceImage& xyzImage);
