@@ -74,7 +74,7 @@ def scenario_presentation(x, glint, output, state):
         normal = x.wait_stable(VIEWPORT)
         write_png(normal, os.path.join(output, "normal.png"))
         x.key("F11")
-        presenting = x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) > 5.0,
+        presenting = x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) > 2.0,
                                 "the panels to change in presentation mode")
         presenting = x.wait_stable(LEFT_COLUMN)
         write_png(presenting, os.path.join(output, "presentation.png"))

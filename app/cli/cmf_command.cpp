@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <regex>
 
 #include "classroom/cmf_plot.h"
 #include "classroom/overlay_canvas.h"
@@ -29,14 +28,7 @@ int runCmfCommand(const std::vector<std::string>& arguments) {
     int width = 640, height = 400;
     const std::vector<CommandOption> options = {
         {{"-o", "--output"}, "a file name", [&](const std::string& value) { outputPath = value; return std::string(); }},
-        {{"--size"}, "WIDTHxHEIGHT", [&](const std::string& value) {
-             static const std::regex sizePattern(R"((\d{1,4})x(\d{1,4}))");
-             std::smatch match;
-             if (!std::regex_match(value, match, sizePattern)) return std::string("--size needs WIDTHxHEIGHT, e.g. 640x400");
-             width = std::stoi(match[1]), height = std::stoi(match[2]);
-             if (width < 160 || height < 100 || width > 4096 || height > 4096) return std::string("--size must be 160x100 to 4096x4096");
-             return std::string();
-         }},
+        {{"--size"}, "WIDTHxHEIGHT", pixelSizeOption(width, height, 128, 4096, "--size needs WIDTHxHEIGHT from 128x128 to 4096x4096")},
     };
     auto parsed = parseCommandOptions(arguments, options, "argument");
     if (!parsed || (!parsed->help && (outputPath.empty() || !parsed->positionals.empty()))) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <regex>
 
 #include "cli/command_options.h"
 #include "cli/headless.h"
@@ -42,14 +41,7 @@ int runSpectralCommand(const std::vector<std::string>& arguments) {
     int width = 0, height = 0;
     const std::vector<CommandOption> options = {
         {{"-o", "--output"}, "a file name", [&](const std::string& value) { outputPath = value; return std::string(); }},
-        {{"--size"}, "WIDTHxHEIGHT", [&](const std::string& value) {
-             static const std::regex sizePattern(R"((\d{1,5})x(\d{1,5}))");
-             std::smatch match;
-             if (!std::regex_match(value, match, sizePattern)) return std::string("--size needs WIDTHxHEIGHT, e.g. 256x192");
-             width = std::stoi(match[1]), height = std::stoi(match[2]);
-             if (width < 1 || height < 1 || width > 16384 || height > 16384) return std::string("--size must be 1x1 to 16384x16384");
-             return std::string();
-         }},
+        {{"--size"}, "WIDTHxHEIGHT", pixelSizeOption(width, height, 1, 16384, "--size needs WIDTHxHEIGHT from 1x1 to 16384x16384")},
         {{"--band"}, "NM,FWHM", [&](const std::string& value) {
              const size_t comma = value.find(',');
              const double centre = wholeNumber(value.substr(0, comma));

@@ -1,5 +1,6 @@
 // The CIE matching-function plot drawn headless (app/classroom/cmf_plot.h through the overlay
-// canvas): each curve's colour is found where its tabulated peak should be. 320×200 pixels.
+// canvas, in an OSMesa context of its own): each curve's colour is found where its tabulated peak
+// should be. 320×200 pixels. Built into editor_tests, which links the app library.
 #include <gtest/gtest.h>
 #include <imgui.h>
 
