@@ -12,10 +12,11 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
 
 VIEWPORT = (340, 40, 910, 760)
 LEFT_COLUMN = (10, 60, 320, 700)
+SPHERE_CENTRE = (625, 375)  # the default scene's red sphere
 LESSONS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lessons", "lessons.json")
 
 
@@ -39,6 +40,15 @@ def wait_for_title(x, window, fragment, timeout=20.0):
     raise AssertionError(f"the window title never named {fragment!r} (it is {window_title(x, window)!r})")
 
 
+def drawn(x):
+    """Waits for the default scene's lit red sphere (the first frames are black), then for calm."""
+    def lit(shot):
+        red = pixel(shot, *SPHERE_CENTRE)
+        return red[0] > 80 and red[0] > red[1] + 30
+    x.wait_for(lit, "the editor's first picture")
+    return x.wait_stable((0, 0, 1280, 800))
+
+
 def finish(x, process):
     x.key("ctrl+q")  # nothing unsaved: quits at once
     code = process.wait(timeout=20)
@@ -48,7 +58,7 @@ def finish(x, process):
 def scenario_lessons(x, glint, output, state):
     process, window = start_editor(x, glint, output, state)
     try:
-        start = x.wait_stable(VIEWPORT)
+        start = drawn(x)
         x.key("Next")  # PageDown: the first lesson
         wait_for_title(x, window, "01_lambert.json")
         first = x.wait_for(lambda shot: region_difference(shot, start, VIEWPORT) > 1.0, "lesson 1's picture")
@@ -71,7 +81,7 @@ def scenario_lessons(x, glint, output, state):
 def scenario_presentation(x, glint, output, state):
     process, window = start_editor(x, glint, output, state)
     try:
-        normal = x.wait_stable(VIEWPORT)
+        normal = drawn(x)
         write_png(normal, os.path.join(output, "normal.png"))
         x.key("F11")
         presenting = x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) > 2.0,
