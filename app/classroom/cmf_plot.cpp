@@ -29,7 +29,7 @@ struct CmfPlotArea {
 
 CmfPlotArea cmfPlotArea(ImVec2 topLeft, ImVec2 size, float fontSize) {
     return {topLeft.x + fontSize * 2.6f, topLeft.x + size.x - fontSize * 0.8f, topLeft.y + fontSize * 1.6f,
-            topLeft.y + size.y - fontSize * 2.6f};
+            topLeft.y + size.y - fontSize * 3.4f};
 }
 
 }  // namespace
@@ -87,7 +87,7 @@ void drawCmfPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 size, float fontSi
                           ImVec2(namePosition.x + fontSize * 0.55f, namePosition.y + fontSize * 0.15f), curveColours[channel]);
     }
     drawList->AddText(nullptr, fontSize, ImVec2(left, top - fontSize * 1.4f), axisColour, "CIE 1931 2°");
-    drawList->AddText(nullptr, fontSize, ImVec2((left + right) * 0.5f - fontSize * 2.5f, topLeft.y + size.y - fontSize * 1.2f),
+    drawList->AddText(nullptr, fontSize, ImVec2((left + right) * 0.5f - fontSize * 4.0f, topLeft.y + size.y - fontSize * 1.15f),
                       axisColour, "wavelength λ [nm]");
 }
 

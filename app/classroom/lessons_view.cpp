@@ -24,7 +24,11 @@ void ensureLessonList(EditorState& state) {
 void openLesson(EditorState& state, int index) {
     ensureLessonList(state);
     const auto& lessons = state.classroom.lessonList.lessons;
-    if (lessons.empty() || index < 0 || index >= static_cast<int>(lessons.size())) return;
+    if (lessons.empty()) {
+        state.statusMessage = "No lessons: " + state.classroom.lessonListError;
+        return;
+    }
+    if (index < 0 || index >= static_cast<int>(lessons.size())) return;
     const std::string path = lessons[index].scenePath;
     guardUnsavedChanges(state, "opening lesson " + std::to_string(index + 1), [path, index](EditorState& s) {
         openSceneFile(s, path);
