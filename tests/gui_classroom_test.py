@@ -50,7 +50,11 @@ def drawn(x):
 
 
 def finish(x, process):
-    x.key("ctrl+q")  # nothing unsaved: quits at once
+    # Nothing unsaved: Ctrl+Q quits at once, often before the keys are released (so the release
+    # may find no window to go to).
+    x.run("xdotool", "keydown", "ctrl", "q")
+    time.sleep(0.15)
+    x.run("xdotool", "keyup", "q", "ctrl", check=False)
     code = process.wait(timeout=20)
     assert code == 0, f"editor exited with {code}"
 
