@@ -53,8 +53,10 @@ TEST(SurfaceProbe, LambertSunCentreIsTheWorkedExample) {
     EXPECT_EQ(probe.display[1].value8, 188);
     const std::vector<std::string> equation = probeLightEquation(sun);
     ASSERT_EQ(equation.size(), 3u);
+    EXPECT_EQ(equation[0], "E⊥ = M = 3.142 W/m²");
+    EXPECT_EQ(equation[1], "E = E⊥·cos θ = 3.142 W/m² × 1.000 = 3.142 W/m²");
     EXPECT_EQ(equation[2], "L = f_r·E = 0.159 1/sr × 3.142 W/m² = 0.500 W/(sr·m²)");
-    EXPECT_EQ(probeTotalEquation(probe), "L = Σ f_r·E = 0.500 = 0.500 W/(sr·m²)");
+    EXPECT_EQ(probeTotalEquation(probe), "L = Σ f_r·E = 0.500 W/(sr·m²)");
 }
 
 TEST(SurfaceProbe, RadianceIsTheReferencePixel) {

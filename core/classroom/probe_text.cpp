@@ -68,8 +68,9 @@ std::vector<std::string> probeLightEquation(const ProbeLight& light) {
     const std::string filter = light.source.color == glm::vec3(1.0f) ? "" : " × colour " + formatProbeRgb(light.source.color);
     // E⊥: directional M; point Φ/(4π d²) (inverse-square law), spot × its cone factor.
     if (light.type == LightType::Directional) {
-        lines.push_back("E⊥ = M" + std::string(filter.empty() ? "" : "·colour") + " = " + formatProbeNumber(light.source.amount) +
-                        " W/m²" + filter + " = " + formatProbeRgb(light.normalIrradiance) + " W/m²");
+        if (filter.empty()) lines.push_back("E⊥ = M = " + formatProbeRgb(light.normalIrradiance) + " W/m²");
+        else lines.push_back("E⊥ = M·colour = " + formatProbeNumber(light.source.amount) + " W/m²" + filter + " = " +
+                             formatProbeRgb(light.normalIrradiance) + " W/m²");
     } else {
         const std::string spot = light.type == LightType::Spot ? "·spot" : "";
         const std::string spotValue = light.type == LightType::Spot ? " × " + formatProbeNumber(light.spotFactor) : "";
@@ -100,18 +101,25 @@ std::vector<std::string> probeLightEquation(const ProbeLight& light) {
 std::string probeTotalEquation(const ProbeResult& result) {
     if (!result.hitSurface) return "L = L_background = " + formatProbeRgb(result.radiance) + " W/(sr·m²)";
     std::string symbols, values;
+    int terms = 0;
+    glm::vec3 pointTotal(0.0f);
     auto add = [&](const std::string& symbol, glm::vec3 value) {
         symbols += (symbols.empty() ? "" : " + ") + symbol;
         values += (values.empty() ? "" : " + ") + formatProbeRgb(value);
+        pointTotal += value;
+        ++terms;
     };
     glm::vec3 direct(0.0f);
     for (const ProbeLight& light : result.lights) direct += light.radiance;
     add("Σ f_r·E", direct);
     if (result.ambientRadiance != glm::vec3(0.0f)) add("k_a·L_a", result.ambientReflectance * result.ambientRadiance);
     if (result.environment != glm::vec3(0.0f)) add("L_environment", result.environment);
-    if (result.specular != glm::vec3(0.0f)) add("L_reflected+refracted", result.specular);
-    std::string line = "L = " + symbols + " = " + values + " = ";
-    if (result.gouraud) line = "L at the point = " + symbols + " = " + values + "; Gouraud pixel (corners interpolated) = ";
+    if (result.specular != glm::vec3(0.0f)) add("L_mirror/glass (traced)", result.specular);
+    const std::string sum = terms > 1 ? symbols + " = " + values : symbols;
+    std::string line = "L = " + sum + " = ";
+    if (result.gouraud)
+        line = "L at the point = " + sum + " = " + formatProbeRgb(pointTotal) +
+               " W/(sr·m²); the Gouraud pixel interpolates its corners' radiance: L = ";
     return line + formatProbeRgb(result.radiance) + " W/(sr·m²)";
 }
 
