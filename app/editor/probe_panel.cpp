@@ -103,8 +103,12 @@ void drawProbeLight(const ProbeLight& light) {
 }
 
 void drawProbeWindow(ProbeTool& probe, const ProbeResult& result, const ViewportRect& viewport) {
-    ImGui::SetNextWindowPos(ImVec2(viewport.x + 10, viewport.y + 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 30, ImGui::GetFontSize() * 26), ImGuiCond_FirstUseEver);
+    // First shown along the bottom of the viewport, below where objects usually sit; movable.
+    const float font = ImGui::GetFontSize();
+    const ImVec2 size(std::min(viewport.width - 20.0f, font * 30.0f), std::min(viewport.height * 0.4f, font * 16.0f));
+    ImGui::SetNextWindowPos(ImVec2(viewport.x + viewport.width - size.x - 10.0f, viewport.y + viewport.height - size.y - 10.0f),
+                            ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
     bool open = true;
     if (ImGui::Begin("Surface probe", &open)) {
         ImGui::Text("Pixel (%d, %d) of %d×%d", result.pixelX, result.pixelY, result.width, result.height);
@@ -112,8 +116,10 @@ void drawProbeWindow(ProbeTool& probe, const ProbeResult& result, const Viewport
             ImGui::TextUnformatted("No surface: the ray sees the background.");
         } else {
             ImGui::Text("%s — %s (%s)", result.objectName.c_str(), result.materialName.c_str(), result.modelLabel.c_str());
-            ImGui::Text("point %s m, N %s, V %s", probeDirectionText(result.position).c_str(),
-                        probeDirectionText(result.normal).c_str(), probeDirectionText(result.towardsViewer).c_str());
+            ImGui::TextWrapped("point %s m, %s m along the ray", probeDirectionText(result.position).c_str(),
+                               formatProbeNumber(result.hitDistance).c_str());
+            ImGui::TextWrapped("N %s, V %s", probeDirectionText(result.normal).c_str(),
+                               probeDirectionText(result.towardsViewer).c_str());
             if (result.gpuOnlyMaterial)
                 ImGui::TextWrapped("A custom .brdf material runs on the GPU only: the probe cannot break it down.");
             if (result.viewTransmitted) {
