@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "light/light_type_name.h"
+
 namespace glint {
 namespace {
 
@@ -28,16 +30,6 @@ const char* toneMapName(ToneMap toneMap) {
         case ToneMap::AcesFilmic: return "ACES filmic";
     }
     return "none";
-}
-
-const char* lightTypeName(LightType type) {
-    switch (type) {
-        case LightType::Directional: return "directional";
-        case LightType::Point: return "point";
-        case LightType::Spot: return "spot";
-        case LightType::Ambient: return "ambient";
-    }
-    return "";
 }
 
 }  // namespace
