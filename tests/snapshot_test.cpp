@@ -8,6 +8,8 @@
 #include "golden_support.h"
 #include "gpu_test_support.h"
 #include "brdf/presets.h"
+#include "classroom/surface_probe.h"
+#include "cli/render_overlays.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "test_support.h"
@@ -80,6 +82,21 @@ TEST(Snapshot, OneSpherePerModel) {
         ASSERT_TRUE(images.ok()) << images.error().format();
         expectMatchesGolden(std::string("model_") + modelInfo(model).id, images->display);
     }
+}
+
+// The classroom surface probe's arrows and angles (app/classroom/probe_overlay.h) on the ball of
+// blinn_point, drawn as `glint render --overlay probe --probe 105,110` draws them.
+TEST(Snapshot, SurfaceProbeOverlay) {
+    const Scene scene = test::loadTestScene("scenes/blinn_point.json");
+    auto images = test::sharedHeadless().render(scene, scene.width, scene.height);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    const std::optional<ProbeResult> probe = probeSurface(scene, 105, 110, scene.width, scene.height);
+    ASSERT_TRUE(probe->hitSurface);
+    const RenderOverlay* overlays[] = {findRenderOverlay("probe")};
+    ASSERT_NE(overlays[0], nullptr);
+    auto composite = drawRenderOverlays(overlays, {scene, scene.width, scene.height, probe}, images->display);
+    ASSERT_TRUE(composite.ok()) << composite.error().format();
+    expectMatchesGolden("surface_probe_overlay", *composite);
 }
 
 TEST(ImageCompare, ToleranceFollowsTheDesign) {

@@ -2,11 +2,17 @@
 #include "cli/render_command.h"
 
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <regex>
 
 #include "cli/brdf_probe.h"
 #include "cli/headless.h"
+#include "cli/render_overlays.h"
+#include "classroom/probe_text.h"
+#include "classroom/surface_probe.h"
 #include "display/display_chain.h"
+#include "image/image_io.h"
 #include "render/reference_renderer.h"
 #include "snapshot/case_source.h"
 
@@ -23,17 +29,27 @@ constexpr const char* kUsage =
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
     "  --reference        render with the CPU reference ray caster instead of OpenGL\n"
     "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
-    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n";
+    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
+    "  --probe X,Y        print the surface probe at pixel (X, Y): the chain from each light to the pixel\n"
+    "  --overlay NAME     draw a classroom overlay over the PNG (repeatable); NAME is one of:\n";
 
 struct RenderOptions {
     std::string scenePath, outputPath;
     int width = 0, height = 0, msaa = 0;
     bool reference = false;
     bool wireframe = false, normals = false;
+    std::optional<glm::ivec2> probePixel;          // --probe X,Y
+    std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order
 };
 
+void printUsage(std::FILE* stream) {
+    std::fprintf(stream, "%s", kUsage);
+    for (const RenderOverlay& overlay : allRenderOverlays()) std::fprintf(stream, "    %-16s %s\n", overlay.name, overlay.help);
+}
+
 int usageError(const std::string& message) {
-    std::fprintf(stderr, "glint render: %s\n%s", message.c_str(), kUsage);
+    std::fprintf(stderr, "glint render: %s\n", message.c_str());
+    printUsage(stderr);
     return 2;
 }
 
@@ -45,7 +61,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         const std::string& argument = arguments[i];
         auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
         if (argument == "-h" || argument == "--help") {
-            std::printf("%s", kUsage);
+            printUsage(stdout);
             return 0;
         } else if (argument == "-o" || argument == "--output") {
             const std::string* value = next();
@@ -72,6 +88,18 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             options.wireframe = true;
         } else if (argument == "--normals") {
             options.normals = true;
+        } else if (argument == "--probe") {
+            const std::string* value = next();
+            static const std::regex pointPattern(R"((\d{1,5}),(\d{1,5}))");
+            std::smatch match;
+            if (!value || !std::regex_match(*value, match, pointPattern))
+                return usageError("--probe needs a pixel X,Y, e.g. 128,128");
+            options.probePixel = glm::ivec2(std::stoi(match[1]), std::stoi(match[2]));
+        } else if (argument == "--overlay") {
+            const std::string* value = next();
+            const RenderOverlay* overlay = value ? findRenderOverlay(*value) : nullptr;
+            if (!overlay) return usageError(value ? "unknown overlay '" + *value + "'" : "--overlay needs a name");
+            options.overlays.push_back(overlay);
         } else if (!argument.empty() && argument[0] == '-') {
             return usageError("unknown option " + argument);
         } else if (options.scenePath.empty()) {
@@ -99,6 +127,14 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     scene->display.overlays.normals |= options.normals;
     const int width = options.width > 0 ? options.width : scene->width;
     const int height = options.height > 0 ? options.height : scene->height;
+    for (const RenderOverlay* overlay : options.overlays)
+        if (overlay->needsProbePoint && !options.probePixel)
+            return usageError(std::string("--overlay ") + overlay->name + " needs --probe X,Y");
+    if (options.probePixel && (options.probePixel->x >= width || options.probePixel->y >= height))
+        return usageError("--probe " + std::to_string(options.probePixel->x) + "," + std::to_string(options.probePixel->y) +
+                          " lies outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
+    if (!options.overlays.empty() && isFloatImagePath(options.outputPath))
+        return usageError("--overlay draws over the display-encoded image: write a PNG, not an EXR or HDR");
 
     // Custom .brdf shaders: GPU only, and proven to finish in a child process before drawing here.
     if (Status gpuOnly = referenceCanRender(*scene); !gpuOnly && options.reference) {
@@ -110,21 +146,39 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     RenderedImages images;
+    std::unique_ptr<HeadlessRenderer> headless;  // the GL context: for OpenGL renders and for overlays
+    if (!options.reference || !options.overlays.empty()) {
+        auto created = HeadlessRenderer::create();
+        if (!created) {
+            std::fprintf(stderr, "glint render: %s\n", created.error().format().c_str());
+            return 2;
+        }
+        headless = std::move(*created);
+    }
     if (options.reference) {
         images.radiance = renderReference(*scene, width, height);
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
-        auto headless = HeadlessRenderer::create();
-        if (!headless) {
-            std::fprintf(stderr, "glint render: %s\n", headless.error().format().c_str());
-            return 2;
-        }
-        auto rendered = (*headless)->render(*scene, width, height);
+        auto rendered = headless->render(*scene, width, height);
         if (!rendered) {
             std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
             return 2;
         }
         images = std::move(*rendered);
+    }
+    // The classroom surface probe (core/classroom/surface_probe.h) and the overlays drawn over the PNG.
+    std::optional<ProbeResult> probe;
+    if (options.probePixel) {
+        probe = probeSurface(*scene, options.probePixel->x, options.probePixel->y, width, height);
+        std::printf("%s", probeReport(*probe).c_str());
+    }
+    if (!options.overlays.empty()) {
+        auto composite = drawRenderOverlays(options.overlays, {*scene, width, height, probe}, images.display);
+        if (!composite) {
+            std::fprintf(stderr, "glint render: %s\n", composite.error().format().c_str());
+            return 2;
+        }
+        images.display = std::move(*composite);
     }
     if (Status written = writeRenderedImage(images, options.outputPath); !written) {
         std::fprintf(stderr, "glint render: %s\n", written.error().format().c_str());

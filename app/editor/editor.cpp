@@ -28,6 +28,7 @@
 #include "editor/light_handles.h"
 #include "editor/mesh_loading.h"
 #include "editor/panels/panels.h"
+#include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
 #include "gl/renderer.h"
 
@@ -212,7 +213,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         viewport.height = std::max(1.0f, columnHeight);
         drawClassroom(state, viewport.x, viewport.y);  // lessons, presentation key, colour windows
         const bool handleDrag = handleLightHandles(state, viewport);
-        const bool cameraDrag = !handleDrag && handleViewportInput(state, viewport);
+        // Classroom surface probe: Shift+click sets its point (so no camera drag starts), then its arrows and window.
+        const bool probeClick = !handleDrag && handleProbeClick(viewport);
+        const bool cameraDrag = !handleDrag && !probeClick && handleViewportInput(state, viewport);
+        drawProbe(state, viewport);
         // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
         const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);

@@ -8,6 +8,7 @@
 #include "editor/document.h"
 #include "editor/key_events.h"
 #include "editor/object_actions.h"
+#include "editor/probe_panel.h"
 
 namespace glint {
 namespace {
@@ -30,6 +31,8 @@ constexpr Shortcut kShortcuts[] = {
     {"F11", "presentation mode on / off (large font, high contrast, advanced panels hidden)"},
     {"L", "the lesson list"},
     {"Right / Left (in a lesson), PageDown / PageUp", "next / previous lesson"},
+    {"Shift+click (viewport)", "surface probe at that point: N, V, L, H, R, T and the chain from light to pixel"},
+    {"I", "surface probe on / off (when on, the next click on the viewport sets its point)"},
     {"F1", "this help"},
     {"left drag (viewport)", "orbit the camera"},
     {"right or middle drag", "pan"},
@@ -66,6 +69,7 @@ void handleShortcuts(EditorState& state) {
     if (keyPressed(GLFW_KEY_P)) toggleProjection(state);
     if (keyPressed(GLFW_KEY_W)) toggleWireframe(state);
     if (keyPressed(GLFW_KEY_N)) toggleNormals(state);
+    if (keyPressed(GLFW_KEY_I)) toggleProbeTool();
     if (keyPressed(GLFW_KEY_F12)) requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
 }
 

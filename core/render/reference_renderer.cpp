@@ -1,5 +1,6 @@
 // CPU reference renderer (see reference_renderer.h).
 #include "render/reference_renderer.h"
+#include "render/shading_breakdown.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,16 +85,12 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
     return nearest;
 }
 
-glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
-                   uint32_t pixelSeed) {
-    if (hit.triangle && scene.objects.at(hit.objectIndex).interpolation == SurfaceInterpolation::Gouraud) {
-        // Gouraud: shade the corners, interpolate the radiance (render/triangle_scene.h).
-        glm::vec3 radiance(0.0f);
-        const auto corners = gouraudCorners(scene, hit);
-        for (int k = 0; k < 3; ++k)
-            radiance += hit.triangle->barycentric[k] * shadeHit(scene, corners[k].first, corners[k].second, options, pixelSeed);
-        return radiance;
-    }
+namespace {
+
+// shadeHit's terms at the hit itself; `breakdown`, when given, receives each term (the surface
+// probe's hook), else only the sum is returned.
+glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
+                     uint32_t pixelSeed, ShadingBreakdown* breakdown) {
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
     // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
     std::optional<glm::vec2> triangleUv;  // shapes drawn from triangles: the interpolated vertex UV
@@ -106,35 +103,76 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
     const ShadingFrame frame =
         normalMappedFrame(material, texturePoint, ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent));
     glm::vec3 radiance(0.0f);
-    for (const Light& light : scene.lights) {
+    for (size_t lightIndex = 0; lightIndex < scene.lights.size(); ++lightIndex) {
+        const Light& light = scene.lights[lightIndex];
         if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below
         const LightArrival arrival = lightArrival(light, hit.position);
         const float cosTheta = frame.cosTheta(arrival.towardsLight);
-        if (cosTheta <= 0.0f) continue;
+        if (cosTheta <= 0.0f && !breakdown) continue;
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
-        const float visibility = lightVisibility(scene, light, hit, arrival);
-        if (visibility == 0.0f) continue;
-        radiance += evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame) *
-                    arrival.normalIrradiance * cosTheta;
+        const float visibility = cosTheta <= 0.0f ? 0.0f : lightVisibility(scene, light, hit, arrival);
+        if (visibility == 0.0f && !breakdown) continue;
+        const glm::vec3 brdf = evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame);
+        const glm::vec3 reflected =
+            visibility == 0.0f ? glm::vec3(0.0f) : brdf * arrival.normalIrradiance * cosTheta;
+        radiance += reflected;
+        if (breakdown)
+            breakdown->lights.push_back({static_cast<int>(lightIndex), arrival, cosTheta, visibility, brdf, reflected});
     }
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
-    radiance += ambientReflectance(material.model, values, towardsViewer, frame) * ambient;
+    const glm::vec3 ambientFactor = ambientReflectance(material.model, values, towardsViewer, frame);
+    radiance += ambientFactor * ambient;
     // Environment light: the GPU's image-based lighting, or sampled.
-    radiance += options.sampleEnvironment
-                    ? sampleEnvironmentLighting(material.model, values, towardsViewer, frame, scene.environment,
-                                                pixelSeed, options.environmentSamples)
-                    : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
+    const glm::vec3 environment =
+        options.sampleEnvironment
+            ? sampleEnvironmentLighting(material.model, values, towardsViewer, frame, scene.environment, pixelSeed,
+                                        options.environmentSamples)
+            : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
+    radiance += environment;
     // Delta lobes (mirror, glass), traced against the environment or the background.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
     std::optional<SphereGeometry> sphere;
     const auto* sphereShape = std::get_if<SphereShape>(&shape);
     const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
     if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    radiance += traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment),
-                              sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
+    const glm::vec3 specular = traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment),
+                                             sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer,
+                                             hit.distance);
+    radiance += specular;
+    if (breakdown) {
+        breakdown->frame = frame;
+        breakdown->values = values;
+        breakdown->ambientReflectance = ambientFactor;
+        breakdown->ambientRadiance = ambient;
+        breakdown->environment = environment;
+        breakdown->specular = specular;
+        breakdown->total = radiance;
+    }
     return radiance;
+}
+
+}  // namespace
+
+glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
+                   uint32_t pixelSeed) {
+    if (hit.triangle && scene.objects.at(hit.objectIndex).interpolation == SurfaceInterpolation::Gouraud) {
+        // Gouraud: shade the corners, interpolate the radiance (render/triangle_scene.h).
+        glm::vec3 radiance(0.0f);
+        const auto corners = gouraudCorners(scene, hit);
+        for (int k = 0; k < 3; ++k)
+            radiance += hit.triangle->barycentric[k] * shadeHit(scene, corners[k].first, corners[k].second, options, pixelSeed);
+        return radiance;
+    }
+    return shadeAtHit(scene, hit, towardsViewer, options, pixelSeed, nullptr);
+}
+
+ShadingBreakdown shadingBreakdown(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer,
+                                  const ReferenceOptions& options, uint32_t pixelSeed) {
+    ShadingBreakdown breakdown;
+    shadeAtHit(scene, hit, towardsViewer, options, pixelSeed, &breakdown);
+    return breakdown;
 }
 
 RadianceImage renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options) {

@@ -15,25 +15,16 @@
 #include "editor/panels/panels.h"
 #include "editor/panels/shadow_widgets.h"
 #include "editor/panels/widgets.h"
+#include "light/light_type_name.h"
 #include "light/photometry.h"
 
 namespace glint {
 namespace {
 
-const char* typeLabel(LightType type) {
-    switch (type) {
-        case LightType::Directional: return "directional";
-        case LightType::Point: return "point";
-        case LightType::Spot: return "spot";
-        case LightType::Ambient: return "ambient";
-    }
-    return "";
-}
-
 Light newLight(LightType type, const Scene& scene) {
     Light light;
     light.type = type;
-    light.name = std::string(typeLabel(type)) + " " + std::to_string(scene.lights.size() + 1);
+    light.name = std::string(lightTypeName(type)) + " " + std::to_string(scene.lights.size() + 1);
     light.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f));
     light.position = {0.0f, 2.5f, 2.0f};
     if (type == LightType::Spot) light.direction = glm::normalize(-light.position);  // aimed at the origin
@@ -55,7 +46,7 @@ void drawLightList(EditorState& state) {
             state.session.change(enabled ? "Enable light" : "Disable light").lights[i].enabled = enabled;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Enabled");
         ImGui::SameLine();
-        const std::string label = scene.lights[i].name + "  (" + typeLabel(scene.lights[i].type) + ")";
+        const std::string label = scene.lights[i].name + "  (" + lightTypeName(scene.lights[i].type) + ")";
         if (ImGui::Selectable(label.c_str(), state.selectedLight == static_cast<int>(i))) state.selectedLight = static_cast<int>(i);
         ImGui::PopID();
     }

@@ -9,6 +9,7 @@
 #include "editor/document.h"
 #include "editor/object_actions.h"
 #include "editor/panels/panels.h"
+#include "editor/probe_panel.h"
 
 namespace glint {
 namespace {
@@ -74,6 +75,7 @@ void drawViewMenu(EditorState& state) {
     const OverlaySettings& overlays = state.session.scene().display.overlays;
     if (ImGui::MenuItem("Wireframe overlay", "W", overlays.wireframe)) toggleWireframe(state);
     if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
+    if (ImGui::MenuItem("Surface probe (Shift+click)", "I", probeToolOn())) toggleProbeTool();
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
