@@ -6,6 +6,7 @@
 
 #include "cli/brdf_probe.h"
 #include "cli/headless.h"
+#include "cli/plot_overlay.h"
 #include "display/display_chain.h"
 #include "render/reference_renderer.h"
 #include "snapshot/case_source.h"
@@ -23,13 +24,18 @@ constexpr const char* kUsage =
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
     "  --reference        render with the CPU reference ray caster instead of OpenGL\n"
     "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
-    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n";
+    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
+    // Classroom plots (cli/plot_overlay.h).
+    "  --overlay polar|lobe|albedo|fresnel  draw a BRDF or Fresnel plot of the scene's materials over the image (PNG only)\n"
+    "  --incidence DEG    incidence angle θ_i of the polar plot, lobe and albedo marker (default 45)\n"
+    "  --from-inside      Fresnel plot with the light inside the material (critical angle)\n";
 
 struct RenderOptions {
     std::string scenePath, outputPath;
     int width = 0, height = 0, msaa = 0;
     bool reference = false;
     bool wireframe = false, normals = false;
+    PlotOverlayOptions plots;  // --overlay polar|lobe|albedo|fresnel
 };
 
 int usageError(const std::string& message) {
@@ -44,6 +50,12 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& argument = arguments[i];
         auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
+        std::string plotError;  // classroom plots: their options first
+        if (const PlotOptionMatch plot = parsePlotOverlayOption(arguments, i, options.plots, plotError);
+            plot != PlotOptionMatch::NotMine) {
+            if (plot == PlotOptionMatch::Error) return usageError(plotError);
+            continue;
+        }
         if (argument == "-h" || argument == "--help") {
             std::printf("%s", kUsage);
             return 0;
@@ -84,6 +96,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
+    if (const std::string conflict = plotOverlayConflict(options.plots, options.reference, options.outputPath); !conflict.empty())
+        return usageError(conflict);
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
     // A material, interchange or .brdf file renders on the preview stage.
@@ -125,6 +139,12 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             return 2;
         }
         images = std::move(*rendered);
+        if (options.plots.kind != PlotOverlayKind::None) {  // drawn while the headless GL context is current
+            if (Status drawn = drawPlotOverlay(*scene, options.plots, images.display); !drawn) {
+                std::fprintf(stderr, "glint render: %s\n", drawn.error().format().c_str());
+                return 2;
+            }
+        }
     }
     if (Status written = writeRenderedImage(images, options.outputPath); !written) {
         std::fprintf(stderr, "glint render: %s\n", written.error().format().c_str());

@@ -13,6 +13,7 @@
 #include "edit/recovery.h"
 #include "editor/custom_brdf_state.h"
 #include "editor/panels/file_browser.h"
+#include "editor/panels/plots_window.h"
 #include "editor/settings.h"
 
 namespace glint {
@@ -66,6 +67,7 @@ struct EditorState {
     bool wroteRecovery = false;         // the recovery file on disk is this editor's
 
     CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
+    PlotsWindowState plots;  // classroom BRDF and Fresnel plots (panels/plots_window.h)
 };
 
 }  // namespace glint

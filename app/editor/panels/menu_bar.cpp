@@ -69,6 +69,7 @@ void drawViewMenu(EditorState& state) {
     const OverlaySettings& overlays = state.session.scene().display.overlays;
     if (ImGui::MenuItem("Wireframe overlay", "W", overlays.wireframe)) toggleWireframe(state);
     if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
+    ImGui::MenuItem("BRDF and Fresnel plots", "B", &state.plots.open);
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
