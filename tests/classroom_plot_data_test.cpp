@@ -33,13 +33,19 @@ TEST(ClassroomPlotData, LambertAlbedoIsRhoAtEveryAngle) {
 }
 
 TEST(ClassroomPlotData, NormalisedBlinnPhongConservesEnergy) {
-    // ρ_d + k_s = 1, the energy-normalised form (n+8)/(8π): never more out than in.
+    // The energy-normalised form (n+8)/(8π) with ρ_d + k_s = 0.9: never more out than in.
     for (float exponent : {4.0f, 32.0f, 200.0f}) {
-        const AlbedoCurve curve = albedoCurve(plotDataMaterial(BrdfModel::BlinnPhong, {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, exponent, 3}));
+        const AlbedoCurve curve = albedoCurve(plotDataMaterial(BrdfModel::BlinnPhong, {0.5f, 0.5f, 0.5f, 0.4f, 0.4f, 0.4f, exponent, 3}));
         EXPECT_LE(curve.largestAlbedo, 1.0f) << "n = " << exponent;
         EXPECT_FALSE(curve.exceedsOne) << "n = " << exponent;
-        EXPECT_GT(curve.albedo.front().r, 0.9f) << "n = " << exponent;  // and not far below at normal incidence
+        EXPECT_GT(curve.albedo.front().r, 0.85f) << "n = " << exponent;  // and not far below at normal incidence
     }
+    // (n+8)/(8π) is an approximation: a white lobe (k_s = 1) with a low exponent overshoots by a
+    // few per cent at normal incidence, and the plot flags it.
+    const AlbedoCurve white = albedoCurve(plotDataMaterial(BrdfModel::BlinnPhong, {0, 0, 0, 1, 1, 1, 4, 3}));
+    EXPECT_GT(white.albedo.front().r, 1.0f);
+    EXPECT_LT(white.albedo.front().r, 1.1f);
+    EXPECT_TRUE(white.exceedsOne);
 }
 
 TEST(ClassroomPlotData, LecturePhongExceedsOneAtGrazingAndIsFlagged) {
@@ -57,11 +63,15 @@ TEST(ClassroomPlotData, PolarPlotAndLobeFollowEvalBrdf) {
     ASSERT_EQ(polar.outgoingDegrees.size(), 181u);
     EXPECT_FLOAT_EQ(polar.outgoingDegrees.front(), -90.0f);
     EXPECT_FLOAT_EQ(polar.outgoingDegrees.back(), 90.0f);
-    // The lobe peaks in the mirror direction, θ_o = +30°.
-    size_t peak = 0;
-    for (size_t i = 0; i < polar.cosineWeighted.size(); ++i)
-        if (polar.cosineWeighted[i].r > polar.cosineWeighted[peak].r) peak = i;
-    EXPECT_NEAR(polar.outgoingDegrees[peak], 30.0f, 2.0f);
+    // f_r peaks in the mirror direction, θ_o = +30°; f_r·cos θ_o a little towards the normal.
+    size_t peak = 0, weightedPeak = 0;
+    for (size_t i = 0; i < polar.reflectance.size(); ++i) {
+        if (polar.reflectance[i].r > polar.reflectance[peak].r) peak = i;
+        if (polar.cosineWeighted[i].r > polar.cosineWeighted[weightedPeak].r) weightedPeak = i;
+    }
+    EXPECT_NEAR(polar.outgoingDegrees[peak], 30.0f, 1.0f);
+    EXPECT_GT(polar.outgoingDegrees[weightedPeak], 20.0f);
+    EXPECT_LT(polar.outgoingDegrees[weightedPeak], 30.0f);
     const glm::vec3 expected = evalBrdf(blinn.model, blinn.values, plotIncidentDirection(30.0f * kPi / 180.0f),
                                         plotOutgoingDirection(0.0f), ShadingFrame{});
     EXPECT_NEAR(polar.reflectance[90].r, expected.r, 1e-6f);
