@@ -54,6 +54,12 @@ void plotDashedPolyline(ImDrawList* drawList, const std::vector<ImVec2>& points,
     }
 }
 
+// Text at `at`, moved left so that it ends inside the frame.
+void plotLabel(ImDrawList* drawList, ImVec2 at, ImVec2 bottomRight, ImU32 colour, const std::string& text) {
+    at.x = std::min(at.x, bottomRight.x - ImGui::CalcTextSize(text.c_str()).x - 4.0f);
+    drawList->AddText(at, colour, text.c_str());
+}
+
 // Names of the overlaid materials in their colours, from `at` downwards.
 void plotLegend(ImDrawList* drawList, ImVec2 at, std::span<const PlottedMaterial> materials) {
     const float lineHeight = ImGui::GetTextLineHeight();
@@ -73,11 +79,13 @@ struct PlotGraph {
     }
 };
 
-PlotGraph plotAngleGraph(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, float yMax, const char* xLabel) {
+// headerLines: text lines above the graph (the title and, for Fresnel, a legend and the angles).
+PlotGraph plotAngleGraph(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, float yMax, const char* xLabel,
+                         float headerLines = 1.8f) {
     const float line = ImGui::GetTextLineHeight();
     PlotGraph graph;
     graph.origin = ImVec2(topLeft.x + 3.2f * line, bottomRight.y - 2.2f * line);
-    graph.size = ImVec2(bottomRight.x - graph.origin.x - line, graph.origin.y - topLeft.y - 1.8f * line);
+    graph.size = ImVec2(bottomRight.x - graph.origin.x - line, graph.origin.y - topLeft.y - headerLines * line);
     graph.yMax = yMax;
     for (int degrees = 0; degrees <= 90; degrees += 15) {
         const ImVec2 base = graph.at(static_cast<float>(degrees), 0.0f);
@@ -132,7 +140,7 @@ void drawPolarPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std
         anyTransmission |= plotted.delta.hasTransmission;
     }
     plotFrame(drawList, topLeft, bottomRight,
-              "f_r·cos θ_o [1/sr], plane of incidence, θ_i = " + plotFormat("%.0f°", incidenceDegrees));
+              "f_r·cos θ_o [1/sr] in plane, θ_i = " + plotFormat("%.0f°", incidenceDegrees));
     const float line = ImGui::GetTextLineHeight();
     const float width = bottomRight.x - topLeft.x, height = bottomRight.y - topLeft.y;
     const float surfaceFraction = anyTransmission ? 0.62f : 0.86f;
@@ -177,7 +185,7 @@ void drawPolarPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std
             const float weight = plotLuminance(delta.reflectedWeight);
             const ImVec2 tip = toScreen(delta.reflectedDirection, radius * std::max(weight, 0.05f));
             plotArrow(drawList, centre, tip, plotted.colour, 2.5f);
-            drawList->AddText(ImVec2(tip.x + 4, tip.y - line), plotted.colour, plotFormat("R %.3f", weight).c_str());
+            plotLabel(drawList, ImVec2(tip.x + 4, tip.y - line), bottomRight, plotted.colour, plotFormat("R %.3f", weight));
         }
         if (delta.hasTransmission) {
             const float weight = plotLuminance(delta.transmittedWeight);
@@ -185,11 +193,11 @@ void drawPolarPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std
             const ImVec2 tip = toScreen(delta.transmittedDirection, room * std::max(weight, 0.05f));
             plotArrow(drawList, centre, tip, plotted.colour, 2.5f);
             const std::string label = plotFormat("T %.3f", weight) + plotFormat(", θ_t %.1f°", delta.transmittedDegrees);
-            drawList->AddText(ImVec2(tip.x + 4, tip.y - 0.5f * line), plotted.colour, label.c_str());
+            plotLabel(drawList, ImVec2(tip.x + 4, tip.y - 0.5f * line), bottomRight, plotted.colour, label);
         }
     }
     if (anyTransmission)
-        drawList->AddText(ImVec2(topLeft.x + 6, centre.y + 4), kPlotText, "transmitted (below the surface)");
+        drawList->AddText(ImVec2(topLeft.x + 6, centre.y + 4), kPlotText, "transmitted");
     plotLegend(drawList, ImVec2(topLeft.x + 6, topLeft.y + 4 + line), materials);
 }
 
@@ -200,7 +208,7 @@ void drawLobePlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std:
     const float incidenceDegrees = materials.empty() ? 0.0f : materials.front().lobe.incidenceDegrees;
     float largest = 0.0f;
     for (const PlottedMaterial& plotted : materials) largest = std::max(largest, plotted.lobe.largestRadius);
-    plotFrame(drawList, topLeft, bottomRight, "3D lobe: radius f_r·cos θ_o [1/sr], θ_i = " + plotFormat("%.0f°", incidenceDegrees));
+    plotFrame(drawList, topLeft, bottomRight, "lobe: f_r·cos θ_o [1/sr], θ_i = " + plotFormat("%.0f°", incidenceDegrees));
     const float line = ImGui::GetTextLineHeight();
     const float width = bottomRight.x - topLeft.x, height = bottomRight.y - topLeft.y;
     const ImVec2 centre(topLeft.x + 0.5f * width, topLeft.y + 0.62f * height);
@@ -262,11 +270,20 @@ void drawLobePlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std:
 
 void drawAlbedoPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std::span<const PlottedMaterial> materials) {
     float largest = 0.0f;
-    for (const PlottedMaterial& plotted : materials) largest = std::max(largest, plotted.albedo.largestAlbedo);
-    const float yMax = std::ceil(std::max(1.25f, largest * 1.05f) * 4.0f) / 4.0f;
-    plotFrame(drawList, topLeft, bottomRight, "directional albedo ρ(θ_i) = ∫ f_r cos θ_o dω_o");
-    const PlotGraph graph = plotAngleGraph(drawList, topLeft, bottomRight, yMax, "θ_i");
+    std::vector<std::string> warnings;  // red, under the title
+    for (const PlottedMaterial& plotted : materials) {
+        largest = std::max(largest, plotted.albedo.largestAlbedo);
+        if (plotted.albedo.exceedsOne)
+            warnings.push_back("ρ > 1: " + plotted.material.name + plotFormat(" (up to %.2f)", plotted.albedo.largestAlbedo));
+    }
+    // Up to 2: a curve that climbs further (the lecture Phong at grazing) leaves through the top.
+    const float yMax = std::min(2.0f, std::ceil(std::max(1.25f, largest * 1.05f) * 4.0f) / 4.0f);
+    plotFrame(drawList, topLeft, bottomRight, "albedo ρ(θ_i) = ∫ f_r cos θ_o dω_o");
     const float line = ImGui::GetTextLineHeight();
+    for (size_t i = 0; i < warnings.size(); ++i)
+        drawList->AddText(ImVec2(topLeft.x + 6, topLeft.y + 4 + line * static_cast<float>(i + 1)), kPlotWarning, warnings[i].c_str());
+    const PlotGraph graph = plotAngleGraph(drawList, topLeft, bottomRight, yMax, "θ_i", 1.8f + static_cast<float>(warnings.size()));
+    drawList->PushClipRect(ImVec2(graph.origin.x, graph.origin.y - graph.size.y), ImVec2(graph.origin.x + graph.size.x, graph.origin.y), true);
     const ImVec2 one = graph.at(0.0f, 1.0f);
     drawList->AddLine(one, ImVec2(one.x + graph.size.x, one.y), IM_COL32(240, 240, 240, 255), 1.5f);
     drawList->AddText(ImVec2(one.x + graph.size.x - 3.0f * line, one.y - line), kPlotText, "ρ = 1");
@@ -274,7 +291,6 @@ void drawAlbedoPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, st
         const ImVec2 now = graph.at(materials.front().polar.incidenceDegrees, 0.0f);
         drawList->AddLine(now, ImVec2(now.x, now.y - graph.size.y), kPlotLight, 1.0f);
     }
-    float warningY = topLeft.y + 4 + line;
     for (const PlottedMaterial& plotted : materials) {
         const AlbedoCurve& curve = plotted.albedo;
         std::vector<ImVec2> channels[3], luminance;
@@ -287,13 +303,9 @@ void drawAlbedoPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, st
             for (int c = 0; c < 3; ++c) plotDashedPolyline(drawList, channels[c], kChannelColours[c], 1.0f, 5.0f);
         }
         drawList->AddPolyline(luminance.data(), static_cast<int>(luminance.size()), plotted.colour, 0, 2.5f);
-        if (curve.exceedsOne) {
-            const std::string warning = "ρ > 1 for " + plotted.material.name + plotFormat(" (up to %.2f): not energy conserving", curve.largestAlbedo);
-            drawList->AddText(ImVec2(graph.origin.x + 4, warningY + line), kPlotWarning, warning.c_str());
-            warningY += line;
-        }
     }
-    plotLegend(drawList, ImVec2(bottomRight.x - 9.0f * line, graph.origin.y - graph.size.y + 4), materials);
+    drawList->PopClipRect();
+    plotLegend(drawList, ImVec2(graph.origin.x + 4, graph.origin.y - graph.size.y + 2), materials);
 }
 
 // ---- Fresnel -------------------------------------------------------------------------------
@@ -302,16 +314,21 @@ void drawFresnelPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, c
                      const std::string& materialName) {
     const glm::vec3 n = curves.index.n, k = curves.index.k;
     const bool grey = n.r == n.g && n.g == n.b && k.r == k.g && k.g == k.b;  // one curve set for all channels
-    const std::string index = grey ? plotFormat("n = %.3g", n.r) + plotFormat(" + %.3gi", k.r)
-                                   : plotFormat("n = (%.2f", n.r) + plotFormat(", %.2f", n.g) + plotFormat(", %.2f)", n.b) +
-                                         plotFormat(" κ = (%.2f", k.r) + plotFormat(", %.2f", k.g) + plotFormat(", %.2f)", k.b);
+    const std::string index = grey ? plotFormat("n = %.3g", n.r) + (k.r != 0.0f ? plotFormat(" + %.3gi", k.r) : std::string())
+                                   : plotFormat("n (%.2f", n.r) + plotFormat(" %.2f", n.g) + plotFormat(" %.2f)", n.b) +
+                                         plotFormat(" κ (%.2f", k.r) + plotFormat(" %.2f", k.g) + plotFormat(" %.2f)", k.b);
     plotFrame(drawList, topLeft, bottomRight,
-              "Fresnel " + materialName + ": " + index + (curves.fromInside ? ", from inside" : ""));
-    const PlotGraph graph = plotAngleGraph(drawList, topLeft, bottomRight, 1.0f, "θ_i");
+              "Fresnel " + materialName + (grey ? ": " + index : std::string()) + (curves.fromInside ? ", inside" : ""));
+    const PlotGraph graph = plotAngleGraph(drawList, topLeft, bottomRight, 1.0f, "θ_i", 3.4f);
     const float line = ImGui::GetTextLineHeight();
     static constexpr ImU32 kChannelColours[] = {IM_COL32(255, 90, 80, 255), IM_COL32(90, 225, 90, 255), IM_COL32(100, 150, 255, 255)};
     const int channelCount = grey ? 1 : 3;
-    float markerY = graph.origin.y - graph.size.y + 2;
+    // Marked angles: a line with a letter on the graph, the value in the row under the legend.
+    ImVec2 angleText(topLeft.x + 6, topLeft.y + 4 + 2.0f * line);
+    if (!grey) {  // the per-channel index does not fit the title
+        drawList->AddText(angleText, kPlotText, index.c_str());
+        angleText.x += ImGui::CalcTextSize(index.c_str()).x + line;
+    }
     for (int c = 0; c < channelCount; ++c) {
         const FresnelChannelCurves& channel = curves.channels[c];
         const ImU32 colour = grey ? IM_COL32(235, 235, 235, 255) : kChannelColours[c];
@@ -333,25 +350,29 @@ void drawFresnelPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, c
             const ImVec2 base = graph.at(degrees, 0.0f);
             drawList->AddLine(base, ImVec2(base.x, base.y - graph.size.y), colour, 1.0f);
             const std::string label = plotFormat(format, degrees);
-            drawList->AddText(ImVec2(base.x - 5.0f * line, markerY), colour, label.c_str());
-            markerY += line;
+            drawList->AddText(angleText, colour, label.c_str());
+            angleText.x += ImGui::CalcTextSize(label.c_str()).x + line;
         };
         mark(channel.brewsterDegrees, "θ_B %.1f°");
         mark(channel.criticalDegrees, "θ_c %.1f°");
+        if (channel.brewsterDegrees >= 0.0f)
+            drawList->AddText(ImVec2(graph.at(channel.brewsterDegrees, 0.0f).x + 2, graph.origin.y - graph.size.y + 2), colour, "B");
+        if (channel.criticalDegrees >= 0.0f)
+            drawList->AddText(ImVec2(graph.at(channel.criticalDegrees, 0.0f).x + 2, graph.origin.y - graph.size.y + 2), colour, "c");
     }
-    // Legend: the line style of each quantity.
-    const ImVec2 legend(graph.origin.x + 0.6f * line, graph.origin.y - graph.size.y + 0.3f * line);
-    const char* names[] = {"unpolarised", "R_s", "R_p", "Schlick"};
+    // Legend: the line style of each quantity, in one row under the title.
+    float x = topLeft.x + 6;
+    const float y = topLeft.y + 4 + 1.5f * line;
+    const char* names[] = {"unpol.", "R_s", "R_p", "Schlick"};
     for (int i = 0; i < 4; ++i) {
-        const float y = legend.y + static_cast<float>(i) * line + 0.5f * line;
-        const std::vector<ImVec2> sample = {ImVec2(legend.x, y), ImVec2(legend.x + 8, y), ImVec2(legend.x + 16, y), ImVec2(legend.x + 24, y)};
+        std::vector<ImVec2> sample;
+        for (int step = 0; step <= 6; ++step) sample.push_back(ImVec2(x + 3.0f * static_cast<float>(step), y));
         if (i == 0) drawList->AddLine(sample.front(), sample.back(), kPlotText, 2.5f);
         if (i == 1) plotDashedPolyline(drawList, sample, kPlotText, 1.5f, 6.0f);
-        if (i == 2) plotDashedPolyline(drawList, {ImVec2(legend.x, y), ImVec2(legend.x + 3, y), ImVec2(legend.x + 6, y), ImVec2(legend.x + 9, y),
-                                                  ImVec2(legend.x + 12, y), ImVec2(legend.x + 15, y), ImVec2(legend.x + 18, y), ImVec2(legend.x + 21, y),
-                                                  ImVec2(legend.x + 24, y)}, kPlotText, 1.5f, 2.0f);
+        if (i == 2) plotDashedPolyline(drawList, sample, kPlotText, 1.5f, 2.0f);
         if (i == 3) drawList->AddLine(sample.front(), sample.back(), IM_COL32(225, 228, 235, 120), 1.0f);
-        drawList->AddText(ImVec2(legend.x + 30, y - 0.5f * line), kPlotText, names[i]);
+        drawList->AddText(ImVec2(x + 21, y - 0.5f * line), kPlotText, names[i]);
+        x += 21 + ImGui::CalcTextSize(names[i]).x + 0.6f * line;
     }
 }
 
