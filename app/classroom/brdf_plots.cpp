@@ -300,7 +300,7 @@ void drawAlbedoPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, st
         }
         if (materials.size() == 1) {  // one material: its R, G and B channels too
             static constexpr ImU32 kChannelColours[] = {IM_COL32(255, 80, 80, 200), IM_COL32(80, 230, 80, 200), IM_COL32(90, 140, 255, 200)};
-            for (int c = 0; c < 3; ++c) plotDashedPolyline(drawList, channels[c], kChannelColours[c], 1.0f, 5.0f);
+            for (int c = 0; c < 3; ++c) drawList->AddPolyline(channels[c].data(), static_cast<int>(channels[c].size()), kChannelColours[c], 0, 1.0f);
         }
         drawList->AddPolyline(luminance.data(), static_cast<int>(luminance.size()), plotted.colour, 0, 2.5f);
     }
