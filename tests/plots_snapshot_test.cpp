@@ -3,14 +3,10 @@
 // with goldens/plot_<name>.png. Goldens change only with GLINT_UPDATE_GOLDENS=1.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-
 #include "brdf/presets.h"
 #include "cli/plot_overlay.h"
+#include "golden_support.h"
 #include "gpu_test_support.h"
-#include "image/image_io.h"
-#include "snapshot/golden_check.h"
-#include "test_support.h"
 
 namespace glint {
 namespace {
@@ -20,17 +16,7 @@ void expectPlotMatchesGolden(const std::string& name, const Scene& scene, const 
     DisplayImage image(256, 256);
     const Status drawn = drawPlotOverlay(scene, options, image);
     ASSERT_TRUE(drawn) << drawn.error().format();
-    const std::string golden = test::dataPath("goldens/plot_" + name + ".png");
-    const char* update = std::getenv("GLINT_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
-        ASSERT_TRUE(writeDisplayImage(image, golden).ok());
-        return;
-    }
-    const GoldenCheck check = checkAgainstGolden(image, golden, CompareTolerance{});
-    if (check.outcome != CaseOutcome::Passed) {
-        (void)writeDisplayImage(image, test::outputDirectory("snapshots") + "/plot_" + name + ".actual.png");
-        ADD_FAILURE() << "plot_" << name << ": " << check.message;
-    }
+    test::expectMatchesGoldenPng("plot_" + name, image, test::outputDirectory("snapshots"));
 }
 
 PlotOverlayOptions plotSnapshotOptions(PlotOverlayKind kind, float incidenceDegrees, bool fromInside = false) {

@@ -6,11 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 
+#include "golden_support.h"
 #include "gpu_test_support.h"
 #include "image/image_io.h"
-#include "snapshot/golden_check.h"
 #include "test_support.h"
 
 namespace glint {
@@ -55,17 +54,7 @@ void writeCheckerTexture() {
 }
 
 void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
-    const std::string golden = test::dataPath("goldens/" + name + ".png");
-    const char* update = std::getenv("GLINT_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
-        ASSERT_TRUE(writeDisplayImage(actual, golden).ok());
-        return;
-    }
-    const GoldenCheck check = checkAgainstGolden(actual, golden, CompareTolerance{});
-    if (check.outcome != CaseOutcome::Passed) {
-        (void)writeDisplayImage(actual, textureDirectory() + "/" + name + ".actual.png");
-        ADD_FAILURE() << name << ": " << check.message;
-    }
+    test::expectMatchesGoldenPng(name, actual, textureDirectory());
 }
 
 TEST(TextureGpu, TexturedQuadMatchesGoldenAndCpu) {
