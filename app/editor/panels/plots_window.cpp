@@ -3,6 +3,7 @@
 #include "editor/panels/plots_window.h"
 
 #include <algorithm>
+#include <string>
 
 #include <imgui.h>
 
@@ -75,6 +76,8 @@ void drawPlotsPinning(EditorState& state) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Overlay other materials of the scene (click again to unpin)");
 }
 
+std::string gPlotsIncidenceRefusal;  // why a typed incidence angle was refused (one Plots window)
+
 }  // namespace
 
 void drawPlotsWindow(EditorState& state) {
@@ -86,11 +89,19 @@ void drawPlotsWindow(EditorState& state) {
         return;
     }
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
-    ImGui::SliderFloat("Incidence θ_i", &plots.incidenceDegrees, 0.0f, 90.0f, "%.0f°");
-    plots.incidenceDegrees = std::clamp(plots.incidenceDegrees, 0.0f, 90.0f);  // Ctrl+click typing
+    float typedIncidence = plots.incidenceDegrees;
+    ImGui::SliderFloat("Incidence θ_i", &typedIncidence, 0.0f, 90.0f, "%.0f°");
+    if (typedIncidence >= 0.0f && typedIncidence <= 90.0f) {
+        if (typedIncidence != plots.incidenceDegrees) gPlotsIncidenceRefusal.clear();
+        plots.incidenceDegrees = typedIncidence;
+    } else {  // a typed NaN or 120°: refused, and said why
+        gPlotsIncidenceRefusal = "Incidence θ_i must be between 0° and 90°; kept " + std::to_string(static_cast<int>(plots.incidenceDegrees)) + "°";
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Angle of the light from the normal, 0–90° (Ctrl+click to type)");
     drawPlotsPinning(state);
     ImGui::SameLine();
     ImGui::Checkbox("Fresnel from inside", &plots.fresnelFromInside);
+    if (!gPlotsIncidenceRefusal.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", gPlotsIncidenceRefusal.c_str());
     std::vector<std::string> leftOut;
     refreshPlotsCache(plots, plotsWindowMaterials(state, leftOut));
     for (const std::string& name : leftOut)
