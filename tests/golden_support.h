@@ -1,30 +1,42 @@
-// One image against its golden PNG in tests/goldens (DESIGN.md's tolerance), for GPU tests
-// outside the snapshot suite: GLINT_UPDATE_GOLDENS=1 rewrites the golden instead; on failure the
-// actual image is written to failureDirectory. Renders nothing itself.
+// Golden-image checks shared by the GPU test files: a display image compared with
+// tests/goldens/NAME.png under DESIGN.md's tolerance; on failure the actual, expected and ×16
+// difference images are written to the test output directory. Goldens change only with
+// GLINT_UPDATE_GOLDENS=1.
 #pragma once
 
-#include <gtest/gtest.h>
-
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include <gtest/gtest.h>
+
+#include "image/image_compare.h"
 #include "image/image_io.h"
-#include "snapshot/golden_check.h"
 #include "test_support.h"
 
 namespace glint::test {
 
-inline void expectMatchesGoldenPng(const std::string& name, const DisplayImage& actual, const std::string& failureDirectory) {
-    const std::string golden = dataPath("goldens/" + name + ".png");
+inline bool updatingGoldens() {
     const char* update = std::getenv("GLINT_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
+    return update && std::string(update) == "1";
+}
+
+inline void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
+    const std::string golden = dataPath("goldens/" + name + ".png");
+    if (updatingGoldens()) {
         ASSERT_TRUE(writeDisplayImage(actual, golden).ok());
+        std::printf("updated golden %s\n", golden.c_str());
         return;
     }
-    const GoldenCheck check = checkAgainstGolden(actual, golden, CompareTolerance{});
-    if (check.outcome != CaseOutcome::Passed) {
-        (void)writeDisplayImage(actual, failureDirectory + "/" + name + ".actual.png");
-        ADD_FAILURE() << name << ": " << check.message;
+    auto expected = readDisplayImage(golden);
+    ASSERT_TRUE(expected.ok()) << expected.error().format() << " (create it with GLINT_UPDATE_GOLDENS=1)";
+    const CompareResult result = compareImages(actual, *expected);
+    if (!result.passed) {
+        const std::string directory = outputDirectory("snapshots");
+        (void)writeDisplayImage(actual, directory + "/" + name + ".actual.png");
+        (void)writeDisplayImage(*expected, directory + "/" + name + ".expected.png");
+        if (result.sizesMatch) (void)writeDisplayImage(differenceImage(actual, *expected), directory + "/" + name + ".diff.png");
+        ADD_FAILURE() << name << ": " << result.summary() << "; images written to " << directory;
     }
 }
 

@@ -16,7 +16,7 @@ void expectPlotMatchesGolden(const std::string& name, const Scene& scene, const 
     DisplayImage image(256, 256);
     const Status drawn = drawPlotOverlay(scene, options, image);
     ASSERT_TRUE(drawn) << drawn.error().format();
-    test::expectMatchesGoldenPng("plot_" + name, image, test::outputDirectory("snapshots"));
+    test::expectMatchesGolden("plot_" + name, image);
 }
 
 PlotOverlayOptions plotSnapshotOptions(PlotOverlayKind kind, float incidenceDegrees, bool fromInside = false) {

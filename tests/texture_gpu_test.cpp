@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include "golden_support.h"
 #include "gpu_test_support.h"
@@ -53,9 +54,7 @@ void writeCheckerTexture() {
     EXPECT_TRUE(writeDisplayImage(image, textureDirectory() + "/checker.png").ok());
 }
 
-void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
-    test::expectMatchesGoldenPng(name, actual, textureDirectory());
-}
+using test::expectMatchesGolden;
 
 TEST(TextureGpu, TexturedQuadMatchesGoldenAndCpu) {
     writeColourTexture();
