@@ -8,9 +8,10 @@
 
 #include "cli/brdf_probe.h"
 #include "cli/headless.h"
-#include "cli/render_overlays.h"
 #include "classroom/probe_text.h"
 #include "classroom/surface_probe.h"
+#include "cli/plot_overlay.h"
+#include "cli/render_overlays.h"
 #include "display/display_chain.h"
 #include "image/image_io.h"
 #include "render/reference_renderer.h"
@@ -31,6 +32,10 @@ constexpr const char* kUsage =
     "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
     "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
     "  --probe X,Y        print the surface probe at pixel (X, Y): the chain from each light to the pixel\n"
+    // Classroom plots (cli/plot_overlay.h).
+    "  --overlay polar|lobe|albedo|fresnel  draw a BRDF or Fresnel plot of the scene's materials over the image (PNG only)\n"
+    "  --incidence DEG    incidence angle θ_i of the polar plot, lobe and albedo marker (default 45)\n"
+    "  --from-inside      Fresnel plot with the light inside the material (critical angle)\n"
     "  --overlay NAME     draw a classroom overlay over the PNG (repeatable); NAME is one of:\n";
 
 struct RenderOptions {
@@ -40,6 +45,7 @@ struct RenderOptions {
     bool wireframe = false, normals = false;
     std::optional<glm::ivec2> probePixel;          // --probe X,Y
     std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order
+    PlotOverlayOptions plots;  // --overlay polar|lobe|albedo|fresnel
 };
 
 void printUsage(std::FILE* stream) {
@@ -60,6 +66,12 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& argument = arguments[i];
         auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
+        std::string plotError;  // classroom plots: their options first
+        if (const PlotOptionMatch plot = parsePlotOverlayOption(arguments, i, options.plots, plotError);
+            plot != PlotOptionMatch::NotMine) {
+            if (plot == PlotOptionMatch::Error) return usageError(plotError);
+            continue;
+        }
         if (argument == "-h" || argument == "--help") {
             printUsage(stdout);
             return 0;
@@ -112,6 +124,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
+    if (const std::string conflict = plotOverlayConflict(options.plots, options.reference, options.outputPath); !conflict.empty())
+        return usageError(conflict);
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
     // A material, interchange or .brdf file renders on the preview stage.
@@ -165,6 +179,12 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             return 2;
         }
         images = std::move(*rendered);
+        if (options.plots.kind != PlotOverlayKind::None) {  // drawn while the headless GL context is current
+            if (Status drawn = drawPlotOverlay(*scene, options.plots, images.display); !drawn) {
+                std::fprintf(stderr, "glint render: %s\n", drawn.error().format().c_str());
+                return 2;
+            }
+        }
     }
     // The classroom surface probe (core/classroom/surface_probe.h) and the overlays drawn over the PNG.
     std::optional<ProbeResult> probe;

@@ -205,6 +205,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
         drawMeshLoadDialog(state);
+        drawPlotsWindow(state);
         handleShortcuts(state);
         ViewportRect viewport;
         viewport.x = state.showLeftPanel ? state.leftPanelWidth : 0.0f;

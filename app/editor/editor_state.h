@@ -14,6 +14,7 @@
 #include "edit/recovery.h"
 #include "editor/custom_brdf_state.h"
 #include "editor/panels/file_browser.h"
+#include "editor/panels/plots_window.h"
 #include "editor/settings.h"
 
 namespace glint {
@@ -68,6 +69,7 @@ struct EditorState {
 
     ClassroomState classroom;  // lessons and the colour windows (app/classroom/)
     CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
+    PlotsWindowState plots;  // classroom BRDF and Fresnel plots (panels/plots_window.h)
 };
 
 }  // namespace glint

@@ -27,6 +27,7 @@ constexpr Shortcut kShortcuts[] = {
     {"P", "perspective / orthographic"},
     {"W", "wireframe overlay on / off"},
     {"N", "vertex normals overlay on / off"},
+    {"B", "BRDF and Fresnel plots window on / off"},
     {"F12", "screenshot of the viewport (PNG or EXR)"},
     {"F11", "presentation mode on / off (large font, high contrast, advanced panels hidden)"},
     {"L", "the lesson list"},
@@ -70,6 +71,7 @@ void handleShortcuts(EditorState& state) {
     if (keyPressed(GLFW_KEY_W)) toggleWireframe(state);
     if (keyPressed(GLFW_KEY_N)) toggleNormals(state);
     if (keyPressed(GLFW_KEY_I)) toggleProbeTool();
+    if (keyPressed(GLFW_KEY_B)) state.plots.open = !state.plots.open;
     if (keyPressed(GLFW_KEY_F12)) requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
 }
 

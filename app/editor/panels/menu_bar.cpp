@@ -76,6 +76,7 @@ void drawViewMenu(EditorState& state) {
     if (ImGui::MenuItem("Wireframe overlay", "W", overlays.wireframe)) toggleWireframe(state);
     if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
     if (ImGui::MenuItem("Surface probe (Shift+click)", "I", probeToolOn())) toggleProbeTool();
+    ImGui::MenuItem("BRDF and Fresnel plots", "B", &state.plots.open);
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);

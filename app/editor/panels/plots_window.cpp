@@ -1,0 +1,142 @@
+// The Plots window (see plots_window.h): the incidence slider, pinned materials, and the four
+// plots in a 2×2 grid; the lobe turns when dragged.
+#include "editor/panels/plots_window.h"
+
+#include <algorithm>
+#include <string>
+
+#include <imgui.h>
+
+#include "editor/editor_state.h"
+
+namespace glint {
+namespace {
+
+// The selected object's material first, then the pinned ones (each once); .brdf materials left out.
+std::vector<PlotMaterial> plotsWindowMaterials(const EditorState& state, std::vector<std::string>& leftOut) {
+    const Scene& scene = state.session.scene();
+    std::vector<int> indices;
+    if (state.selectedObject >= 0 && state.selectedObject < static_cast<int>(scene.objects.size()))
+        indices.push_back(scene.objects[state.selectedObject].materialIndex);
+    for (int pinned : state.plots.pinnedMaterials)
+        if (std::find(indices.begin(), indices.end(), pinned) == indices.end()) indices.push_back(pinned);
+    std::vector<PlotMaterial> materials;
+    for (int index : indices) {
+        if (index < 0 || index >= static_cast<int>(scene.materials.size())) continue;
+        if (auto material = plotMaterialFrom(scene.materials[index])) materials.push_back(std::move(*material));
+        else leftOut.push_back(scene.materials[index].name);
+    }
+    return materials;
+}
+
+bool samePlotMaterials(const std::vector<PlotMaterial>& a, const std::vector<PlotMaterial>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].name != b[i].name || a[i].model != b[i].model || a[i].values != b[i].values) return false;
+    return true;
+}
+
+void refreshPlotsCache(PlotsWindowState& plots, std::vector<PlotMaterial> materials) {
+    if (plots.cachedIncidence == plots.incidenceDegrees && plots.cachedFromInside == plots.fresnelFromInside &&
+        samePlotMaterials(plots.cachedMaterials, materials))
+        return;
+    plots.plotted.clear();
+    plots.fresnel.reset();
+    for (size_t i = 0; i < materials.size(); ++i) {
+        plots.plotted.push_back(computePlottedMaterial(materials[i], plotSeriesColour(static_cast<int>(i)), plots.incidenceDegrees));
+        if (!plots.fresnel)
+            if (auto index = materialComplexIndex(materials[i])) {
+                plots.fresnel = fresnelCurves(*index, plots.fresnelFromInside);
+                plots.fresnelName = materials[i].name;
+            }
+    }
+    plots.cachedMaterials = std::move(materials);
+    plots.cachedIncidence = plots.incidenceDegrees;
+    plots.cachedFromInside = plots.fresnelFromInside;
+}
+
+void drawPlotsPinning(EditorState& state) {
+    const Scene& scene = state.session.scene();
+    std::vector<int>& pinned = state.plots.pinnedMaterials;
+    pinned.erase(std::remove_if(pinned.begin(), pinned.end(),
+                                [&](int index) { return index < 0 || index >= static_cast<int>(scene.materials.size()); }),
+                 pinned.end());
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
+    if (ImGui::BeginCombo("##pin", "Pin a material…")) {
+        for (int index = 0; index < static_cast<int>(scene.materials.size()); ++index) {
+            const bool isPinned = std::find(pinned.begin(), pinned.end(), index) != pinned.end();
+            if (ImGui::Selectable(scene.materials[index].name.c_str(), isPinned)) {
+                if (isPinned) pinned.erase(std::find(pinned.begin(), pinned.end(), index));
+                else pinned.push_back(index);
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Overlay other materials of the scene (click again to unpin)");
+}
+
+std::string gPlotsIncidenceRefusal;  // why a typed incidence angle was refused (one Plots window)
+
+}  // namespace
+
+void drawPlotsWindow(EditorState& state) {
+    PlotsWindowState& plots = state.plots;
+    if (!plots.open) return;
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 44.0f, ImGui::GetFontSize() * 34.0f), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("BRDF and Fresnel plots", &plots.open)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
+    float typedIncidence = plots.incidenceDegrees;
+    ImGui::SliderFloat("Incidence θ_i", &typedIncidence, 0.0f, 90.0f, "%.0f°");
+    if (typedIncidence >= 0.0f && typedIncidence <= 90.0f) {
+        if (typedIncidence != plots.incidenceDegrees) gPlotsIncidenceRefusal.clear();
+        plots.incidenceDegrees = typedIncidence;
+    } else {  // a typed NaN or 120°: refused, and said why
+        gPlotsIncidenceRefusal = "Incidence θ_i must be between 0° and 90°; kept " + std::to_string(static_cast<int>(plots.incidenceDegrees)) + "°";
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Angle of the light from the normal, 0–90° (Ctrl+click to type)");
+    drawPlotsPinning(state);
+    ImGui::SameLine();
+    ImGui::Checkbox("Fresnel from inside", &plots.fresnelFromInside);
+    if (!gPlotsIncidenceRefusal.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", gPlotsIncidenceRefusal.c_str());
+    std::vector<std::string> leftOut;
+    refreshPlotsCache(plots, plotsWindowMaterials(state, leftOut));
+    for (const std::string& name : leftOut)
+        ImGui::TextDisabled("%s: a .brdf shader runs only on the GPU; it cannot be plotted", name.c_str());
+
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    const ImVec2 cell(std::max(available.x * 0.5f - 4.0f, 60.0f), std::max(available.y * 0.5f - 4.0f, 60.0f));
+    ImDrawList* drawList = ImGui::GetWindowDrawList();
+    auto nextCell = [&](const char* id, bool sameLine) {
+        if (sameLine) ImGui::SameLine();
+        const ImVec2 topLeft = ImGui::GetCursorScreenPos();
+        ImGui::InvisibleButton(id, cell);
+        return topLeft;
+    };
+    ImVec2 at = nextCell("polar", false);
+    drawPolarPlot(drawList, at, ImVec2(at.x + cell.x, at.y + cell.y), plots.plotted);
+    at = nextCell("lobe", true);
+    if (ImGui::IsItemActive()) {  // drag to turn the lobe
+        const ImVec2 delta = ImGui::GetIO().MouseDelta;
+        plots.lobeYaw += delta.x * 0.01f;
+        plots.lobePitch = std::clamp(plots.lobePitch + delta.y * 0.01f, -1.5f, 1.5f);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to turn the lobe");
+    drawLobePlot(drawList, at, ImVec2(at.x + cell.x, at.y + cell.y), plots.plotted, plots.lobeYaw, plots.lobePitch);
+    at = nextCell("albedo", false);
+    drawAlbedoPlot(drawList, at, ImVec2(at.x + cell.x, at.y + cell.y), plots.plotted);
+    at = nextCell("fresnel", true);
+    if (plots.fresnel) {
+        drawFresnelPlot(drawList, at, ImVec2(at.x + cell.x, at.y + cell.y), *plots.fresnel, plots.fresnelName);
+    } else {
+        drawList->AddRectFilled(at, ImVec2(at.x + cell.x, at.y + cell.y), IM_COL32(18, 20, 26, 235), 4.0f);
+        drawList->AddText(ImVec2(at.x + 6, at.y + 4), IM_COL32(225, 228, 235, 255),
+                          "Fresnel: no plotted material has an index n (+ iκ)");
+    }
+    ImGui::End();
+}
+
+}  // namespace glint

@@ -1,0 +1,32 @@
+// The editor's Plots window (View ▸ BRDF and Fresnel plots, key B): the classroom plots of the
+// selected object's material and of materials pinned to the plot, live with their parameters.
+// Holds the window's state and its cache; the drawing itself is app/classroom/brdf_plots.h.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "classroom/brdf_plots.h"
+
+namespace glint {
+
+struct EditorState;
+
+struct PlotsWindowState {
+    bool open = false;
+    float incidenceDegrees = 45.0f;
+    bool fresnelFromInside = false;
+    float lobeYaw = -0.6f, lobePitch = 0.45f;  // [rad], turned by dragging the lobe
+    std::vector<int> pinnedMaterials;          // indices into the scene's materials
+    // Cache: recomputed only when a plotted material or the angle changes.
+    std::vector<PlotMaterial> cachedMaterials;
+    float cachedIncidence = -1.0f;
+    bool cachedFromInside = false;
+    std::vector<PlottedMaterial> plotted;
+    std::optional<FresnelCurves> fresnel;
+    std::string fresnelName;
+};
+
+void drawPlotsWindow(EditorState& state);
+
+}  // namespace glint

@@ -1,0 +1,73 @@
+// The classroom Fresnel curves (see fresnel_curves.h): brdf/fresnel.h's exact equations and
+// Schlick's approximation sampled against angle, and the marked angles per channel.
+#include "classroom/fresnel_curves.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "brdf/fresnel.h"
+#include "math/constants.h"
+
+namespace glint {
+namespace {
+
+constexpr float kFresnelDegrees = kPi / 180.0f;
+
+glm::vec3 fresnelParamValue(const PlotMaterial& material, std::string_view name, glm::vec3 fallback) {
+    const auto table = modelInfo(material.model).params;
+    const int index = findParam(table, name);
+    if (index < 0) return fallback;
+    const int offset = packedOffset(table, index);
+    if (offset < 0 || offset >= static_cast<int>(material.values.size())) return fallback;
+    if (componentCount(table[index].kind) == 1) return glm::vec3(material.values[offset]);
+    if (offset + 2 >= static_cast<int>(material.values.size())) return fallback;
+    return {material.values[offset], material.values[offset + 1], material.values[offset + 2]};
+}
+
+}  // namespace
+
+std::optional<ComplexIndex> materialComplexIndex(const PlotMaterial& material) {
+    if (findParam(modelInfo(material.model).params, "ior") < 0) return std::nullopt;
+    return ComplexIndex{fresnelParamValue(material, "ior", glm::vec3(1.5f)),
+                        fresnelParamValue(material, "extinction", glm::vec3(0.0f))};
+}
+
+FresnelCurves fresnelCurves(const ComplexIndex& index, bool fromInside, int angleCount) {
+    FresnelCurves curves;
+    curves.index = index;
+    curves.fromInside = fromInside;
+    angleCount = std::max(angleCount, 2);
+    for (int i = 0; i < angleCount; ++i)
+        curves.angleDegrees.push_back(90.0f * static_cast<float>(i) / static_cast<float>(angleCount - 1));
+    for (int c = 0; c < 3; ++c) {
+        FresnelChannelCurves& channel = curves.channels[c];
+        const bool conductor = index.k[c] != 0.0f;
+        const float eta = fromInside && !conductor ? 1.0f / index.n[c] : index.n[c];
+        channel.relativeIndex = eta;
+        // F0 = ((n−1)² + κ²)/((n+1)² + κ²) is the same from either side of a dielectric interface.
+        const float f0 = fresnelF0(glm::vec3(index.n[c]), glm::vec3(index.k[c])).x;
+        if (!conductor) {
+            channel.brewsterDegrees = brewsterAngle(eta) / kFresnelDegrees;
+            if (eta < 1.0f) channel.criticalDegrees = criticalAngle(eta) / kFresnelDegrees;
+        }
+        for (float degrees : curves.angleDegrees) {
+            const float cosIncident = std::cos(degrees * kFresnelDegrees);
+            const Polarised polarised = conductor ? fresnelConductorPolarised(cosIncident, index.n[c], index.k[c])
+                                                  : fresnelDielectricPolarised(cosIncident, eta);
+            // Schlick from the dense side takes cos θ_t (Real-Time Rendering, 4th ed., §9.5.1);
+            // beyond the critical angle it is 1, as the exact equations.
+            float schlickCos = cosIncident;
+            if (!conductor && eta < 1.0f) {
+                const float sin2Transmitted = (1.0f - cosIncident * cosIncident) / (eta * eta);
+                schlickCos = sin2Transmitted >= 1.0f ? 0.0f : std::sqrt(1.0f - sin2Transmitted);
+            }
+            channel.s.push_back(polarised.s);
+            channel.p.push_back(polarised.p);
+            channel.unpolarised.push_back(polarised.unpolarised());
+            channel.schlick.push_back(fresnelSchlick(glm::vec3(f0), schlickCos).x);
+        }
+    }
+    return curves;
+}
+
+}  // namespace glint
