@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "cli/brdf_probe.h"
+#include "cli/classroom_options.h"
 #include "cli/headless.h"
 #include "display/display_chain.h"
 #include "render/reference_renderer.h"
@@ -23,7 +24,8 @@ constexpr const char* kUsage =
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
     "  --reference        render with the CPU reference ray caster instead of OpenGL\n"
     "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
-    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n";
+    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
+    "Classroom (README \"Classroom: compare and display chain\"):\n";
 
 struct RenderOptions {
     std::string scenePath, outputPath;
@@ -32,8 +34,15 @@ struct RenderOptions {
     bool wireframe = false, normals = false;
 };
 
+// The compare panes of `scene` rendered and composited (app/classroom/compare_render.h).
+Result<RenderedImages> renderCompareView(const ClassroomOptions& classroom, const Scene& scene, Renderer& renderer, int width, int height) {
+    auto panes = classroom.paneScenes(scene);
+    if (!panes) return panes.error();
+    return renderCompare(renderer, *panes, classroom.chosenLayout(), width, height, classroom.divider.value_or(0.5f));
+}
+
 int usageError(const std::string& message) {
-    std::fprintf(stderr, "glint render: %s\n%s", message.c_str(), kUsage);
+    std::fprintf(stderr, "glint render: %s\n%s%s", message.c_str(), kUsage, kClassroomUsage);
     return 2;
 }
 
@@ -41,11 +50,13 @@ int usageError(const std::string& message) {
 
 int runRenderCommand(const std::vector<std::string>& arguments) {
     RenderOptions options;
+    ClassroomOptions classroom;  // display lessons and compare views (classroom_options.h)
+    std::string classroomError;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& argument = arguments[i];
         auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
         if (argument == "-h" || argument == "--help") {
-            std::printf("%s", kUsage);
+            std::printf("%s%s", kUsage, kClassroomUsage);
             return 0;
         } else if (argument == "-o" || argument == "--output") {
             const std::string* value = next();
@@ -72,6 +83,9 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             options.wireframe = true;
         } else if (argument == "--normals") {
             options.normals = true;
+        } else if (const auto parsed = classroom.parse(arguments, i, classroomError);
+                   parsed != ClassroomOptions::Parsed::NotClassroom) {
+            if (parsed == ClassroomOptions::Parsed::Refused) return usageError(classroomError);
         } else if (!argument.empty() && argument[0] == '-') {
             return usageError("unknown option " + argument);
         } else if (options.scenePath.empty()) {
@@ -84,6 +98,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
+    if (const std::string contradiction = classroom.check(); !contradiction.empty()) return usageError(contradiction);
+    if (options.reference && classroom.comparing()) return usageError("the compare views are drawn by the OpenGL renderer, not with --reference");
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
     // A material, interchange or .brdf file renders on the preview stage.
@@ -97,6 +113,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.msaa > 0) scene->msaaSamples = options.msaa;
     scene->display.overlays.wireframe |= options.wireframe;
     scene->display.overlays.normals |= options.normals;
+    classroom.applyDisplay(*scene);
     const int width = options.width > 0 ? options.width : scene->width;
     const int height = options.height > 0 ? options.height : scene->height;
 
@@ -119,7 +136,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             std::fprintf(stderr, "glint render: %s\n", headless.error().format().c_str());
             return 2;
         }
-        auto rendered = (*headless)->render(*scene, width, height);
+        auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, (*headless)->renderer(), width, height)
+                                              : (*headless)->render(*scene, width, height);
         if (!rendered) {
             std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
             return 2;

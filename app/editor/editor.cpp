@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "classroom/compare_view.h"
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
 #include "editor/custom_brdf_editor.h"
@@ -203,6 +204,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
         drawMeshLoadDialog(state);
+        drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
         ViewportRect viewport;
         viewport.x = state.showLeftPanel ? state.leftPanelWidth : 0.0f;
@@ -225,6 +227,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         // While a gesture changes the scene, a frame that would take longer than 33 ms is drawn
         // at reduced resolution; the full-resolution frame follows when the gesture ends.
         const int wantedScale = gesture ? previewScale(fullResolutionMilliseconds) : 1;
+        if (updateCompareView(state, renderer)) renderedSize = {0, 0};  // the compare panes used the renderer
         const bool changed = state.session.revision() != renderedRevision;
         const bool renderedThisFrame = viewportPixels != renderedSize || changed || (!gesture && renderedScale != 1);
         if (renderedThisFrame) {

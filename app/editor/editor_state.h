@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "classroom/compare_view.h"
 #include "edit/edit_session.h"
 #include "edit/recovery.h"
 #include "editor/custom_brdf_state.h"
@@ -33,6 +34,7 @@ struct EditorState {
     bool showHelp = false;
     std::string materialPanelMessage;
     std::string lightPanelMessage;  // a typed value the material panel refused, and why
+    std::string displayPanelMessage;  // a typed gamma or level count the display panel refused
 
     // Figures for the status bar.
     double lastRenderMilliseconds = 0.0;
@@ -65,6 +67,7 @@ struct EditorState {
     double lastAutosaveSeconds = -1e9;  // glfwGetTime() of the last recovery write
     bool wroteRecovery = false;         // the recovery file on disk is this editor's
 
+    CompareViewState compare;  // the classroom's Compare window (classroom/compare_view.h)
     CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
 };
 

@@ -69,6 +69,9 @@ void drawViewMenu(EditorState& state) {
     const OverlaySettings& overlays = state.session.scene().display.overlays;
     if (ImGui::MenuItem("Wireframe overlay", "W", overlays.wireframe)) toggleWireframe(state);
     if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
+    ImGui::Separator();  // the classroom's compare views (classroom/compare_view.h)
+    if (ImGui::MenuItem("Compare materials…")) openCompareView(state, false);
+    if (ImGui::MenuItem("Shading interpolation…")) openCompareView(state, true);
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
