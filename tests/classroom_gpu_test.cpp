@@ -7,7 +7,7 @@
 #include "classroom/compare_render.h"
 #include "cli/classroom_options.h"
 #include "display/display_chain.h"
-#include "golden_test_support.h"
+#include "golden_support.h"
 #include "gpu_test_support.h"
 #include "scene/scene_json.h"
 #include "test_support.h"

@@ -3,8 +3,10 @@
 // beside the test's output. Goldens change only with GLINT_UPDATE_GOLDENS=1.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
+#include "golden_support.h"
 #include "gpu_test_support.h"
-#include "golden_test_support.h"
 #include "brdf/presets.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
@@ -13,7 +15,7 @@
 namespace glint {
 namespace {
 
-using test::expectMatchesGolden;  // golden_test_support.h
+using test::expectMatchesGolden;
 
 TEST(Snapshot, LambertSun) {
     auto images = test::sharedHeadless().render(test::loadTestScene("scenes/lambert_sun.json"), 256, 256);

@@ -15,6 +15,7 @@
 #include "interchange/base64.h"
 #include "interchange/material_values.h"
 #include "light/photometry.h"
+#include "scene/json_vectors.h"
 
 namespace glint {
 namespace {
@@ -71,7 +72,6 @@ void addSphere(json& gltf) {
 
 // --- material -------------------------------------------------------------------------------
 
-json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
 
 // Glint → glTF: Cook-Torrance with κ = 0 is a dielectric (baseColor = ρ_d, ior = n); with κ > 0
 // a metal (baseColor = F0 of n + iκ); glass is a transmitting dielectric with volume absorption.

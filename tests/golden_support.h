@@ -1,6 +1,7 @@
-// The snapshot golden check shared by the GPU test files: an 8-bit image against
-// tests/goldens/<name>.png with DESIGN.md's tolerance; on failure the actual, expected and ×16
-// difference images are written beside the test output. Goldens change only with GLINT_UPDATE_GOLDENS=1.
+// Golden-image checks shared by the GPU test files: a display image compared with
+// tests/goldens/NAME.png under DESIGN.md's tolerance; on failure the actual, expected and ×16
+// difference images are written to the test output directory. Goldens change only with
+// GLINT_UPDATE_GOLDENS=1.
 #pragma once
 
 #include <cstdio>
