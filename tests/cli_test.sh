@@ -100,6 +100,20 @@ if "$glint" presets >"$out/presets.stdout" && grep -q "^gold .*cook_torrance.*Jo
 else
   echo "FAIL presets: no list or no material file"; failures=$((failures + 1))
 fi
+# Classroom: display lessons and compare views (README "Classroom: compare and display chain").
+sun="$here/scenes/lambert_sun.json"
+expect_error bad_levels "--levels needs a whole number in \[2, 256\]" -- render "$sun" -o "$out/x.png" --levels 1
+expect_error bad_dither "--dither needs none, bayer2, bayer4 or halftone" -- render "$sun" -o "$out/x.png" --dither floyd
+expect_error compare_one_pane "--compare needs 2 to 4" -- render "$sun" -o "$out/x.png" --compare only.json
+expect_error compare_missing_material "/no/such/material\.json" -- render "$sun" -o "$out/x.png" --compare /no/such/material.json,preset:gold
+expect_error compare_reference "compare views are drawn by the OpenGL renderer" -- render "$sun" -o "$out/x.png" --compare preset:gold,preset:copper --reference
+if "$glint" render "$sun" -o "$out/compare.png" --size 96x64 --compare preset:gold,preset:copper --levels 8 --dither bayer2 &&
+   "$glint" render "$sun" -o "$out/shading.png" --size 96x48 --compare-interpolation --tessellation 8x4 &&
+   [[ -s "$out/compare.png" && -s "$out/shading.png" ]]; then
+  echo "ok   classroom: split compare with 8 dithered levels, interpolation row"
+else
+  echo "FAIL classroom: no compare image"; failures=$((failures + 1))
+fi
 # No display: plain `glint` renders the default scene headless and says where it went.
 if (cd "$out" && DISPLAY= "$glint" >"$out/nodisplay.stdout") && grep -q "glint-default.png" "$out/nodisplay.stdout" &&
    [[ -s "$out/glint-default.png" ]]; then
@@ -108,5 +122,5 @@ else
   echo "FAIL no display: no headless image"; failures=$((failures + 1))
 fi
 
-echo "$((21 - failures)) passed, $failures failed"
+echo "$((27 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "cli/brdf_probe.h"
+#include "cli/classroom_options.h"
 #include "cli/headless.h"
 #include "classroom/probe_text.h"
 #include "classroom/surface_probe.h"
@@ -51,6 +52,14 @@ struct RenderOptions {
 void printUsage(std::FILE* stream) {
     std::fprintf(stream, "%s", kUsage);
     for (const RenderOverlay& overlay : allRenderOverlays()) std::fprintf(stream, "    %-16s %s\n", overlay.name, overlay.help);
+    std::fprintf(stream, "Classroom (README \"Classroom: compare and display chain\"):\n%s", kClassroomUsage);
+}
+
+// The compare panes of `scene` rendered and composited (app/classroom/compare_render.h).
+Result<RenderedImages> renderCompareView(const ClassroomOptions& classroom, const Scene& scene, Renderer& renderer, int width, int height) {
+    auto panes = classroom.paneScenes(scene);
+    if (!panes) return panes.error();
+    return renderCompare(renderer, *panes, classroom.chosenLayout(), width, height, classroom.divider.value_or(0.5f));
 }
 
 int usageError(const std::string& message) {
@@ -63,6 +72,8 @@ int usageError(const std::string& message) {
 
 int runRenderCommand(const std::vector<std::string>& arguments) {
     RenderOptions options;
+    ClassroomOptions classroom;  // display lessons and compare views (classroom_options.h)
+    std::string classroomError;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& argument = arguments[i];
         auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
@@ -112,6 +123,9 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             const RenderOverlay* overlay = value ? findRenderOverlay(*value) : nullptr;
             if (!overlay) return usageError(value ? "unknown overlay '" + *value + "'" : "--overlay needs a name");
             options.overlays.push_back(overlay);
+        } else if (const auto parsed = classroom.parse(arguments, i, classroomError);
+                   parsed != ClassroomOptions::Parsed::NotClassroom) {
+            if (parsed == ClassroomOptions::Parsed::Refused) return usageError(classroomError);
         } else if (!argument.empty() && argument[0] == '-') {
             return usageError("unknown option " + argument);
         } else if (options.scenePath.empty()) {
@@ -126,6 +140,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
     if (const std::string conflict = plotOverlayConflict(options.plots, options.reference, options.outputPath); !conflict.empty())
         return usageError(conflict);
+    if (const std::string contradiction = classroom.check(); !contradiction.empty()) return usageError(contradiction);
+    if (options.reference && classroom.comparing()) return usageError("the compare views are drawn by the OpenGL renderer, not with --reference");
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
     // A material, interchange or .brdf file renders on the preview stage.
@@ -139,6 +155,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.msaa > 0) scene->msaaSamples = options.msaa;
     scene->display.overlays.wireframe |= options.wireframe;
     scene->display.overlays.normals |= options.normals;
+    classroom.applyDisplay(*scene);
     const int width = options.width > 0 ? options.width : scene->width;
     const int height = options.height > 0 ? options.height : scene->height;
     for (const RenderOverlay* overlay : options.overlays)
@@ -173,7 +190,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         images.radiance = renderReference(*scene, width, height);
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
-        auto rendered = headless->render(*scene, width, height);
+        auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
+                                              : headless->render(*scene, width, height);
         if (!rendered) {
             std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
             return 2;

@@ -20,6 +20,7 @@
 
 #include "classroom/classroom_editor.h"
 #include "classroom/presentation.h"
+#include "classroom/compare_view.h"
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
 #include "editor/custom_brdf_editor.h"
@@ -206,6 +207,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawDialogs(state);
         drawMeshLoadDialog(state);
         drawPlotsWindow(state);
+        drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
         ViewportRect viewport;
         viewport.x = state.showLeftPanel ? state.leftPanelWidth : 0.0f;
@@ -232,6 +234,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         // While a gesture changes the scene, a frame that would take longer than 33 ms is drawn
         // at reduced resolution; the full-resolution frame follows when the gesture ends.
         const int wantedScale = gesture ? previewScale(fullResolutionMilliseconds) : 1;
+        if (updateCompareView(state, renderer)) renderedSize = {0, 0};  // the compare panes used the renderer
         const bool changed = state.session.revision() != renderedRevision;
         const bool renderedThisFrame = viewportPixels != renderedSize || changed || (!gesture && renderedScale != 1);
         if (renderedThisFrame) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "classroom/classroom_state.h"
+#include "classroom/compare_view.h"
 #include "edit/edit_session.h"
 #include "edit/recovery.h"
 #include "editor/custom_brdf_state.h"
@@ -35,6 +36,7 @@ struct EditorState {
     bool showHelp = false;
     std::string materialPanelMessage;
     std::string lightPanelMessage;  // a typed value the material panel refused, and why
+    std::string displayPanelMessage;  // a typed gamma or level count the display panel refused
 
     // Figures for the status bar.
     double lastRenderMilliseconds = 0.0;
@@ -68,6 +70,7 @@ struct EditorState {
     bool wroteRecovery = false;         // the recovery file on disk is this editor's
 
     ClassroomState classroom;  // lessons and the colour windows (app/classroom/)
+    CompareViewState compare;  // the classroom's Compare window (classroom/compare_view.h)
     CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
     PlotsWindowState plots;  // classroom BRDF and Fresnel plots (panels/plots_window.h)
 };

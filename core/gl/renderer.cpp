@@ -33,16 +33,19 @@ bool proxyBeyondNearPlane(const Camera& camera, const SphereShape& sphere) {
 // The display chain's uniforms (shaders/common/display_encode.glsl) of a program that has them.
 void setDisplayUniforms(const ShaderProgram& program, const DisplaySettings& display) {
     glUniform1f(program.uniform("exposureScale"), std::exp2(display.exposureStops));
-    glUniform1i(program.uniform("transfer"), display.transfer == Transfer::Srgb ? 0 : 1);
+    glUniform1i(program.uniform("transfer"), static_cast<int>(display.transfer));  // order of enum Transfer
     glUniform1f(program.uniform("gamma"), display.gamma);
     glUniform1i(program.uniform("toneMap"), static_cast<int>(display.toneMap));
+    glUniform1i(program.uniform("levels"), display.levels);  // display_quantise.glsl
+    glUniform1i(program.uniform("dither"), static_cast<int>(display.dither));
 }
 
 // Same encoding (the overlays are drawn over the encoded image afterwards, fused or not).
 bool sameDisplay(const DisplaySettings& a, const DisplaySettings& b) {
-    static_assert(sizeof(DisplaySettings) == 4 * sizeof(float) + sizeof(OverlaySettings),
+    static_assert(sizeof(DisplaySettings) == 7 * sizeof(float) + sizeof(OverlaySettings),
                   "a new display setting: compare it here");
-    return a.exposureStops == b.exposureStops && a.transfer == b.transfer && a.gamma == b.gamma && a.toneMap == b.toneMap;
+    return a.exposureStops == b.exposureStops && a.transfer == b.transfer && a.gamma == b.gamma && a.toneMap == b.toneMap &&
+           a.levels == b.levels && a.dither == b.dither && a.levelsRamp == b.levelsRamp;
 }
 
 // The radiance passes' half of the fused display (display_output.glsl).
@@ -210,7 +213,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     if (samples > 1) multisampleTarget_.ensure(width, height, samples);
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
     fusedDisplay_.reset();
-    if (fuseDisplay_ && samples == 1) {
+    if (fuseDisplay_ && samples == 1 && !scene.display.levelsRamp) {  // the ramp is drawn by the display pass
         displayTarget_.ensure(width, height, 1);
         fusedDisplay_ = scene.display;
     }
@@ -328,6 +331,7 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
     glUniform2i(program.uniform("sourceOffset"), sourceOffset.x, sourceOffset.y);
     glUniform1i(program.uniform("pixelScale"), pixelScale);
     setDisplayUniforms(program, display);
+    glUniform1i(program.uniform("levelsRamp"), display.levelsRamp ? 1 : 0);
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 
+#include "display/quantisation.h"
 #include "interchange/custom_material_json.h"
 #include "scene/format_migration.h"
 #include "scene/environment_json.h"
@@ -243,7 +244,7 @@ json objectToJson(const SceneObject& object, const std::vector<Material>& materi
 // --- camera, display, output ----------------------------------------------------------------
 
 constexpr const char* kProjections[] = {"perspective", "orthographic"};
-constexpr const char* kTransfers[] = {"srgb", "gamma"};
+constexpr const char* kTransfers[] = {"srgb", "gamma", "linear"};  // order of enum Transfer
 constexpr const char* kToneMaps[] = {"none", "reinhard", "aces"};  // order of enum ToneMap
 
 Camera readCamera(ObjectReader& reader) {
@@ -288,6 +289,10 @@ Scene readScene(const JsonDocument& document) {
         scene.display.transfer = static_cast<Transfer>(display.choice("transfer", kTransfers, 0));
         scene.display.gamma = static_cast<float>(display.number("gamma", scene.display.gamma, Bounds::between(0.1, 10)));
         scene.display.toneMap = static_cast<ToneMap>(display.choice("tone_map", kToneMaps, 0));
+        // Classroom display lessons (display/quantisation.h).
+        scene.display.levels = display.integer("levels", scene.display.levels, 2, 256);
+        scene.display.dither = static_cast<Dither>(display.choice("dither", kDitherIds, 0));
+        scene.display.levelsRamp = display.boolean("levels_ramp", false);
         if (display.has("overlays")) {
             ObjectReader overlays = display.object("overlays");
             scene.display.overlays.wireframe = overlays.boolean("wireframe", false);
@@ -348,6 +353,9 @@ json sceneToJson(const Scene& scene, const std::string& file) {
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
                       {"gamma", scene.display.gamma},
                       {"tone_map", kToneMaps[static_cast<int>(scene.display.toneMap)]}};
+    if (scene.display.levels != 256) out["display"]["levels"] = scene.display.levels;
+    if (scene.display.dither != Dither::None) out["display"]["dither"] = kDitherIds[static_cast<int>(scene.display.dither)];
+    if (scene.display.levelsRamp) out["display"]["levels_ramp"] = true;
     if (const OverlaySettings& overlays = scene.display.overlays; overlays.any() || overlays.normalLength != OverlaySettings{}.normalLength)
         out["display"]["overlays"] = {{"wireframe", overlays.wireframe},
                                       {"normals", overlays.normals},

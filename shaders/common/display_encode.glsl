@@ -1,10 +1,12 @@
-// The display chain in GLSL: radiance → exposure → tone map → clamp → sRGB or gamma → 8-bit
-// quantisation; twin of core/display/display_chain.h (same formulas and citations there). Used by
+// The display chain in GLSL: radiance → exposure → tone map → clamp → sRGB, gamma or none →
+// quantisation to N levels, optionally dithered (display_quantise.glsl); twin of core/display/display_chain.h (same formulas and citations there). Used by
 // the display pass (display.frag) and, fused, by the passes that write radiance
 // (display_output.glsl). It does not read or write any image itself.
 
+#include "common/display_quantise.glsl"
+
 uniform float exposureScale;  // 2^EV
-uniform int transfer;         // 0: sRGB, 1: gamma
+uniform int transfer;         // 0: sRGB, 1: gamma, 2: linear (no encoding)
 uniform float gamma;
 uniform int toneMap;          // 0: none (clip), 1: Reinhard x/(1+x), 2: ACES filmic (Narkowicz 2015)
 
@@ -18,11 +20,12 @@ vec3 applyToneMap(vec3 exposed) {
     return exposed;
 }
 
-// The display-encoded value of a radiance, quantised to the 8-bit level it will be stored as.
-vec3 displayEncode(vec3 value) {
+// The display-encoded value of a radiance at a pixel (counted from the lower-left corner, for the
+// dither), quantised to the 8-bit level it will be stored as.
+vec3 displayEncode(vec3 value, ivec2 pixel) {
     vec3 exposed = clamp(applyToneMap(max(value * exposureScale, 0.0)), 0.0, 1.0);
-    vec3 encoded = transfer == 0
-        ? vec3(encodeSrgb(exposed.r), encodeSrgb(exposed.g), encodeSrgb(exposed.b))
-        : pow(exposed, vec3(1.0 / gamma));
-    return floor(encoded * 255.0 + 0.5) / 255.0;
+    vec3 encoded = transfer == 0 ? vec3(encodeSrgb(exposed.r), encodeSrgb(exposed.g), encodeSrgb(exposed.b))
+                 : transfer == 1 ? pow(exposed, vec3(1.0 / gamma))
+                                 : exposed;
+    return quantiseToLevels(encoded, pixel);
 }

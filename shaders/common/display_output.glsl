@@ -1,7 +1,7 @@
 // The fused display output of the passes that write radiance (surface.frag, background.frag):
 // when the renderer fuses the display chain into the radiance pass (headless, no MSAA), the
 // display-encoded value goes to a second target in the same pass, and the separate display pass
-// (which re-reads the whole float image) is skipped. Declares outRadiance (location 0) and
+// (which re-reads the whole float image) is skipped. Never fused with the levels ramp (display.frag). Declares outRadiance (location 0) and
 // outDisplay (location 1); a pass that writes radiance ends with writeRadiance().
 #include "common/display_encode.glsl"
 
@@ -11,5 +11,5 @@ uniform bool fusedDisplay;  // false: no second target is bound, the display pas
 
 void writeRadiance(vec3 radiance) {
     outRadiance = vec4(radiance, 1.0);
-    if (fusedDisplay) outDisplay = vec4(displayEncode(radiance), 1.0);
+    if (fusedDisplay) outDisplay = vec4(displayEncode(radiance, ivec2(gl_FragCoord.xy)), 1.0);
 }

@@ -1,5 +1,6 @@
 // The display section: exposure (stops), tone map (none, Reinhard, ACES filmic), the transfer
-// function (sRGB or a pure gamma), and the background (a constant radiance or the sky
+// function (sRGB, a pure gamma, or none), the classroom's intensity levels, ordered dither and
+// levels ramp (core/display/quantisation.h), and the background (a constant radiance or the sky
 // gradient), then the Environment section (environment_section.cpp). Each change goes through
 // the edit API.
 #include <imgui.h>
@@ -10,6 +11,29 @@
 #include "editor/panels/widgets.h"
 
 namespace glint {
+namespace {
+
+// Levels, dither and the ramp strip (the classroom's display lessons); true when one changed.
+bool drawQuantisationWidgets(DisplaySettings& display, std::string& refusal) {
+    bool changed = false;
+    int levels = display.levels;
+    if (ImGui::SliderInt("Levels", &levels, 2, 256)) {
+        if (levels >= 2 && levels <= 256) display.levels = levels, changed = true, refusal.clear();
+        else refusal = "Levels: " + std::to_string(levels) + " refused; it must lie in [2, 256]";
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Intensity levels per channel after encoding (256: ordinary 8-bit output)");
+    int dither = static_cast<int>(display.dither);
+    if (ImGui::Combo("Dither", &dither, "none\0Bayer 2x2\0Bayer 4x4\0halftone (clustered dot)\0")) {
+        display.dither = static_cast<Dither>(dither);
+        changed = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ordered dither added before quantising to the levels (Bayer 1973; clustered-dot screen)");
+    changed |= ImGui::Checkbox("Levels ramp", &display.levelsRamp);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Bottom eighth of the image: a grey radiance ramp 0..1 through the same chain");
+    return changed;
+}
+
+}  // namespace
 
 void drawDisplaySection(EditorState& state) {
     const Scene& scene = state.session.scene();
@@ -24,17 +48,16 @@ void drawDisplaySection(EditorState& state) {
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("none: values above 1 clip · Reinhard: x/(1+x) · ACES filmic: Narkowicz's 2015 fit");
-    int transfer = display.transfer == Transfer::Srgb ? 0 : 1;
-    if (ImGui::Combo("Encoding", &transfer, "sRGB\0gamma\0")) {
-        display.transfer = transfer == 0 ? Transfer::Srgb : Transfer::Gamma;
+    int transfer = static_cast<int>(display.transfer);
+    if (ImGui::Combo("Encoding", &transfer, "sRGB\0gamma\0linear (gamma off)\0")) {
+        display.transfer = static_cast<Transfer>(transfer);
         changed = true;
     }
-    if (display.transfer == Transfer::Gamma) {
-        float gamma = display.gamma;
-        if (ImGui::SliderFloat("Gamma", &gamma, 1.0f, 3.0f, "%.2f")) {
-            if (gamma > 0.0f && std::isfinite(gamma)) display.gamma = gamma, changed = true;
-        }
-    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("sRGB: IEC 61966-2-1 · gamma: value^(1/γ) · linear: no encoding");
+    if (display.transfer == Transfer::Gamma)
+        changed |= boundedDrag("Gamma", display.gamma, 0.1f, 10.0f, "%.2f", state.displayPanelMessage, "γ: the encoded value is value^(1/γ)");
+    changed |= drawQuantisationWidgets(display, state.displayPanelMessage);
+    if (!state.displayPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.displayPanelMessage.c_str());
     if (changed) state.session.change("Edit display").display = display;
 
     Background background = scene.background;

@@ -77,6 +77,9 @@ void drawViewMenu(EditorState& state) {
     if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
     if (ImGui::MenuItem("Surface probe (Shift+click)", "I", probeToolOn())) toggleProbeTool();
     ImGui::MenuItem("BRDF and Fresnel plots", "B", &state.plots.open);
+    ImGui::Separator();  // the classroom's compare views (classroom/compare_view.h)
+    if (ImGui::MenuItem("Compare materials…")) openCompareView(state, false);
+    if (ImGui::MenuItem("Shading interpolation…")) openCompareView(state, true);
     ImGui::Separator();
     float scale = state.settings.uiScale;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
