@@ -10,6 +10,7 @@
 #include "math/frame.h"
 #include "environment/environment_lighting.h"
 #include "render/environment_sampling.h"
+#include "render/measured_shading.h"
 #include "render/shadow_rays.h"
 #include "render/specular_transport.h"
 #include "texture/texture_eval.h"
@@ -114,12 +115,17 @@ glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsV
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
         const float visibility = lightVisibility(scene, light, hit, arrival);
         if (visibility == 0.0f) continue;
-        radiance += evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame) *
-                    arrival.normalIrradiance * cosTheta;
+        const glm::vec3 brdf = material.measured ? evalMeasuredBrdf(*material.measured, arrival.towardsLight, towardsViewer, frame)
+                                                 : evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame);
+        radiance += brdf * arrival.normalIrradiance * cosTheta;
     }
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
+    if (material.measured) {  // a MERL table: measured_shading.h (no delta lobes)
+        return radiance + measuredAmbientReflectance(*material.measured, towardsViewer, frame) * ambient +
+               measuredEnvironmentLighting(*material.measured, towardsViewer, frame, scene.environment);
+    }
     radiance += ambientReflectance(material.model, values, towardsViewer, frame) * ambient;
     // Environment light: the GPU's image-based lighting, or sampled.
     radiance += options.sampleEnvironment

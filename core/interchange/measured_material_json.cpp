@@ -1,0 +1,44 @@
+// MERL materials in JSON (see measured_material_json.h).
+#include "interchange/measured_material_json.h"
+
+#include <filesystem>
+#include <system_error>
+
+#include "interchange/measured_brdf.h"
+
+namespace glint {
+
+namespace fs = std::filesystem;
+
+Material readMeasuredMaterial(ObjectReader& reader, std::string name) {
+    const std::string model = reader.requiredString("model");
+    if (model != kMeasuredModelId)
+        reader.fail("model", "a material with \"merl_file\" has \"model\": \"merl\", not \"" + model + "\"");
+    const std::string written = reader.requiredString("merl_file");
+    fs::path path(written);
+    if (path.is_relative() && !reader.file().empty()) path = fs::path(reader.file()).parent_path() / path;
+    path = path.lexically_normal();  // "a/b/../x" is a/x even where a/b does not exist
+    std::error_code error;
+    if (!fs::is_regular_file(path, error))  // never a device or a fifo
+        reader.fail("merl_file", "'" + path.string() + "' is not a readable MERL .binary file");
+    auto brdf = loadMeasuredBrdf(path.string());
+    if (!brdf) reader.fail("merl_file", "cannot use '" + written + "': " + brdf.error().format());
+    Material material = measuredBrdfMaterial(std::move(*brdf));
+    material.name = std::move(name);
+    static constexpr const char* kKnown[] = {"name", "model", "format", "version", "merl_file"};
+    reader.rejectUnknownKeys(kKnown);
+    return material;
+}
+
+nlohmann::json measuredMaterialBody(const Material& material, const std::string& savedTo) {
+    std::string path = material.measured->path;
+    if (!savedTo.empty()) {
+        std::error_code error;
+        const fs::path base = fs::absolute(savedTo, error).parent_path();
+        const fs::path relative = fs::absolute(path, error).lexically_relative(base);
+        if (!relative.empty()) path = relative.generic_string();
+    }
+    return {{"name", material.name}, {"model", kMeasuredModelId}, {"merl_file", path}};
+}
+
+}  // namespace glint
