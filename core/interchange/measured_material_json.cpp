@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "interchange/measured_brdf.h"
+#include "util/referenced_path.h"
 
 namespace glint {
 
@@ -15,9 +16,7 @@ Material readMeasuredMaterial(ObjectReader& reader, std::string name) {
     if (model != kMeasuredModelId)
         reader.fail("model", "a material with \"merl_file\" has \"model\": \"merl\", not \"" + model + "\"");
     const std::string written = reader.requiredString("merl_file");
-    fs::path path(written);
-    if (path.is_relative() && !reader.file().empty()) path = fs::path(reader.file()).parent_path() / path;
-    path = path.lexically_normal();  // "a/b/../x" is a/x even where a/b does not exist
+    const fs::path path = resolveReferencedPath(written, reader.file());
     std::error_code error;
     if (!fs::is_regular_file(path, error))  // never a device or a fifo
         reader.fail("merl_file", "'" + path.string() + "' is not a readable MERL .binary file");
@@ -31,14 +30,7 @@ Material readMeasuredMaterial(ObjectReader& reader, std::string name) {
 }
 
 nlohmann::json measuredMaterialBody(const Material& material, const std::string& savedTo) {
-    std::string path = material.measured->path;
-    if (!savedTo.empty()) {
-        std::error_code error;
-        const fs::path base = fs::absolute(savedTo, error).parent_path();
-        const fs::path relative = fs::absolute(path, error).lexically_relative(base);
-        if (!relative.empty()) path = relative.generic_string();
-    }
-    return {{"name", material.name}, {"model", kMeasuredModelId}, {"merl_file", path}};
+    return {{"name", material.name}, {"model", kMeasuredModelId}, {"merl_file", referencedPathFor(material.measured->path, savedTo)}};
 }
 
 }  // namespace glint
