@@ -7,12 +7,15 @@
 #include <vector>
 
 #include "cli/bench_command.h"
+#include "cli/cmf_command.h"
 #include "cli/brdf_probe.h"
 #include "cli/headless.h"
 #include "cli/export_command.h"
+#include "cli/lessons_command.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
 #include "cli/snapshot_command.h"
+#include "cli/spectral_command.h"
 #include "cli/thumbnails_command.h"
 #include "editor/editor.h"
 #include "geometry/mesh_import.h"
@@ -39,6 +42,12 @@ constexpr const char* kUsage =
     "                              write a material (file, scene, .mtl or .gltf) as .mtl or glTF\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
+    "  glint lessons [LIST.json] [--check] [--render DIR]\n"
+    "                              list the classroom lessons, check that they load, or render them\n"
+    "  glint spectral SCENE.json -o OUT.png|OUT.exr [--band NM,FWHM] [--cauchy-b B] [--wavelengths N]\n"
+    "                              render per wavelength (CPU) and convert through the CIE 1931 matching functions\n"
+    "  glint cmf -o OUT.png [--size WxH]\n"
+    "                              plot the CIE 1931 colour matching functions headless\n"
     "  glint --help | --version\n"
     "\n"
     "With no display, `glint [SCENE]` renders the scene headless to glint-<name>.png.\n";
@@ -85,6 +94,12 @@ int main(int argc, char** argv) {
         return glint::runExportCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")
         return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "cmf")
+        return glint::runCmfCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "spectral")
+        return glint::runSpectralCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "lessons")
+        return glint::runLessonsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && (arguments[0] == "-h" || arguments[0] == "--help")) {
         std::printf("%s", kUsage);
         return 0;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `glint bench` from outside: a --quick run writes a table and JSON of the documented shape (every
-# standard scene with positive timings and a ratio to the bare pass; cold start, thumbnails, peak
-# memory), and bad options are refused with exit code 2 and a message. It does not judge the
+# standard scene with positive timings and a ratio to the bare pass; cold start, thumbnails, mesh
+# load, peak memory), and bad options are refused with exit code 2 and a message. It does not judge the
 # figures themselves (they depend on the machine). usage: bench_test.sh GLINT OUTDIR
 set -euo pipefail
 glint=$1
@@ -34,6 +34,9 @@ start=$(date +%s)
 echo "glint bench --quick took $(( $(date +%s) - start )) s"
 grep -q "^lambert/4 .*diffuse" "$out/bench.txt"
 grep -q "^cold start" "$out/bench.txt"
+grep -q "^mesh load" "$out/bench.txt"
+grep -q "^ggx_studio/0 .*environment" "$out/bench.txt"
+grep -q "^mesh_1m_studio_shadows/2 .*combined" "$out/bench.txt"
 
 /usr/bin/python3 - "$out/bench.json" "$out/list.txt" <<'PY'
 import json, sys
@@ -48,9 +51,11 @@ for scene in bench["scenes"]:
         timing = scene[key]
         assert 0 < timing["min"] <= timing["q1"] <= timing["median"] <= timing["q3"] <= timing["max"], (scene["name"], key, timing)
     assert abs(scene["ratio"] - scene["frame_ms"]["median"] / scene["bare_ms"]["median"]) < 1e-9, scene["name"]
-    assert scene["family"] in ("diffuse", "phong", "microfacet", "anisotropic", "retroreflective", "specular", "mesh"), scene["family"]
+    assert scene["family"] in ("diffuse", "phong", "microfacet", "anisotropic", "retroreflective", "specular", "mesh",
+                               "environment", "shadows", "combined"), scene["family"]
 assert bench["cold_start_ms"]["median"] > 0 and bench["cold_start_runs"] == 3 and bench["cold_start_peak_mb"] > 0
 assert bench["thumbnails"] == 8 and bench["thumbnails_per_second"] > 0
+assert bench["mesh_triangles"] > 900000 and bench["mesh_load_ms"]["median"] > 0
 assert bench["peak_memory_mb"] > 0 and bench["renderer"]
 print("bench JSON: %d scenes, shape as documented" % len(bench["scenes"]))
 PY

@@ -9,7 +9,7 @@
 #include "editor/interchange_export.h"
 #include "interchange/gltf.h"
 #include "interchange/mtl.h"
-#include "interchange/merl.h"
+#include "interchange/measured_brdf.h"
 #include "scene/scene_json.h"
 #include "editor_test_support.h"
 

@@ -19,7 +19,7 @@ namespace {
 
 using nlohmann::json;
 
-ImportedFile parseOk(const std::string& text) {
+ImportedFile parseGltfOk(const std::string& text) {
     auto parsed = parseGltf(text, "test.gltf");
     EXPECT_TRUE(parsed.ok()) << (parsed ? "" : parsed.error().format());
     return parsed ? *parsed : ImportedFile{};
@@ -36,7 +36,7 @@ bool hasWarning(const std::vector<Diagnostic>& warnings, const std::string& frag
 }
 
 TEST(Gltf, DielectricMapsToGgxSmithSchlickCookTorrance) {
-    const ImportedFile file = parseOk(withMaterial(
+    const ImportedFile file = parseGltfOk(withMaterial(
         {{"name", "blue plastic"},
          {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
          {"extensions", {{"KHR_materials_ior", {{"ior", 1.4}}}}}}));
@@ -55,7 +55,7 @@ TEST(Gltf, DielectricMapsToGgxSmithSchlickCookTorrance) {
 }
 
 TEST(Gltf, MetalAndSpecularGiveTheRightNormalReflectance) {
-    const ImportedFile metal = parseOk(withMaterial(
+    const ImportedFile metal = parseGltfOk(withMaterial(
         {{"pbrMetallicRoughness", {{"baseColorFactor", {0.95, 0.64, 0.54, 1.0}}, {"metallicFactor", 1.0}, {"roughnessFactor", 0.3}}}}));
     const Material& copper = metal.materials[0].material;
     EXPECT_EQ(paramValue(copper, "diffuse_albedo"), glm::vec3(0.0f));
@@ -64,7 +64,7 @@ TEST(Gltf, MetalAndSpecularGiveTheRightNormalReflectance) {
     EXPECT_NEAR(f0.g, 0.64f, 1e-5f);
     EXPECT_NEAR(f0.b, 0.54f, 1e-5f);
     // KHR_materials_specular scales the dielectric F0 = ((n−1)/(n+1))² per channel.
-    const ImportedFile specular = parseOk(withMaterial(
+    const ImportedFile specular = parseGltfOk(withMaterial(
         {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
          {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {1.0, 0.5, 0.25}}}}}}}));
     const Material& tinted = specular.materials[0].material;
@@ -75,7 +75,7 @@ TEST(Gltf, MetalAndSpecularGiveTheRightNormalReflectance) {
 }
 
 TEST(Gltf, TransmissionAndVolumeMakeAbsorbingGlass) {
-    const ImportedFile file = parseOk(withMaterial(
+    const ImportedFile file = parseGltfOk(withMaterial(
         {{"pbrMetallicRoughness", {{"roughnessFactor", 0.0}}},
          {"extensions",
           {{"KHR_materials_ior", {{"ior", 1.33}}},
@@ -91,7 +91,7 @@ TEST(Gltf, TransmissionAndVolumeMakeAbsorbingGlass) {
 }
 
 TEST(Gltf, ClearcoatEmissionTexturesAndAlphaAreReportedNotDropped) {
-    const ImportedFile file = parseOk(json{
+    const ImportedFile file = parseGltfOk(json{
         {"asset", {{"version", "2.0"}}},
         {"images", {{{"uri", "albedo.png"}}}},
         {"textures", {{{"source", 0}}}},
@@ -115,7 +115,7 @@ TEST(Gltf, ClearcoatEmissionTexturesAndAlphaAreReportedNotDropped) {
 TEST(Gltf, PunctualLightUnitsConvertAt683LumensPerWatt) {
     const glm::vec3 warm(1.0f, 0.8f, 0.6f);
     const float luminanceWeight = kLumensPerWatt * relativeLuminance(warm);
-    const ImportedFile file = parseOk(json{
+    const ImportedFile file = parseGltfOk(json{
         {"asset", {{"version", "2.0"}}},
         {"extensions",
          {{"KHR_lights_punctual",
@@ -184,7 +184,7 @@ TEST(Gltf, RoundTripKeepsEveryParameterGltfHolds) {
     for (const Material& before : {dielectric, metal, glass}) {
         const ExportedText written = writeGltf({before, {}}, lights);
         EXPECT_TRUE(written.warnings.empty()) << before.name << ": " << written.warnings.front().format();
-        const ImportedFile read = parseOk(written.text);
+        const ImportedFile read = parseGltfOk(written.text);
         ASSERT_EQ(read.materials.size(), 1u);
         const Material& after = read.materials[0].material;
         EXPECT_EQ(after.name, before.name);

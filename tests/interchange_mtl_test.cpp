@@ -8,7 +8,7 @@
 namespace glint {
 namespace {
 
-ImportedFile parseOk(const std::string& text) {
+ImportedFile parseMtlOk(const std::string& text) {
     auto parsed = parseMtl(text, "test.mtl");
     EXPECT_TRUE(parsed.ok()) << (parsed ? "" : parsed.error().format());
     return parsed ? *parsed : ImportedFile{};
@@ -21,7 +21,7 @@ bool hasWarning(const ImportedFile& file, const std::string& fragment) {
 }
 
 TEST(Mtl, Illum2IsLectureBlinnPhongWithEveryStatement) {
-    const ImportedFile file = parseOk(
+    const ImportedFile file = parseMtlOk(
         "# a comment\n"
         "newmtl red plastic\n"
         "Ka 0.5 0.1 0.1\nKd 0.5 0.1 0.1\nKs 0.25 0.25 0.25\nNs 96\nNi 1.45\nd 1\nillum 2\n"
@@ -44,7 +44,7 @@ TEST(Mtl, Illum2IsLectureBlinnPhongWithEveryStatement) {
 }
 
 TEST(Mtl, IllumModelsMapToTheNearestGlintModel) {
-    const ImportedFile file = parseOk(
+    const ImportedFile file = parseMtlOk(
         "newmtl flat\nKd 0.2 0.3 0.4\nillum 0\n"
         "newmtl matte\nKd 0.6\nillum 1\n"
         "newmtl chrome\nKd 0 0 0\nKs 0.9 0.8 0.7\nillum 3\n"
@@ -68,13 +68,13 @@ TEST(Mtl, IllumModelsMapToTheNearestGlintModel) {
 
 // Found by fuzz_mtl: a line of only a form feed once indexed an empty word list.
 TEST(Mtl, LinesOfOtherWhitespaceAreBlank) {
-    const ImportedFile file = parseOk("newmtl a\n\f\n\v \x0c\nKd 0.5\n");
+    const ImportedFile file = parseMtlOk("newmtl a\n\f\n\v \x0c\nKd 0.5\n");
     ASSERT_EQ(file.materials.size(), 1u);
     EXPECT_EQ(paramValue(file.materials[0].material, "diffuse_albedo"), glm::vec3(0.5f));
 }
 
 TEST(Mtl, ValidButUnusedStatementsWarnWithTheirLine) {
-    const ImportedFile file = parseOk("newmtl a\nKd 0.5\nKe 1 1 1\nTf 1 1 1\nsharpness 60\nPr 0.5\nd 0.5\n");
+    const ImportedFile file = parseMtlOk("newmtl a\nKd 0.5\nKe 1 1 1\nTf 1 1 1\nsharpness 60\nPr 0.5\nd 0.5\n");
     EXPECT_TRUE(hasWarning(file, "test.mtl:3: warning: 'Ke'"));
     EXPECT_TRUE(hasWarning(file, "test.mtl:4: warning: 'Tf'"));
     EXPECT_TRUE(hasWarning(file, "dissolve"));
@@ -102,7 +102,7 @@ TEST(Mtl, RoundTripKeepsEveryParameterMtlHolds) {
     originals.push_back({glass, {}});
 
     const ExportedText written = writeMtl(originals);
-    const ImportedFile read = parseOk(written.text);
+    const ImportedFile read = parseMtlOk(written.text);
     ASSERT_EQ(read.materials.size(), originals.size()) << written.text;
     for (size_t i = 0; i < originals.size(); ++i) {
         const Material& before = originals[i].material;

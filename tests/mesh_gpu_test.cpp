@@ -11,7 +11,7 @@
 namespace glint {
 namespace {
 
-constexpr int kSize = 96;
+constexpr int kMeshImageSize = 96;
 
 Scene meshStage(Shape shape, SurfaceInterpolation interpolation) {
     Scene scene;
@@ -54,10 +54,10 @@ std::vector<bool> triangleEdges(const Scene& scene, int width, int height) {
 }
 
 void expectAgreement(const Scene& scene, bool excludeTriangleEdges, long minimumCompared) {
-    auto images = test::sharedHeadless().render(scene, kSize, kSize);
+    auto images = test::sharedHeadless().render(scene, kMeshImageSize, kMeshImageSize);
     ASSERT_TRUE(images.ok()) << images.error().format();
     const auto agreement = test::compareWithReference(scene, images->radiance, 1e-3f, 1e-5f,
-                                                      excludeTriangleEdges ? triangleEdges(scene, kSize, kSize) : std::vector<bool>{});
+                                                      excludeTriangleEdges ? triangleEdges(scene, kMeshImageSize, kMeshImageSize) : std::vector<bool>{});
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement << " (worst relative " << agreement.worstRelative << ")";
     EXPECT_GT(agreement.compared, minimumCompared);
 }
@@ -117,7 +117,7 @@ TEST(MeshGpu, ImportedMeshWithItsPlacementMatchesTheCpuReference) {
 
 TEST(MeshGpu, TessellationChangesThePictureExceptForTheExactSphere) {
     auto render = [](int segments, int rings, SurfaceInterpolation mode) {
-        auto images = test::sharedHeadless().render(meshStage(SphereShape{{0, 0, 0}, 1.0f, segments, rings}, mode), kSize, kSize);
+        auto images = test::sharedHeadless().render(meshStage(SphereShape{{0, 0, 0}, 1.0f, segments, rings}, mode), kMeshImageSize, kMeshImageSize);
         EXPECT_TRUE(images.ok());
         return images->radiance;
     };

@@ -12,7 +12,7 @@
 namespace glint {
 namespace {
 
-constexpr int kSize = 128;
+constexpr int kOverlayImageSize = 128;
 
 // A lone default sphere, filling most of the picture.
 Scene sphereScene() {
@@ -22,7 +22,7 @@ Scene sphereScene() {
 }
 
 RenderedImages render(const Scene& scene) {
-    auto images = test::sharedHeadless().render(scene, kSize, kSize);
+    auto images = test::sharedHeadless().render(scene, kOverlayImageSize, kOverlayImageSize);
     EXPECT_TRUE(images.ok()) << images.error().format();
     return std::move(*images);
 }
@@ -50,7 +50,7 @@ TEST(Overlays, WireframeAndNormalsChangeTheDisplayNotTheRadiance) {
     const int orange = pixelsOfColor(wireframe.display, 255, 158, 26);
     const int cyan = pixelsOfColor(normals.display, 64, 217, 255);
     EXPECT_EQ(pixelsOfColor(plain.display, 255, 158, 26), 0);
-    EXPECT_GT(orange, kSize * kSize / 20) << "the sphere's tessellation should show";
+    EXPECT_GT(orange, kOverlayImageSize * kOverlayImageSize / 20) << "the sphere's tessellation should show";
     EXPECT_GT(cyan, 50);
     EXPECT_EQ(pixelsOfColor(wireframe.display, 64, 217, 255), 0);
 }

@@ -17,10 +17,9 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-RadianceImage renderGpu(const Scene& scene, int width = kWidth, int height = kHeight) {
-    auto images = test::sharedHeadless().render(scene, width, height);
-    EXPECT_TRUE(images.ok()) << images.error().format();
-    return images.ok() ? images->radiance : RadianceImage(width, height);
+// The shadows scene's images are kWidth×kHeight unless a test says otherwise.
+RadianceImage renderShadowsGpu(const Scene& scene, int width = kWidth, int height = kHeight) {
+    return test::renderGpu(scene, width, height);
 }
 
 // The shadows scene with only light `index` (and no ambient when `withAmbient` is false) on.
@@ -119,7 +118,7 @@ std::vector<bool> penumbraBand(const LitMask& mask, int width, int height) {
 
 void expectShadowedAgreement(const Scene& scene, int width = kWidth, int height = kHeight) {
     const auto band = penumbraBand(cpuLitMask(scene, width, height), width, height);
-    const auto agreement = test::compareWithReference(scene, renderGpu(scene, width, height), 1e-3f, 1e-5f, band);
+    const auto agreement = test::compareWithReference(scene, renderShadowsGpu(scene, width, height), 1e-3f, 1e-5f, band);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement << " (worst relative " << agreement.worstRelative << ")";
     EXPECT_GT(agreement.compared, width * height * 3 / 4);
 }
@@ -150,7 +149,7 @@ TEST(GpuShadows, SphereCastsItsTrueSilhouette) {
     scene.lights[0].direction = {0.0f, -1.0f, 0.0f};
     scene.lights[0].shadow = {4096, 1.0f, 0.0f, 0.0f};
     const auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
-    const RadianceImage gpu = renderGpu(scene, width, height);
+    const RadianceImage gpu = renderShadowsGpu(scene, width, height);
     const RadianceImage cpu = renderReference(scene, width, height);
     const LitMask mask = cpuLitMask(scene, width, height);
     const glm::mat4 inverse = glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
@@ -191,7 +190,7 @@ TEST(GpuShadows, UmbraOnTheFloorEqualsTheAmbientOnlyPicture) {
         const Scene scene = sceneWithLight(light);
         Scene ambientOnly = scene;
         ambientOnly.lights[light].enabled = false;
-        const RadianceImage gpu = renderGpu(scene), gpuAmbient = renderGpu(ambientOnly);
+        const RadianceImage gpu = renderShadowsGpu(scene), gpuAmbient = renderShadowsGpu(ambientOnly);
         const RadianceImage cpu = renderReference(scene, kWidth, kHeight);
         const RadianceImage cpuAmbient = renderReference(ambientOnly, kWidth, kHeight);
         const LitMask mask = cpuLitMask(scene, kWidth, kHeight);
@@ -221,13 +220,13 @@ TEST(GpuShadows, RadianceStaysLinearInShadowedLights) {
     Scene all = test::loadTestScene("scenes/shadows.json");
     all.lights.resize(3);
     all.background.color = glm::vec3(0.0f);
-    RadianceImage sum = renderGpu(all);
+    RadianceImage sum = renderShadowsGpu(all);
     float worst = 0.0f, brightest = 0.0f;
     std::vector<RadianceImage> parts;
     for (int light = 0; light < 3; ++light) {
         Scene alone = sceneWithLight(light, false);
         alone.background.color = glm::vec3(0.0f);
-        parts.push_back(renderGpu(alone));
+        parts.push_back(renderShadowsGpu(alone));
     }
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)
@@ -245,7 +244,7 @@ TEST(GpuShadows, CastsShadowsOffRemovesTheShadow) {
     Scene shadowed = sceneWithLight(0);
     Scene unshadowed = shadowed;
     unshadowed.lights[0].castsShadows = false;
-    const RadianceImage withShadow = renderGpu(shadowed), without = renderGpu(unshadowed);
+    const RadianceImage withShadow = renderShadowsGpu(shadowed), without = renderShadowsGpu(unshadowed);
     int darker = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) darker += withShadow.at(x, y).g < 0.5f * without.at(x, y).g;
@@ -259,24 +258,24 @@ TEST(GpuShadows, CastsShadowsOffRemovesTheShadow) {
 TEST(GpuShadows, MapsAreRenderedOnlyWhenLightsOrGeometryChange) {
     Renderer& renderer = test::sharedHeadless().renderer();
     Scene scene = test::loadTestScene("scenes/shadows.json");
-    (void)renderGpu(scene);
+    (void)renderShadowsGpu(scene);
     const long long first = renderer.shadowMapRenders();
-    (void)renderGpu(scene);
+    (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first);
     scene.camera.position.x += 0.5f;
     scene.materials[1].values[0] = 0.3f;
     scene.lights[0].shadow.filterRadius = 3.0f;
     scene.lights[1].shadow.depthBias = 2.0f;
-    (void)renderGpu(scene);
+    (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first);
     scene.lights[2].position.y += 0.1f;
-    (void)renderGpu(scene);
+    (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first + 1);
     std::get<SphereShape>(scene.objects[0].shape).radius = 0.6f;
-    (void)renderGpu(scene);
+    (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first + 2);
     scene.lights[0].shadow.mapResolution = 512;
-    (void)renderGpu(scene);
+    (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first + 3);
 }
 

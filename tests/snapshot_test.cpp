@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "golden_support.h"
 #include "gpu_test_support.h"
 #include "brdf/presets.h"
 #include "image/image_compare.h"
@@ -14,29 +15,7 @@
 namespace glint {
 namespace {
 
-bool updatingGoldens() {
-    const char* update = std::getenv("GLINT_UPDATE_GOLDENS");
-    return update && std::string(update) == "1";
-}
-
-void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
-    const std::string golden = test::dataPath("goldens/" + name + ".png");
-    if (updatingGoldens()) {
-        ASSERT_TRUE(writeDisplayImage(actual, golden).ok());
-        std::printf("updated golden %s\n", golden.c_str());
-        return;
-    }
-    auto expected = readDisplayImage(golden);
-    ASSERT_TRUE(expected.ok()) << expected.error().format() << " (create it with GLINT_UPDATE_GOLDENS=1)";
-    const CompareResult result = compareImages(actual, *expected);
-    if (!result.passed) {
-        const std::string directory = test::outputDirectory("snapshots");
-        (void)writeDisplayImage(actual, directory + "/" + name + ".actual.png");
-        (void)writeDisplayImage(*expected, directory + "/" + name + ".expected.png");
-        if (result.sizesMatch) (void)writeDisplayImage(differenceImage(actual, *expected), directory + "/" + name + ".diff.png");
-        ADD_FAILURE() << name << ": " << result.summary() << "; images written to " << directory;
-    }
-}
+using test::expectMatchesGolden;
 
 TEST(Snapshot, LambertSun) {
     auto images = test::sharedHeadless().render(test::loadTestScene("scenes/lambert_sun.json"), 256, 256);

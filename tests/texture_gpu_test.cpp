@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "golden_support.h"
 #include "gpu_test_support.h"
 #include "image/image_io.h"
-#include "snapshot/golden_check.h"
 #include "test_support.h"
 
 namespace glint {
@@ -54,19 +54,7 @@ void writeCheckerTexture() {
     EXPECT_TRUE(writeDisplayImage(image, textureDirectory() + "/checker.png").ok());
 }
 
-void expectMatchesGolden(const std::string& name, const DisplayImage& actual) {
-    const std::string golden = test::dataPath("goldens/" + name + ".png");
-    const char* update = std::getenv("GLINT_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
-        ASSERT_TRUE(writeDisplayImage(actual, golden).ok());
-        return;
-    }
-    const GoldenCheck check = checkAgainstGolden(actual, golden, CompareTolerance{});
-    if (check.outcome != CaseOutcome::Passed) {
-        (void)writeDisplayImage(actual, textureDirectory() + "/" + name + ".actual.png");
-        ADD_FAILURE() << name << ": " << check.message;
-    }
-}
+using test::expectMatchesGolden;
 
 TEST(TextureGpu, TexturedQuadMatchesGoldenAndCpu) {
     writeColourTexture();

@@ -20,9 +20,10 @@ configure_and_build() {
 }
 
 "$root/third_party/install-deps.sh"
-# Optimised; line tables only (-g1): stack traces keep file and line, and the two builds of the test
-# command stay inside CI's time budget (full -g costs about a quarter more compile time).
-configure_and_build "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+# Optimised; line tables only (-g1): stack traces keep file and line. Unity batches (see
+# CMakeLists.txt) and -g1 keep the three builds of the test command inside CI's time budget.
+configure_and_build "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
+  -DGLINT_UNITY_BUILD=ON
 [[ $mode == run ]] && exec "$build/app/glint" "$@"
 
 # test: each suite's ctest summary is collected, then one closing line for all of them.
@@ -42,14 +43,15 @@ run_suite gui "$build" -L gui
 
 # -O1, as AddressSanitizer's own documentation advises: the numerical property tests run several
 # times faster than at -O0, and every report keeps its file and line.
-configure_and_build "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -DGLINT_SANITIZE=ON
+configure_and_build "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -DGLINT_SANITIZE=ON \
+  -DGLINT_UNITY_BUILD=ON
 # GUI tests need a window manager's timing, and the benchmark's timings mean nothing under ASan
 # (its code paths are the renderer's, which the GPU tests cover there).
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$root/tests/sanitizer/lsan.supp" \
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_suite sanitizers "$root/build-sanitize" -j2 -LE "gui|bench"
 
 CC=clang-14 CXX=clang++-14 configure_and_build "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DGLINT_FUZZ=ON
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DGLINT_FUZZ=ON -DGLINT_UNITY_BUILD=ON
 run_suite fuzz "$root/build-fuzz" -j2
 
 total_passed=0 total_failed=0

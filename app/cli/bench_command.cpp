@@ -19,6 +19,8 @@
 #include "cli/bench_scenes.h"
 #include "cli/command_options.h"
 #include "cli/headless.h"
+#include "geometry/mesh_import.h"
+#include "geometry/shape_mesh.h"
 #include "gl/bare_shading_pass.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
@@ -50,6 +52,7 @@ struct BenchOptions {
     std::vector<std::string> sceneNames;  // empty: every standard scene
     int coldStarts() const { return quick ? 3 : 11; }
     int thumbnails() const { return quick ? 8 : 40; }
+    int meshLoads() const { return quick ? 1 : 5; }
     int framesPerScene() const { return frames ? frames : quick ? 3 : 11; }
 };
 
@@ -172,6 +175,8 @@ struct ProgramFigures {
     double coldStartPeakMegabytes = 0;
     int thumbnailCount = 0;
     double thumbnailsPerSecond = 0;
+    size_t meshTriangles = 0;
+    Timing meshLoad;  // importMesh of a binary PLY, in this process
     double peakMegabytes = 0;  // this process: VmHWM
 };
 
@@ -180,6 +185,27 @@ double peakResidentMegabytes() {
     for (std::string line; std::getline(status, line);)
         if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // "VmHWM:  123 kB"
     return 0.0;
+}
+
+// A binary little-endian PLY of the sphere tessellated into 1000 × 500 segments and rings
+// (1,000,000 triangles): positions only, so the importer also generates the normals.
+Status writeBenchMeshPly(const std::string& path, size_t& triangleCount) {
+    SphereShape sphere;
+    sphere.segments = 1000, sphere.rings = 500;
+    const Mesh mesh = worldMesh(sphere);
+    triangleCount = mesh.triangleCount();
+    std::string bytes = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(mesh.vertices.size()) +
+                        "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                        std::to_string(triangleCount) + "\nproperty list uchar uint vertex_indices\nend_header\n";
+    bytes.reserve(bytes.size() + mesh.vertices.size() * 12 + triangleCount * 13);
+    const auto append = [&bytes](const void* data, size_t size) { bytes.append(static_cast<const char*>(data), size); };
+    for (const Vertex& vertex : mesh.vertices) append(&vertex.position, 12);
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        const uint8_t three = 3;
+        append(&three, 1);
+        append(&mesh.indices[i], 12);
+    }
+    return writeFileAtomically(path, bytes);
 }
 
 // Cold start: `glint render` of the default scene at 512×512 in a fresh process, `runs` times.
@@ -209,6 +235,16 @@ Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::pat
     const ChildRun thumbnails = runSelf({"thumbnails", materials.string(), "-o", (work / "thumbnails").string(), "--jobs", "1"});
     if (!thumbnails.succeeded) return makeError("glint thumbnails " + materials.string() + " failed");
     figures.thumbnailsPerSecond = 1000.0 * figures.thumbnailCount / thumbnails.wallMs;
+    const std::string meshPath = (work / "sphere_1m.ply").string();
+    if (Status written = writeBenchMeshPly(meshPath, figures.meshTriangles); !written) return written.error();
+    std::vector<double> meshLoadMs;
+    for (int i = 0; i < options.meshLoads(); ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        auto imported = importMesh(meshPath);
+        if (!imported) return imported.error();
+        meshLoadMs.push_back(millisecondsSince(start));
+    }
+    figures.meshLoad = summarize(meshLoadMs);
     figures.peakMegabytes = peakResidentMegabytes();
     return figures;
 }
@@ -231,6 +267,8 @@ void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& pr
                 program.coldStartPeakMegabytes);
     std::printf("thumbnails (glint thumbnails --jobs 1, %d materials at 256x256, one process): %.1f per second\n",
                 program.thumbnailCount, program.thumbnailsPerSecond);
+    std::printf("mesh load (importMesh, binary PLY, %zu triangles, normals generated): median %.0f ms over %d loads\n",
+                program.meshTriangles, program.meshLoad.median, options.meshLoads());
     std::printf("peak memory of this bench process (VmHWM): %.0f MB\n", program.peakMegabytes);
 }
 
@@ -248,6 +286,7 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
     figures.update(json{{"cold_start_ms", toJson(program.coldStart)}, {"cold_start_runs", options.coldStarts()},
             {"cold_start_peak_mb", program.coldStartPeakMegabytes},
             {"thumbnails", program.thumbnailCount}, {"thumbnails_per_second", program.thumbnailsPerSecond},
+            {"mesh_triangles", program.meshTriangles}, {"mesh_load_ms", toJson(program.meshLoad)},
             {"peak_memory_mb", program.peakMegabytes}});
     return figures;
 }

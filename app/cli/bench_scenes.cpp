@@ -2,6 +2,7 @@
 #include "cli/bench_scenes.h"
 
 #include "brdf/param_table.h"
+#include "environment/environment_source.h"
 
 namespace glint {
 namespace {
@@ -39,6 +40,28 @@ Material withOption(BrdfModel model, const char* param, const char* option) {
     return material;
 }
 
+// The sphere as a 1,000,000-triangle mesh (1000 segments × 500 rings), drawn through the triangle
+// path with Phong interpolation.
+void tessellateToOneMillionTriangles(Scene& scene) {
+    auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
+    sphere.segments = 1000, sphere.rings = 500;
+    scene.objects[0].interpolation = SurfaceInterpolation::Phong;
+}
+
+// The built-in studio environment as the scene's light (its maps are precomputed here, once).
+void lightWithStudio(Scene& scene) {
+    scene.environment.kind = EnvironmentKind::Studio;
+    (void)loadEnvironment(scene.environment);  // a built-in: baked in memory, cannot fail to read
+}
+
+// The first two lights cast shadows onto a floor under the sphere, which the camera looks down
+// on so that the floor fills the frame around the sphere.
+void castShadowsOnAFloor(Scene& scene) {
+    scene.camera.position = {0.0f, 1.6f, 2.2f};
+    scene.objects.push_back({"floor", PlaneShape{{0, -1, 0}, {0, 1, 0}, {40, 40}}, 0});
+    for (size_t i = 0; i < scene.lights.size() && i < 2; ++i) scene.lights[i].castsShadows = true;
+}
+
 struct FamilyMember {
     const char* family;
     const char* name;  // the row's name before "/lights"
@@ -65,13 +88,32 @@ std::vector<BenchScene> makeBenchScenes() {
         for (int lights : {1, 4})
             scenes.push_back({std::string(member.name) + "/" + std::to_string(lights), member.family,
                               [material = member.material, lights] { return frameFillingSphere(material, lights); }});
-    // A large mesh: the same sphere as 1,000,000 triangles (1000 segments × 500 rings) drawn
-    // through the triangle path with Phong interpolation, Blinn-Phong, 4 lights.
+    const Material ggx = withOption(BrdfModel::CookTorrance, "distribution", "ggx");
+    // A large mesh: Blinn-Phong, 4 lights.
     scenes.push_back({"mesh_1m_triangles/4", "mesh", [material = defaults(BrdfModel::BlinnPhong)] {
                           Scene scene = frameFillingSphere(material, 4);
-                          auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
-                          sphere.segments = 1000, sphere.rings = 500;
-                          scene.objects[0].interpolation = SurfaceInterpolation::Phong;
+                          tessellateToOneMillionTriangles(scene);
+                          return scene;
+                      }});
+    // Image-based light alone (no delta lights), for a diffuse and a glossy model.
+    for (const FamilyMember& member : {members[0], members[4]})
+        scenes.push_back({std::string(member.name) + "_studio/0", "environment", [material = member.material] {
+                              Scene scene = frameFillingSphere(material, 0);
+                              lightWithStudio(scene);
+                              return scene;
+                          }});
+    // Shadow maps: two shadowed lights of four, sphere on a floor.
+    scenes.push_back({"ggx_shadows/4", "shadows", [ggx] {
+                          Scene scene = frameFillingSphere(ggx, 4);
+                          castShadowsOnAFloor(scene);
+                          return scene;
+                      }});
+    // Everything at once: the 1M-triangle sphere on a floor, studio light, two shadowed lights.
+    scenes.push_back({"mesh_1m_studio_shadows/2", "combined", [ggx] {
+                          Scene scene = frameFillingSphere(ggx, 2);
+                          tessellateToOneMillionTriangles(scene);
+                          lightWithStudio(scene);
+                          castShadowsOnAFloor(scene);
                           return scene;
                       }});
     return scenes;

@@ -14,6 +14,18 @@ std::function<std::string(const std::string& value)> wholeNumberOption(int& out,
     };
 }
 
+std::function<std::string(const std::string& value)> pixelSizeOption(int& width, int& height, int low, int high, std::string message) {
+    return [&width, &height, low, high, message = std::move(message)](const std::string& value) {
+        static const std::regex sizePattern(R"(([0-9]{1,5})x([0-9]{1,5}))");
+        std::smatch match;
+        if (!std::regex_match(value, match, sizePattern)) return message;
+        const int parsedWidth = std::stoi(match[1]), parsedHeight = std::stoi(match[2]);
+        if (parsedWidth < low || parsedHeight < low || parsedWidth > high || parsedHeight > high) return message;
+        width = parsedWidth, height = parsedHeight;
+        return std::string();
+    };
+}
+
 Result<ParsedArguments> parseCommandOptions(const std::vector<std::string>& arguments, const std::vector<CommandOption>& options,
                                             const std::string& positionalName) {
     ParsedArguments parsed;

@@ -27,6 +27,10 @@ struct ParsedArguments {
 // `message`. `out` must outlive the parse.
 std::function<std::string(const std::string& value)> wholeNumberOption(int& out, int low, int high, std::string message);
 
+// An option's `apply` that takes WIDTHxHEIGHT, each in [low, high], into `width` and `height`, or
+// refuses it with `message`. Both must outlive the parse.
+std::function<std::string(const std::string& value)> pixelSizeOption(int& width, int& height, int low, int high, std::string message);
+
 // Walks `arguments`; an unknown option, a missing value, a refused one, or more than one
 // positional argument ("one `positionalName` at a time") is an error.
 Result<ParsedArguments> parseCommandOptions(const std::vector<std::string>& arguments, const std::vector<CommandOption>& options,

@@ -18,6 +18,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "classroom/classroom_editor.h"
+#include "classroom/presentation.h"
 #include "cli/headless.h"
 #include "editor/camera_actions.h"
 #include "editor/custom_brdf_editor.h"
@@ -73,6 +75,7 @@ void installEventTracking(GLFWwindow* window) {
 }
 
 // --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·; sizes follow the UI scale setting -------
+// (presentation mode's font, style and scale: app/classroom/presentation.cpp)
 
 void loadFont(float pixelSize) {
     static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
@@ -84,12 +87,6 @@ void loadFont(float pixelSize) {
     } else {
         io.Fonts->AddFontDefault();
     }
-}
-
-void applyUiScale(float scale, const ImGuiStyle& baseStyle) {
-    ImGui::GetStyle() = baseStyle;
-    ImGui::GetStyle().ScaleAllSizes(scale);
-    ImGui::GetIO().FontGlobalScale = scale;
 }
 
 // --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
@@ -155,7 +152,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     ImGui::StyleColorsDark();
     const ImGuiStyle baseStyle = ImGui::GetStyle();
     float appliedScale = 0.0f;
-    loadFont(17.0f);
+    bool appliedPresentation = false;
+    constexpr float kFontPixels = 17.0f, kPresentationFontPixels = 40.0f;
+    loadFont(kFontPixels);
+    ImFont* presentationFont = loadPresentationFont(kPresentationFontPixels);
     installEventTracking(window);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 410 core");
@@ -186,9 +186,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
         gDroppedPaths.clear();
-        if (state.settings.uiScale != appliedScale) {
-            appliedScale = state.settings.uiScale;
-            applyUiScale(appliedScale, baseStyle);
+        if (effectiveUiScale(state.settings) != appliedScale || state.settings.presentationMode != appliedPresentation) {
+            appliedScale = effectiveUiScale(state.settings);
+            appliedPresentation = state.settings.presentationMode;
+            applyEditorLook(state.settings, baseStyle, presentationFont, kFontPixels, kPresentationFontPixels);
         }
 
         ImGui_ImplOpenGL3_NewFrame();
@@ -209,6 +210,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         viewport.y = menuHeight;
         viewport.width = std::max(1.0f, windowSize.x - viewport.x - (state.showRightPanel ? state.rightPanelWidth : 0.0f));
         viewport.height = std::max(1.0f, columnHeight);
+        drawClassroom(state, viewport.x, viewport.y);  // lessons, presentation key, colour windows
         const bool handleDrag = handleLightHandles(state, viewport);
         const bool cameraDrag = !handleDrag && handleViewportInput(state, viewport);
         // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "classroom/classroom_state.h"
 #include "edit/edit_session.h"
 #include "edit/recovery.h"
 #include "editor/custom_brdf_state.h"
@@ -65,6 +66,7 @@ struct EditorState {
     double lastAutosaveSeconds = -1e9;  // glfwGetTime() of the last recovery write
     bool wroteRecovery = false;         // the recovery file on disk is this editor's
 
+    ClassroomState classroom;  // lessons and the colour windows (app/classroom/)
     CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
 };
 

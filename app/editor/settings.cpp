@@ -29,11 +29,19 @@ Settings loadSettings() {
         const float value = scale->get<float>();
         if (value >= 0.75f && value <= 3.0f) settings.uiScale = value;
     }
+    if (auto presenting = document.find("presentation_mode"); presenting != document.end() && presenting->is_boolean())
+        settings.presentationMode = presenting->get<bool>();
+    if (auto scale = document.find("presentation_scale"); scale != document.end() && scale->is_number()) {
+        const float value = scale->get<float>();
+        if (value >= 1.5f && value <= 3.0f) settings.presentationScale = value;
+    }
     return settings;
 }
 
 void saveSettings(const Settings& settings) {
-    const nlohmann::json document = {{"recent_files", settings.recentFiles}, {"ui_scale", settings.uiScale}};
+    const nlohmann::json document = {{"recent_files", settings.recentFiles}, {"ui_scale", settings.uiScale},
+                                     {"presentation_mode", settings.presentationMode},
+                                     {"presentation_scale", settings.presentationScale}};
     if (ensureParentDirectory(settingsPath())) (void)writeFileAtomically(settingsPath(), document.dump(2) + "\n");
 }
 

@@ -12,6 +12,8 @@ struct Settings {
     static constexpr size_t kMaxRecentFiles = 10;
     std::vector<std::string> recentFiles;  // newest first, absolute paths
     float uiScale = 1.0f;                  // HiDPI: font and sizes, 0.75–3
+    bool presentationMode = false;         // classroom: large font, high contrast (app/classroom/presentation.h)
+    float presentationScale = 2.0f;        // UI scale in presentation mode, 1.5–3
 };
 
 Settings loadSettings();

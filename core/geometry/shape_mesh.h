@@ -3,6 +3,7 @@
 // and the CPU reference alike, so both see the same triangles. It does not intersect anything.
 #pragma once
 
+#include "geometry/bounding_sphere.h"
 #include "geometry/mesh.h"
 #include "scene/scene.h"
 
@@ -24,10 +25,6 @@ Mesh proceduralMesh(const Shape& shape);
 // The shape's triangles in world space (placement applied).
 Mesh worldMesh(const Shape& shape);
 
-struct BoundingSphere {
-    glm::vec3 center{0.0f};
-    float radius = 0.0f;  // [m]
-};
 BoundingSphere boundingSphere(const Shape& shape);
 
 }  // namespace glint

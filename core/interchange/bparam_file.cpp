@@ -5,17 +5,9 @@
 #include <cctype>
 
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
-namespace {
-
-std::string_view trimmed(std::string_view text) {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
-    return text;
-}
-
-}  // namespace
 
 Result<std::vector<float>> parseBparam(std::string_view text, const std::string& path, const CustomBrdf& brdf,
                                        std::vector<float> values) {

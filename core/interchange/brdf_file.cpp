@@ -11,6 +11,7 @@
 #include <regex>
 
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -33,12 +34,6 @@ std::vector<Token> splitTokens(std::string_view line) {
         tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }
     return tokens;
-}
-
-std::string_view trimmed(std::string_view text) {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
-    return text;
 }
 
 Result<float> parseNumber(const Token& token, const std::string& what, const std::string& path, int line) {

@@ -16,6 +16,7 @@
 #include "interchange/material_values.h"
 #include "interchange/measured_brdf.h"
 #include "light/photometry.h"
+#include "scene/json_vectors.h"
 
 namespace glint {
 namespace {
@@ -72,7 +73,6 @@ void addSphere(json& gltf) {
 
 // --- material -------------------------------------------------------------------------------
 
-json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
 
 // Glint → glTF: Cook-Torrance with κ = 0 is a dielectric (baseColor = ρ_d, ior = n); with κ > 0
 // a metal (baseColor = F0 of n + iκ); glass is a transmitting dielectric with volume absorption.

@@ -8,14 +8,10 @@
 
 #include <glm/glm.hpp>
 
+#include "geometry/bounding_sphere.h"
 #include "scene/scene.h"
 
 namespace glint {
-
-struct BoundingSphere {
-    glm::vec3 center{0.0f};
-    float radius = 0.0f;  // [m]
-};
 
 // A sphere around every object of the scene (the box around them, circumscribed).
 BoundingSphere sceneBounds(const Scene& scene);

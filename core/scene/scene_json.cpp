@@ -10,6 +10,7 @@
 #include "scene/format_migration.h"
 #include "scene/environment_json.h"
 #include "scene/json_object_reader.h"
+#include "scene/json_vectors.h"
 #include "scene/param_values_json.h"
 #include "texture/texture_json.h"
 #include "scene/shadow_json.h"
@@ -310,7 +311,6 @@ Scene readScene(const JsonDocument& document) {
     return scene;
 }
 
-json vec3Json(glm::vec3 v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 

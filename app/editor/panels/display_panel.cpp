@@ -4,6 +4,8 @@
 // the edit API.
 #include <imgui.h>
 
+#include "classroom/presentation.h"
+
 #include "editor/panels/panels.h"
 #include "editor/panels/widgets.h"
 
@@ -50,7 +52,7 @@ void drawDisplaySection(EditorState& state) {
         backgroundChanged |= linearColorEdit("Ground", background.ground, "Radiance straight down");
     }
     if (backgroundChanged) state.session.change("Edit background").background = background;
-    drawEnvironmentSection(state);
+    if (advancedPanelsVisible(state.settings)) drawEnvironmentSection(state);  // hidden in presentation mode
 }
 
 }  // namespace glint

@@ -5,6 +5,8 @@
 // spot cone, the optional classic attenuation and the shadow settings (shadow_widgets.h).
 // Values that make no sense are refused with a message.
 #include <imgui.h>
+
+#include "classroom/presentation.h"
 #include <imgui_stdlib.h>
 
 #include <cmath>
@@ -183,7 +185,8 @@ void drawLightsSection(EditorState& state) {
     ImGui::PushID("selected light");
     Light edited = scene.lights[state.selectedLight];
     bool changed = drawLightEditor(edited, state.lightPanelMessage);
-    changed |= drawShadowSettings(edited, shadowedLightsOtherThan(scene, state.selectedLight), state.lightPanelMessage);
+    if (advancedPanelsVisible(state.settings))  // presentation mode hides shadow-map settings
+        changed |= drawShadowSettings(edited, shadowedLightsOtherThan(scene, state.selectedLight), state.lightPanelMessage);
     if (changed) state.session.change("Edit light").lights[state.selectedLight] = std::move(edited);
     if (!state.lightPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.lightPanelMessage.c_str());
     ImGui::PopID();

@@ -2,6 +2,9 @@
 // redo), View (panels, camera, UI scale), Help (shortcuts).
 #include <imgui.h>
 
+#include "classroom/classroom_editor.h"
+#include "classroom/presentation.h"
+
 #include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/object_actions.h"
@@ -34,6 +37,7 @@ void drawFileMenu(EditorState& state) {
         requestFileBrowser(state.fileBrowser, FilePurpose::OpenMaterial, "");
     if (ImGui::MenuItem("Save material as…", nullptr, false, hasObject))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveMaterialAs, "material.json");
+<<<<<<< HEAD
     if (ImGui::MenuItem("Export material (.gltf, .mtl)…", nullptr, false, hasObject))  // editor/interchange_export.h
         requestFileBrowser(state.fileBrowser, FilePurpose::ExportMaterial, "material.gltf");
     if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))
@@ -42,6 +46,16 @@ void drawFileMenu(EditorState& state) {
         hasObject && state.session.scene().materials[state.session.scene().objects[state.selectedObject].materialIndex].custom;
     if (ImGui::MenuItem("Save parameter values as .bparam…", nullptr, false, customMaterial))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveBparamAs, "values.bparam");
+=======
+    if (advancedPanelsVisible(state.settings)) {  // presentation mode hides the BRDF Explorer file actions
+        if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))
+            requestFileBrowser(state.fileBrowser, FilePurpose::OpenBrdf, "");
+        const bool customMaterial =
+            hasObject && state.session.scene().materials[state.session.scene().objects[state.selectedObject].materialIndex].custom;
+        if (ImGui::MenuItem("Save parameter values as .bparam…", nullptr, false, customMaterial))
+            requestFileBrowser(state.fileBrowser, FilePurpose::SaveBparamAs, "values.bparam");
+    }
+>>>>>>> main
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot of the viewport…", "F12"))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
@@ -77,6 +91,7 @@ void drawViewMenu(EditorState& state) {
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f×") && scale >= 0.75f && scale <= 3.0f)
         state.settings.uiScale = scale;
     if (ImGui::IsItemDeactivatedAfterEdit()) saveSettings(state.settings);
+    drawClassroomViewMenuItems(state);  // lessons, presentation mode, colour windows
     ImGui::EndMenu();
 }
 

@@ -1,0 +1,92 @@
+// `glint lessons`: list, check (every scene loads) or render (one PNG per lesson, headless) the
+// classroom lesson list. It parses nothing itself: lists and scenes load through core.
+#include "cli/lessons_command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "classroom/lessons.h"
+#include "cli/command_options.h"
+#include "cli/headless.h"
+#include "scene/scene_json.h"
+
+namespace glint {
+namespace {
+
+constexpr const char* kLessonsUsage =
+    "usage: glint lessons [LIST.json] [--check] [--render DIR] [--width N]\n"
+    "  LIST.json     a lesson list (default: the lessons shipped with Glint, or $GLINT_LESSONS)\n"
+    "  --check       load every lesson's scene; exit 1 naming each one that fails\n"
+    "  --render DIR  render every lesson headless to DIR/NN_<scene>.png\n"
+    "  --width N     width of the rendered images in pixels (default 320; height keeps the scene's aspect)\n";
+
+}  // namespace
+
+int runLessonsCommand(const std::vector<std::string>& arguments) {
+    bool check = false;
+    std::string renderDirectory;
+    int width = 320;
+    const std::vector<CommandOption> options = {
+        {{"--check"}, "", [&](const std::string&) { check = true; return std::string(); }},
+        {{"--render"}, "a directory", [&](const std::string& value) { renderDirectory = value; return std::string(); }},
+        {{"--width"}, "a number of pixels", wholeNumberOption(width, 8, 4096, "--width needs a number of pixels from 8 to 4096")},
+    };
+    auto parsed = parseCommandOptions(arguments, options, "lesson list");
+    if (!parsed) {
+        std::fprintf(stderr, "glint lessons: %s\n%s", parsed.error().format().c_str(), kLessonsUsage);
+        return 2;
+    }
+    if (parsed->help) {
+        std::printf("%s", kLessonsUsage);
+        return 0;
+    }
+    const std::string listPath = parsed->positionals.empty() ? defaultLessonListPath() : parsed->positionals[0];
+    auto list = loadLessonList(listPath);
+    if (!list) {
+        std::fprintf(stderr, "glint lessons: %s\n", list.error().format().c_str());
+        return 2;
+    }
+
+    std::unique_ptr<HeadlessRenderer> headless;
+    if (!renderDirectory.empty()) {
+        auto created = HeadlessRenderer::create();
+        if (!created) {
+            std::fprintf(stderr, "glint lessons: %s\n", created.error().format().c_str());
+            return 2;
+        }
+        headless = std::move(*created);
+        std::error_code error;
+        std::filesystem::create_directories(renderDirectory, error);
+    }
+    int failures = 0;
+    for (size_t index = 0; index < list->lessons.size(); ++index) {
+        const Lesson& lesson = list->lessons[index];
+        std::printf("%2zu  %-45s %s\n", index + 1, lesson.title.c_str(), lesson.scenePath.c_str());
+        if (!check && !headless) continue;
+        auto scene = loadScene(lesson.scenePath);
+        if (!scene) {
+            std::fprintf(stderr, "glint lessons: lesson %zu (%s): %s\n", index + 1, lesson.title.c_str(), scene.error().format().c_str());
+            ++failures;
+            continue;
+        }
+        if (!headless) continue;
+        const int height = std::max(1, width * scene->height / std::max(scene->width, 1));
+        auto images = headless->render(*scene, width, height);
+        const std::string number = (index + 1 < 10 ? "0" : "") + std::to_string(index + 1);
+        const std::string output = (std::filesystem::path(renderDirectory) /
+                                    (number + "_" + std::filesystem::path(lesson.scenePath).stem().string() + ".png")).string();
+        const Status written = images ? writeRenderedImage(*images, output) : Status(images.error());
+        if (!written) {
+            std::fprintf(stderr, "glint lessons: lesson %zu (%s): %s\n", index + 1, lesson.title.c_str(), written.error().format().c_str());
+            ++failures;
+        }
+    }
+    if (check || headless)
+        std::printf("%zu lessons, %zu %s, %d failed\n", list->lessons.size(), list->lessons.size() - failures,
+                    headless ? "rendered" : "load", failures);
+    return failures == 0 ? 0 : 1;
+}
+
+}  // namespace glint

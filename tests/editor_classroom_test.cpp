@@ -1,0 +1,92 @@
+// Classroom mode in the editor without a window: presentation mode's state logic (scale range,
+// hidden panels, persisted in settings.json) and stepping through lessons via the normal open path
+// (unsaved work is asked about first; the lesson index follows only a scene that opened).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "classroom/lessons_view.h"
+#include "classroom/presentation.h"
+#include "editor/document.h"
+#include "editor/settings.h"
+#include "editor_test_support.h"
+
+namespace glint {
+namespace {
+
+class EditorClassroom : public test::EditorFixture {
+protected:
+    const char* suiteFolder() const override { return "editor_classroom"; }
+    void SetUp() override {
+        test::EditorFixture::SetUp();
+        ::setenv("GLINT_LESSONS", test::dataPath("../lessons/lessons.json").c_str(), 1);
+    }
+    void TearDown() override {
+        ::unsetenv("GLINT_LESSONS");
+        test::EditorFixture::TearDown();
+    }
+};
+
+TEST_F(EditorClassroom, PresentationModeScalesHidesAdvancedPanelsAndPersists) {
+    EditorState state;
+    state.settings.uiScale = 1.25f;
+    EXPECT_FLOAT_EQ(effectiveUiScale(state.settings), 1.25f);
+    EXPECT_TRUE(advancedPanelsVisible(state.settings));
+    togglePresentationMode(state);
+    EXPECT_TRUE(state.settings.presentationMode);
+    EXPECT_FLOAT_EQ(effectiveUiScale(state.settings), 2.0f);  // the default presentation scale
+    EXPECT_FALSE(advancedPanelsVisible(state.settings));
+    // A scale outside 1.5–3 (a hand-edited settings file) is never used as such.
+    state.settings.presentationScale = 9.0f;
+    EXPECT_FLOAT_EQ(effectiveUiScale(state.settings), kPresentationScaleMax);
+    state.settings.presentationScale = 2.5f;
+    saveSettings(state.settings);
+    const Settings reloaded = loadSettings();
+    EXPECT_TRUE(reloaded.presentationMode);
+    EXPECT_FLOAT_EQ(reloaded.presentationScale, 2.5f);
+    EXPECT_FLOAT_EQ(reloaded.uiScale, 1.25f);
+    togglePresentationMode(state);
+    EXPECT_FALSE(loadSettings().presentationMode);
+    EXPECT_FLOAT_EQ(effectiveUiScale(state.settings), 1.25f);
+}
+
+TEST_F(EditorClassroom, LessonsOpenInOrderThroughTheUnsavedChangesGuard) {
+    EditorState state;
+    openLesson(state, 0);
+    ASSERT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    ASSERT_EQ(state.classroom.lessonList.lessons.size(), 8u);
+    EXPECT_EQ(state.classroom.lessonIndex, 0);
+    EXPECT_EQ(state.session.path(), std::filesystem::absolute(state.classroom.lessonList.lessons[0].scenePath).lexically_normal().string());
+    EXPECT_EQ(state.session.scene().materials[0].model, BrdfModel::Lambert);
+
+    // Unsaved work: the next lesson waits behind the prompt, and the index stays.
+    state.session.change("Edit light").lights[0].power = 10.0f;
+    openLesson(state, 1);
+    EXPECT_TRUE(state.unsavedPromptRequested);
+    EXPECT_EQ(state.classroom.lessonIndex, 0);
+    // "Don't save" runs the waiting action: lesson 2 (Phong) opens.
+    state.unsavedPromptRequested = false;
+    runActionAfterPrompt(state);
+    EXPECT_EQ(state.classroom.lessonIndex, 1);
+    EXPECT_EQ(state.session.scene().materials[0].model, BrdfModel::Phong);
+    EXPECT_FALSE(state.session.dirty());
+}
+
+TEST_F(EditorClassroom, ABrokenLessonSceneLeavesTheLessonAndTheWorkAsTheyWere) {
+    const std::string good = write("good.json", R"({"format": "glint-scene", "version": 1, "objects": []})");
+    write("broken.json", R"({"format": "glint-scene", "version": 1, "lights": [{"type": "point", "power": -1}]})");
+    const std::string list = write("lessons.json", R"({"format": "glint-lessons", "version": 1, "lessons": [
+  {"title": "Good", "scene": "good.json"}, {"title": "Broken", "scene": "broken.json"}]})");
+    ::setenv("GLINT_LESSONS", list.c_str(), 1);
+    EditorState state;
+    openLesson(state, 0);
+    ASSERT_EQ(state.classroom.lessonIndex, 0);
+    EXPECT_EQ(state.session.path(), std::filesystem::absolute(good).lexically_normal().string());
+    openLesson(state, 1);
+    EXPECT_FALSE(state.errorMessage.empty());
+    EXPECT_EQ(state.classroom.lessonIndex, 0);
+    EXPECT_EQ(state.session.path(), std::filesystem::absolute(good).lexically_normal().string());
+}
+
+}  // namespace
+}  // namespace glint

@@ -1,0 +1,110 @@
+"""GUI tests of classroom mode under Xvfb, driven with real keys (xdotool). One scenario per
+ctest entry:
+  lessons       PageDown opens lesson 1 (the window title names 01_lambert.json and the picture
+                changes), Right steps to lesson 2 (Phong), Left back to lesson 1
+  presentation  F11 turns presentation mode on (the left column changes: larger text, high
+                contrast; settings.json says so), F11 again brings the normal look back
+usage: gui_classroom_test.py GLINT OUTPUT_DIR SCENARIO"""
+import json
+import os
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+
+VIEWPORT = (340, 40, 910, 760)
+LEFT_COLUMN = (10, 60, 320, 700)
+SPHERE_CENTRE = (625, 375)  # the default scene's red sphere
+LESSONS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lessons", "lessons.json")
+
+
+def start_editor(x, glint, output, state):
+    environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LESSONS=LESSONS)
+    process = subprocess.Popen([glint], env=environment, cwd=output, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True)
+    return process, x.find_window("Glint")
+
+
+def window_title(x, window):
+    return x.run("xdotool", "getwindowname", window, check=False).stdout.strip()
+
+
+def wait_for_title(x, window, fragment, timeout=20.0):
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        if fragment in window_title(x, window):
+            return
+        time.sleep(0.25)
+    raise AssertionError(f"the window title never named {fragment!r} (it is {window_title(x, window)!r})")
+
+
+def drawn(x):
+    """Waits for the default scene's lit red sphere (the first frames are black), then for calm."""
+    def lit(shot):
+        red = pixel(shot, *SPHERE_CENTRE)
+        return red[0] > 80 and red[0] > red[1] + 30
+    x.wait_for(lit, "the editor's first picture")
+    return x.wait_stable((0, 0, 1280, 800))
+
+
+def finish(x, process):
+    # Nothing unsaved: Ctrl+Q quits at once, often before the keys are released (so the release
+    # may find no window to go to).
+    x.run("xdotool", "keydown", "ctrl", "q")
+    time.sleep(0.15)
+    x.run("xdotool", "keyup", "q", "ctrl", check=False)
+    code = process.wait(timeout=20)
+    assert code == 0, f"editor exited with {code}"
+
+
+def scenario_lessons(x, glint, output, state):
+    process, window = start_editor(x, glint, output, state)
+    try:
+        start = drawn(x)
+        x.key("Next")  # PageDown: the first lesson
+        wait_for_title(x, window, "01_lambert.json")
+        first = x.wait_for(lambda shot: region_difference(shot, start, VIEWPORT) > 1.0, "lesson 1's picture")
+        first = x.wait_stable(VIEWPORT)
+        write_png(first, os.path.join(output, "lesson_1.png"))
+        x.key("Right")
+        wait_for_title(x, window, "02_phong.json")
+        second = x.wait_stable(VIEWPORT)
+        write_png(second, os.path.join(output, "lesson_2.png"))
+        assert region_difference(second, first, VIEWPORT) > 1.0, "lesson 2 looks like lesson 1"
+        x.key("Left")
+        wait_for_title(x, window, "01_lambert.json")
+        finish(x, process)
+        print("ok: PageDown opened lesson 1, Right lesson 2, Left lesson 1 again")
+    finally:
+        if process.poll() is None:
+            process.kill()
+
+
+def scenario_presentation(x, glint, output, state):
+    process, window = start_editor(x, glint, output, state)
+    try:
+        normal = drawn(x)
+        write_png(normal, os.path.join(output, "normal.png"))
+        x.key("F11")
+        presenting = x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) > 2.0,
+                                "the panels to change in presentation mode")
+        presenting = x.wait_stable(LEFT_COLUMN)
+        write_png(presenting, os.path.join(output, "presentation.png"))
+        with open(os.path.join(state, "settings.json")) as file:
+            settings = json.load(file)
+        assert settings["presentation_mode"] is True, settings
+        x.key("F11")
+        x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) < 0.5, "the normal look to return")
+        with open(os.path.join(state, "settings.json")) as file:
+            assert json.load(file)["presentation_mode"] is False
+        finish(x, process)
+        print("ok: F11 switched presentation mode on (saved) and off again")
+    finally:
+        if process.poll() is None:
+            process.kill()
+
+
+if __name__ == "__main__":
+    run_scenario_from_arguments(globals())
