@@ -37,16 +37,8 @@ void drawFileMenu(EditorState& state) {
         requestFileBrowser(state.fileBrowser, FilePurpose::OpenMaterial, "");
     if (ImGui::MenuItem("Save material as…", nullptr, false, hasObject))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveMaterialAs, "material.json");
-<<<<<<< HEAD
     if (ImGui::MenuItem("Export material (.gltf, .mtl)…", nullptr, false, hasObject))  // editor/interchange_export.h
         requestFileBrowser(state.fileBrowser, FilePurpose::ExportMaterial, "material.gltf");
-    if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))
-        requestFileBrowser(state.fileBrowser, FilePurpose::OpenBrdf, "");
-    const bool customMaterial =
-        hasObject && state.session.scene().materials[state.session.scene().objects[state.selectedObject].materialIndex].custom;
-    if (ImGui::MenuItem("Save parameter values as .bparam…", nullptr, false, customMaterial))
-        requestFileBrowser(state.fileBrowser, FilePurpose::SaveBparamAs, "values.bparam");
-=======
     if (advancedPanelsVisible(state.settings)) {  // presentation mode hides the BRDF Explorer file actions
         if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))
             requestFileBrowser(state.fileBrowser, FilePurpose::OpenBrdf, "");
@@ -55,7 +47,6 @@ void drawFileMenu(EditorState& state) {
         if (ImGui::MenuItem("Save parameter values as .bparam…", nullptr, false, customMaterial))
             requestFileBrowser(state.fileBrowser, FilePurpose::SaveBparamAs, "values.bparam");
     }
->>>>>>> main
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot of the viewport…", "F12"))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveScreenshot, "viewport.png");
