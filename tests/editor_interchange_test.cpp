@@ -1,9 +1,16 @@
 // Interchange files in the editor without a window: a dropped (or File ▸ Open'ed) .mtl puts its
 // material on the selected object and a .gltf also adds its lights, each as one undo step; a
-// malformed file shows file:line and leaves the scene and its history as they were.
+// malformed file shows file:line and leaves the scene and its history as they were. A MERL
+// .binary becomes a measured material that the scene saves by its path. File ▸ Export material…
+// writes .gltf or .mtl with the format's warnings.
 #include <gtest/gtest.h>
 
 #include "editor/document.h"
+#include "editor/interchange_export.h"
+#include "interchange/gltf.h"
+#include "interchange/mtl.h"
+#include "interchange/measured_brdf.h"
+#include "scene/scene_json.h"
 #include "editor_test_support.h"
 
 namespace glint {
@@ -65,6 +72,45 @@ TEST_F(EditorInterchange, MalformedFileShowsFileAndLineAndChangesNothing) {
     openDroppedFile(state, write("broken.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"materials\": [{\"alphaMode\": 3}]}"));
     EXPECT_NE(state.errorMessage.find("broken.gltf:2:"), std::string::npos) << state.errorMessage;
     EXPECT_FALSE(state.session.undo());
+}
+
+TEST_F(EditorInterchange, DroppedMerlFileBecomesAMeasuredMaterialAndSavesWithTheScene) {
+    EditorState state;
+    const int materialIndex = state.session.scene().objects[0].materialIndex;
+    openDroppedFile(state, write("plaster.binary", makeConstantMerl(glm::vec3(0.2f))));
+    EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    const Material& material = state.session.scene().materials[materialIndex];
+    ASSERT_TRUE(material.measured);
+    EXPECT_EQ(material.measured->displayName, "plaster.binary");
+    EXPECT_NE(state.statusMessage.find("material 'plaster'"), std::string::npos);
+    const nlohmann::json saved = sceneToJson(state.session.scene(), write("scene.json", "{}"));
+    EXPECT_EQ(saved["materials"][materialIndex]["merl_file"], "plaster.binary");
+    EXPECT_TRUE(state.session.undo());
+    EXPECT_FALSE(state.session.scene().materials[materialIndex].measured);
+    openDroppedFile(state, write("short.binary", std::string(40, '\0')));
+    EXPECT_NE(state.errorMessage.find("not a MERL BRDF"), std::string::npos) << state.errorMessage;
+}
+
+TEST_F(EditorInterchange, ExportMaterialWritesGltfOrMtlAndShowsWhatTheFormatLoses) {
+    EditorState state;
+    const Scene before = state.session.scene();
+    const std::string gltfPath = write("ball.gltf", "old");
+    EXPECT_TRUE(exportMaterialTo(state, gltfPath));
+    auto gltf = loadGltf(gltfPath);
+    ASSERT_TRUE(gltf.ok()) << gltf.error().format();
+    EXPECT_EQ(gltf->materials.at(0).material.name, before.materials[before.objects[0].materialIndex].name);
+    EXPECT_EQ(gltf->lights.size(), before.lights.size());
+    EXPECT_NE(state.errorMessage.find("cannot hold everything"), std::string::npos) << state.errorMessage;  // Blinn-Phong in glTF
+    state.errorMessage.clear();
+    const std::string mtlPath = write("ball.MTL", "");
+    EXPECT_TRUE(exportMaterialTo(state, mtlPath));
+    auto mtl = loadMtl(mtlPath);
+    ASSERT_TRUE(mtl.ok()) << mtl.error().format();
+    EXPECT_EQ(mtl->materials.size(), 1u);
+    EXPECT_NE(state.statusMessage.find("Exported material"), std::string::npos);
+    EXPECT_FALSE(exportMaterialTo(state, write("ball.txt", "")));
+    EXPECT_NE(state.errorMessage.find("must end in .mtl or .gltf"), std::string::npos) << state.errorMessage;
+    EXPECT_FALSE(state.session.dirty());  // exporting changes nothing
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `glint export` and `glint render` on interchange files: a material goes to .mtl and .gltf and
 # back, both render on the preview stage, and malformed files exit with code 2 and a message
-# naming file:line. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
+# naming file:line; a MERL .binary and a .glb render too. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
 set -u
 glint=$1
 out=$2
@@ -57,6 +57,32 @@ expect_error bad_gltf "bad.gltf:2:[0-9]+: .*'roughnessFactor'" render "$out/bad.
 printf '{"asset": {"version": "2.0"}, "materials": [{}]' >"$out/truncated.gltf"
 expect_error truncated_gltf "truncated.gltf:1:" render "$out/truncated.gltf" -o "$out/x.png"
 expect_error export_extension "must end in .mtl or .gltf" export "$out/plastic.json" -o "$out/x.obj"
+
+# A MERL measured BRDF (a constant table, made here) renders on the GPU and on the CPU reference,
+# and exports as its Lambert stand-in with a warning; a .glb carries the .gltf's JSON chunk.
+/usr/bin/python3 - "$out" <<'PY'
+import struct, sys
+out = sys.argv[1]
+with open(out + "/grey.binary", "wb") as f:
+    f.write(struct.pack("<3i", 90, 90, 180))
+    for scale in (1500.0, 1500.0 / 1.15, 1500.0 / 1.66):
+        f.write(struct.pack("<d", 0.5 / 3.141592653589793 * scale) * (90 * 90 * 180))
+with open(out + "/short.binary", "wb") as f:
+    f.write(struct.pack("<3i", 90, 90, 180) + b"\0" * 64)
+json = open(out + "/varnish.gltf", "rb").read()
+json += b" " * (-len(json) % 4)
+chunk = struct.pack("<2I", len(json), 0x4E4F534A) + json
+open(out + "/varnish.glb", "wb").write(struct.pack("<3I", 0x46546C67, 2, 12 + len(chunk)) + chunk)
+open(out + "/lying.glb", "wb").write(struct.pack("<3I", 0x46546C67, 2, 4000) + chunk)
+PY
+check render_merl "$glint" render "$out/grey.binary" -o "$out/grey.png" --size 48x48
+check render_merl_reference "$glint" render "$out/grey.binary" -o "$out/grey_reference.png" --size 48x48 --reference
+check export_merl_mtl "$glint" export "$out/grey.binary" -o "$out/grey.mtl"
+check merl_export_warns grep -q "has no MTL form" "$out/export_merl_mtl.log"
+expect_error short_merl "short.binary: .*truncated" render "$out/short.binary" -o "$out/x.png"
+check render_glb "$glint" render "$out/varnish.glb" -o "$out/varnish_glb.png" --size 64x64
+check same_glb_image cmp "$out/varnish_gltf.png" "$out/varnish_glb.png"
+expect_error lying_glb "lying.glb: byte offset 8: the header says the file is 4000 bytes" render "$out/lying.glb" -o "$out/x.png"
 
 echo "$passed passed, $failures failed"
 [[ $failures -eq 0 ]]

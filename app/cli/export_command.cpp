@@ -2,11 +2,9 @@
 #include "cli/export_command.h"
 
 #include <cstdio>
-#include <filesystem>
 
-#include "interchange/gltf.h"
+#include "interchange/export_formats.h"
 #include "interchange/import_formats.h"
-#include "interchange/mtl.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
 
@@ -61,16 +59,15 @@ int runExportCommand(const std::vector<std::string>& arguments) {
     }
     const std::string& input = arguments[0];
     const std::string& output = arguments[2];
-    const std::string extension = std::filesystem::path(output).extension().string();
-    if (extension != ".mtl" && extension != ".gltf")
-        return fail("the output must end in .mtl or .gltf (got '" + output + "')");
+    if (!isExportPath(output)) return fail("the output must end in .mtl or .gltf (got '" + output + "')");
     auto file = readInput(input);
     if (!file) return fail(file.error().format());
     for (const Diagnostic& warning : file->warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
     if (file->materials.empty()) return fail(input + ": no material to export");
-    const ExportedText written = extension == ".mtl" ? writeMtl(file->materials) : writeGltf(file->materials.front(), file->lights);
-    for (const Diagnostic& warning : written.warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
-    if (Status saved = writeFileAtomically(output, written.text); !saved) return fail(saved.error().format());
+    auto written = exportMaterials(file->materials, file->lights, output);
+    if (!written) return fail(written.error().message);
+    for (const Diagnostic& warning : written->warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
+    if (Status saved = writeFileAtomically(output, written->text); !saved) return fail(saved.error().format());
     std::printf("glint: wrote %s\n", output.c_str());
     return 0;
 }

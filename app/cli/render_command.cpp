@@ -24,7 +24,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference] [--wireframe] [--normals]\n"
     "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256);\n"
-    "                     also a Wavefront .mtl or a glTF .gltf (its first material on the stage)\n"
+    "                     also a Wavefront .mtl, a glTF .gltf (its first material on the stage),\n"
+    "                     a MERL measured BRDF .binary (preview stage)\n"
     "                     or a BRDF Explorer .brdf file (preview stage, GPU only)\n"
     "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"

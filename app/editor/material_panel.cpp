@@ -12,6 +12,7 @@
 #include "editor/ior_presets.h"
 #include "editor/texture_panel.h"
 #include "interchange/custom_brdf.h"
+#include "interchange/measured_brdf.h"
 
 namespace glint {
 namespace {
@@ -121,8 +122,12 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
 bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest) {
     bool changed = false;
     const ModelInfo& current = modelInfo(material.model);
-    const bool custom = material.custom != nullptr;  // a .brdf file: its own table, GPU only
-    if (ImGui::BeginCombo("Model", custom ? material.custom->displayName.c_str() : current.label)) {
+    // A .brdf file (its own table, GPU only) or a MERL table (no parameters) replaces the model.
+    const bool custom = material.custom != nullptr || material.measured != nullptr;
+    const std::string measuredLabel = material.measured ? "measured (MERL): " + material.measured->displayName : "";
+    const char* modelLabel = material.custom ? material.custom->displayName.c_str()
+                             : material.measured ? measuredLabel.c_str() : current.label;
+    if (ImGui::BeginCombo("Model", modelLabel)) {
         for (const ModelInfo& info : allModels()) {
             if (ImGui::Selectable(info.label, !custom && info.model == material.model) && (custom || info.model != material.model)) {
                 material.model = info.model;
@@ -130,10 +135,20 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
                 // Textures follow parameter names; only the normal map means the same in every model.
                 std::erase_if(material.textures, [](const MaterialTexture& t) { return t.parameter != kNormalMapKey; });
                 material.custom = nullptr;
+                material.measured = nullptr;
                 changed = true;
             }
         }
         ImGui::EndCombo();
+    }
+    if (material.measured) {
+        ImGui::PushTextWrapPos();
+        ImGui::TextDisabled("Measured BRDF %s (Matusik et al., A Data-Driven Reflectance Model, SIGGRAPH 2003): "
+                            "no parameters; the table is interpolated trilinearly.", material.measured->path.c_str());
+        ImGui::TextDisabled("Ambient and environment light: the measured directional albedo times the diffuse "
+                            "irradiance (no glossy reflection of the environment).");
+        ImGui::PopTextWrapPos();
+        return changed;
     }
     const auto table = material.custom ? std::span<const ParamSpec>(material.custom->table) : modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i) {

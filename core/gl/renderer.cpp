@@ -252,8 +252,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         const Material& material = scene.materials.at(object.materialIndex);
         const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
         const bool gouraud = object.interpolation == SurfaceInterpolation::Gouraud;
-        auto program = material.custom ? customPrograms_.program(sources_, *material.custom, samples, gouraud)
-                                       : surfaceProgram(material.model, samples, gouraud, TexturedParams::of(material));
+        auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, samples, gouraud)
+                       : material.measured ? measured_.program(sources_, samples, gouraud)
+                                           : surfaceProgram(material.model, samples, gouraud, TexturedParams::of(material));
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -263,6 +264,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
         glUseProgram(shader.id());
         setFusedDisplayUniforms(shader, fusedDisplay_);
         if (material.custom) setCustomBrdfUniforms(shader, *material.custom, material.values);
+        if (material.measured) measured_.bind(shader, material.measured);
         shadowMaps_->bind(shader);
         MaterialBlockStd140 materialBlock{};
         std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),

@@ -12,6 +12,7 @@
 
 #include "gl/material_glsl.h"
 #include "gl/custom_brdf_program.h"
+#include "gl/measured_brdf_gpu.h"
 #include "gl/environment_textures.h"
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
@@ -92,6 +93,7 @@ private:
     // Keyed by model, MSAA samples, Gouraud and which parameters are textured (TexturedParams::mask).
     std::map<std::tuple<BrdfModel, int, bool, std::uint32_t>, SurfaceProgram> surfacePrograms_;
     CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
+    MeasuredBrdfGpu measured_;  // materials with a MERL table
     ShaderProgram displayProgram_;
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;

@@ -6,6 +6,7 @@
 
 #include "interchange/custom_brdf.h"
 #include "scene/param_values_json.h"
+#include "util/referenced_path.h"
 
 namespace glint {
 
@@ -16,8 +17,7 @@ Material readCustomBrdfMaterial(ObjectReader& reader, std::string name) {
     if (model != kCustomBrdfModelId)
         reader.fail("model", "a material with \"brdf_file\" has \"model\": \"brdf_file\", not \"" + model + "\"");
     const std::string written = reader.requiredString("brdf_file");
-    fs::path path(written);
-    if (path.is_relative() && !reader.file().empty()) path = fs::path(reader.file()).parent_path() / path;
+    const fs::path path = resolveReferencedPath(written, reader.file());
     std::error_code error;
     // Only a regular file of sane size is read (never a device or a fifo).
     if (!fs::is_regular_file(path, error))
@@ -34,14 +34,8 @@ Material readCustomBrdfMaterial(ObjectReader& reader, std::string name) {
 }
 
 nlohmann::json customBrdfMaterialBody(const Material& material, const std::string& savedTo) {
-    std::string path = material.custom->file.path;
-    if (!savedTo.empty()) {
-        std::error_code error;
-        const fs::path base = fs::absolute(savedTo, error).parent_path();
-        const fs::path relative = fs::absolute(path, error).lexically_relative(base);
-        if (!relative.empty()) path = relative.generic_string();
-    }
-    nlohmann::json out = {{"name", material.name}, {"model", kCustomBrdfModelId}, {"brdf_file", path}};
+    nlohmann::json out = {{"name", material.name}, {"model", kCustomBrdfModelId},
+                          {"brdf_file", referencedPathFor(material.custom->file.path, savedTo)}};
     writeParamValues(out, material.custom->table, material.values);
     return out;
 }

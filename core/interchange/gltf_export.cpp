@@ -14,6 +14,7 @@
 #include "geometry/mesh.h"
 #include "interchange/base64.h"
 #include "interchange/material_values.h"
+#include "interchange/measured_brdf.h"
 #include "light/photometry.h"
 #include "scene/json_vectors.h"
 
@@ -80,6 +81,8 @@ json materialJson(const Material& material, std::set<std::string>& extensionsUse
     auto lost = [&](const std::string& what) {
         warnings.push_back(makeError("warning: '" + material.name + "' (" + modelInfo(material.model).id + "): " + what));
     };
+    if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
+        lost("the measured BRDF " + material.measured->displayName + " has no glTF form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
     json out = {{"name", material.name}};
     json pbr;
     json extensions = json::object();

@@ -5,7 +5,9 @@
 #include <cctype>
 #include <filesystem>
 
+#include "interchange/glb.h"
 #include "interchange/gltf.h"
+#include "interchange/measured_brdf.h"
 #include "interchange/mtl.h"
 
 namespace glint {
@@ -14,6 +16,8 @@ namespace {
 constexpr ImportFormat kFormats[] = {
     {".mtl", "Wavefront material library", loadMtl},
     {".gltf", "glTF 2.0 (materials and KHR_lights_punctual lights)", loadGltf},
+    {".glb", "binary glTF 2.0 (materials and KHR_lights_punctual lights)", loadGlb},
+    {".binary", "MERL measured BRDF", importMerl},
 };
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "brdf/fresnel.h"
 #include "interchange/material_values.h"
+#include "interchange/measured_brdf.h"
 #include "interchange/text_checks.h"
 #include "util/file_io.h"
 
@@ -347,6 +348,8 @@ ExportedText writeMtl(std::span<const ImportedMaterial> materials) {
         auto lost = [&](const std::string& what) {
             out.warnings.push_back(makeError("warning: '" + name + "' (" + modelInfo(material.model).id + "): " + what));
         };
+        if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
+            lost("the measured BRDF " + material.measured->displayName + " has no MTL form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
         glm::vec3 diffuse(0.0f), specular(0.0f);
         float exponent = 0.0f, ior = 1.0f;
         int illum = 1;

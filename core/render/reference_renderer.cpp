@@ -11,6 +11,7 @@
 #include "math/frame.h"
 #include "environment/environment_lighting.h"
 #include "render/environment_sampling.h"
+#include "render/measured_shading.h"
 #include "render/shadow_rays.h"
 #include "render/specular_transport.h"
 #include "texture/texture_eval.h"
@@ -112,7 +113,8 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
         const float visibility = cosTheta <= 0.0f ? 0.0f : lightVisibility(scene, light, hit, arrival);
         if (visibility == 0.0f && !breakdown) continue;
-        const glm::vec3 brdf = evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame);
+        const glm::vec3 brdf = material.measured ? evalMeasuredBrdf(*material.measured, arrival.towardsLight, towardsViewer, frame)
+                                                 : evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame);
         const glm::vec3 reflected =
             visibility == 0.0f ? glm::vec3(0.0f) : brdf * arrival.normalIrradiance * cosTheta;
         radiance += reflected;
@@ -122,11 +124,15 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
-    const glm::vec3 ambientFactor = ambientReflectance(material.model, values, towardsViewer, frame);
+    // A MERL table (measured_shading.h) has no delta lobes, and its ambient and environment terms
+    // come from its measured directional albedo.
+    const glm::vec3 ambientFactor = material.measured ? measuredAmbientReflectance(*material.measured, towardsViewer, frame)
+                                                      : ambientReflectance(material.model, values, towardsViewer, frame);
     radiance += ambientFactor * ambient;
     // Environment light: the GPU's image-based lighting, or sampled.
     const glm::vec3 environment =
-        options.sampleEnvironment
+        material.measured ? measuredEnvironmentLighting(*material.measured, towardsViewer, frame, scene.environment)
+        : options.sampleEnvironment
             ? sampleEnvironmentLighting(material.model, values, towardsViewer, frame, scene.environment, pixelSeed,
                                         options.environmentSamples)
             : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
@@ -137,9 +143,10 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     const auto* sphereShape = std::get_if<SphereShape>(&shape);
     const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
     if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    const glm::vec3 specular = traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment),
-                                             sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer,
-                                             hit.distance);
+    const glm::vec3 specular =
+        material.measured ? glm::vec3(0.0f)
+                          : traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment),
+                                          sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
     radiance += specular;
     if (breakdown) {
         breakdown->frame = frame;

@@ -27,6 +27,7 @@ inline constexpr int kSceneFormatVersion = 1;
 inline constexpr int kMaxLights = 64;
 
 struct CustomBrdf;  // interchange/custom_brdf.h
+struct MeasuredBrdf;  // interchange/measured_brdf.h
 
 struct Material {
     std::string name;
@@ -36,6 +37,9 @@ struct Material {
     // A BRDF Explorer .brdf file (GPU only). When set, `model` is unused and `values` are packed
     // per custom->table.
     std::shared_ptr<const CustomBrdf> custom;
+    // A MERL measured BRDF (.binary). When set, it is what renders; `model` and `values` hold a
+    // Lambert stand-in for code that knows only analytic models (measured_brdf.h).
+    std::shared_ptr<const MeasuredBrdf> measured;
 
     static Material withDefaults(std::string name, BrdfModel model);
 };

@@ -7,6 +7,7 @@
 
 #include "display/quantisation.h"
 #include "interchange/custom_material_json.h"
+#include "interchange/measured_material_json.h"
 #include "scene/format_migration.h"
 #include "scene/environment_json.h"
 #include "scene/json_object_reader.h"
@@ -60,6 +61,7 @@ Material readMaterial(ObjectReader& reader, const std::string& file) {
     Material material;
     material.name = reader.string("name", "material");
     if (reader.has("brdf_file")) return readCustomBrdfMaterial(reader, std::move(material.name));  // a .brdf file
+    if (reader.has("merl_file")) return readMeasuredMaterial(reader, std::move(material.name));  // a MERL table
     const std::string modelId = reader.requiredString("model");
     const auto model = findModel(modelId);
     if (!model) {
@@ -77,6 +79,7 @@ Material readMaterial(ObjectReader& reader, const std::string& file) {
 // `file`: where the JSON goes, so that texture and .brdf paths are written relative to it ("" for absolute).
 json materialBody(const Material& material, const std::string& file) {
     if (material.custom) return customBrdfMaterialBody(material, file);
+    if (material.measured) return measuredMaterialBody(material, file);
     json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
     writeParamValues(out, modelInfo(material.model).params, material.values);
     if (json textures = materialTexturesToJson(material, file); !textures.is_null()) out["textures"] = textures;

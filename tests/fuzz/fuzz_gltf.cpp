@@ -1,14 +1,18 @@
 // libFuzzer target: glTF material and light import must never crash or hang on any bytes; it
-// returns materials and lights (which must export and import again) or a Diagnostic.
+// returns materials and lights (which must export and import again) or a Diagnostic. Inputs that
+// start with the .glb magic "glTF" go through the binary reader (glb.h), the rest through the JSON one.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
+#include "interchange/glb.h"
 #include "interchange/gltf.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
-    auto file = glint::parseGltf(text, "fuzz.gltf");
+    const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+    auto file = binary ? glint::parseGlb(text, "fuzz.glb") : glint::parseGltf(text, "fuzz.gltf");
     if (!file) {
         if (file.error().message.empty()) __builtin_trap();  // every error says why
         return 0;

@@ -11,6 +11,7 @@
 
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
+#include "editor/interchange_export.h"
 #include "editor/mesh_loading.h"
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
@@ -124,6 +125,7 @@ void handleFileBrowser(EditorState& state) {
         case FilePurpose::OpenBrdf: openDroppedFile(state, *chosen); break;  // routes .brdf and .bparam
         case FilePurpose::SaveBparamAs: saveBparamTo(state, *chosen); break;
         case FilePurpose::OpenEnvironment: openEnvironmentFile(state, *chosen); break;
+        case FilePurpose::ExportMaterial: exportMaterialTo(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;
             state.screenshotPath = *chosen;

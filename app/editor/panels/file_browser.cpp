@@ -30,6 +30,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenBrdf: return "Open BRDF Explorer file (.brdf, .bparam)###FileBrowser";
         case FilePurpose::SaveBparamAs: return "Save parameter values as (.bparam)###FileBrowser";
         case FilePurpose::OpenEnvironment: return "Open environment (.hdr or .exr)###FileBrowser";
+        case FilePurpose::ExportMaterial: return "Export material as (.gltf or .mtl)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -93,7 +94,7 @@ std::optional<std::string> confirm(FileBrowser& browser) {
 
 bool purposeSaves(FilePurpose purpose) {
     return purpose == FilePurpose::SaveSceneAs || purpose == FilePurpose::SaveMaterialAs || purpose == FilePurpose::SaveBparamAs ||
-           purpose == FilePurpose::SaveScreenshot;
+           purpose == FilePurpose::SaveScreenshot || purpose == FilePurpose::ExportMaterial;
 }
 
 void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::string& startPath) {
@@ -105,6 +106,7 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
                          : purpose == FilePurpose::OpenEnvironment ? std::vector<std::string>{".hdr", ".exr"}
                          : purpose == FilePurpose::OpenBrdf     ? std::vector<std::string>{".brdf", ".bparam"}
                          : purpose == FilePurpose::SaveBparamAs ? std::vector<std::string>{".bparam"}
+                         : purpose == FilePurpose::ExportMaterial ? std::vector<std::string>{".gltf", ".mtl"}
                                                                 : std::vector<std::string>{".json"};
     if (purpose == FilePurpose::OpenMesh) {
         browser.extensions.clear();

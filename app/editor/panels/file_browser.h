@@ -11,7 +11,7 @@ namespace glint {
 
 enum class FilePurpose {
     OpenScene, SaveSceneAs, OpenMaterial, SaveMaterialAs, SaveScreenshot, OpenMesh, OpenTexture, OpenBrdf, SaveBparamAs,
-    OpenEnvironment
+    OpenEnvironment, ExportMaterial
 };
 
 struct FileBrowser {

@@ -1,0 +1,40 @@
+// The GL side of measured (MERL) materials: one surface program per (MSAA samples, Gouraud)
+// built around shaders/brdf/merl.glsl, and each table uploaded once as a 3D RGB32F texture
+// (180 × 90 × 90: φ_d, θ_d, θ_h), kept while a material holds the table. It does not evaluate anything itself.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <tuple>
+
+#include "gl/shader_program.h"
+#include "interchange/measured_brdf.h"
+
+namespace glint {
+
+// Texture unit of the table (material textures use 1..12, the environment 13..15, shadows 24..31).
+inline constexpr int kMeasuredTableUnit = 16;
+
+class MeasuredBrdfGpu {
+public:
+    MeasuredBrdfGpu() = default;
+    ~MeasuredBrdfGpu();  // the context must be current
+    MeasuredBrdfGpu(const MeasuredBrdfGpu&) = delete;
+    MeasuredBrdfGpu& operator=(const MeasuredBrdfGpu&) = delete;
+
+    Result<const ShaderProgram*> program(const ShaderSources& sources, int samples, bool gouraud);
+    // Binds `brdf`'s table (uploading it the first time) and sets the albedo uniforms of the bound program.
+    void bind(const ShaderProgram& program, const std::shared_ptr<const MeasuredBrdf>& brdf);
+    int uploads() const { return uploads_; }
+
+private:
+    struct Upload {
+        std::weak_ptr<const MeasuredBrdf> owner;  // expired: the texture is freed on the next bind
+        unsigned texture = 0;
+    };
+    std::map<std::tuple<int, bool>, ShaderProgram> programs_;
+    std::map<const MeasuredBrdf*, Upload> textures_;
+    int uploads_ = 0;
+};
+
+}  // namespace glint

@@ -1,0 +1,21 @@
+// The formats Glint writes materials to, by the output's extension: .mtl (every material, as a
+// library) and .gltf (the first material on a sphere, plus lights). Used by `glint export` and
+// File ▸ Export material…; it returns text and warnings and writes no file.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "interchange/imported.h"
+
+namespace glint {
+
+inline constexpr const char* kExportExtensions[] = {".mtl", ".gltf"};
+bool isExportPath(const std::string& path);  // ends in one of them (any case)
+
+// The text for `outputPath` (its extension, any case, picks the format) and the warnings about
+// what the format cannot hold; an error for another extension or no material.
+Result<ExportedText> exportMaterials(std::span<const ImportedMaterial> materials, std::span<const Light> lights,
+                                     const std::string& outputPath);
+
+}  // namespace glint
