@@ -91,6 +91,18 @@ void loadFont(float pixelSize) {
     }
 }
 
+// Column widths times `ratio` (a UI scale change), so scaled panels are not cut off.
+void scaleSideColumns(EditorState& state, float ratio) {
+    state.leftPanelWidth *= ratio;
+    state.rightPanelWidth *= ratio;
+}
+
+// Each column at most 40 % of the window, so the viewport keeps at least a fifth of it.
+void keepViewportVisible(EditorState& state, float windowWidth) {
+    state.leftPanelWidth = std::min(state.leftPanelWidth, 0.4f * windowWidth);
+    state.rightPanelWidth = std::min(state.rightPanelWidth, 0.4f * windowWidth);
+}
+
 // --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
 
 void saveScreenshot(EditorState& state, Renderer& renderer) {
@@ -189,6 +201,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
         gDroppedPaths.clear();
         if (effectiveUiScale(state.settings) != appliedScale || state.settings.presentationMode != appliedPresentation) {
+            // The side columns grow and shrink with the text in them (presentation mode doubles it);
+            // their default widths are for scale 1.
+            scaleSideColumns(state, effectiveUiScale(state.settings) / (appliedScale > 0.0f ? appliedScale : 1.0f));
             appliedScale = effectiveUiScale(state.settings);
             appliedPresentation = state.settings.presentationMode;
             applyEditorLook(state.settings, baseStyle, presentationFont, kFontPixels, kPresentationFontPixels);
@@ -202,6 +217,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         const float menuHeight = drawMenuBar(state);
         const float statusHeight = drawStatusBar(state, windowSize.y, windowSize.x);
         const float columnHeight = windowSize.y - menuHeight - statusHeight;
+        keepViewportVisible(state, windowSize.x);
         drawScenePanel(state, menuHeight, columnHeight);
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
