@@ -1,10 +1,11 @@
-// Snapshot goldens of the classroom plots (`glint render --overlay polar|lobe|albedo|fresnel`):
-// each plot drawn by drawPlotOverlay on the headless canvas over a black 256×256 image, compared
+// Snapshot goldens of the classroom plots (`glint render --overlay polar|lobe|albedo|fresnel|cmf`):
+// each plot drawn on the headless canvas over a black 256×256 image, compared
 // with goldens/plot_<name>.png. Goldens change only with GLINT_UPDATE_GOLDENS=1.
 #include <gtest/gtest.h>
 
 #include "brdf/presets.h"
 #include "cli/plot_overlay.h"
+#include "cli/render_overlays.h"
 #include "golden_support.h"
 #include "gpu_test_support.h"
 
@@ -25,6 +26,18 @@ PlotOverlayOptions plotSnapshotOptions(PlotOverlayKind kind, float incidenceDegr
     options.incidenceDegrees = incidenceDegrees;
     options.fromInside = fromInside;
     return options;
+}
+
+// The CIE 1931 colour matching functions, as `glint render --overlay cmf` draws them.
+TEST(PlotSnapshot, ColourMatchingFunctions) {
+    test::sharedHeadless();
+    const Scene scene = test::loadTestScene("scenes/blinn_point.json");
+    const RenderOverlay* cmf = findRenderOverlay("cmf");
+    ASSERT_NE(cmf, nullptr);
+    const std::optional<ProbeResult> noProbe;
+    auto image = drawRenderOverlays(std::span(&cmf, 1), {scene, 256, 256, noProbe}, DisplayImage(256, 256));
+    ASSERT_TRUE(image) << image.error().format();
+    test::expectMatchesGolden("plot_cmf", *image);
 }
 
 // Two Blinn-Phong materials (red plastic, floor) overlaid.

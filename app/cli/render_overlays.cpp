@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include "classroom/cmf_plot.h"
 #include "classroom/overlay_canvas.h"
 #include "classroom/probe_overlay.h"
 
@@ -16,9 +17,16 @@ void drawProbeRenderOverlay(const RenderOverlayInput& input) {
                      {0.0f, 0.0f, static_cast<float>(input.width), static_cast<float>(input.height)});
 }
 
+// The CIE 1931 matching functions over the whole image, as `glint cmf` draws them.
+void drawCmfRenderOverlay(const RenderOverlayInput& input) {
+    drawCmfPlot(ImGui::GetBackgroundDrawList(), ImVec2(0.0f, 0.0f),
+                ImVec2(static_cast<float>(input.width), static_cast<float>(input.height)), kRenderOverlayFontPixels);
+}
+
 constexpr RenderOverlay kRenderOverlays[] = {
     {"probe", "the surface probe at --probe X,Y: N, V, and per light L, H, R (T for glass) with their angles", true,
      drawProbeRenderOverlay},
+    {"cmf", "the CIE 1931 colour matching functions x̄, ȳ, z̄ over 380–780 nm (as `glint cmf`)", false, drawCmfRenderOverlay},
 };
 
 }  // namespace

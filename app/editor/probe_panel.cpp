@@ -162,6 +162,13 @@ void toggleProbeTool() {
 
 bool probeToolOn() { return gProbeTool.active || gProbeTool.armed; }
 
+std::optional<float> probedIncidenceDegrees() {
+    if (!gProbeTool.active || !gProbeTool.result.hitSurface) return std::nullopt;
+    for (const ProbeLight& light : gProbeTool.result.lights)
+        if (!light.behindSurface) return light.incidentDegrees;
+    return std::nullopt;
+}
+
 bool handleProbeClick(const ViewportRect& viewport) {
     ProbeTool& probe = gProbeTool;
     const ImGuiIO& io = ImGui::GetIO();

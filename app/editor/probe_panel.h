@@ -4,6 +4,8 @@
 // or the point changes. The numbers come from core/classroom/surface_probe.h.
 #pragma once
 
+#include <optional>
+
 #include "editor/camera_actions.h"
 #include "editor/editor_state.h"
 
@@ -18,5 +20,8 @@ bool probeToolOn();
 bool handleProbeClick(const ViewportRect& viewport);
 // The arrows over the viewport and the numbers in their window, when a point is set.
 void drawProbe(const EditorState& state, const ViewportRect& viewport);
+// θ_i of the first light that reaches the probed surface point (the Plots window follows it);
+// nothing while the probe is off, saw no surface or no light reaches the point.
+std::optional<float> probedIncidenceDegrees();
 
 }  // namespace glint

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "editor/editor_state.h"
+#include "editor/probe_panel.h"
 
 namespace glint {
 namespace {
@@ -77,6 +78,7 @@ void drawPlotsPinning(EditorState& state) {
 }
 
 std::string gPlotsIncidenceRefusal;  // why a typed incidence angle was refused (one Plots window)
+bool gPlotsFollowProbe = true;       // θ_i from the surface probe's point when it shows one
 
 }  // namespace
 
@@ -88,9 +90,17 @@ void drawPlotsWindow(EditorState& state) {
         ImGui::End();
         return;
     }
+    const std::optional<float> probed = probedIncidenceDegrees();
+    if (probed) {  // the probed point's first light: its θ_i, or the slider's when unticked
+        ImGui::Checkbox("θ_i from the probe", &gPlotsFollowProbe);
+        if (gPlotsFollowProbe) plots.incidenceDegrees = std::clamp(*probed, 0.0f, 90.0f);
+        ImGui::SameLine();
+    }
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
     float typedIncidence = plots.incidenceDegrees;
+    ImGui::BeginDisabled(probed && gPlotsFollowProbe);
     ImGui::SliderFloat("Incidence θ_i", &typedIncidence, 0.0f, 90.0f, "%.0f°");
+    ImGui::EndDisabled();
     if (typedIncidence >= 0.0f && typedIncidence <= 90.0f) {
         if (typedIncidence != plots.incidenceDegrees) gPlotsIncidenceRefusal.clear();
         plots.incidenceDegrees = typedIncidence;
