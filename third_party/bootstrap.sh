@@ -23,7 +23,7 @@ configure_and_build() {
 # Optimised; line tables only (-g1): stack traces keep file and line. Unity batches (see
 # CMakeLists.txt) and -g1 keep the three builds of the test command inside CI's time budget.
 configure_and_build "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
-  -DGLINT_UNITY_BUILD=ON
+  -DGLINT_UNITY_BUILD=ON -DGLINT_SHARD_GTESTS=ON
 [[ $mode == run ]] && exec "$build/app/glint" "$@"
 
 # test: each suite's ctest summary is collected, then one closing line for all of them.

@@ -37,7 +37,7 @@ using nlohmann::json;
 
 constexpr const char* kUsage =
     "usage: glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]...\n"
-    "  --frames N   frames timed per scene, interleaved with the bare pass (default 11; --quick: 3)\n"
+    "  --frames N   frames timed per scene, interleaved with the bare pass (default 11; --quick: 1)\n"
     "  --quick      fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy\n"
     "  --json FILE  also write the figures as JSON (\"format\": \"glint-bench\")\n"
     "  --scene NAME time only this standard scene, no program figures (repeatable; e.g. lambert/4;\n"
@@ -53,7 +53,7 @@ struct BenchOptions {
     int coldStarts() const { return quick ? 3 : 11; }
     int thumbnails() const { return quick ? 8 : 40; }
     int meshLoads() const { return quick ? 1 : 5; }
-    int framesPerScene() const { return frames ? frames : quick ? 3 : 11; }
+    int framesPerScene() const { return frames ? frames : quick ? 1 : 11; }
 };
 
 int usageError(const std::string& message) {

@@ -91,18 +91,6 @@ void loadFont(float pixelSize) {
     }
 }
 
-// Column widths times `ratio` (a UI scale change), so scaled panels are not cut off.
-void scaleSideColumns(EditorState& state, float ratio) {
-    state.leftPanelWidth *= ratio;
-    state.rightPanelWidth *= ratio;
-}
-
-// Each column at most 40 % of the window, so the viewport keeps at least a fifth of it.
-void keepViewportVisible(EditorState& state, float windowWidth) {
-    state.leftPanelWidth = std::min(state.leftPanelWidth, 0.4f * windowWidth);
-    state.rightPanelWidth = std::min(state.rightPanelWidth, 0.4f * windowWidth);
-}
-
 // --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
 
 void saveScreenshot(EditorState& state, Renderer& renderer) {
@@ -201,9 +189,6 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
         gDroppedPaths.clear();
         if (effectiveUiScale(state.settings) != appliedScale || state.settings.presentationMode != appliedPresentation) {
-            // The side columns grow and shrink with the text in them (presentation mode doubles it);
-            // their default widths are for scale 1.
-            scaleSideColumns(state, effectiveUiScale(state.settings) / (appliedScale > 0.0f ? appliedScale : 1.0f));
             appliedScale = effectiveUiScale(state.settings);
             appliedPresentation = state.settings.presentationMode;
             applyEditorLook(state.settings, baseStyle, presentationFont, kFontPixels, kPresentationFontPixels);
@@ -217,7 +202,6 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         const float menuHeight = drawMenuBar(state);
         const float statusHeight = drawStatusBar(state, windowSize.y, windowSize.x);
         const float columnHeight = windowSize.y - menuHeight - statusHeight;
-        keepViewportVisible(state, windowSize.x);
         drawScenePanel(state, menuHeight, columnHeight);
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
@@ -226,9 +210,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
         ViewportRect viewport;
-        viewport.x = state.showLeftPanel ? state.leftPanelWidth : 0.0f;
+        viewport.x = state.showLeftPanel ? leftColumnScreenWidth(state) : 0.0f;
         viewport.y = menuHeight;
-        viewport.width = std::max(1.0f, windowSize.x - viewport.x - (state.showRightPanel ? state.rightPanelWidth : 0.0f));
+        viewport.width = std::max(1.0f, windowSize.x - viewport.x - (state.showRightPanel ? rightColumnScreenWidth(state) : 0.0f));
         viewport.height = std::max(1.0f, columnHeight);
         drawClassroom(state, viewport.x, viewport.y);  // lessons, presentation key, colour windows
         const bool handleDrag = handleLightHandles(state, viewport);

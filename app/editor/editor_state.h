@@ -29,6 +29,7 @@ struct EditorState {
     Settings settings;  // persisted: recent files, UI scale
 
     // Layout (pixels).
+    // Side column widths at UI scale 1 [px]; on screen they grow with the scale (panels.h).
     float rightPanelWidth = 360.0f;
     float leftPanelWidth = 330.0f;
     bool showLeftPanel = true;

@@ -12,6 +12,10 @@ float drawMenuBar(EditorState& state);
 // Status bar along the bottom; returns its height in pixels.
 float drawStatusBar(EditorState& state, float top, float width);
 
+// The side columns' widths on screen: their widths at UI scale 1 times the UI scale (presentation
+// mode doubles it), each at most 40 % of the window so the viewport keeps a fifth of it.
+float leftColumnScreenWidth(const EditorState& state);
+float rightColumnScreenWidth(const EditorState& state);
 // The left column (scene: lights, display) and the right column (object and material).
 void drawScenePanel(EditorState& state, float top, float height);
 void drawMaterialColumn(EditorState& state, float top, float height, float windowWidth);

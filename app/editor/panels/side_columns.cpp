@@ -3,6 +3,10 @@
 // window edge, resizable by their inner edge and collapsible (title bar arrow or View menu).
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "classroom/presentation.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
@@ -12,15 +16,35 @@ constexpr ImGuiWindowFlags kColumnFlags = ImGuiWindowFlags_NoMove | ImGuiWindowF
 
 void pushPanelItemWidth() { ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f); }
 
+float columnScreenWidth(float widthAtScaleOne, const EditorState& state) {
+    return std::min(widthAtScaleOne * effectiveUiScale(state.settings), 0.4f * ImGui::GetIO().DisplaySize.x);
+}
+
+// How far the user may drag a column's inner edge [px]: 160 up to 40 % of the window.
+void setColumnSizeConstraints() {
+    ImGui::SetNextWindowSizeConstraints(ImVec2(160.0f, 0.0f), ImVec2(std::max(160.0f, 0.4f * ImGui::GetIO().DisplaySize.x), 1e6f));
+}
+
+// After the user dragged the column's inner edge: its new width back in scale-1 units. Untouched
+// otherwise, so the 40 % limit of a small window never shrinks the stored width.
+void keepDraggedWidth(float& widthAtScaleOne, float shownWidth, const EditorState& state) {
+    const float now = ImGui::GetWindowWidth();
+    if (std::abs(now - shownWidth) > 0.5f) widthAtScaleOne = now / effectiveUiScale(state.settings);
+}
+
 }  // namespace
+
+float leftColumnScreenWidth(const EditorState& state) { return columnScreenWidth(state.leftPanelWidth, state); }
+float rightColumnScreenWidth(const EditorState& state) { return columnScreenWidth(state.rightPanelWidth, state); }
 
 void drawScenePanel(EditorState& state, float top, float height) {
     if (!state.showLeftPanel) return;
     ImGui::SetNextWindowPos(ImVec2(0, top), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(state.leftPanelWidth, height), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(220, 0), ImVec2(900, 1e6f));
+    const float shownWidth = leftColumnScreenWidth(state);
+    ImGui::SetNextWindowSize(ImVec2(shownWidth, height), ImGuiCond_Always);
+    setColumnSizeConstraints();
     if (ImGui::Begin("Scene", &state.showLeftPanel, kColumnFlags)) {
-        state.leftPanelWidth = ImGui::GetWindowWidth();
+        keepDraggedWidth(state.leftPanelWidth, shownWidth, state);
         pushPanelItemWidth();
         if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) drawLightsSection(state);
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) drawDisplaySection(state);
@@ -32,11 +56,12 @@ void drawScenePanel(EditorState& state, float top, float height) {
 
 void drawMaterialColumn(EditorState& state, float top, float height, float windowWidth) {
     if (!state.showRightPanel) return;
-    ImGui::SetNextWindowPos(ImVec2(windowWidth - state.rightPanelWidth, top), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(state.rightPanelWidth, height), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(240, 0), ImVec2(900, 1e6f));
+    const float shownWidth = rightColumnScreenWidth(state);
+    ImGui::SetNextWindowPos(ImVec2(windowWidth - shownWidth, top), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(shownWidth, height), ImGuiCond_Always);
+    setColumnSizeConstraints();
     if (ImGui::Begin("Material", &state.showRightPanel, kColumnFlags)) {
-        state.rightPanelWidth = ImGui::GetWindowWidth();
+        keepDraggedWidth(state.rightPanelWidth, shownWidth, state);
         pushPanelItemWidth();
         drawObjectSection(state);
         ImGui::PopItemWidth();
