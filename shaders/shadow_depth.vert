@@ -10,5 +10,5 @@ out vec3 worldPosition;
 
 void main() {
     worldPosition = placement.xyz + placement.w * inPosition;
-    gl_Position = lightViewProjection * vec4(inPosition, 1.0);
+    gl_Position = lightViewProjection * vec4(worldPosition, 1.0);
 }

@@ -130,6 +130,20 @@ TEST(GpuShadows, ThreeShadowedLightsTogetherMatchTheCpuShadowRays) {
     expectShadowedAgreement(test::loadTestScene("scenes/shadows.json"));
 }
 
+// A mesh object placed away from the origin and scaled (its vertices are in the unit sphere,
+// placed by center and scale) casts its shadow where it stands, under all three light kinds; the
+// torus is closed, so its back faces are culled in the maps and in the picture.
+TEST(GpuShadows, PlacedMeshCastsItsShadowWhereItStands) {
+    Scene scene = test::loadTestScene("scenes/shadows.json");
+    MeshShape torus;
+    torus.mesh = std::make_shared<const Mesh>(makeTorus({0, 0, 0}, 0.7f, 0.3f, 48, 24));
+    torus.center = {0.4f, 0.2f, -0.3f};
+    torus.scale = 0.8f;
+    scene.objects[0].shape = torus;
+    scene.objects[0].interpolation = SurfaceInterpolation::Phong;
+    expectShadowedAgreement(scene);
+}
+
 // The default scene with its key light's shadow on (default settings): no acne on the lit sphere
 // or floor and no gap at the contact, or those pixels would disagree with the shadow rays.
 TEST(GpuShadows, DefaultSceneMatchesTheCpuShadowRays) {
@@ -277,6 +291,28 @@ TEST(GpuShadows, MapsAreRenderedOnlyWhenLightsOrGeometryChange) {
     scene.lights[0].shadow.mapResolution = 512;
     (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first + 3);
+}
+
+// Moving one shadowed light draws its map alone; an object change draws them all; a light
+// without shadows draws none.
+TEST(GpuShadows, OnlyTheMapOfTheLightThatMovedIsDrawn) {
+    Renderer& renderer = test::sharedHeadless().renderer();
+    Scene scene = test::loadTestScene("scenes/shadows.json");  // three shadowed lights
+    Light fill;
+    fill.type = LightType::Point;
+    fill.position = {2.0f, 1.0f, 2.0f};
+    scene.lights.push_back(fill);  // no shadows
+    (void)renderShadowsGpu(scene);
+    const long long first = renderer.shadowMapsDrawn();
+    scene.lights[1].position.x += 0.2f;
+    (void)renderShadowsGpu(scene);
+    EXPECT_EQ(renderer.shadowMapsDrawn(), first + 1);
+    scene.lights.back().position.y += 0.5f;
+    (void)renderShadowsGpu(scene);
+    EXPECT_EQ(renderer.shadowMapsDrawn(), first + 1);
+    std::get<PlaneShape>(scene.objects[1].shape).size.x = 5.0f;
+    (void)renderShadowsGpu(scene);
+    EXPECT_EQ(renderer.shadowMapsDrawn(), first + 4);
 }
 
 }  // namespace

@@ -31,6 +31,7 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
+#include "editor/viewport_refresh.h"
 #include "gl/renderer.h"
 
 namespace glint {
@@ -101,13 +102,6 @@ void saveScreenshot(EditorState& state, Renderer& renderer) {
     else state.statusMessage = "Screenshot " + state.screenshotPath;
 }
 
-// Downscale factor for previews during a gesture so a frame stays near 33 ms (cost ∝ pixels).
-int previewScale(double fullResolutionMilliseconds) {
-    constexpr double kFrameBudgetMilliseconds = 33.0;
-    if (fullResolutionMilliseconds <= kFrameBudgetMilliseconds) return 1;
-    return std::clamp(static_cast<int>(std::ceil(std::sqrt(fullResolutionMilliseconds / kFrameBudgetMilliseconds))), 2, 4);
-}
-
 // "Glint — name" with a dot while there are unsaved changes.
 std::string windowTitle(const EditorState& state) {
     const std::string& path = state.session.path();
@@ -166,14 +160,14 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     std::uint64_t renderedRevision = ~0ull;
     int renderedScale = 1;
     std::string shownTitle;
-    double fullResolutionMilliseconds = 0.0;
+    ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
     state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     while (!state.quitNow) {
         gEventSeen = false;
-        const double secondsToWake = std::min(secondsToAutosave, secondsToBrdfPoll);
+        const double secondsToWake = std::min({secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime())});
         if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
         else if (framesToDraw > 0) glfwPollEvents();
         else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
@@ -231,27 +225,31 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
                                         std::max(1, static_cast<int>(viewport.height * pixelScale))};
         const glm::ivec2 viewportLowerLeft{static_cast<int>(viewport.x * pixelScale),
                                            static_cast<int>(statusHeight * pixelScale)};
-        // While a gesture changes the scene, a frame that would take longer than 33 ms is drawn
-        // at reduced resolution; the full-resolution frame follows when the gesture ends.
-        const int wantedScale = gesture ? previewScale(fullResolutionMilliseconds) : 1;
         if (updateCompareView(state, renderer)) renderedSize = {0, 0};  // the compare panes used the renderer
         const bool changed = state.session.revision() != renderedRevision;
-        const bool renderedThisFrame = viewportPixels != renderedSize || changed || (!gesture && renderedScale != 1);
-        if (renderedThisFrame) {
-            const int scale = changed ? wantedScale : 1;
-            const glm::ivec2 renderPixels = (viewportPixels + scale - 1) / scale;
+        const RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
+                                               state.settings.simplifyMeshesWhileDragging});
+        if (plan.render) {
+            const glm::ivec2 renderPixels = (viewportPixels + plan.pixelScale - 1) / plan.pixelScale;
+            const long long shadowMapRenders = renderer.shadowMapRenders();
             const auto start = std::chrono::steady_clock::now();
-            if (Status status = renderer.renderRadiance(state.session.scene(), renderPixels.x, renderPixels.y); !status)
+            if (Status status = renderer.renderRadiance(state.session.scene(), renderPixels.x, renderPixels.y, plan.detail);
+                !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
             state.lastRenderMilliseconds =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            if (scale == 1) fullResolutionMilliseconds = state.lastRenderMilliseconds;
-            state.previewScale = scale;
+            refresh.rendered(plan, state.lastRenderMilliseconds, renderer.simplifiedMeshesDrawn() > 0);
+            // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
+            if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
+                renderer.prepareSimplifiedMeshes(state.session.scene());
+            state.previewScale = plan.pixelScale;
+            state.simplifiedMeshesShown = renderer.simplifiedMeshesDrawn();
+            state.shadowMapsRedrawn = renderer.shadowMapRenders() != shadowMapRenders;
             state.triangleCount = renderer.trianglesDrawn();
             renderedSize = viewportPixels;
             renderedRevision = state.session.revision();
-            renderedScale = scale;
+            renderedScale = plan.pixelScale;
             framesToDraw = std::max(framesToDraw, 2);
         }
         if (state.screenshotRequested) {
@@ -266,13 +264,14 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         platform->present();
-        if (logFrames && renderedThisFrame) {
+        if (logFrames && plan.render) {
             glFinish();
             const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
             std::fprintf(stderr,
-                         "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, %lld triangles\n",
+                         "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
+                         "%d simplified meshes, shadow maps %s, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total,
-                         state.triangleCount);
+                         state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         if (const std::string title = windowTitle(state); title != shownTitle) {

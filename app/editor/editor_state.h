@@ -42,6 +42,8 @@ struct EditorState {
     // Figures for the status bar.
     double lastRenderMilliseconds = 0.0;
     int previewScale = 1;  // >1 while a drag renders at reduced resolution
+    int simplifiedMeshesShown = 0;  // large meshes drawn by their simplified stand-ins (while dragging)
+    bool shadowMapsRedrawn = false;  // the last render drew the shadow maps again
     long long triangleCount = 0;  // submitted by the last render
     std::string rendererDescription;
     std::string statusMessage;  // one line ("Saved …")

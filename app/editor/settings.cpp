@@ -35,13 +35,16 @@ Settings loadSettings() {
         const float value = scale->get<float>();
         if (value >= 1.5f && value <= 3.0f) settings.presentationScale = value;
     }
+    if (auto simplify = document.find("simplify_meshes_while_dragging"); simplify != document.end() && simplify->is_boolean())
+        settings.simplifyMeshesWhileDragging = simplify->get<bool>();
     return settings;
 }
 
 void saveSettings(const Settings& settings) {
     const nlohmann::json document = {{"recent_files", settings.recentFiles}, {"ui_scale", settings.uiScale},
                                      {"presentation_mode", settings.presentationMode},
-                                     {"presentation_scale", settings.presentationScale}};
+                                     {"presentation_scale", settings.presentationScale},
+                                     {"simplify_meshes_while_dragging", settings.simplifyMeshesWhileDragging}};
     if (ensureParentDirectory(settingsPath())) (void)writeFileAtomically(settingsPath(), document.dump(2) + "\n");
 }
 

@@ -1,4 +1,5 @@
-// Editor settings kept between runs: recent files and the UI scale, in
+// Editor settings kept between runs: recent files, the UI scale, presentation mode and whether
+// large meshes are simplified while dragging, in
 // stateDirectory()/settings.json (see core/edit/recovery.h for the directory). A damaged or
 // missing file gives the defaults; writes are atomic.
 #pragma once
@@ -14,6 +15,7 @@ struct Settings {
     float uiScale = 1.0f;                  // HiDPI: font and sizes, 0.75–3
     bool presentationMode = false;         // classroom: large font, high contrast (app/classroom/presentation.h)
     float presentationScale = 2.0f;        // UI scale in presentation mode, 1.5–3
+    bool simplifyMeshesWhileDragging = true;  // large meshes drawn simplified during drags (editor/viewport_refresh.h)
 };
 
 Settings loadSettings();

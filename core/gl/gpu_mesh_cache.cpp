@@ -1,8 +1,10 @@
-// GPU mesh buffers (see gpu_mesh_cache.h).
+// GPU mesh buffers, their closure and their simplified stand-ins (see gpu_mesh_cache.h).
 #include "gl/gpu_mesh_cache.h"
 
+#include <chrono>
 #include <cstddef>
 
+#include "geometry/mesh_simplify.h"
 #include "geometry/shape_mesh.h"
 
 namespace glint {
@@ -33,8 +35,8 @@ bool sameTriangles(const Shape& a, const Shape& b) {
 }  // namespace
 
 GpuMeshCache::~GpuMeshCache() {
-    for (ProceduralEntry& entry : procedural_) destroy(entry.gpu);
-    for (auto& [key, entry] : imported_) destroy(entry.gpu);
+    for (ProceduralEntry& entry : procedural_) destroy(entry.levels.full), destroy(entry.levels.simplified);
+    for (auto& [key, entry] : imported_) destroy(entry.levels.full), destroy(entry.levels.simplified);
 }
 
 void GpuMeshCache::upload(GpuMesh& gpu, const Mesh& mesh) {
@@ -67,48 +69,116 @@ void GpuMeshCache::destroy(GpuMesh& gpu) {
     gpu = {};
 }
 
-const GpuMesh& GpuMeshCache::forObject(size_t objectIndex, const SceneObject& object, int proxySegments, int proxyRings,
-                                       float proxyScale) {
+GpuMeshCache::Levels* GpuMeshCache::levelsFor(size_t objectIndex, const SceneObject& object) {
     if (const auto* meshShape = std::get_if<MeshShape>(&object.shape)) {
-        if (!meshShape->mesh) return empty_;
+        if (!meshShape->mesh) return nullptr;
         ImportedEntry& entry = imported_[meshShape->mesh.get()];
         // A freed mesh's address can come back for a new one: the weak pointer tells them apart.
-        if (!entry.gpu.vertexArray || entry.source.lock() != meshShape->mesh) {
-            upload(entry.gpu, *meshShape->mesh);
+        if (!entry.levels.full.vertexArray || entry.source.lock() != meshShape->mesh) {
+            upload(entry.levels.full, *meshShape->mesh);
+            entry.levels.full.closure = meshClosure(*meshShape->mesh);
+            forgetSimplified(entry.levels);
             entry.source = meshShape->mesh;
         }
-        return entry.gpu;
+        return &entry.levels;
     }
     if (procedural_.size() <= objectIndex) procedural_.resize(objectIndex + 1);
     ProceduralEntry& entry = procedural_[objectIndex];
     const bool proxy = !drawnAsTriangles(object.shape, object.interpolation);
-    if (entry.gpu.vertexArray && entry.proxy == proxy && sameTriangles(entry.shape, object.shape)) return entry.gpu;
+    if (entry.levels.full.vertexArray && entry.proxy == proxy && sameTriangles(entry.shape, object.shape)) return &entry.levels;
+    Mesh mesh;
     if (proxy) {
         const auto& sphere = std::get<SphereShape>(object.shape);
-        upload(entry.gpu, makeUvSphere(sphere.center, sphere.radius * proxyScale, proxySegments, proxyRings));
+        mesh = makeUvSphere(sphere.center, sphere.radius * proxyScale_, proxySegments_, proxyRings_);
     } else {
-        upload(entry.gpu, proceduralMesh(object.shape));
+        mesh = proceduralMesh(object.shape);
     }
+    upload(entry.levels.full, mesh);
+    entry.levels.full.closure = meshClosure(mesh);
+    forgetSimplified(entry.levels);
     entry.shape = object.shape;
     entry.proxy = proxy;
-    return entry.gpu;
+    return &entry.levels;
+}
+
+void GpuMeshCache::forgetSimplified(Levels& levels) {
+    destroy(levels.simplified);
+    levels.simplifiedDone = false;
+    if (levels.making.valid()) abandoned_.push_back(std::move(levels.making));
+}
+
+void GpuMeshCache::updateSimplified(Levels& levels, const SceneObject& object) {
+    if (levels.simplifiedDone || static_cast<size_t>(levels.full.indexCount) / 3 <= kSimplifyAboveTriangles) return;
+    if (!levels.making.valid()) {
+        // The worker makes its own copy of a procedural shape's triangles; an imported mesh is
+        // shared (immutable) for as long as the worker reads it.
+        std::shared_ptr<const Mesh> mesh;
+        if (const auto* meshShape = std::get_if<MeshShape>(&object.shape)) mesh = meshShape->mesh;
+        levels.making = std::async(std::launch::async, [mesh, shape = object.shape] {
+            SimplifiedWithClosure result;
+            result.mesh = simplifyMesh(mesh ? *mesh : proceduralMesh(shape), kSimplifiedTriangles).mesh;
+            result.closure = meshClosure(result.mesh);
+            return result;
+        });
+        return;
+    }
+    if (levels.making.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    SimplifiedWithClosure made = levels.making.get();
+    levels.simplifiedDone = true;
+    if (made.mesh.indices.empty()) return;  // nothing came out: the full mesh stays
+    upload(levels.simplified, made.mesh);
+    levels.simplified.closure = made.closure;
+    levels.simplified.simplified = true;
+}
+
+const GpuMesh& GpuMeshCache::forObject(size_t objectIndex, const SceneObject& object, MeshDetail detail) {
+    Levels* levels = levelsFor(objectIndex, object);
+    if (!levels) return empty_;
+    if (detail == MeshDetail::Simplified) {
+        updateSimplified(*levels, object);
+        if (levels->simplified.vertexArray) return levels->simplified;
+    }
+    return levels->full;
+}
+
+void GpuMeshCache::prepareSimplified(size_t objectIndex, const SceneObject& object) {
+    if (Levels* levels = levelsFor(objectIndex, object)) updateSimplified(*levels, object);
+}
+
+void GpuMeshCache::finishSimplified() {
+    for (ProceduralEntry& entry : procedural_)
+        if (entry.levels.making.valid()) entry.levels.making.wait();
+    for (auto& [key, entry] : imported_)
+        if (entry.levels.making.valid()) entry.levels.making.wait();
 }
 
 void GpuMeshCache::releaseUnused() {
     for (auto it = imported_.begin(); it != imported_.end();) {
         if (it->second.source.expired()) {
-            destroy(it->second.gpu);
+            destroy(it->second.levels.full);
+            forgetSimplified(it->second.levels);
             it = imported_.erase(it);
         } else {
             ++it;
         }
     }
+    // Stand-ins nobody wants any more are dropped once their worker is done.
+    std::erase_if(abandoned_, [](const auto& job) { return job.wait_for(std::chrono::seconds(0)) == std::future_status::ready; });
 }
 
 void setTriangleUniforms(const ShaderProgram& program, const SceneObject& object) {
     const MeshPlacement placement = placementOf(object.shape);
     glUniform4f(program.uniform("placement"), placement.offset.x, placement.offset.y, placement.offset.z, placement.scale);
     glUniform1i(program.uniform("flatNormals"), object.interpolation == SurfaceInterpolation::Flat ? 1 : 0);
+}
+
+void setFaceCulling(CulledFaces faces) {
+    if (faces == CulledFaces::None) {
+        glDisable(GL_CULL_FACE);
+        return;
+    }
+    glEnable(GL_CULL_FACE);
+    glCullFace(faces == CulledFaces::Back ? GL_BACK : GL_FRONT);
 }
 
 }  // namespace glint

@@ -14,6 +14,7 @@
 #include "gl/material_textures.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
+#include "render/visibility.h"
 
 namespace glint {
 namespace {
@@ -22,13 +23,6 @@ namespace {
 // circumscribes the sphere (each face's circumcircle spans at most π/S + π/R radians).
 constexpr int kProxySegments = 48, kProxyRings = 24;
 const float kProxyScale = 1.001f / std::cos(kPi / kProxySegments + kPi / kProxyRings);
-
-// Whether the whole proxy of a sphere lies beyond the camera's near plane, so that every pixel
-// of the sphere is covered by a front face of the proxy.
-bool proxyBeyondNearPlane(const Camera& camera, const SphereShape& sphere) {
-    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-    return glm::dot(sphere.center - camera.position, forward) - sphere.radius * kProxyScale > camera.nearPlane;
-}
 
 // The display chain's uniforms (shaders/common/display_encode.glsl) of a program that has them.
 void setDisplayUniforms(const ShaderProgram& program, const DisplaySettings& display) {
@@ -58,7 +52,9 @@ void setFusedDisplayUniforms(const ShaderProgram& program, const std::optional<D
 
 // --- creation -------------------------------------------------------------------------------
 
-Renderer::Renderer(GlPlatform& platform, ShaderSources sources) : platform_(platform), sources_(std::move(sources)) {}
+Renderer::Renderer(GlPlatform& platform, ShaderSources sources)
+    : platform_(platform), sources_(std::move(sources)),
+      meshes_(std::make_unique<GpuMeshCache>(kProxySegments, kProxyRings, kProxyScale)) {}
 
 Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderSources sources) {
     platform.makeCurrent();
@@ -182,9 +178,16 @@ bool Renderer::reloadChangedShaders() {
 
 // --- meshes ---------------------------------------------------------------------------------
 
-const GpuMesh& Renderer::meshFor(size_t objectIndex, const SceneObject& object) {
-    return meshes_->forObject(objectIndex, object, kProxySegments, kProxyRings, kProxyScale);
+const GpuMesh& Renderer::meshFor(size_t objectIndex, const SceneObject& object, MeshDetail detail) {
+    return meshes_->forObject(objectIndex, object, detail);
 }
+
+void Renderer::prepareSimplifiedMeshes(const Scene& scene) {
+    platform_.makeCurrent();
+    for (size_t i = 0; i < scene.objects.size(); ++i) meshes_->prepareSimplified(i, scene.objects[i]);
+}
+
+void Renderer::finishSimplifiedMeshes() { meshes_->finishSimplified(); }
 
 // --- per-frame uniforms ---------------------------------------------------------------------
 
@@ -198,15 +201,11 @@ void Renderer::uploadFrame(const Scene& scene, int width, int height) {
 
 // --- drawing --------------------------------------------------------------------------------
 
-Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
+Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail) {
     platform_.makeCurrent();
     GLINT_CHECK(width > 0 && height > 0);
-    shadowMaps_->update(scene, [&](size_t objectIndex, const ShaderProgram& depthProgram) {
-        setTriangleUniforms(depthProgram, scene.objects[objectIndex]);  // gl/gpu_mesh_cache.h
-        const GpuMesh& mesh = meshFor(objectIndex, scene.objects[objectIndex]);
-        glBindVertexArray(mesh.vertexArray);
-        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
-    });
+    const auto meshOf = [&](size_t objectIndex) -> const GpuMesh& { return meshFor(objectIndex, scene.objects[objectIndex], detail); };
+    shadowMaps_->update(scene, meshOf, detail);
     const int samples = std::max(1, scene.msaaSamples);
     radianceTarget_.ensure(width, height, 1);
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
@@ -244,13 +243,20 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
     }
 
     Status result = success();
+    const glm::mat4 viewProjection = scene.camera.viewProjection(static_cast<float>(width) / height);
     trianglesDrawn_ = 0;
+    simplifiedMeshesDrawn_ = 0;
     meshes_->releaseUnused();
     drawnMeshes_.clear();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        const Material& material = scene.materials.at(object.materialIndex);
         const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
+        const auto* sphere = triangles ? nullptr : std::get_if<SphereShape>(&object.shape);
+        // What is drawn: the sphere's proxy (which circumscribes it) or the shape's triangles.
+        const BoundingSphere bounds =
+            sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
+        if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
+        const Material& material = scene.materials.at(object.materialIndex);
         const bool gouraud = object.interpolation == SurfaceInterpolation::Gouraud;
         auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, samples, gouraud)
                        : material.measured ? measured_.program(sources_, samples, gouraud)
@@ -271,22 +277,22 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height) {
                     materialBlock.values);
         glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kMaterialBinding]);
         glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
-        const auto* sphere = triangles ? nullptr : std::get_if<SphereShape>(&object.shape);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
         if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
-        // The proxy sphere's back faces would shade the same front hit a second time (gl_FragDepth
-        // disables early depth rejection): cull them, unless part of the proxy lies before the near
-        // plane (a camera inside or close), where the back faces are all that is drawn. Planes are
-        // two-sided and keep both faces.
-        if (sphere && proxyBeyondNearPlane(scene.camera, *sphere)) glEnable(GL_CULL_FACE);
-        else glDisable(GL_CULL_FACE);
+        const GpuMesh& mesh = meshFor(i, object, detail);
+        // Back faces of a closed surface seen from outside are hidden behind its front faces
+        // (render/visibility.h): culled, halving the triangles rasterised. That includes the
+        // proxy sphere, whose back faces would shade the same front hit a second time
+        // (gl_FragDepth disables early depth rejection). Not when the camera may be inside or the
+        // near plane cuts the surface open; open surfaces (planes) keep both faces.
+        setFaceCulling(culledFaces(mesh.closure, beyondNearPlane(scene.camera, bounds)));
         if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
-        const GpuMesh& mesh = meshFor(i, object);
         glBindVertexArray(mesh.vertexArray);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;
+        if (mesh.simplified) ++simplifiedMeshesDrawn_;
         const MeshPlacement placement = placementOf(object.shape);
         drawnMeshes_.push_back({mesh.vertexArray, mesh.indexCount, !std::holds_alternative<PlaneShape>(object.shape),
                                 glm::vec4(placement.offset, placement.scale)});

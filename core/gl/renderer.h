@@ -39,7 +39,14 @@ public:
 
     // Draws the scene's radiance at width×height (MSAA per scene.msaaSamples). A shader that
     // fails to compile is reported and the model's last good program, if any, is used.
-    Status renderRadiance(const Scene& scene, int width, int height);
+    // MeshDetail::Simplified draws large meshes' simplified stand-ins where they are ready (the
+    // editor, while the user drags; gl/gpu_mesh_cache.h); headless renders draw every triangle.
+    Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full);
+    // Starts making the simplified stand-ins of the scene's large meshes on worker threads (the
+    // editor, once a full frame proved slow), so that the first drag finds them ready.
+    void prepareSimplifiedMeshes(const Scene& scene);
+    // Waits for the stand-ins being made (benchmarks).
+    void finishSimplifiedMeshes();
     // Display pass into the offscreen 8-bit target (same size as the last radiance render), then
     // the overlays display.overlays asks for, over the meshes of the last radiance render. The
     // display pass itself is skipped when the last radiance render fused the same display settings.
@@ -65,11 +72,15 @@ public:
     const std::string& description() const { return description_; }
     // Triangles submitted by the last renderRadiance (proxy meshes included).
     long long trianglesDrawn() const { return trianglesDrawn_; }
+    // Objects the last renderRadiance drew with a simplified stand-in.
+    int simplifiedMeshesDrawn() const { return simplifiedMeshesDrawn_; }
     // Material texture images on the GPU (uploaded once per file version).
     TextureCache& textureCache() { return textureCache_; }
     const ShaderSources& sources() const { return sources_; }
-    // How many times the shadow maps were re-rendered (only when shadowed lights or geometry change).
+    // How many renders re-rendered shadow maps (only when shadowed lights or geometry change), and
+    // how many maps they drew (only the lights that changed, unless the geometry did).
     long long shadowMapRenders() const { return shadowMaps_->renderCount(); }
+    long long shadowMapsDrawn() const { return shadowMaps_->mapRenderCount(); }
 
 private:
     struct SurfaceProgram {
@@ -82,7 +93,7 @@ private:
     Result<ShaderProgram> buildBackgroundProgram() const;
     Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured) const;
     Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured);
-    const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object);
+    const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object, MeshDetail detail);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
 
@@ -102,12 +113,13 @@ private:
     long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
-    std::unique_ptr<GpuMeshCache> meshes_ = std::make_unique<GpuMeshCache>();
+    std::unique_ptr<GpuMeshCache> meshes_;
     OverlayPass overlayPass_;
     std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
     TextureCache textureCache_;
     std::unique_ptr<ShadowMaps> shadowMaps_;
     long long trianglesDrawn_ = 0;
+    int simplifiedMeshesDrawn_ = 0;
     std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
     bool fuseDisplay_ = false;
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused

@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "geometry/shape_mesh.h"
 #include "gl/gl_loader.h"
-#include "render/shadow_projection.h"
+#include "render/visibility.h"
 #include "scene/scene_json.h"
 
 namespace glint {
@@ -97,16 +98,15 @@ ShadowMaps::~ShadowMaps() {
 
 namespace {
 
-// Everything about the lights that the maps' contents depend on (not the biases or the filter,
-// which are applied when the maps are read).
-std::vector<float> lightKey(const Scene& scene) {
-    std::vector<float> key;
-    for (const Light& light : scene.lights) {
-        key.insert(key.end(), {light.enabled ? 1.0f : 0.0f, light.castsShadows ? 1.0f : 0.0f,
-                               static_cast<float>(light.type), light.direction.x, light.direction.y, light.direction.z,
-                               light.position.x, light.position.y, light.position.z, light.coneHalfAngleDegrees,
-                               static_cast<float>(light.shadow.mapResolution)});
-    }
+// What one map's contents depend on of its light: the projection (which also follows the
+// scene's bounds) and the map resolution. Not the biases or the filter, applied when the map is
+// read.
+std::vector<float> slotKey(const ShadowedLight& entry) {
+    const ShadowProjection& projection = entry.projection;
+    std::vector<float> key = {static_cast<float>(projection.kind), static_cast<float>(entry.light->shadow.mapResolution),
+                              projection.lightPosition.x, projection.lightPosition.y, projection.lightPosition.z,
+                              projection.nearPlane, projection.farPlane};
+    key.insert(key.end(), &projection.viewProjection[0][0], &projection.viewProjection[0][0] + 16);
     return key;
 }
 
@@ -122,79 +122,105 @@ std::string geometryKey(const Scene& scene) {
 
 }  // namespace
 
-bool ShadowMaps::needsRender(const Scene& scene) const {
-    return !rendered_ || lightKey(scene) != lightKey_ || geometryKey(scene) != geometryKey_;
+bool ShadowMaps::slotNeedsRender(size_t slotIndex, const std::vector<float>& key, bool geometryChanged, MeshDetail detail) const {
+    const Slot& slot = slots_[slotIndex];
+    return geometryChanged || key != slot.key || (slot.drewSimplified && detail == MeshDetail::Full);
 }
 
 // --- rendering --------------------------------------------------------------------------------
 
-void ShadowMaps::drawObjects(const Scene& scene, const DrawObject& drawObject) const {
+bool ShadowMaps::drawObjects(const Scene& scene, const MeshOfObject& meshOf, const ShadowProjection& projection,
+                             const glm::mat4& viewProjection) const {
+    bool drewSimplified = false;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
+        const BoundingSphere bounds = boundingSphere(object.shape);
+        if (outsideFrustum(viewProjection, bounds)) continue;
         // As the surface pass: an exact sphere is ray-cast, any other surface keeps its triangles.
         const auto* sphere = drawnAsTriangles(object.shape, object.interpolation) ? nullptr : std::get_if<SphereShape>(&object.shape);
         glUniform1i(depthProgram_.uniform("shapeKind"), sphere ? 1 : 0);
         if (sphere) glUniform4f(depthProgram_.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
-        drawObject(i, depthProgram_);
+        setTriangleUniforms(depthProgram_, object);
+        const GpuMesh& mesh = meshOf(i);
+        // Both faces of a sphere's proxy ray-cast the same depth; a closed mesh's back faces lie
+        // behind its front faces as the light sees them.
+        setFaceCulling(sphere ? CulledFaces::None : culledFaces(mesh.closure, beyondNearPlane(projection, bounds)));
+        glBindVertexArray(mesh.vertexArray);
+        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        drewSimplified = drewSimplified || mesh.simplified;
     }
+    glDisable(GL_CULL_FACE);
+    return drewSimplified;
 }
 
-void ShadowMaps::renderMaps(const Scene& scene, const DrawObject& drawObject) {
+bool ShadowMaps::renderMap(const Scene& scene, const MeshOfObject& meshOf, const Light& light,
+                           const ShadowProjection& projection, Slot& slot) {
+    const int resolution = light.shadow.mapResolution;
+    glViewport(0, 0, resolution, resolution);
+    glUniform1i(depthProgram_.uniform("shadowKind"), static_cast<int>(projection.kind));
+    const glm::vec3 origin = projection.kind == ShadowMapKind::Orthographic ? glm::normalize(light.direction)
+                                                                             : projection.lightPosition;
+    glUniform4f(depthProgram_.uniform("lightOrigin"), origin.x, origin.y, origin.z, projection.farPlane);
+    bool drewSimplified = false;
+    const auto drawInto = [&](const glm::mat4& viewProjection) {
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glUniformMatrix4fv(depthProgram_.uniform("lightViewProjection"), 1, GL_FALSE, &viewProjection[0][0]);
+        if (drawObjects(scene, meshOf, projection, viewProjection)) drewSimplified = true;
+    };
+    if (projection.kind == ShadowMapKind::Cube) {
+        ensureDepthTexture(slot.cube, slot.resolutionCube, resolution, true);
+        for (int face = 0; face < 6; ++face) {
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, slot.cube, 0);
+            drawInto(cubeFaceViewProjection(projection, face));
+        }
+    } else {
+        ensureDepthTexture(slot.texture2D, slot.resolution2D, resolution, false);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, slot.texture2D, 0);
+        drawInto(projection.viewProjection);
+    }
+    return drewSimplified;
+}
+
+// Each map is drawn again when its light's projection, any object, or (for a full-detail frame)
+// the detail it was drawn at changed.
+void ShadowMaps::update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail) {
     const std::vector<ShadowedLight> shadowed = shadowedLights(scene);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glDrawBuffer(GL_NONE);
-    glReadBuffer(GL_NONE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);  // planes are two-sided; the sphere's depth is ray-cast anyway
-    glDisable(GL_SCISSOR_TEST);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glUseProgram(depthProgram_.id());
-    const GLint viewProjectionLocation = depthProgram_.uniform("lightViewProjection");
+    std::string geometry = geometryKey(scene);
+    const bool geometryChanged = geometry != geometryKey_;
+    geometryKey_ = std::move(geometry);
+    bool stateSet = false, drew = false;
     for (size_t slotIndex = 0; slotIndex < shadowed.size(); ++slotIndex) {
         const ShadowedLight& entry = shadowed[slotIndex];
-        const ShadowProjection& projection = entry.projection;
-        const int resolution = entry.light->shadow.mapResolution;
-        Slot& slot = slots_[slotIndex];
-        glViewport(0, 0, resolution, resolution);
-        glUniform1i(depthProgram_.uniform("shadowKind"), static_cast<int>(projection.kind));
-        const glm::vec3 origin = projection.kind == ShadowMapKind::Orthographic ? glm::normalize(entry.light->direction)
-                                                                                 : projection.lightPosition;
-        glUniform4f(depthProgram_.uniform("lightOrigin"), origin.x, origin.y, origin.z, projection.farPlane);
-        if (projection.kind == ShadowMapKind::Cube) {
-            ensureDepthTexture(slot.cube, slot.resolutionCube, resolution, true);
-            for (int face = 0; face < 6; ++face) {
-                glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, slot.cube, 0);
-                glClear(GL_DEPTH_BUFFER_BIT);
-                const glm::mat4 faceViewProjection = cubeFaceViewProjection(projection, face);
-                glUniformMatrix4fv(viewProjectionLocation, 1, GL_FALSE, &faceViewProjection[0][0]);
-                drawObjects(scene, drawObject);
-            }
-        } else {
-            ensureDepthTexture(slot.texture2D, slot.resolution2D, resolution, false);
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, slot.texture2D, 0);
-            glClear(GL_DEPTH_BUFFER_BIT);
-            glUniformMatrix4fv(viewProjectionLocation, 1, GL_FALSE, &projection.viewProjection[0][0]);
-            drawObjects(scene, drawObject);
+        std::vector<float> key = slotKey(entry);
+        if (!slotNeedsRender(slotIndex, key, geometryChanged, detail)) continue;
+        if (!stateSet) {
+            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+            glDrawBuffer(GL_NONE);
+            glReadBuffer(GL_NONE);
+            glDisable(GL_BLEND);
+            glDisable(GL_SCISSOR_TEST);
+            glEnable(GL_DEPTH_TEST);
+            glDepthMask(GL_TRUE);
+            glDepthFunc(GL_LESS);
+            glUseProgram(depthProgram_.id());
+            stateSet = true;
         }
+        Slot& slot = slots_[slotIndex];
+        slot.drewSimplified = renderMap(scene, meshOf, *entry.light, entry.projection, slot);
+        slot.key = std::move(key);
+        drew = true;
+        ++mapRenderCount_;
     }
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    ++renderCount_;
-}
-
-void ShadowMaps::update(const Scene& scene, const DrawObject& drawObject) {
-    if (needsRender(scene)) {
-        renderMaps(scene, drawObject);
-        lightKey_ = lightKey(scene);
-        geometryKey_ = geometryKey(scene);
-        rendered_ = true;
+    // A slot left unused forgets what it held: the objects may change before a light takes it again.
+    for (size_t slotIndex = shadowed.size(); slotIndex < kMaxShadowedLights; ++slotIndex) slots_[slotIndex].key.clear();
+    if (stateSet) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
+    if (drew) ++renderCount_;
     // The block is cheap: always rebuilt, so bias and filter edits need no new maps.
     block_ = ShadowBlockStd140{};
     for (glm::ivec4& entry : block_.mapOfLight) entry = glm::ivec4(-1);
-    const std::vector<ShadowedLight> shadowed = shadowedLights(scene);
     for (size_t slot = 0; slot < shadowed.size(); ++slot) {
         const ShadowedLight& entry = shadowed[slot];
         const ShadowSettings& settings = entry.light->shadow;

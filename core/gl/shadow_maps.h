@@ -1,5 +1,5 @@
 // ShadowMaps: the depth maps of the lights that cast shadows (a 2D map for directional and spot
-// lights, a cube map of distances for point lights), re-rendered only when those lights or the
+// lights, a cube map of distances for point lights), each re-rendered only when its light or the
 // geometry change, and the ShadowBlock that shaders/common/shadows.glsl reads. It draws no
 // colour and shades nothing; the projections come from core/render/shadow_projection.h.
 #pragma once
@@ -11,8 +11,10 @@
 
 #include <glm/glm.hpp>
 
+#include "gl/gpu_mesh_cache.h"
 #include "gl/shader_program.h"
 #include "light/shadow_settings.h"
+#include "render/shadow_projection.h"
 #include "scene/scene.h"
 
 namespace glint {
@@ -43,35 +45,42 @@ public:
     ShadowMaps(const ShadowMaps&) = delete;
     ShadowMaps& operator=(const ShadowMaps&) = delete;
 
-    // Draws one object's mesh (or a sphere's proxy) with the depth program, after setting the
-    // program's per-object placement uniforms.
-    using DrawObject = std::function<void(size_t objectIndex, const ShaderProgram& depthProgram)>;
-    // Re-renders the maps when a shadowed light or any object changed since the last call, and
-    // uploads the ShadowBlock. Changes GL state: framebuffer, viewport, depth test, program.
-    void update(const Scene& scene, const DrawObject& drawObject);
+    // The buffers of object `objectIndex` (gl/gpu_mesh_cache.h) at the detail the frame draws.
+    using MeshOfObject = std::function<const GpuMesh&(size_t objectIndex)>;
+    // Re-renders each map whose view changed since the last call: its light's projection, the
+    // objects, or (for a full-detail frame) a map drawn from simplified meshes. Then uploads the
+    // ShadowBlock. A map skips the objects outside its frustum and the back faces of closed meshes
+    // its light sees from outside (render/visibility.h). Changes GL state: framebuffer, viewport,
+    // depth test, face culling, program.
+    void update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail);
     // Binds the maps to their texture units and points `program`'s samplers at them.
     void bind(const ShaderProgram& program) const;
-    // How many times update() re-rendered the maps (for tests of the caching).
+    // How many update() calls re-rendered maps, and how many maps they drew (tests of the caching).
     long long renderCount() const { return renderCount_; }
+    long long mapRenderCount() const { return mapRenderCount_; }
 
 private:
     struct Slot {
         GLuint texture2D = 0, cube = 0;
         int resolution2D = 0, resolutionCube = 0;
+        std::vector<float> key;       // its light's projection and resolution at the last render
+        bool drewSimplified = false;  // that render drew a simplified stand-in
     };
     ShadowMaps() = default;
-    bool needsRender(const Scene& scene) const;
-    void renderMaps(const Scene& scene, const DrawObject& drawObject);
-    void drawObjects(const Scene& scene, const DrawObject& drawObject) const;
+    bool slotNeedsRender(size_t slotIndex, const std::vector<float>& key, bool geometryChanged, MeshDetail detail) const;
+    // Draws one light's map (six faces for a cube); returns whether a simplified stand-in was drawn.
+    bool renderMap(const Scene& scene, const MeshOfObject& meshOf, const Light& light, const ShadowProjection& projection,
+                   Slot& slot);
+    // Draws the objects into the bound map; returns whether any was a simplified stand-in.
+    bool drawObjects(const Scene& scene, const MeshOfObject& meshOf, const ShadowProjection& projection,
+                     const glm::mat4& viewProjection) const;
 
     ShaderProgram depthProgram_;
     GLuint framebuffer_ = 0, uniformBuffer_ = 0;
     Slot slots_[kMaxShadowedLights];
     ShadowBlockStd140 block_{};
-    std::vector<float> lightKey_;  // what of the lights the maps depend on, at the last render
-    std::string geometryKey_;      // the objects at the last render
-    bool rendered_ = false;
-    long long renderCount_ = 0;
+    std::string geometryKey_;  // the objects at the last update
+    long long renderCount_ = 0, mapRenderCount_ = 0;
 };
 
 }  // namespace glint

@@ -1,6 +1,8 @@
-// The status bar: frame time, triangle count, renderer, unsaved-changes marker and the last
+// The status bar: frame time (and whether it was a reduced preview), triangle count, renderer, unsaved-changes marker and the last
 // message (saved, opened, recovered).
 #include <imgui.h>
+
+#include <string>
 
 #include "editor/panels/panels.h"
 
@@ -17,7 +19,10 @@ float drawStatusBar(EditorState& state, float top, float width) {
     ImGui::Begin("##status", nullptr, flags);
     ImGui::Text("%s%s", state.session.dirty() ? "● " : "", state.session.path().empty() ? "untitled" : state.session.path().c_str());
     ImGui::SameLine(0, 24);
-    if (state.previewScale > 1) ImGui::Text("frame %.1f ms (preview 1/%d)", state.lastRenderMilliseconds, state.previewScale);
+    // While dragging: what the frame left out (editor/viewport_refresh.h).
+    std::string reduced = state.previewScale > 1 ? "preview 1/" + std::to_string(state.previewScale) : "";
+    if (state.simplifiedMeshesShown > 0) reduced += reduced.empty() ? "simplified meshes" : ", simplified meshes";
+    if (!reduced.empty()) ImGui::Text("frame %.1f ms (%s)", state.lastRenderMilliseconds, reduced.c_str());
     else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
     ImGui::SameLine(0, 24);
     ImGui::Text("%lld triangles", state.triangleCount);

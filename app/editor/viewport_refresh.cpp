@@ -1,0 +1,46 @@
+// When and how the viewport is redrawn (see viewport_refresh.h).
+#include "editor/viewport_refresh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+RefreshPlan ViewportRefresh::plan(const Input& input) {
+    if (input.sceneChanged && !input.dragging) lastChangeSeconds_ = input.nowSeconds;
+    dragging_ = input.dragging;
+    // A drag ends its interaction at once (the release is the last input); other changes after
+    // a pause, as nothing tells when the next one comes.
+    const bool interacting = input.dragging || input.nowSeconds - lastChangeSeconds_ < kSettleSeconds;
+    RefreshPlan plan;
+    plan.render = input.sceneChanged || input.sizeChanged || (shownReduced_ && !interacting);
+    if (!plan.render || !interacting || !fullFramesAreSlow()) return plan;
+    if (input.simplifyWhileDragging) plan.detail = MeshDetail::Simplified;
+    if (input.dragging) {
+        // Frame cost taken as proportional to the pixels drawn: the scale that brings the last
+        // interactive frame (or, before any, the last full one) within the budget.
+        const double milliseconds = interactiveMeasured_ ? interactiveMilliseconds_ : fullFrameMilliseconds_;
+        const int scale = interactiveMeasured_ ? interactiveScale_ : 1;
+        const double wanted = std::ceil(scale * std::sqrt(milliseconds / kFrameBudgetMilliseconds));
+        plan.pixelScale = static_cast<int>(std::clamp(wanted, 1.0, 4.0));
+    }
+    return plan;
+}
+
+void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewSimplified) {
+    shownReduced_ = plan.pixelScale > 1 || drewSimplified;
+    if (shownReduced_ || plan.detail == MeshDetail::Simplified) {
+        // Drawn for an interaction (with stand-ins or not yet: then it was the full mesh).
+        interactiveMilliseconds_ = renderMilliseconds;
+        interactiveScale_ = plan.pixelScale;
+        interactiveMeasured_ = true;
+    }
+    if (!shownReduced_) fullFrameMilliseconds_ = renderMilliseconds;
+}
+
+double ViewportRefresh::secondsToRefine(double nowSeconds) const {
+    if (!shownReduced_ || dragging_) return 1e9;  // a drag's end is an input event itself
+    return std::max(0.0, lastChangeSeconds_ + kSettleSeconds - nowSeconds);
+}
+
+}  // namespace glint

@@ -1,0 +1,56 @@
+// ViewportRefresh: when the editor redraws its viewport, and at what cost. The editor redraws
+// only on change. While the user drags (a slider, a colour, a light handle, the camera) and a
+// full frame takes longer than the frame budget, each frame is drawn at reduced resolution and
+// with large meshes' simplified stand-ins (gl/gpu_mesh_cache.h); a change outside a drag (a wheel
+// zoom, a key) is first drawn with the stand-ins at full resolution. The full frame follows by
+// itself: on the first frame after the drag ends, or once no change came for kSettleSeconds.
+// Pure bookkeeping: it renders nothing and reads no input (tests/editor_refresh_test.cpp).
+#pragma once
+
+#include "gl/gpu_mesh_cache.h"
+
+namespace glint {
+
+// What one loop iteration should draw.
+struct RefreshPlan {
+    bool render = false;
+    int pixelScale = 1;  // each rendered pixel covers pixelScale² screen pixels
+    MeshDetail detail = MeshDetail::Full;
+};
+
+class ViewportRefresh {
+public:
+    static constexpr double kFrameBudgetMilliseconds = 33.0;
+    // A change outside a drag counts as part of an interaction for this long [s]: wheel ticks and
+    // key repeats come faster.
+    static constexpr double kSettleSeconds = 0.25;
+
+    struct Input {
+        double nowSeconds = 0.0;
+        bool sceneChanged = false;  // the scene is not the one last drawn
+        bool sizeChanged = false;   // the viewport is not the size last drawn
+        bool dragging = false;      // a gesture is in progress (ImGui item active, camera or handle drag)
+        bool simplifyWhileDragging = true;  // the user's setting (Settings::simplifyMeshesWhileDragging)
+    };
+
+    RefreshPlan plan(const Input& input);
+    // After the planned frame was drawn: its render time and whether it drew a simplified mesh.
+    void rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewSimplified);
+    // Seconds until a frame drawn with stand-ins is due for its full-detail redraw (for the event
+    // wait); a large number when none is due.
+    double secondsToRefine(double nowSeconds) const;
+    // Whether full frames are slow enough that the stand-ins are worth making ahead of a drag.
+    bool fullFramesAreSlow() const { return fullFrameMilliseconds_ > kFrameBudgetMilliseconds; }
+
+private:
+    double fullFrameMilliseconds_ = 0.0;  // the last full-detail, full-resolution frame
+    // The last frame drawn during an interaction: the next one's resolution follows from it.
+    double interactiveMilliseconds_ = 0.0;
+    int interactiveScale_ = 1;
+    bool interactiveMeasured_ = false;
+    double lastChangeSeconds_ = -1e9;  // the last change outside a drag
+    bool dragging_ = false;
+    bool shownReduced_ = false;  // the frame on screen is not the full one
+};
+
+}  // namespace glint

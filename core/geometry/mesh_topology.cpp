@@ -1,0 +1,175 @@
+// Mesh closure (see mesh_topology.h).
+// Sections: welding · edges · orientation.
+#include "geometry/mesh_topology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "geometry/cell_table.h"
+#include "util/diagnostic.h"
+
+namespace glint {
+namespace {
+
+struct Box {
+    glm::vec3 min{0.0f}, max{0.0f};
+};
+
+Box boundsOf(const Mesh& mesh) {
+    Box box;
+    if (mesh.vertices.empty()) return box;
+    box.min = box.max = mesh.vertices[0].position;
+    for (const Vertex& vertex : mesh.vertices) {
+        box.min = glm::min(box.min, vertex.position);
+        box.max = glm::max(box.max, vertex.position);
+    }
+    return box;
+}
+
+// A grid cell (each index < 2^21) packed into one key.
+uint64_t cellKey(glm::i64vec3 cell) {
+    return static_cast<uint64_t>(cell.x) | static_cast<uint64_t>(cell.y) << 21 | static_cast<uint64_t>(cell.z) << 42;
+}
+
+}  // namespace
+
+// --- welding ----------------------------------------------------------------------------------
+
+// Each position goes into a grid of cells 16 tolerances wide (offset by one, so that every
+// neighbour index is ≥ 0), chained per cell; a vertex looks for an earlier one within the
+// tolerance in its own cell and, on each axis where it lies within a tolerance of the cell's
+// side, the neighbour across it: about 1.4 cells per vertex.
+std::vector<uint32_t> weldPositions(const Mesh& mesh, float tolerance) {
+    GLINT_CHECK(tolerance > 0.0f);
+    constexpr float kCellsPerTolerance = 16.0f;
+    const Box box = boundsOf(mesh);
+    // Within 2^21 cells per axis: a coarser grid (the same tolerance) for a huge extent.
+    const float extent = std::max({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z});
+    const float cellSize = std::max(kCellsPerTolerance * tolerance, extent / static_cast<float>((1 << 21) - 4));
+    std::vector<uint32_t> welded(mesh.vertices.size());
+    std::vector<uint32_t> nextInCell(mesh.vertices.size(), CellTable::kAbsent);
+    CellTable firstInCell(mesh.vertices.size());
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const glm::vec3 position = mesh.vertices[i].position;
+        const glm::vec3 scaled = (position - box.min) / cellSize + 1.0f;
+        const glm::i64vec3 cell(glm::floor(scaled));
+        const glm::vec3 fraction = (scaled - glm::vec3(cell)) * cellSize;  // [mesh units] from the cell's low sides
+        const glm::ivec3 low(glm::lessThan(fraction, glm::vec3(tolerance)));
+        const glm::ivec3 high(glm::greaterThan(fraction, glm::vec3(cellSize - tolerance)));
+        uint32_t match = CellTable::kAbsent;
+        for (int dz = -low.z; dz <= high.z && match == CellTable::kAbsent; ++dz)
+            for (int dy = -low.y; dy <= high.y && match == CellTable::kAbsent; ++dy)
+                for (int dx = -low.x; dx <= high.x && match == CellTable::kAbsent; ++dx)
+                    for (uint32_t candidate = firstInCell.find(cellKey(cell + glm::i64vec3(dx, dy, dz)));
+                         candidate != CellTable::kAbsent; candidate = nextInCell[candidate]) {
+                        const glm::vec3 offset = glm::abs(mesh.vertices[candidate].position - position);
+                        if (std::max({offset.x, offset.y, offset.z}) <= tolerance) {
+                            match = candidate;
+                            break;
+                        }
+                    }
+        welded[i] = match != CellTable::kAbsent ? match : static_cast<uint32_t>(i);
+        if (match != CellTable::kAbsent) continue;
+        const uint32_t first = firstInCell.findOrInsert(cellKey(cell), static_cast<uint32_t>(i));
+        if (first != i) {  // chain it second in its cell
+            nextInCell[i] = nextInCell[first];
+            nextInCell[first] = static_cast<uint32_t>(i);
+        }
+    }
+    return welded;
+}
+
+// --- edges ------------------------------------------------------------------------------------
+
+namespace {
+
+// Closed: every directed edge u→v of the non-degenerate welded triangles appears once, and so
+// does its reverse v→u (so each edge has exactly two triangles, running along it opposite ways).
+// The directed edges are listed per start vertex (compressed rows), each row sorted: no sort of
+// all the edges at once.
+bool everyEdgeHasTwoOppositeTriangles(const std::vector<uint32_t>& indices, const std::vector<uint32_t>& welded) {
+    const auto corners = [&](size_t t, uint32_t corner[3]) {
+        for (int k = 0; k < 3; ++k) corner[k] = welded[indices[t + k]];
+        return corner[0] != corner[1] && corner[1] != corner[2] && corner[2] != corner[0];
+    };
+    std::vector<uint32_t> rowStart(welded.size() + 1, 0);
+    uint32_t corner[3];
+    for (size_t t = 0; t + 2 < indices.size(); t += 3)
+        if (corners(t, corner))
+            for (int k = 0; k < 3; ++k) ++rowStart[corner[k] + 1];
+    for (size_t v = 0; v < welded.size(); ++v) rowStart[v + 1] += rowStart[v];
+    if (rowStart.back() == 0) return false;
+    std::vector<uint32_t> edgeEnd(rowStart.back());
+    std::vector<uint32_t> fill(rowStart.begin(), rowStart.end() - 1);
+    for (size_t t = 0; t + 2 < indices.size(); t += 3)
+        if (corners(t, corner))
+            for (int k = 0; k < 3; ++k) edgeEnd[fill[corner[k]]++] = corner[(k + 1) % 3];
+    for (size_t v = 0; v < welded.size(); ++v) {
+        const auto begin = edgeEnd.begin() + rowStart[v], end = edgeEnd.begin() + rowStart[v + 1];
+        std::sort(begin, end);
+        if (std::adjacent_find(begin, end) != end) return false;  // two triangles run the same way
+    }
+    for (size_t v = 0; v < welded.size(); ++v)
+        for (uint32_t e = rowStart[v]; e < rowStart[v + 1]; ++e) {
+            const uint32_t to = edgeEnd[e];
+            if (!std::binary_search(edgeEnd.begin() + rowStart[to], edgeEnd.begin() + rowStart[to + 1], static_cast<uint32_t>(v)))
+                return false;  // an edge with one triangle
+        }
+    return true;
+}
+
+// --- orientation ------------------------------------------------------------------------------
+
+uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t id) {
+    while (parent[id] != id) id = parent[id] = parent[parent[id]];  // path halving
+    return id;
+}
+
+// The signed volume of each connected part, by the divergence theorem: V = Σ a·(b × c) / 6 over
+// its triangles (positive when they turn counter-clockwise seen from outside). A part whose
+// volume is tiny against the sum of the terms' magnitudes encloses nothing: undecided.
+MeshClosure orientationOfParts(const Mesh& mesh, const std::vector<uint32_t>& welded, glm::vec3 origin) {
+    std::vector<uint32_t> parent(mesh.vertices.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto& indices = mesh.indices;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const uint32_t a = findRoot(parent, welded[indices[t]]), b = findRoot(parent, welded[indices[t + 1]]),
+                       c = findRoot(parent, welded[indices[t + 2]]);
+        parent[b] = a;
+        parent[findRoot(parent, c)] = a;
+    }
+    std::vector<double> volume(mesh.vertices.size(), 0.0), magnitude(mesh.vertices.size(), 0.0);
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const glm::dvec3 a = glm::dvec3(mesh.vertices[indices[t]].position - origin);
+        const glm::dvec3 b = glm::dvec3(mesh.vertices[indices[t + 1]].position - origin);
+        const glm::dvec3 c = glm::dvec3(mesh.vertices[indices[t + 2]].position - origin);
+        const double term = glm::dot(a, glm::cross(b, c));
+        const uint32_t part = findRoot(parent, welded[indices[t]]);
+        volume[part] += term;
+        magnitude[part] += std::abs(term);
+    }
+    bool outward = false, inward = false;
+    for (size_t part = 0; part < volume.size(); ++part) {
+        if (magnitude[part] == 0.0) continue;  // not a root, or no triangles
+        if (std::abs(volume[part]) < 1e-4 * magnitude[part]) return MeshClosure::Open;
+        (volume[part] > 0.0 ? outward : inward) = true;
+    }
+    if (outward == inward) return MeshClosure::Open;
+    return outward ? MeshClosure::ClosedOutward : MeshClosure::ClosedInward;
+}
+
+}  // namespace
+
+MeshClosure meshClosure(const Mesh& mesh) {
+    GLINT_CHECK(mesh.vertices.size() < (1u << 31));
+    if (mesh.indices.empty()) return MeshClosure::Open;
+    const Box box = boundsOf(mesh);
+    const float diagonal = glm::length(box.max - box.min);
+    if (!(diagonal > 0.0f)) return MeshClosure::Open;
+    const std::vector<uint32_t> welded = weldPositions(mesh, 1e-5f * diagonal);
+    if (!everyEdgeHasTwoOppositeTriangles(mesh.indices, welded)) return MeshClosure::Open;
+    return orientationOfParts(mesh, welded, 0.5f * (box.min + box.max));
+}
+
+}  // namespace glint

@@ -1,0 +1,104 @@
+// The editor's redraw decisions (editor/viewport_refresh.h), without a window: a slow scene is
+// drawn with simplified meshes and at reduced resolution while dragging, the full frame follows
+// the drag's end with no further input, a change outside a drag is refined after a pause, fast
+// scenes and the setting turned off are drawn in full.
+#include <gtest/gtest.h>
+
+#include "editor/viewport_refresh.h"
+
+namespace glint {
+namespace {
+
+using Input = ViewportRefresh::Input;
+
+Input change(double now, bool dragging) { return {now, true, false, dragging, true}; }
+Input idle(double now, bool dragging = false) { return {now, false, false, dragging, true}; }
+
+// A refresh that has drawn one full frame taking `milliseconds`.
+ViewportRefresh afterFullFrame(double milliseconds) {
+    ViewportRefresh refresh;
+    const RefreshPlan first = refresh.plan({0.0, true, true, false, true});
+    EXPECT_TRUE(first.render);
+    EXPECT_EQ(first.detail, MeshDetail::Full);
+    refresh.rendered(first, milliseconds, false);
+    return refresh;
+}
+
+TEST(ViewportRefresh, ADragOfASlowSceneDrawsSimplifiedMeshesThenTheFullFrame) {
+    ViewportRefresh refresh = afterFullFrame(1200.0);  // a million triangles
+    EXPECT_TRUE(refresh.fullFramesAreSlow());
+    // The first frame of the drag: the resolution follows from the full frame's cost.
+    RefreshPlan plan = refresh.plan(change(10.0, true));
+    EXPECT_TRUE(plan.render);
+    EXPECT_EQ(plan.detail, MeshDetail::Simplified);
+    EXPECT_EQ(plan.pixelScale, 4);
+    refresh.rendered(plan, 8.0, true);
+    // Faster than the budget: the next frame of the drag gets more pixels.
+    plan = refresh.plan(change(10.1, true));
+    EXPECT_EQ(plan.detail, MeshDetail::Simplified);
+    EXPECT_EQ(plan.pixelScale, 2);
+    refresh.rendered(plan, 20.0, true);
+    // Holding still mid-drag draws nothing and waits for input.
+    EXPECT_FALSE(refresh.plan(idle(10.2, true)).render);
+    EXPECT_GT(refresh.secondsToRefine(10.2), 1e8);
+    // Released: the full frame comes on the next loop iteration, with no new input.
+    plan = refresh.plan(idle(10.3));
+    EXPECT_TRUE(plan.render);
+    EXPECT_EQ(plan.detail, MeshDetail::Full);
+    EXPECT_EQ(plan.pixelScale, 1);
+    refresh.rendered(plan, 1100.0, false);
+    EXPECT_FALSE(refresh.plan(idle(11.5)).render);
+}
+
+TEST(ViewportRefresh, AChangeOutsideADragIsRefinedOnceChangesPause) {
+    ViewportRefresh refresh = afterFullFrame(1200.0);
+    RefreshPlan plan = refresh.plan(change(5.0, false));  // a wheel tick
+    EXPECT_EQ(plan.detail, MeshDetail::Simplified);
+    EXPECT_EQ(plan.pixelScale, 1);
+    refresh.rendered(plan, 60.0, true);
+    EXPECT_NEAR(refresh.secondsToRefine(5.1), ViewportRefresh::kSettleSeconds - 0.1, 1e-9);
+    EXPECT_FALSE(refresh.plan(idle(5.1)).render);  // another tick may come
+    plan = refresh.plan(change(5.2, false));
+    EXPECT_EQ(plan.detail, MeshDetail::Simplified);
+    refresh.rendered(plan, 60.0, true);
+    plan = refresh.plan(idle(5.2 + ViewportRefresh::kSettleSeconds + 0.01));
+    EXPECT_TRUE(plan.render);
+    EXPECT_EQ(plan.detail, MeshDetail::Full);
+    refresh.rendered(plan, 1200.0, false);
+    EXPECT_GT(refresh.secondsToRefine(6.0), 1e8);
+}
+
+TEST(ViewportRefresh, FastScenesAreAlwaysDrawnInFull) {
+    ViewportRefresh refresh = afterFullFrame(12.0);
+    EXPECT_FALSE(refresh.fullFramesAreSlow());
+    for (bool dragging : {true, false}) {
+        const RefreshPlan plan = refresh.plan(change(1.0, dragging));
+        EXPECT_TRUE(plan.render);
+        EXPECT_EQ(plan.detail, MeshDetail::Full);
+        EXPECT_EQ(plan.pixelScale, 1);
+        refresh.rendered(plan, 12.0, false);
+    }
+}
+
+TEST(ViewportRefresh, WithTheSettingOffADragOnlyLowersTheResolution) {
+    ViewportRefresh refresh = afterFullFrame(300.0);
+    Input input = change(1.0, true);
+    input.simplifyWhileDragging = false;
+    const RefreshPlan plan = refresh.plan(input);
+    EXPECT_EQ(plan.detail, MeshDetail::Full);
+    EXPECT_EQ(plan.pixelScale, 4);  // ⌈√(300 / 33)⌉ = 4
+    refresh.rendered(plan, 25.0, false);
+    EXPECT_TRUE(refresh.plan(idle(1.1)).render);  // the full-resolution frame follows
+}
+
+TEST(ViewportRefresh, AStandInNotYetMadeLeavesTheFrameFull) {
+    // Simplified asked for, nothing simplified drawn (the worker is not done): at full
+    // resolution that frame is already the full one, and nothing is redrawn after it.
+    ViewportRefresh refresh = afterFullFrame(1200.0);
+    const RefreshPlan plan = refresh.plan(change(2.0, false));
+    refresh.rendered(plan, 1200.0, false);
+    EXPECT_FALSE(refresh.plan(idle(3.0)).render);
+}
+
+}  // namespace
+}  // namespace glint

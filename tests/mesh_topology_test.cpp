@@ -1,0 +1,108 @@
+// Closed-mesh detection (geometry/mesh_topology.h) on the procedural shapes, open and broken
+// meshes, inside-out and two-sided ones; and the culling decisions built on it
+// (render/visibility.h): which faces a camera or a shadow map may skip, and frustum rejection.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "geometry/mesh_topology.h"
+#include "render/visibility.h"
+
+namespace glint {
+namespace {
+
+Mesh reversed(Mesh mesh) {
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    return mesh;
+}
+
+Mesh merged(const Mesh& a, const Mesh& b) {
+    Mesh mesh = a;
+    const auto offset = static_cast<uint32_t>(a.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), b.vertices.begin(), b.vertices.end());
+    for (uint32_t index : b.indices) mesh.indices.push_back(index + offset);
+    return mesh;
+}
+
+TEST(MeshTopology, ProceduralSolidsAreClosedAndTurnOutwards) {
+    // The cube's faces have their own corners and the sphere and torus a UV seam: welding
+    // joins them (the sphere's seam differs by float rounding of sin 2π).
+    EXPECT_EQ(meshClosure(makeCube({0, 0, 0}, 1.0f)), MeshClosure::ClosedOutward);
+    EXPECT_EQ(meshClosure(makeUvSphere({1, 2, 3}, 0.5f, 32, 16)), MeshClosure::ClosedOutward);
+    EXPECT_EQ(meshClosure(makeUvSphere({0, 0, 0}, 1.0f, 3, 2)), MeshClosure::ClosedOutward);
+    EXPECT_EQ(meshClosure(makeTorus({0, 0, 0}, 1.0f, 0.3f, 24, 12)), MeshClosure::ClosedOutward);
+}
+
+TEST(MeshTopology, OpenAndBrokenMeshesAreOpen) {
+    EXPECT_EQ(meshClosure(makePlane({0, 0, 0}, {0, 1, 0}, {1, 1})), MeshClosure::Open);  // a quad
+    Mesh holed = makeCube({0, 0, 0}, 1.0f);
+    holed.indices.resize(holed.indices.size() - 3);  // one triangle missing: three edges with one triangle
+    EXPECT_EQ(meshClosure(holed), MeshClosure::Open);
+    Mesh flipped = makeCube({0, 0, 0}, 1.0f);
+    std::swap(flipped.indices[1], flipped.indices[2]);  // one triangle turned against its neighbours
+    EXPECT_EQ(meshClosure(flipped), MeshClosure::Open);
+    const Mesh cube = makeCube({0, 0, 0}, 1.0f);
+    EXPECT_EQ(meshClosure(merged(cube, cube)), MeshClosure::Open);  // every edge with four triangles
+    EXPECT_EQ(meshClosure(Mesh{}), MeshClosure::Open);
+}
+
+TEST(MeshTopology, InsideOutMeshesAndMixedOrientations) {
+    EXPECT_EQ(meshClosure(reversed(makeCube({0, 0, 0}, 1.0f))), MeshClosure::ClosedInward);
+    EXPECT_EQ(meshClosure(merged(makeCube({0, 0, 0}, 1.0f), makeCube({3, 0, 0}, 1.0f))), MeshClosure::ClosedOutward);
+    // Two solids, one inside out: no one face to cull serves both.
+    EXPECT_EQ(meshClosure(merged(makeCube({0, 0, 0}, 1.0f), reversed(makeCube({3, 0, 0}, 1.0f)))), MeshClosure::Open);
+    // A quad and its reverse: closed edges, but it encloses nothing (both sides are seen).
+    const Mesh quad = makePlane({0, 0, 0}, {0, 0, 1}, {1, 1});
+    EXPECT_EQ(meshClosure(merged(quad, reversed(quad))), MeshClosure::Open);
+}
+
+TEST(MeshTopology, WeldingJoinsPositionsWithinTheTolerance) {
+    Mesh mesh;
+    for (const glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1e-7f, 0, 0), glm::vec3(0.5f, 0, 0),
+                              glm::vec3(1.0f - 2e-7f, 1e-7f, 0)})
+        mesh.vertices.push_back({p, {0, 0, 1}, {0, 0}, {1, 0, 0}});
+    EXPECT_EQ(weldPositions(mesh, 1e-6f), (std::vector<uint32_t>{0, 1, 0, 3, 1}));
+    EXPECT_EQ(weldPositions(mesh, 1e-8f), (std::vector<uint32_t>{0, 1, 2, 3, 4}));
+}
+
+TEST(Visibility, BackFacesAreCulledOnlyOnClosedMeshesSeenFromOutside) {
+    EXPECT_EQ(culledFaces(MeshClosure::ClosedOutward, true), CulledFaces::Back);
+    EXPECT_EQ(culledFaces(MeshClosure::ClosedInward, true), CulledFaces::Front);
+    EXPECT_EQ(culledFaces(MeshClosure::Open, true), CulledFaces::None);
+    EXPECT_EQ(culledFaces(MeshClosure::ClosedOutward, false), CulledFaces::None);
+
+    Camera camera;  // at (0, 0, 4) looking at the origin, near plane 0.05
+    EXPECT_TRUE(beyondNearPlane(camera, {{0, 0, 0}, 1.0f}));
+    EXPECT_FALSE(beyondNearPlane(camera, {{0, 0, 0}, 5.0f}));    // the camera is inside
+    EXPECT_FALSE(beyondNearPlane(camera, {{0, 0, 3.5f}, 0.5f}));  // the near plane cuts it
+    EXPECT_FALSE(beyondNearPlane(camera, {{0, 0, 6}, 1.0f}));     // behind the camera
+}
+
+TEST(Visibility, ShadowMapsCullOnlyWhenTheLightIsOutside) {
+    const BoundingSphere object{{0, 0, 0}, 1.0f}, scene{{0, 0, 0}, 3.0f};
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = {0, -1, 0};
+    EXPECT_TRUE(beyondNearPlane(*shadowProjection(sun, scene), object));
+    Light bulb;
+    bulb.type = LightType::Point;
+    bulb.position = {0, 2, 0};
+    EXPECT_TRUE(beyondNearPlane(*shadowProjection(bulb, scene), object));
+    bulb.position = {0, 0.5f, 0};  // inside the object
+    EXPECT_FALSE(beyondNearPlane(*shadowProjection(bulb, scene), object));
+    bulb.position = {0, 1.0f + 1e-5f, 0};  // closer than its near plane's corners
+    EXPECT_FALSE(beyondNearPlane(*shadowProjection(bulb, scene), object));
+}
+
+TEST(Visibility, SpheresOutsideTheFrustumAreRejected) {
+    Camera camera;  // 40° vertical field of view, far plane 100
+    const glm::mat4 viewProjection = camera.viewProjection(1.0f);
+    EXPECT_FALSE(outsideFrustum(viewProjection, {{0, 0, 0}, 1.0f}));
+    EXPECT_TRUE(outsideFrustum(viewProjection, {{0, 0, 6}, 1.0f}));     // behind the camera
+    EXPECT_TRUE(outsideFrustum(viewProjection, {{5, 0, 0}, 1.0f}));     // off to the side: tan 20° · 4 ≈ 1.5
+    EXPECT_FALSE(outsideFrustum(viewProjection, {{2.2f, 0, 0}, 1.0f}));  // straddles the side plane
+    EXPECT_TRUE(outsideFrustum(viewProjection, {{0, 0, -200}, 1.0f}));  // beyond the far plane
+}
+
+}  // namespace
+}  // namespace glint
