@@ -3,6 +3,8 @@
 // the interpolated point of a triangle mesh with its interpolated (Phong) or face (flat) normal),
 // then shades it (common/shading.glsl): the lights, the ambient light and the traced delta lobes
 // of mirror and glass. With GLINT_GOURAUD it outputs the radiance interpolated between vertices.
+// Only with GLINT_RAY_CAST_SPHERE (an exact sphere's program, gl/surface_variant.h) does it write
+// gl_FragDepth: a triangle's depth is the rasterizer's, tested before the shader runs.
 // generated/material.glsl is made per model from its parameter table (MaterialParams,
 // loadMaterialParams(), the model's GLSL twin and GLINT_EVAL_BRDF); the prelude defines
 // GLINT_MSAA_SAMPLES when rendering multisampled.
@@ -43,12 +45,12 @@ void main() {
     vec3 position = worldPosition;
     vec3 normal = normalize(worldNormal);
     vec3 tangent = worldTangent;  // meshes: the interpolated tangent
-    float depth = gl_FragCoord.z;
     // The plane of the triangle from the position's screen-space derivatives (exact for a
     // linearly interpolated attribute); its orientation does not matter (two-sided, below).
     vec3 faceNormal = cross(dFdx(worldPosition), dFdy(worldPosition));
     if (flatNormals == 1 && dot(faceNormal, faceNormal) > 0.0) normal = normalize(faceNormal);
-    if (shapeKind == SHAPE_SPHERE) {
+#ifdef GLINT_RAY_CAST_SPHERE
+    {  // the exact sphere inside its proxy: this program draws nothing else
         float t = intersectSphere(ray);
 #ifdef GLINT_MSAA_SAMPLES
         // Coverage from the analytic silhouette, sample by sample.
@@ -70,15 +72,15 @@ void main() {
         normal = (position - sphere.xyz) / sphere.w;
         tangent = sphereTangent(normal);
         vec4 clip = viewProjection * vec4(position, 1.0);
-        depth = 0.5 * (clip.z / clip.w) + 0.5;
+        gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
     }
+#endif
 #ifdef GLINT_TEXTURED
     // Textures (common/textures.glsl): the sphere's exact (u, v), the mesh's interpolated UV.
     vec2 uv = shapeKind == SHAPE_SPHERE ? sphereUv(normal) : surfaceUv;
     textureCoordinates = textureCoordinatesAt(uv, position - objectCenter);
 #endif
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
-    gl_FragDepth = depth;
 #ifdef GLINT_GOURAUD
     writeRadiance(vertexRadiance);
     return;

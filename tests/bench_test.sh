@@ -37,6 +37,7 @@ grep -q "^cold start" "$out/bench.txt"
 grep -q "^mesh load" "$out/bench.txt"
 grep -q "^ggx_studio/0 .*environment" "$out/bench.txt"
 grep -q "^mesh_1m_studio_shadows/2 .*combined" "$out/bench.txt"
+grep -q "^mesh_1m_light_drag/2 .*drag" "$out/bench.txt"
 
 /usr/bin/python3 - "$out/bench.json" "$out/list.txt" <<'PY'
 import json, sys
@@ -52,7 +53,15 @@ for scene in bench["scenes"]:
         assert 0 < timing["min"] <= timing["q1"] <= timing["median"] <= timing["q3"] <= timing["max"], (scene["name"], key, timing)
     assert abs(scene["ratio"] - scene["frame_ms"]["median"] / scene["bare_ms"]["median"]) < 1e-9, scene["name"]
     assert scene["family"] in ("diffuse", "phong", "microfacet", "anisotropic", "retroreflective", "specular", "mesh",
-                               "environment", "shadows", "combined"), scene["family"]
+                               "environment", "shadows", "combined", "drag"), scene["family"]
+    assert scene["mesh_detail"] == ("simplified" if scene["family"] == "drag" else "full"), scene["name"]
+    assert scene["triangles"] > 0 and scene["shadow_maps_per_frame"] >= 0, scene["name"]
+by_name = {scene["name"]: scene for scene in bench["scenes"]}
+# The stand-in draws at most 100k of the million triangles; a moving light redraws its map each frame.
+assert by_name["mesh_1m_triangles/4"]["triangles"] > 900000
+assert 0 < by_name["mesh_1m_simplified/4"]["triangles"] <= 100000
+assert by_name["mesh_1m_studio_shadows/2"]["shadow_maps_per_frame"] == 0
+assert by_name["mesh_1m_light_drag/2"]["shadow_maps_per_frame"] == 1
 assert bench["cold_start_ms"]["median"] > 0 and bench["cold_start_runs"] == 3 and bench["cold_start_peak_mb"] > 0
 assert bench["thumbnails"] == 8 and bench["thumbnails_per_second"] > 0
 assert bench["mesh_triangles"] > 900000 and bench["mesh_load_ms"]["median"] > 0

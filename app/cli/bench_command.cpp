@@ -123,21 +123,30 @@ struct SceneResult {
     std::string name, family;
     Timing frame, radiance, display, bare;
     double ratio = 0, radianceRatio = 0;
+    MeshDetail detail = MeshDetail::Full;
+    long long triangles = 0;           // submitted by the surface pass per frame
+    double shadowMapsPerFrame = 0.0;   // shadow maps drawn per timed frame (0: kept from the first)
 };
 
 // Times `frames` frames of the scene (radiance pass, then display pass) and as many bare passes,
-// interleaved frame by frame, alternating which goes first, each ended by glFinish.
+// interleaved frame by frame, alternating which goes first, each ended by glFinish. A scene drawn
+// with simplified stand-ins has them made first (the editor makes them ahead of a drag).
 Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benchScene, int frames) {
     Renderer& renderer = headless.renderer();
-    const Scene scene = benchScene.build();
+    Scene scene = benchScene.build();
+    if (benchScene.detail == MeshDetail::Simplified) {
+        renderer.prepareSimplifiedMeshes(scene);
+        renderer.finishSimplifiedMeshes();
+    }
     GLINT_CHECK(!scene.objects.empty());
     auto bare = BareShadingPass::create(renderer.sources(), scene.materials.at(scene.objects[0].materialIndex));
     if (!bare) return bare.error();
     std::vector<double> frameMs, radianceMs, displayMs, bareMs;
     Status failure = success();
     const auto drawScene = [&] {
+        if (benchScene.beforeEachFrame) benchScene.beforeEachFrame(scene);
         const auto start = std::chrono::steady_clock::now();
-        if (Status status = renderer.renderRadiance(scene, kWidth, kHeight); !status) failure = status;
+        if (Status status = renderer.renderRadiance(scene, kWidth, kHeight, benchScene.detail); !status) failure = status;
         glFinish();
         const double radiance = millisecondsSince(start);
         renderer.displayOffscreen(scene.display);
@@ -156,6 +165,7 @@ Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benc
     drawBare();
     if (!failure) return failure.error();
     frameMs.clear(), radianceMs.clear(), displayMs.clear(), bareMs.clear();
+    const long long shadowMapsBefore = renderer.shadowMapsDrawn();
     for (int i = 0; i < frames; ++i) {
         if (i % 2 == 0) drawScene(), drawBare();
         else drawBare(), drawScene();
@@ -165,6 +175,9 @@ Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benc
                        summarize(displayMs), summarize(bareMs)};
     result.ratio = result.frame.median / result.bare.median;
     result.radianceRatio = result.radiance.median / result.bare.median;
+    result.detail = benchScene.detail;
+    result.triangles = renderer.trianglesDrawn();
+    result.shadowMapsPerFrame = static_cast<double>(renderer.shadowMapsDrawn() - shadowMapsBefore) / frames;
     return result;
 }
 
@@ -255,12 +268,13 @@ void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& pr
                 const std::string& rendererDescription) {
     std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the bare pass (%s)\n", kWidth, kHeight,
                 options.framesPerScene(), rendererDescription.c_str());
-    std::printf("%-20s %-16s %9s %9s %9s %9s %9s %7s %9s\n", "scene", "family", "frame ms", "IQR ms", "radiance", "display",
-                "bare ms", "ratio", "rad.ratio");
+    std::printf("%-27s %-15s %9s %9s %9s %9s %9s %7s %9s %10s %5s\n", "scene", "family", "frame ms", "IQR ms", "radiance",
+                "display", "bare ms", "ratio", "rad.ratio", "triangles", "maps");
     for (const SceneResult& scene : scenes)
-        std::printf("%-20s %-16s %9.2f %9.2f %9.2f %9.2f %9.2f %7.3f %9.3f\n", scene.name.c_str(), scene.family.c_str(),
-                    scene.frame.median, scene.frame.upperQuartile - scene.frame.lowerQuartile, scene.radiance.median,
-                    scene.display.median, scene.bare.median, scene.ratio, scene.radianceRatio);
+        std::printf("%-27s %-15s %9.2f %9.2f %9.2f %9.2f %9.2f %7.3f %9.3f %10lld %5.1f\n", scene.name.c_str(),
+                    scene.family.c_str(), scene.frame.median, scene.frame.upperQuartile - scene.frame.lowerQuartile,
+                    scene.radiance.median, scene.display.median, scene.bare.median, scene.ratio, scene.radianceRatio,
+                    scene.triangles, scene.shadowMapsPerFrame);
     if (!options.sceneNames.empty()) return;  // --scene: the scenes only
     std::printf("cold start (glint render, 512x512, child process): median %.0f ms over %d runs (IQR %.0f ms), peak %.0f MB\n",
                 program.coldStart.median, options.coldStarts(), program.coldStart.upperQuartile - program.coldStart.lowerQuartile,
@@ -278,7 +292,9 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
     for (const SceneResult& scene : scenes)
         sceneRows.push_back({{"name", scene.name}, {"family", scene.family}, {"frame_ms", toJson(scene.frame)},
                              {"radiance_ms", toJson(scene.radiance)}, {"display_ms", toJson(scene.display)},
-                             {"bare_ms", toJson(scene.bare)}, {"ratio", scene.ratio}, {"radiance_ratio", scene.radianceRatio}});
+                             {"bare_ms", toJson(scene.bare)}, {"ratio", scene.ratio}, {"radiance_ratio", scene.radianceRatio},
+                             {"mesh_detail", scene.detail == MeshDetail::Simplified ? "simplified" : "full"},
+                             {"triangles", scene.triangles}, {"shadow_maps_per_frame", scene.shadowMapsPerFrame}});
     json figures = {{"format", "glint-bench"}, {"version", 1}, {"renderer", rendererDescription},
                     {"width", kWidth}, {"height", kHeight}, {"frames", options.framesPerScene()}, {"quick", options.quick},
                     {"scenes", sceneRows}};
@@ -326,7 +342,7 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
     }
     if (!parsed->positionals.empty()) return usageError("takes no arguments (got " + parsed->positionals[0] + ")");
     if (std::find(options.sceneNames.begin(), options.sceneNames.end(), "list") != options.sceneNames.end()) {
-        for (const BenchScene& scene : benchScenes()) std::printf("%-20s %s\n", scene.name.c_str(), scene.family.c_str());
+        for (const BenchScene& scene : benchScenes()) std::printf("%-27s %s\n", scene.name.c_str(), scene.family.c_str());
         return 0;
     }
 

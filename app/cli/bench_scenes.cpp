@@ -1,6 +1,8 @@
 // The standard scenes of `glint bench` (see bench_scenes.h).
 #include "cli/bench_scenes.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "brdf/param_table.h"
 #include "environment/environment_source.h"
 
@@ -90,11 +92,12 @@ std::vector<BenchScene> makeBenchScenes() {
                               [material = member.material, lights] { return frameFillingSphere(material, lights); }});
     const Material ggx = withOption(BrdfModel::CookTorrance, "distribution", "ggx");
     // A large mesh: Blinn-Phong, 4 lights.
-    scenes.push_back({"mesh_1m_triangles/4", "mesh", [material = defaults(BrdfModel::BlinnPhong)] {
-                          Scene scene = frameFillingSphere(material, 4);
-                          tessellateToOneMillionTriangles(scene);
-                          return scene;
-                      }});
+    const auto oneMillionTriangles = [material = defaults(BrdfModel::BlinnPhong)] {
+        Scene scene = frameFillingSphere(material, 4);
+        tessellateToOneMillionTriangles(scene);
+        return scene;
+    };
+    scenes.push_back({"mesh_1m_triangles/4", "mesh", oneMillionTriangles});
     // Image-based light alone (no delta lights), for a diffuse and a glossy model.
     for (const FamilyMember& member : {members[0], members[4]})
         scenes.push_back({std::string(member.name) + "_studio/0", "environment", [material = member.material] {
@@ -109,12 +112,24 @@ std::vector<BenchScene> makeBenchScenes() {
                           return scene;
                       }});
     // Everything at once: the 1M-triangle sphere on a floor, studio light, two shadowed lights.
-    scenes.push_back({"mesh_1m_studio_shadows/2", "combined", [ggx] {
-                          Scene scene = frameFillingSphere(ggx, 2);
-                          tessellateToOneMillionTriangles(scene);
-                          lightWithStudio(scene);
-                          castShadowsOnAFloor(scene);
-                          return scene;
+    const auto studioShadows = [ggx] {
+        Scene scene = frameFillingSphere(ggx, 2);
+        tessellateToOneMillionTriangles(scene);
+        lightWithStudio(scene);
+        castShadowsOnAFloor(scene);
+        return scene;
+    };
+    scenes.push_back({"mesh_1m_studio_shadows/2", "combined", studioShadows});
+    // A drag in the editor: the 1M-triangle scenes drawn with the sphere's simplified stand-in
+    // (the shadow maps kept from the full mesh, as for a camera or material drag); then the
+    // shadowed point light moving 1° around the vertical each frame, its cube map redrawn from
+    // the stand-in every frame.
+    scenes.push_back({"mesh_1m_simplified/4", "drag", oneMillionTriangles, MeshDetail::Simplified});
+    scenes.push_back({"mesh_1m_studio_simplified/2", "drag", studioShadows, MeshDetail::Simplified});
+    scenes.push_back({"mesh_1m_light_drag/2", "drag", studioShadows, MeshDetail::Simplified, [](Scene& scene) {
+                          Light& bulb = scene.lights[0];  // the point light
+                          bulb.position = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(1.0f), glm::vec3(0, 1, 0)) *
+                                                    glm::vec4(bulb.position, 1.0f));
                       }});
     return scenes;
 }

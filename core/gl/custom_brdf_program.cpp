@@ -84,16 +84,14 @@ GeneratedShaderFiles customBrdfShaderFiles(const CustomBrdf& brdf) {
 }
 
 Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& sources, const CustomBrdf& brdf,
-                                                        int samples, bool gouraud) {
+                                                        SurfaceVariant variant) {
     const GeneratedShaderFiles files = customBrdfShaderFiles(brdf);
     std::string key;
     for (const auto& [path, text] : files) key += path + '\n' + text + '\0';
-    const auto found = programs_.find({key, samples, gouraud});
-    auto& entry = found != programs_.end() ? found->second : programs_[{key, samples, gouraud}];
+    const auto found = programs_.find({key, variant});
+    auto& entry = found != programs_.end() ? found->second : programs_[{key, variant}];
     if (found == programs_.end()) {
-        std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
-        if (gouraud) prelude += "#define GLINT_GOURAUD 1\n";  // shading per vertex, as Renderer's own programs
-        auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", prelude, files);
+        auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", variant.prelude(), files);
         if (built) {
             built->bindBlock("FrameBlock", kFrameBinding);
             built->bindBlock("LightBlock", kLightBinding);

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "gl/shader_program.h"
+#include "gl/surface_variant.h"
 #include "interchange/custom_brdf.h"
 
 namespace glint {
@@ -26,12 +27,11 @@ class CustomBrdfPrograms {
 public:
     // The surface program for `brdf`; a compile error is kept and returned again (not rebuilt
     // every frame) until the source changes.
-    // `gouraud`: shaded per vertex (GLINT_GOURAUD), as the built-in models' programs.
-    Result<const ShaderProgram*> program(const ShaderSources& sources, const CustomBrdf& brdf, int samples,
-                                         bool gouraud = false);
+    // In the variant `variant` (MSAA, Gouraud, ray-cast sphere), as the built-in models' programs.
+    Result<const ShaderProgram*> program(const ShaderSources& sources, const CustomBrdf& brdf, SurfaceVariant variant);
 
 private:
-    std::map<std::tuple<std::string, int, bool>, std::variant<ShaderProgram, Diagnostic>> programs_;
+    std::map<std::tuple<std::string, SurfaceVariant>, std::variant<ShaderProgram, Diagnostic>> programs_;
 };
 
 // Sets the parameter uniforms of a bound custom-BRDF program from packed values.

@@ -115,19 +115,19 @@ void GpuMeshCache::updateSimplified(Levels& levels, const SceneObject& object) {
         std::shared_ptr<const Mesh> mesh;
         if (const auto* meshShape = std::get_if<MeshShape>(&object.shape)) mesh = meshShape->mesh;
         levels.making = std::async(std::launch::async, [mesh, shape = object.shape] {
-            SimplifiedWithClosure result;
-            result.mesh = simplifyMesh(mesh ? *mesh : proceduralMesh(shape), kSimplifiedTriangles).mesh;
-            result.closure = meshClosure(result.mesh);
-            return result;
+            return simplifyMesh(mesh ? *mesh : proceduralMesh(shape), kSimplifiedTriangles).mesh;
         });
         return;
     }
     if (levels.making.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-    SimplifiedWithClosure made = levels.making.get();
+    const Mesh made = levels.making.get();
     levels.simplifiedDone = true;
-    if (made.mesh.indices.empty()) return;  // nothing came out: the full mesh stays
-    upload(levels.simplified, made.mesh);
-    levels.simplified.closure = made.closure;
+    if (made.indices.empty()) return;  // nothing came out: the full mesh stays
+    upload(levels.simplified, made);
+    // Culled as the mesh it stands for: clustering leaves a few non-manifold edges in a closed
+    // surface (where a cell holds a fold), each smaller than a cell, which would otherwise make
+    // it two-sided and twice as costly.
+    levels.simplified.closure = levels.full.closure;
     levels.simplified.simplified = true;
 }
 

@@ -58,16 +58,12 @@ public:
     void releaseUnused();
 
 private:
-    struct SimplifiedWithClosure {
-        Mesh mesh;
-        MeshClosure closure = MeshClosure::Open;
-    };
     // A mesh's buffers and its stand-in: not asked for, being made, or uploaded (possibly empty:
     // nothing simplified came out).
     struct Levels {
         GpuMesh full;
         GpuMesh simplified;
-        std::future<SimplifiedWithClosure> making;
+        std::future<Mesh> making;
         bool simplifiedDone = false;
     };
     struct ProceduralEntry {
@@ -93,7 +89,7 @@ private:
     float proxyScale_;
     std::vector<ProceduralEntry> procedural_;
     std::map<const Mesh*, ImportedEntry> imported_;
-    std::vector<std::future<SimplifiedWithClosure>> abandoned_;  // stand-ins of meshes gone while being made
+    std::vector<std::future<Mesh>> abandoned_;  // stand-ins of meshes gone while being made
     GpuMesh empty_;
 };
 

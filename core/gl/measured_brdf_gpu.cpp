@@ -36,19 +36,16 @@ MeasuredBrdfGpu::~MeasuredBrdfGpu() {
     for (auto& [key, upload] : textures_) glDeleteTextures(1, &upload.texture);
 }
 
-Result<const ShaderProgram*> MeasuredBrdfGpu::program(const ShaderSources& sources, int samples, bool gouraud) {
-    const auto key = std::make_tuple(samples, gouraud);
-    if (auto found = programs_.find(key); found != programs_.end()) return &found->second;
-    std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
-    if (gouraud) prelude += "#define GLINT_GOURAUD 1\n";
-    auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", prelude,
+Result<const ShaderProgram*> MeasuredBrdfGpu::program(const ShaderSources& sources, SurfaceVariant variant) {
+    if (auto found = programs_.find(variant); found != programs_.end()) return &found->second;
+    auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", variant.prelude(),
                                       {{"generated/material.glsl", kMeasuredMaterialGlsl}});
     if (!built) return built.error();
     built->bindBlock("FrameBlock", kFrameBinding);
     built->bindBlock("LightBlock", kLightBinding);
     built->bindBlock("MaterialBlock", kMaterialBinding);
     EnvironmentTextures::connect(*built);
-    return &programs_.insert_or_assign(key, std::move(*built)).first->second;
+    return &programs_.insert_or_assign(variant, std::move(*built)).first->second;
 }
 
 void MeasuredBrdfGpu::bind(const ShaderProgram& program, const std::shared_ptr<const MeasuredBrdf>& brdf) {

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "gl/shader_program.h"
+#include "gl/surface_variant.h"
 #include "interchange/measured_brdf.h"
 
 namespace glint {
@@ -22,7 +23,7 @@ public:
     MeasuredBrdfGpu(const MeasuredBrdfGpu&) = delete;
     MeasuredBrdfGpu& operator=(const MeasuredBrdfGpu&) = delete;
 
-    Result<const ShaderProgram*> program(const ShaderSources& sources, int samples, bool gouraud);
+    Result<const ShaderProgram*> program(const ShaderSources& sources, SurfaceVariant variant);
     // Binds `brdf`'s table (uploading it the first time) and sets the albedo uniforms of the bound program.
     void bind(const ShaderProgram& program, const std::shared_ptr<const MeasuredBrdf>& brdf);
     int uploads() const { return uploads_; }
@@ -32,7 +33,7 @@ private:
         std::weak_ptr<const MeasuredBrdf> owner;  // expired: the texture is freed on the next bind
         unsigned texture = 0;
     };
-    std::map<std::tuple<int, bool>, ShaderProgram> programs_;
+    std::map<SurfaceVariant, ShaderProgram> programs_;
     std::map<const MeasuredBrdf*, Upload> textures_;
     int uploads_ = 0;
 };

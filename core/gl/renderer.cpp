@@ -114,11 +114,10 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
     return program;
 }
 
-Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, int samples, bool gouraud,
+Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, SurfaceVariant variant,
                                                               TexturedParams textured) const {
     const ModelInfo& info = modelInfo(model);
-    std::string prelude = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
-    if (gouraud) prelude += "#define GLINT_GOURAUD 1\n";  // shading per vertex (surface.vert)
+    const std::string prelude = variant.prelude();
     const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(info, textured)}};
     auto program = ShaderProgram::build(sources_, "surface.vert", "surface.frag", prelude, generated);
     if (!program) return program.error();
@@ -134,11 +133,11 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
     return entry;
 }
 
-Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured) {
-    const auto key = std::make_tuple(model, samples, gouraud, textured.mask);
+Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) {
+    const auto key = std::make_tuple(model, variant, textured.mask);
     if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end())
         return &found->second.program;
-    auto built = buildSurfaceProgram(model, samples, gouraud, textured);
+    auto built = buildSurfaceProgram(model, variant, textured);
     if (!built) return built.error();
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
@@ -153,8 +152,8 @@ bool Renderer::reloadChangedShaders() {
         if (newest <= entry.builtAt) continue;
         changed = true;
         entry.builtAt = newest;
-        const auto& [model, samples, gouraud, textured] = key;
-        if (auto rebuilt = buildSurfaceProgram(model, samples, gouraud, {textured})) entry = std::move(*rebuilt);
+        const auto& [model, variant, textured] = key;
+        if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) entry = std::move(*rebuilt);
         else error = rebuilt.error().format();
     }
     const long long newestDisplay = newestModification(displayFiles_);
@@ -257,10 +256,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
             sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
         if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
         const Material& material = scene.materials.at(object.materialIndex);
-        const bool gouraud = object.interpolation == SurfaceInterpolation::Gouraud;
-        auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, samples, gouraud)
-                       : material.measured ? measured_.program(sources_, samples, gouraud)
-                                           : surfaceProgram(material.model, samples, gouraud, TexturedParams::of(material));
+        const SurfaceVariant variant{samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere != nullptr};
+        auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, variant)
+                       : material.measured ? measured_.program(sources_, variant)
+                                           : surfaceProgram(material.model, variant, TexturedParams::of(material));
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();

@@ -19,6 +19,7 @@
 #include "gl/platform.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
+#include "gl/surface_variant.h"
 #include "gl/texture_cache.h"
 #include "gl/shadow_maps.h"
 #include "image/image.h"
@@ -91,8 +92,8 @@ private:
 
     Renderer(GlPlatform& platform, ShaderSources sources);
     Result<ShaderProgram> buildBackgroundProgram() const;
-    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured) const;
-    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, int samples, bool gouraud, TexturedParams textured);
+    Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) const;
+    Result<const ShaderProgram*> surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured);
     const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object, MeshDetail detail);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
@@ -101,8 +102,9 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    // Keyed by model, MSAA samples, Gouraud and which parameters are textured (TexturedParams::mask).
-    std::map<std::tuple<BrdfModel, int, bool, std::uint32_t>, SurfaceProgram> surfacePrograms_;
+    // Keyed by model, variant (MSAA, Gouraud, ray-cast sphere) and which parameters are textured
+    // (TexturedParams::mask).
+    std::map<std::tuple<BrdfModel, SurfaceVariant, std::uint32_t>, SurfaceProgram> surfacePrograms_;
     CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
     MeasuredBrdfGpu measured_;  // materials with a MERL table
     ShaderProgram displayProgram_;
