@@ -1,6 +1,7 @@
-// Large meshes on the GPU (gl/gpu_mesh_cache.h): the simplified stand-in is drawn only when a
-// render asks for it and once it is made, looks like the full mesh, and shadow maps drawn from
-// stand-ins are drawn again for the next full-detail frame (and only then).
+// Large meshes on the GPU (gl/gpu_mesh_cache.h): simplified stand-ins are drawn only when a
+// render asks for them and once they are made, at the level of detail the covered pixels call
+// for, and look like the full mesh; shadow maps drawn from stand-ins are drawn again for the next
+// full-detail frame (and only then), as are maps a drag frame drew coarser.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,8 +12,7 @@ namespace glint {
 namespace {
 
 constexpr int kSize = 64;
-// A sphere of 350 × 300 segments and rings: 209,300 triangles, just above the size that gets a
-// stand-in (kSimplifyAboveTriangles).
+// A sphere of 350 × 300 segments and rings: 209,300 triangles, which gets all three stand-ins.
 constexpr int kSegments = 350, kRings = 300;
 constexpr long long kFullTriangles = 2LL * kSegments * kRings - 2 * kSegments;
 
@@ -32,9 +32,9 @@ Scene largeSphereOnAFloor() {
     return scene;
 }
 
-RadianceImage render(const Scene& scene, MeshDetail detail) {
+RadianceImage render(const Scene& scene, MeshDetail detail, int size = kSize) {
     Renderer& renderer = test::sharedHeadless().renderer();
-    const Status status = renderer.renderRadiance(scene, kSize, kSize, detail);
+    const Status status = renderer.renderRadiance(scene, size, size, detail);
     EXPECT_TRUE(status.ok()) << status.error().format();
     return renderer.readRadiance();
 }
@@ -61,10 +61,15 @@ TEST(MeshDetailGpu, TheStandInIsDrawnOnlyWhenAskedForAndLooksLikeTheMesh) {
     renderer.finishSimplifiedMeshes();
     const RadianceImage simplified = render(scene, MeshDetail::Simplified);
     EXPECT_EQ(renderer.simplifiedMeshesDrawn(), 1);
-    EXPECT_LE(renderer.trianglesDrawn(), static_cast<long long>(kSimplifiedTriangles) + 2);
-    EXPECT_GE(renderer.trianglesDrawn(), static_cast<long long>(kSimplifiedTriangles) / 2);
+    // The sphere covers at most 64² pixels: the coarsest stand-in, of at most 6,250 triangles.
+    EXPECT_LE(renderer.trianglesDrawn(), static_cast<long long>(kSimplifiedTriangles[2]) + 2);
+    EXPECT_GE(renderer.trianglesDrawn(), static_cast<long long>(kSimplifiedTriangles[2]) / 2);
     // Differences only along the silhouette and in the shading of a few cells.
     EXPECT_LT(meanAbsoluteDifference(full, simplified), 0.01 * mean(full));
+    // At 256² it may cover all 65,536 pixels: the 25,000-triangle stand-in (the finest within).
+    (void)render(scene, MeshDetail::Simplified, 256);
+    EXPECT_LE(renderer.trianglesDrawn(), static_cast<long long>(kSimplifiedTriangles[1]) + 2);
+    EXPECT_GT(renderer.trianglesDrawn(), static_cast<long long>(kSimplifiedTriangles[2]) + 2);
     (void)render(scene, MeshDetail::Full);
     EXPECT_EQ(renderer.trianglesDrawn(), kFullTriangles + 2);
     EXPECT_EQ(renderer.simplifiedMeshesDrawn(), 0);
@@ -89,6 +94,27 @@ TEST(MeshDetailGpu, ShadowMapsFromStandInsAreRedrawnForTheFullFrame) {
     EXPECT_EQ(renderer.shadowMapRenders(), first + 2);
     (void)render(scene, MeshDetail::Full);
     EXPECT_EQ(renderer.shadowMapRenders(), first + 2);
+}
+
+// Without any large mesh, a drag frame still draws a changed map coarser (about two texels per
+// pixel of its 64-pixel side: 256² instead of 1024²), and the full frame draws it again.
+TEST(MeshDetailGpu, ADragFramesMapsAreCoarserAndDrawnAgainAfter) {
+    Renderer& renderer = test::sharedHeadless().renderer();
+    Scene scene = defaultScene();
+    scene.lights[0].castsShadows = true;
+    const RadianceImage before = render(scene, MeshDetail::Full);
+    const long long first = renderer.shadowMapsDrawn();
+    scene.lights[0].direction.x += 0.02f;
+    const RadianceImage dragged = render(scene, MeshDetail::Simplified);
+    EXPECT_EQ(renderer.shadowMapsDrawn(), first + 1);
+    EXPECT_EQ(renderer.simplifiedMeshesDrawn(), 0);
+    const RadianceImage full = render(scene, MeshDetail::Full);
+    EXPECT_EQ(renderer.shadowMapsDrawn(), first + 2);
+    (void)render(scene, MeshDetail::Full);
+    EXPECT_EQ(renderer.shadowMapsDrawn(), first + 2);
+    EXPECT_GT(meanAbsoluteDifference(dragged, full), 0.0);  // the coarser map shows at the shadow's edge
+    EXPECT_LT(meanAbsoluteDifference(dragged, full), 0.05 * mean(full));
+    EXPECT_GT(meanAbsoluteDifference(before, full), 0.0);
 }
 
 }  // namespace

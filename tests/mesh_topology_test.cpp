@@ -1,9 +1,11 @@
 // Closed-mesh detection (geometry/mesh_topology.h) on the procedural shapes, open and broken
 // meshes, inside-out and two-sided ones; and the culling decisions built on it
-// (render/visibility.h): which faces a camera or a shadow map may skip, and frustum rejection.
+// (render/visibility.h): which faces a camera or a shadow map may skip, frustum rejection, and the
+// pixels a sphere may cover.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/mesh_topology.h"
 #include "render/visibility.h"
@@ -102,6 +104,18 @@ TEST(Visibility, SpheresOutsideTheFrustumAreRejected) {
     EXPECT_TRUE(outsideFrustum(viewProjection, {{5, 0, 0}, 1.0f}));     // off to the side: tan 20° · 4 ≈ 1.5
     EXPECT_FALSE(outsideFrustum(viewProjection, {{2.2f, 0, 0}, 1.0f}));  // straddles the side plane
     EXPECT_TRUE(outsideFrustum(viewProjection, {{0, 0, -200}, 1.0f}));  // beyond the far plane
+}
+
+TEST(Visibility, CoveredPixelsBoundTheProjectedDisc) {
+    Camera camera;  // at (0, 0, 4), 40° vertical field of view
+    const double tangent = std::tan(glm::radians(20.0));
+    // A small sphere 10 m away: a disc of radius 0.1 / ((10 − 0.1)·tan 20°) of half the height.
+    const double radius = 0.1 / (9.9 * tangent) * 50.0;
+    EXPECT_NEAR(coveredPixels(camera, {{0, 0, -6}, 0.1f}, 100, 100), 3.14159265358979 * radius * radius, 1e-3);
+    EXPECT_EQ(coveredPixels(camera, {{0, 0, 0}, 3.0f}, 100, 100), 100.0 * 100.0);  // fills the image
+    EXPECT_EQ(coveredPixels(camera, {{0, 0, 4}, 1.0f}, 64, 48), 64.0 * 48.0);     // the camera is inside
+    camera.projection = Projection::Orthographic;  // 2.5 m high
+    EXPECT_NEAR(coveredPixels(camera, {{0, 0, 0}, 0.25f}, 100, 100), 3.14159265358979 * 10.0 * 10.0, 1e-3);
 }
 
 }  // namespace

@@ -35,8 +35,8 @@ bool sameTriangles(const Shape& a, const Shape& b) {
 }  // namespace
 
 GpuMeshCache::~GpuMeshCache() {
-    for (ProceduralEntry& entry : procedural_) destroy(entry.levels.full), destroy(entry.levels.simplified);
-    for (auto& [key, entry] : imported_) destroy(entry.levels.full), destroy(entry.levels.simplified);
+    for (ProceduralEntry& entry : procedural_) forgetSimplified(entry.levels), destroy(entry.levels.full);
+    for (auto& [key, entry] : imported_) forgetSimplified(entry.levels), destroy(entry.levels.full);
 }
 
 void GpuMeshCache::upload(GpuMesh& gpu, const Mesh& mesh) {
@@ -102,43 +102,64 @@ GpuMeshCache::Levels* GpuMeshCache::levelsFor(size_t objectIndex, const SceneObj
 }
 
 void GpuMeshCache::forgetSimplified(Levels& levels) {
-    destroy(levels.simplified);
+    for (GpuMesh& level : levels.simplified) destroy(level);
+    levels.simplified.clear();
     levels.simplifiedDone = false;
     if (levels.making.valid()) abandoned_.push_back(std::move(levels.making));
 }
 
+namespace {
+
+// A mesh's stand-ins, finest first (the budgets of at most half its triangles): each level
+// simplifies the one before.
+std::vector<Mesh> simplifiedLevels(const Mesh& mesh) {
+    std::vector<Mesh> levels;
+    for (const size_t budget : kSimplifiedTriangles) {
+        if (2 * budget > mesh.triangleCount()) continue;
+        const Mesh& finer = levels.empty() ? mesh : levels.back();
+        Mesh level = simplifyMesh(finer, budget).mesh;
+        if (level.indices.empty()) break;  // nothing came out at this budget: nor at coarser ones
+        levels.push_back(std::move(level));
+    }
+    return levels;
+}
+
+}  // namespace
+
 void GpuMeshCache::updateSimplified(Levels& levels, const SceneObject& object) {
-    if (levels.simplifiedDone || static_cast<size_t>(levels.full.indexCount) / 3 <= kSimplifyAboveTriangles) return;
+    constexpr size_t kCoarsest = kSimplifiedTriangles[std::size(kSimplifiedTriangles) - 1];
+    if (levels.simplifiedDone || static_cast<size_t>(levels.full.indexCount) / 3 < 2 * kCoarsest) return;
     if (!levels.making.valid()) {
         // The worker makes its own copy of a procedural shape's triangles; an imported mesh is
         // shared (immutable) for as long as the worker reads it.
         std::shared_ptr<const Mesh> mesh;
         if (const auto* meshShape = std::get_if<MeshShape>(&object.shape)) mesh = meshShape->mesh;
         levels.making = std::async(std::launch::async, [mesh, shape = object.shape] {
-            return simplifyMesh(mesh ? *mesh : proceduralMesh(shape), kSimplifiedTriangles).mesh;
+            return simplifiedLevels(mesh ? *mesh : proceduralMesh(shape));
         });
         return;
     }
     if (levels.making.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-    const Mesh made = levels.making.get();
     levels.simplifiedDone = true;
-    if (made.indices.empty()) return;  // nothing came out: the full mesh stays
-    upload(levels.simplified, made);
-    // Culled as the mesh it stands for: clustering leaves a few non-manifold edges in a closed
-    // surface (where a cell holds a fold), each smaller than a cell, which would otherwise make
-    // it two-sided and twice as costly.
-    levels.simplified.closure = levels.full.closure;
-    levels.simplified.simplified = true;
+    for (const Mesh& made : levels.making.get()) {
+        GpuMesh& level = levels.simplified.emplace_back();
+        upload(level, made);
+        // Culled as the mesh it stands for: clustering leaves a few non-manifold edges in a closed
+        // surface (where a cell holds a fold), each smaller than a cell, which would otherwise make
+        // it two-sided and twice as costly.
+        level.closure = levels.full.closure;
+        level.simplified = true;
+    }
 }
 
-const GpuMesh& GpuMeshCache::forObject(size_t objectIndex, const SceneObject& object, MeshDetail detail) {
+const GpuMesh& GpuMeshCache::forObject(size_t objectIndex, const SceneObject& object, size_t triangleBudget) {
     Levels* levels = levelsFor(objectIndex, object);
     if (!levels) return empty_;
-    if (detail == MeshDetail::Simplified) {
-        updateSimplified(*levels, object);
-        if (levels->simplified.vertexArray) return levels->simplified;
-    }
-    return levels->full;
+    if (static_cast<size_t>(levels->full.indexCount) / 3 <= triangleBudget) return levels->full;
+    updateSimplified(*levels, object);
+    for (const GpuMesh& level : levels->simplified)
+        if (static_cast<size_t>(level.indexCount) / 3 <= triangleBudget) return level;
+    return levels->simplified.empty() ? levels->full : levels->simplified.back();
 }
 
 void GpuMeshCache::prepareSimplified(size_t objectIndex, const SceneObject& object) {
@@ -155,8 +176,8 @@ void GpuMeshCache::finishSimplified() {
 void GpuMeshCache::releaseUnused() {
     for (auto it = imported_.begin(); it != imported_.end();) {
         if (it->second.source.expired()) {
-            destroy(it->second.levels.full);
             forgetSimplified(it->second.levels);
+            destroy(it->second.levels.full);
             it = imported_.erase(it);
         } else {
             ++it;

@@ -2,8 +2,8 @@
 // (rebuilt when the shape changes), one per imported Mesh shared by every object that shows it
 // and uploaded once (so a million-triangle mesh costs no upload per frame). With each, whether
 // the mesh is closed (geometry/mesh_topology.h, found once at upload) and, for a large mesh, its
-// simplified stand-in (geometry/mesh_simplify.h), made on a worker thread when first asked for
-// and uploaded when done. It draws nothing.
+// simplified stand-ins (geometry/mesh_simplify.h) at a few levels of detail, made on a worker
+// thread when first asked for and uploaded when done. It draws nothing.
 #pragma once
 
 #include <glad/gl.h>
@@ -28,13 +28,14 @@ struct GpuMesh {
     bool simplified = false;  // a large mesh's stand-in, not its own triangles
 };
 
-// Which triangles of a large mesh to draw: its own, or its simplified stand-in (once made) while
+// Which triangles of a large mesh to draw: its own, or a simplified stand-in (once made) while
 // the user drags. Headless renders and tests always draw the full mesh.
 enum class MeshDetail { Full, Simplified };
 
-// Meshes of more triangles than this get a simplified stand-in of at most kSimplifiedTriangles.
-inline constexpr size_t kSimplifiedTriangles = 100'000;
-inline constexpr size_t kSimplifyAboveTriangles = 2 * kSimplifiedTriangles;
+// The stand-ins' triangle budgets, finest first, each a quarter of the one before: a mesh gets
+// those of at most half its own triangles (so one of more than 12,500 triangles gets some).
+inline constexpr size_t kSimplifiedTriangles[] = {100'000, 25'000, 6'250};
+inline constexpr size_t kEveryTriangle = ~size_t{0};
 
 class GpuMeshCache {
 public:
@@ -47,10 +48,11 @@ public:
     GpuMeshCache& operator=(const GpuMeshCache&) = delete;
 
     // The buffers drawing object `objectIndex`: an exact sphere's proxy or the shape's triangles
-    // (geometry/shape_mesh.h), before the object's placement. With MeshDetail::Simplified, a large
-    // mesh's stand-in once it is ready (asking starts making it).
-    const GpuMesh& forObject(size_t objectIndex, const SceneObject& object, MeshDetail detail = MeshDetail::Full);
-    // Starts making the stand-in of the object's mesh, if it is large and has none yet.
+    // (geometry/shape_mesh.h), before the object's placement. A mesh of more triangles than
+    // `triangleBudget` is drawn by its finest stand-in within the budget (the coarsest when none
+    // is), once they are made (asking starts making them; until then, the full mesh).
+    const GpuMesh& forObject(size_t objectIndex, const SceneObject& object, size_t triangleBudget = kEveryTriangle);
+    // Starts making the stand-ins of the object's mesh, if it is large and has none yet.
     void prepareSimplified(size_t objectIndex, const SceneObject& object);
     // Waits until every stand-in being made is done (benchmarks).
     void finishSimplified();
@@ -58,12 +60,12 @@ public:
     void releaseUnused();
 
 private:
-    // A mesh's buffers and its stand-in: not asked for, being made, or uploaded (possibly empty:
-    // nothing simplified came out).
+    // A mesh's buffers and its stand-ins: not asked for, being made, or uploaded (finest first;
+    // possibly none: nothing simplified came out).
     struct Levels {
         GpuMesh full;
-        GpuMesh simplified;
-        std::future<Mesh> making;
+        std::vector<GpuMesh> simplified;
+        std::future<std::vector<Mesh>> making;
         bool simplifiedDone = false;
     };
     struct ProceduralEntry {
@@ -80,16 +82,16 @@ private:
     // The entry holding the object's buffers, uploaded and up to date; nullptr for a mesh object
     // with no mesh loaded.
     Levels* levelsFor(size_t objectIndex, const SceneObject& object);
-    // Forgets the stand-in (the mesh changed); one still being made is left to finish.
+    // Forgets the stand-ins (the mesh changed); those still being made are left to finish.
     void forgetSimplified(Levels& levels);
-    // Starts the stand-in of a large mesh that has none; uploads it once made.
+    // Starts the stand-ins of a large mesh that has none; uploads them once made.
     void updateSimplified(Levels& levels, const SceneObject& object);
 
     int proxySegments_, proxyRings_;
     float proxyScale_;
     std::vector<ProceduralEntry> procedural_;
     std::map<const Mesh*, ImportedEntry> imported_;
-    std::vector<std::future<Mesh>> abandoned_;  // stand-ins of meshes gone while being made
+    std::vector<std::future<std::vector<Mesh>>> abandoned_;  // stand-ins of meshes gone while being made
     GpuMesh empty_;
 };
 

@@ -177,10 +177,6 @@ bool Renderer::reloadChangedShaders() {
 
 // --- meshes ---------------------------------------------------------------------------------
 
-const GpuMesh& Renderer::meshFor(size_t objectIndex, const SceneObject& object, MeshDetail detail) {
-    return meshes_->forObject(objectIndex, object, detail);
-}
-
 void Renderer::prepareSimplifiedMeshes(const Scene& scene) {
     platform_.makeCurrent();
     for (size_t i = 0; i < scene.objects.size(); ++i) meshes_->prepareSimplified(i, scene.objects[i]);
@@ -203,8 +199,13 @@ void Renderer::uploadFrame(const Scene& scene, int width, int height) {
 Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail) {
     platform_.makeCurrent();
     GLINT_CHECK(width > 0 && height > 0);
-    const auto meshOf = [&](size_t objectIndex) -> const GpuMesh& { return meshFor(objectIndex, scene.objects[objectIndex], detail); };
-    shadowMaps_->update(scene, meshOf, detail);
+    // Drag frames draw the shadow maps (when they must be drawn at all) from the finest stand-ins,
+    // with about two texels a side per pixel of the frame's larger side.
+    const size_t shadowBudget = detail == MeshDetail::Full ? kEveryTriangle : kSimplifiedTriangles[0];
+    const auto meshOf = [&](size_t i) -> const GpuMesh& { return meshes_->forObject(i, scene.objects[i], shadowBudget); };
+    int dragResolution = 256;
+    while (dragResolution < 2 * std::max(width, height)) dragResolution *= 2;
+    shadowMaps_->update(scene, meshOf, detail, dragResolution);
     const int samples = std::max(1, scene.msaaSamples);
     radianceTarget_.ensure(width, height, 1);
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
@@ -280,7 +281,11 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
         if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
-        const GpuMesh& mesh = meshFor(i, object, detail);
+        // A drag frame draws a large mesh by the stand-in with about as many triangles as the
+        // pixels it may cover: more would be smaller than a pixel.
+        const size_t budget = detail == MeshDetail::Full ? kEveryTriangle
+                                                          : static_cast<size_t>(coveredPixels(scene.camera, bounds, width, height));
+        const GpuMesh& mesh = meshes_->forObject(i, object, budget);
         // Back faces of a closed surface seen from outside are hidden behind its front faces
         // (render/visibility.h): culled, halving the triangles rasterised. That includes the
         // proxy sphere, whose back faces would shade the same front hit a second time

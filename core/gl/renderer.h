@@ -40,8 +40,9 @@ public:
 
     // Draws the scene's radiance at width×height (MSAA per scene.msaaSamples). A shader that
     // fails to compile is reported and the model's last good program, if any, is used.
-    // MeshDetail::Simplified draws large meshes' simplified stand-ins where they are ready (the
-    // editor, while the user drags; gl/gpu_mesh_cache.h); headless renders draw every triangle.
+    // MeshDetail::Simplified draws large meshes by simplified stand-ins where they are ready, each
+    // with about as many triangles as pixels it may cover (the editor, while the user drags;
+    // gl/gpu_mesh_cache.h); headless renders draw every triangle.
     Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full);
     // Starts making the simplified stand-ins of the scene's large meshes on worker threads (the
     // editor, once a full frame proved slow), so that the first drag finds them ready.
@@ -94,7 +95,6 @@ private:
     Result<ShaderProgram> buildBackgroundProgram() const;
     Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) const;
     Result<const ShaderProgram*> surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured);
-    const GpuMesh& meshFor(size_t objectIndex, const SceneObject& object, MeshDetail detail);
     void uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
 

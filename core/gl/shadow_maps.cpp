@@ -124,7 +124,7 @@ std::string geometryKey(const Scene& scene) {
 
 bool ShadowMaps::slotNeedsRender(size_t slotIndex, const std::vector<float>& key, bool geometryChanged, MeshDetail detail) const {
     const Slot& slot = slots_[slotIndex];
-    return geometryChanged || key != slot.key || (slot.drewSimplified && detail == MeshDetail::Full);
+    return geometryChanged || key != slot.key || (slot.provisional && detail == MeshDetail::Full);
 }
 
 // --- rendering --------------------------------------------------------------------------------
@@ -154,8 +154,7 @@ bool ShadowMaps::drawObjects(const Scene& scene, const MeshOfObject& meshOf, con
 }
 
 bool ShadowMaps::renderMap(const Scene& scene, const MeshOfObject& meshOf, const Light& light,
-                           const ShadowProjection& projection, Slot& slot) {
-    const int resolution = light.shadow.mapResolution;
+                           const ShadowProjection& projection, int resolution, Slot& slot) {
     glViewport(0, 0, resolution, resolution);
     glUniform1i(depthProgram_.uniform("shadowKind"), static_cast<int>(projection.kind));
     const glm::vec3 origin = projection.kind == ShadowMapKind::Orthographic ? glm::normalize(light.direction)
@@ -182,8 +181,10 @@ bool ShadowMaps::renderMap(const Scene& scene, const MeshOfObject& meshOf, const
 }
 
 // Each map is drawn again when its light's projection, any object, or (for a full-detail frame)
-// the detail it was drawn at changed.
-void ShadowMaps::update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail) {
+// the detail it was drawn at changed. A drag frame draws a map that changed at no more than
+// `dragResolution` texels a side (texel-based biases and filter grow with the texels), and the
+// full frame after the drag draws it again at its own resolution.
+void ShadowMaps::update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail, int dragResolution) {
     const std::vector<ShadowedLight> shadowed = shadowedLights(scene);
     std::string geometry = geometryKey(scene);
     const bool geometryChanged = geometry != geometryKey_;
@@ -206,7 +207,10 @@ void ShadowMaps::update(const Scene& scene, const MeshOfObject& meshOf, MeshDeta
             stateSet = true;
         }
         Slot& slot = slots_[slotIndex];
-        slot.drewSimplified = renderMap(scene, meshOf, *entry.light, entry.projection, slot);
+        const int resolution = entry.light->shadow.mapResolution;
+        slot.drawnResolution = detail == MeshDetail::Full ? resolution : std::min(resolution, dragResolution);
+        const bool drewSimplified = renderMap(scene, meshOf, *entry.light, entry.projection, slot.drawnResolution, slot);
+        slot.provisional = drewSimplified || slot.drawnResolution < resolution;
         slot.key = std::move(key);
         drew = true;
         ++mapRenderCount_;
@@ -227,7 +231,7 @@ void ShadowMaps::update(const Scene& scene, const MeshOfObject& meshOf, MeshDeta
         block_.viewProjection[slot] = entry.projection.viewProjection;
         block_.origin[slot] = glm::vec4(entry.projection.lightPosition, static_cast<float>(entry.projection.kind));
         block_.settings[slot] = {settings.depthBias, settings.normalOffset, settings.filterRadius,
-                                 static_cast<float>(settings.mapResolution)};
+                                 static_cast<float>(slots_[slot].drawnResolution)};
         block_.scale[slot] = {entry.projection.sideScale, entry.projection.farPlane, 0.0f, 0.0f};
         block_.mapOfLight[entry.lightBlockIndex / 4][entry.lightBlockIndex % 4] = static_cast<int>(slot);
     }

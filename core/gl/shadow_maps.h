@@ -48,11 +48,12 @@ public:
     // The buffers of object `objectIndex` (gl/gpu_mesh_cache.h) at the detail the frame draws.
     using MeshOfObject = std::function<const GpuMesh&(size_t objectIndex)>;
     // Re-renders each map whose view changed since the last call: its light's projection, the
-    // objects, or (for a full-detail frame) a map drawn from simplified meshes. Then uploads the
-    // ShadowBlock. A map skips the objects outside its frustum and the back faces of closed meshes
-    // its light sees from outside (render/visibility.h). Changes GL state: framebuffer, viewport,
-    // depth test, face culling, program.
-    void update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail);
+    // objects, or (for a full-detail frame) a map drawn for a drag. A drag frame (Simplified)
+    // draws at no more than `dragResolution` texels a side. Then uploads the ShadowBlock. A map
+    // skips the objects outside its frustum and the back faces of closed meshes its light sees
+    // from outside (render/visibility.h). Changes GL state: framebuffer, viewport, depth test,
+    // face culling, program.
+    void update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail, int dragResolution);
     // Binds the maps to their texture units and points `program`'s samplers at them.
     void bind(const ShaderProgram& program) const;
     // How many update() calls re-rendered maps, and how many maps they drew (tests of the caching).
@@ -63,14 +64,16 @@ private:
     struct Slot {
         GLuint texture2D = 0, cube = 0;
         int resolution2D = 0, resolutionCube = 0;
-        std::vector<float> key;       // its light's projection and resolution at the last render
-        bool drewSimplified = false;  // that render drew a simplified stand-in
+        std::vector<float> key;    // its light's projection and resolution at the last render
+        int drawnResolution = 0;   // texels a side of that render
+        bool provisional = false;  // drawn for a drag: from stand-ins, or below the light's resolution
     };
     ShadowMaps() = default;
     bool slotNeedsRender(size_t slotIndex, const std::vector<float>& key, bool geometryChanged, MeshDetail detail) const;
-    // Draws one light's map (six faces for a cube); returns whether a simplified stand-in was drawn.
+    // Draws one light's map (six faces for a cube) at `resolution`; returns whether a simplified
+    // stand-in was drawn.
     bool renderMap(const Scene& scene, const MeshOfObject& meshOf, const Light& light, const ShadowProjection& projection,
-                   Slot& slot);
+                   int resolution, Slot& slot);
     // Draws the objects into the bound map; returns whether any was a simplified stand-in.
     bool drawObjects(const Scene& scene, const MeshOfObject& meshOf, const ShadowProjection& projection,
                      const glm::mat4& viewProjection) const;

@@ -1,6 +1,7 @@
 // Frustum and back-face culling decisions (see visibility.h).
 #include "render/visibility.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint {
@@ -36,6 +37,19 @@ bool outsideFrustum(const glm::mat4& viewProjection, const BoundingSphere& bound
             if (glm::dot(plane, centre) < -bounds.radius * glm::length(glm::vec3(plane))) return true;
         }
     return false;
+}
+
+double coveredPixels(const Camera& camera, const BoundingSphere& bounds, int width, int height) {
+    const double image = static_cast<double>(width) * height;
+    double halfHeightWorld = 0.5 * camera.orthoHeight;  // the world size of half the image height
+    if (camera.projection == Projection::Perspective) {
+        if (!beyondNearPlane(camera, bounds)) return image;
+        const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+        const double depth = glm::dot(bounds.center - camera.position, forward) - bounds.radius;  // its nearest depth
+        halfHeightWorld = depth * std::tan(0.5 * glm::radians(static_cast<double>(camera.verticalFovDegrees)));
+    }
+    const double radiusPixels = bounds.radius / halfHeightWorld * 0.5 * height;
+    return std::min(image, 3.14159265358979 * radiusPixels * radiusPixels);
 }
 
 }  // namespace glint

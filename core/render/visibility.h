@@ -1,5 +1,6 @@
 // What a view may skip without changing a pixel: an object whose bounding sphere lies wholly
-// outside the view's frustum, and the faces of a closed mesh that no viewer outside it can see.
+// outside the view's frustum, and the faces of a closed mesh that no viewer outside it can see;
+// and how many pixels an object covers at most (which simplified stand-in a drag frame needs).
 // The GL renderer asks it for its camera and for each shadow-map view; pure maths, no GL.
 #pragma once
 
@@ -32,5 +33,11 @@ bool beyondNearPlane(const ShadowProjection& projection, const BoundingSphere& b
 // six planes, read off the matrix's rows (Gribb & Hartmann, "Fast extraction of viewing frustum
 // planes from the world-view-projection matrix", 2001).
 bool outsideFrustum(const glm::mat4& viewProjection, const BoundingSphere& bounds);
+
+// An upper estimate of the pixels the sphere covers in a width × height image of the camera:
+// the disc of its projected radius (radius / (distance · tan(fov/2)) of half the image height in
+// perspective, radius / (height/2) of it in orthographic), at most the whole image (also when the
+// camera is inside or the near plane cuts it).
+double coveredPixels(const Camera& camera, const BoundingSphere& bounds, int width, int height);
 
 }  // namespace glint

@@ -1,8 +1,8 @@
 """Large-mesh editor figures under Xvfb (not a test; numbers for the README and reports): the
 editor (1280×800 window) opens the default stage with its sphere replaced by a 1,000,000-triangle
-mesh (a binary PLY of a 1000 × 500 UV sphere, positions only, written here) and the key light
-casting shadows, then drags the key light's handle, the Blinn-Phong exponent slider and the
-camera (an orbit). From the editor's GLINT_LOG_FRAMES log it prints, for each drag, the frames drawn
+mesh (a binary PLY of a 1000 × 500 UV sphere, positions only, written here) and both lights
+casting shadows (the key light a 2D map, the fill light a cube map), then drags the key light's
+handle, the fill light's handle, the Blinn-Phong exponent slider and the camera (an orbit). From the editor's GLINT_LOG_FRAMES log it prints, for each drag, the frames drawn
 during it (render time, input-to-presented time, resolution, whether the simplified stand-in and
 new shadow maps were drawn) and the frame that followed the release with no further input.
 usage: /usr/bin/python3 tests/bench/mesh_figures.py build/app/glint [--no-simplify]
@@ -23,6 +23,7 @@ from gui_editor_test import EXPONENT_SLIDER  # noqa: E402
 VIEWPORT_RECT = (330, 23, 590, 752)  # x, y, width, height of the viewport in the window [px]
 CAMERA = {"position": (0.0, 0.9, 4.2), "target": (0.0, -0.1, 0.0), "fov_degrees": 40.0}
 KEY_DIRECTION = (-0.5, -1.0, -0.6)
+FILL_POSITION = (-0.4, 0.9, 1.5)  # in front of the sphere, where its handle shows
 
 
 def write_sphere_ply(path, segments=1000, rings=500):
@@ -55,14 +56,16 @@ def write_sphere_ply(path, segments=1000, rings=500):
 
 
 def write_scene(path, mesh_path):
-    """The default scene (core/scene/scene.cpp) with the mesh for the sphere, the key light shadowed."""
+    """The default scene (core/scene/scene.cpp) with the mesh for the sphere, both lights shadowed and
+    the fill light moved in front of the sphere."""
     scene = {
         "format": "glint-scene", "version": 1,
         "camera": {"position": [0, 0.9, 4.2], "target": [0, -0.1, 0]},
         "background": [0.02, 0.022, 0.026],
         "lights": [
             {"name": "key", "type": "directional", "direction": [-0.5, -1, -0.6], "irradiance": 2.5, "casts_shadows": True},
-            {"name": "fill", "type": "point", "position": [2.5, 1.5, 2], "power": 150, "color": [0.8, 0.9, 1]},
+            {"name": "fill", "type": "point", "position": list(FILL_POSITION), "power": 150, "color": [0.8, 0.9, 1],
+             "casts_shadows": True},
         ],
         "materials": [{"name": "red plastic", "model": "blinn_phong"},
                       {"name": "grey floor", "model": "lambert", "albedo": 0.35}],
@@ -73,9 +76,9 @@ def write_scene(path, mesh_path):
         json.dump(scene, out, indent=1)
 
 
-def key_handle(shot):
-    """The key light's handle: where the editor draws it (1.5 m from the camera target against the
-    light's travel, editor/light_handles.cpp), refined to the centroid of the yellow pixels there."""
+def handle_at(shot, world):
+    """A light handle drawn at `world` (editor/light_handles.cpp) on the initial camera, refined
+    to the centroid of the yellow pixels around it."""
     import math
 
     def sub(a, b):
@@ -91,8 +94,6 @@ def key_handle(shot):
     def dot(a, b):
         return sum(p * q for p, q in zip(a, b))
 
-    travel = unit(KEY_DIRECTION)
-    world = tuple(t - 1.5 * d for t, d in zip(CAMERA["target"], travel))
     forward = unit(sub(CAMERA["target"], CAMERA["position"]))
     right = unit(cross(forward, (0.0, 1.0, 0.0)))
     up = cross(right, forward)
@@ -108,6 +109,12 @@ def key_handle(shot):
     if not hits:
         return None
     return sum(h[0] for h in hits) // len(hits), sum(h[1] for h in hits) // len(hits)
+
+
+def key_handle(shot):
+    """A directional light's handle: 1.5 m from the camera target against the light's travel."""
+    length = sum(c * c for c in KEY_DIRECTION) ** 0.5
+    return handle_at(shot, tuple(t - 1.5 * d / length for t, d in zip(CAMERA["target"], KEY_DIRECTION)))
 
 
 def frames(log_path):
@@ -171,12 +178,14 @@ def main():
                 logged = frames(log_path)
                 describe(name, logged[mark:released], logged[released:])
 
-            handle = key_handle(x.screenshot())  # first: the handle is found from the initial camera
-            if handle:
-                measure("key light handle (shadowed)",
-                        lambda: x.drag(handle, (handle[0] - 150, handle[1] + 30), steps=30, step_seconds=0.05))
-            else:
-                print("key light handle: not found in the viewport")
+            # First the handles, found from the initial camera.
+            shot = x.screenshot()
+            for name, handle, to in (("key light handle (directional, 2D shadow map)", key_handle(shot), (-150, 30)),
+                                     ("fill light handle (point, cube shadow map)", handle_at(shot, FILL_POSITION), (60, -20))):
+                if handle:
+                    measure(name, lambda: x.drag(handle, (handle[0] + to[0], handle[1] + to[1]), steps=30, step_seconds=0.05))
+                else:
+                    print(f"{name}: not found in the viewport")
             measure("material slider (Blinn-Phong exponent)",
                     lambda: x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]), steps=30, step_seconds=0.05))
             measure("camera orbit (viewport drag)", lambda: x.drag((500, 200), (700, 260), steps=30, step_seconds=0.05))
