@@ -15,7 +15,7 @@ struct Settings {
     float uiScale = 1.0f;                  // HiDPI: font and sizes, 0.75–3
     bool presentationMode = false;         // classroom: large font, high contrast (app/classroom/presentation.h)
     float presentationScale = 2.0f;        // UI scale in presentation mode, 1.5–3
-    bool simplifyMeshesWhileDragging = true;  // large meshes drawn simplified during drags (editor/viewport_refresh.h)
+    bool simplifyMeshesWhileDragging = true;  // stand-ins and coarser shadow maps during drags (editor/viewport_refresh.h)
 };
 
 Settings loadSettings();

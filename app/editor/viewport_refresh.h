@@ -1,8 +1,8 @@
 // ViewportRefresh: when the editor redraws its viewport, and at what cost. The editor redraws
 // only on change. While the user drags (a slider, a colour, a light handle, the camera) and a
-// full frame takes longer than the frame budget, each frame is drawn at reduced resolution and
-// with large meshes' simplified stand-ins (gl/gpu_mesh_cache.h); a change outside a drag (a wheel
-// zoom, a key) is first drawn with the stand-ins at full resolution. The full frame follows by
+// full frame takes longer than the frame budget, each frame is drawn at reduced resolution and at
+// MeshDetail::Simplified (large meshes' stand-ins, changed shadow maps coarser: gl/renderer.h);
+// a change outside a drag (a wheel zoom, a key) is first drawn simplified at full resolution. The full frame follows by
 // itself: on the first frame after the drag ends, or once no change came for kSettleSeconds.
 // Pure bookkeeping: it renders nothing and reads no input (tests/editor_refresh_test.cpp).
 #pragma once

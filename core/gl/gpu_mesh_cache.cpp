@@ -126,20 +126,21 @@ std::vector<Mesh> simplifiedLevels(const Mesh& mesh) {
 
 }  // namespace
 
-void GpuMeshCache::updateSimplified(Levels& levels, const SceneObject& object) {
+void GpuMeshCache::startSimplifying(Levels& levels, const SceneObject& object) {
     constexpr size_t kCoarsest = kSimplifiedTriangles[std::size(kSimplifiedTriangles) - 1];
-    if (levels.simplifiedDone || static_cast<size_t>(levels.full.indexCount) / 3 < 2 * kCoarsest) return;
-    if (!levels.making.valid()) {
-        // The worker makes its own copy of a procedural shape's triangles; an imported mesh is
-        // shared (immutable) for as long as the worker reads it.
-        std::shared_ptr<const Mesh> mesh;
-        if (const auto* meshShape = std::get_if<MeshShape>(&object.shape)) mesh = meshShape->mesh;
-        levels.making = std::async(std::launch::async, [mesh, shape = object.shape] {
-            return simplifiedLevels(mesh ? *mesh : proceduralMesh(shape));
-        });
+    if (levels.simplifiedDone || levels.making.valid() || static_cast<size_t>(levels.full.indexCount) / 3 < 2 * kCoarsest)
         return;
-    }
-    if (levels.making.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    // The worker makes its own copy of a procedural shape's triangles; an imported mesh is shared
+    // (immutable) for as long as the worker reads it.
+    std::shared_ptr<const Mesh> mesh;
+    if (const auto* meshShape = std::get_if<MeshShape>(&object.shape)) mesh = meshShape->mesh;
+    levels.making = std::async(std::launch::async, [mesh, shape = object.shape] {
+        return simplifiedLevels(mesh ? *mesh : proceduralMesh(shape));
+    });
+}
+
+void GpuMeshCache::collectSimplified(Levels& levels) {
+    if (!levels.making.valid() || levels.making.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
     levels.simplifiedDone = true;
     for (const Mesh& made : levels.making.get()) {
         GpuMesh& level = levels.simplified.emplace_back();
@@ -156,14 +157,14 @@ const GpuMesh& GpuMeshCache::forObject(size_t objectIndex, const SceneObject& ob
     Levels* levels = levelsFor(objectIndex, object);
     if (!levels) return empty_;
     if (static_cast<size_t>(levels->full.indexCount) / 3 <= triangleBudget) return levels->full;
-    updateSimplified(*levels, object);
+    collectSimplified(*levels);
     for (const GpuMesh& level : levels->simplified)
         if (static_cast<size_t>(level.indexCount) / 3 <= triangleBudget) return level;
     return levels->simplified.empty() ? levels->full : levels->simplified.back();
 }
 
 void GpuMeshCache::prepareSimplified(size_t objectIndex, const SceneObject& object) {
-    if (Levels* levels = levelsFor(objectIndex, object)) updateSimplified(*levels, object);
+    if (Levels* levels = levelsFor(objectIndex, object)) startSimplifying(*levels, object), collectSimplified(*levels);
 }
 
 void GpuMeshCache::finishSimplified() {

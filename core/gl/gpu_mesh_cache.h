@@ -3,7 +3,7 @@
 // and uploaded once (so a million-triangle mesh costs no upload per frame). With each, whether
 // the mesh is closed (geometry/mesh_topology.h, found once at upload) and, for a large mesh, its
 // simplified stand-ins (geometry/mesh_simplify.h) at a few levels of detail, made on a worker
-// thread when first asked for and uploaded when done. It draws nothing.
+// thread when prepareSimplified asks and uploaded when done. It draws nothing.
 #pragma once
 
 #include <glad/gl.h>
@@ -50,9 +50,10 @@ public:
     // The buffers drawing object `objectIndex`: an exact sphere's proxy or the shape's triangles
     // (geometry/shape_mesh.h), before the object's placement. A mesh of more triangles than
     // `triangleBudget` is drawn by its finest stand-in within the budget (the coarsest when none
-    // is), once they are made (asking starts making them; until then, the full mesh).
+    // is), once prepareSimplified had them made (until then, by the full mesh).
     const GpuMesh& forObject(size_t objectIndex, const SceneObject& object, size_t triangleBudget = kEveryTriangle);
-    // Starts making the stand-ins of the object's mesh, if it is large and has none yet.
+    // Starts making the stand-ins of the object's mesh, if it is large and has none yet (not from
+    // forObject: a shape changed by a drag would start one worker per frame).
     void prepareSimplified(size_t objectIndex, const SceneObject& object);
     // Waits until every stand-in being made is done (benchmarks).
     void finishSimplified();
@@ -84,8 +85,10 @@ private:
     Levels* levelsFor(size_t objectIndex, const SceneObject& object);
     // Forgets the stand-ins (the mesh changed); those still being made are left to finish.
     void forgetSimplified(Levels& levels);
-    // Starts the stand-ins of a large mesh that has none; uploads them once made.
-    void updateSimplified(Levels& levels, const SceneObject& object);
+    // Starts the stand-ins of a large mesh that has none.
+    void startSimplifying(Levels& levels, const SceneObject& object);
+    // Uploads the stand-ins once the worker made them.
+    void collectSimplified(Levels& levels);
 
     int proxySegments_, proxyRings_;
     float proxyScale_;

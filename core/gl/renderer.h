@@ -45,7 +45,8 @@ public:
     // gl/gpu_mesh_cache.h); headless renders draw every triangle.
     Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full);
     // Starts making the simplified stand-ins of the scene's large meshes on worker threads (the
-    // editor, once a full frame proved slow), so that the first drag finds them ready.
+    // editor, once a full frame proved slow), so that the next drag finds them ready; without it
+    // Simplified frames draw the full meshes.
     void prepareSimplifiedMeshes(const Scene& scene);
     // Waits for the stand-ins being made (benchmarks).
     void finishSimplifiedMeshes();

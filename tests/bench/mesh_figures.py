@@ -6,7 +6,7 @@ handle, the fill light's handle, the Blinn-Phong exponent slider and the camera 
 during it (render time, input-to-presented time, resolution, whether the simplified stand-in and
 new shadow maps were drawn) and the frame that followed the release with no further input.
 usage: /usr/bin/python3 tests/bench/mesh_figures.py build/app/glint [--no-simplify]
-(--no-simplify: with View ▸ Simplify large meshes while dragging off, for comparison)"""
+(--no-simplify: with View ▸ Simplify meshes and shadows while dragging off, for comparison)"""
 import json
 import os
 import statistics

@@ -79,8 +79,9 @@ void drawViewMenu(EditorState& state) {
     if (ImGui::MenuItem("Normals overlay", "N", overlays.normals)) toggleNormals(state);
     if (ImGui::MenuItem("Surface probe (Shift+click)", "I", probeToolOn())) toggleProbeTool();
     ImGui::MenuItem("BRDF and Fresnel plots", "B", &state.plots.open);
-    // Large meshes' stand-ins while dragging (editor/viewport_refresh.h); kept in settings.json.
-    if (ImGui::MenuItem("Simplify large meshes while dragging", nullptr, &state.settings.simplifyMeshesWhileDragging))
+    // Large meshes' stand-ins and coarser changed shadow maps while dragging (editor/viewport_refresh.h);
+    // kept in settings.json.
+    if (ImGui::MenuItem("Simplify meshes and shadows while dragging", nullptr, &state.settings.simplifyMeshesWhileDragging))
         saveSettings(state.settings);
     ImGui::Separator();  // the classroom's compare views (classroom/compare_view.h)
     if (ImGui::MenuItem("Compare materials…")) openCompareView(state, false);
