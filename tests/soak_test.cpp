@@ -246,12 +246,13 @@ int run(int edits, bool checkMemory) {
         return 1;
     }
     EditSession session(defaultScene());
-    // Warm-up: every model's program, with and without MSAA, so that shader compilation (which
-    // keeps LLVM's code) happens before the memory baseline.
+    // Warm-up: every model's programs, with and without MSAA, on the sphere (its ray-cast variant)
+    // and on the floor (the triangle variant), so that shader compilation (which keeps LLVM's
+    // code) happens before the memory baseline.
     for (const ModelInfo& info : allModels())
         for (int samples : {1, 4}) {
             Scene scene = defaultScene();
-            scene.materials[0] = Material::withDefaults("warm-up", info.model);
+            for (Material& material : scene.materials) material = Material::withDefaults("warm-up", info.model);
             scene.msaaSamples = samples;
             if (auto images = (*headless)->render(scene, kSize, kSize); !images) {
                 std::fprintf(stderr, "soak: warm-up %s: %s\n", info.id, images.error().format().c_str());
