@@ -31,6 +31,7 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
+#include "gl/brdf_sampler.h"
 #include "gl/renderer.h"
 
 namespace glint {
@@ -136,6 +137,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     }
     Renderer& renderer = **created;
     GLFWwindow* window = platform->window();
+    BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
 
     EditorState state;
     state.session.replace(std::move(scene), scenePath);
@@ -206,7 +208,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
         drawMeshLoadDialog(state);
-        drawPlotsWindow(state);
+        drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
         ViewportRect viewport;
