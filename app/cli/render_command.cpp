@@ -74,6 +74,10 @@ int usageError(const std::string& message) {
 
 }  // namespace
 
+Result<Scene> loadRenderInput(const std::string& path, std::vector<Diagnostic>* warnings) {
+    return isBrdfFilePath(path) ? loadBrdfPreviewStage(path) : loadRenderable(path, 0, 0, warnings);
+}
+
 int runRenderCommand(const std::vector<std::string>& arguments) {
     RenderOptions options;
     ClassroomOptions classroom;  // display lessons and compare views (classroom_options.h)
@@ -153,8 +157,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
     // A material, interchange or .brdf file renders on the preview stage.
-    auto scene = isBrdfFilePath(options.scenePath) ? loadBrdfPreviewStage(options.scenePath)
-                                                   : loadRenderable(options.scenePath, 0, 0, &warnings);
+    auto scene = loadRenderInput(options.scenePath, &warnings);
     for (const Diagnostic& warning : warnings) std::fprintf(stderr, "glint render: %s\n", warning.format().c_str());
     if (!scene) {
         std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
