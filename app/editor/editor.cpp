@@ -31,6 +31,7 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
+#include "gl/brdf_sampler.h"
 #include "gl/renderer.h"
 
 namespace glint {
@@ -127,8 +128,7 @@ double autosaveIntervalSeconds() {
 
 // --- loop -----------------------------------------------------------------------------------
 
-int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath,
-              const std::string& meshPath) {
+int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath) {
     auto created = Renderer::create(*platform, defaultShaderSources());
     if (!created) {
         std::fprintf(stderr, "glint: %s\n", created.error().format().c_str());
@@ -137,13 +137,14 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     Renderer& renderer = **created;
     GLFWwindow* window = platform->window();
 
-    EditorState state;
-    state.session.replace(std::move(scene), scenePath);
+    BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
+
+    EditorState state;  // the default scene
     state.settings = loadSettings();
     state.rendererDescription = renderer.description();
-    if (!scenePath.empty()) noteRecentFile(state.settings, state.session.path());
+    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
+    if (!openPath.empty()) openDroppedFile(state, openPath);  // `glint FILE`: as File ▸ Open
     startRecovery(state);
-    if (!meshPath.empty()) startMeshLoad(state, meshPath);
     const double autosaveInterval = autosaveIntervalSeconds();
     // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
     const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
@@ -170,7 +171,6 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
-    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     while (!state.quitNow) {
         gEventSeen = false;
         const double secondsToWake = std::min(secondsToAutosave, secondsToBrdfPoll);
@@ -206,7 +206,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
         drawMeshLoadDialog(state);
-        drawPlotsWindow(state);
+        drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
         ViewportRect viewport;
