@@ -77,11 +77,11 @@ void installEventTracking(GLFWwindow* window) {
     glfwSetDropCallback(window, noteDrop);
 }
 
-// --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·; sizes follow the UI scale setting -------
+// --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·, ć; sizes follow the UI scale setting ----
 // (presentation mode's font, style and scale: app/classroom/presentation.cpp)
 
 void loadFont(float pixelSize) {
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
+    static const ImWchar ranges[] = {0x0020, 0x017F, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
     const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     ImGuiIO& io = ImGui::GetIO();
     if (std::FILE* file = std::fopen(path, "rb")) {
