@@ -194,6 +194,12 @@ TEST(MeshImport, MalformedFilesAreRefusedWithTheFileNamed) {
                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                   "element face 1\nproperty list uchar int vertex_indices\nend_header0\n0  0\n1 0 0\n0 1 0\n3 0 1 2\n",
                   "end_header0");
+    expectRefused("header_cut_short.ply",  // assimp 5.2.5 would never return
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty", "without end_header");
+    expectRefused("lying_face_size.ply",  // a 38,888,888-gon: assimp's Triangulate would take ages
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n38888888 0 1 2\n",
+                  "corners");
     expectRefused("index_out_of_range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
     expectRefused("all_zero_area.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "zero area");
     expectRefused("no_faces.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\n");

@@ -88,8 +88,8 @@ std::string meshLabel(const aiMesh& mesh, unsigned meshIndex) {
 
 // Refuses, in one pass over the mesh as assimp read it (no processing step has run: assimp's
 // own validation is not asked for, and its steps may crash on what this refuses), missing
-// arrays, non-finite coordinates and indices outside the mesh. Notes faces of more than three
-// corners in `hasPolygons`.
+// arrays, non-finite coordinates, faces of more corners than the mesh has vertices and indices
+// outside the mesh. Notes faces of more than three corners in `hasPolygons`.
 std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, const std::string& name, bool& hasPolygons) {
     if ((mesh.mNumVertices > 0 && !mesh.mVertices) || (mesh.mNumFaces > 0 && !mesh.mFaces))
         return makeError("cannot load mesh: " + meshLabel(mesh, meshIndex) + " lacks its vertices or faces", {name});
@@ -104,6 +104,13 @@ std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, cons
             return makeError("cannot load mesh: face " + std::to_string(f) + " of " + meshLabel(mesh, meshIndex) +
                                  " lacks its indices",
                              {name});
+        // More corners than vertices is a lie about the count (a PLY list's, say), and assimp's
+        // Triangulate would take ages over it.
+        if (face.mNumIndices > mesh.mNumVertices)
+            return makeError("cannot load mesh: face " + std::to_string(f) + " of " + meshLabel(mesh, meshIndex) + " has " +
+                                 std::to_string(face.mNumIndices) + " corners, but the mesh has only " +
+                                 std::to_string(mesh.mNumVertices) + " vertices",
+                             {name});
         hasPolygons = hasPolygons || face.mNumIndices > 3;
         for (unsigned k = 0; k < face.mNumIndices; ++k)
             if (face.mIndices[k] >= mesh.mNumVertices)
@@ -116,17 +123,18 @@ std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, cons
 }
 
 // Assimp 5.2.5's PLY reader never returns on some malformed headers (an unknown keyword,
-// "end_header" running on into the data; found by fuzz_mesh_import), so the header's lines are
-// checked before assimp sees them: each must start with a PLY keyword.
-std::optional<Diagnostic> checkPlyHeader(std::string_view start, const std::string& name) {
+// "end_header" running on into the data, found by fuzz_mesh_import; a file that ends inside its
+// header), so the header's lines are checked before assimp sees them: each must start with a PLY
+// keyword, and a file whose first bytes (`start`) are all of it (`whole`) must hold end_header.
+std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, const std::string& name) {
     if (start.substr(0, 3) != "ply") return std::nullopt;
     static const std::string_view keywords[] = {"ply", "format", "comment", "obj_info", "element", "property"};
     int line = 0;
     size_t position = 0;
     while (position < start.size()) {
         ++line;
-        size_t end = start.find('\n', position);
-        if (end == std::string_view::npos) return std::nullopt;  // header longer than the peek: assimp's turn
+        const size_t end = std::min(start.find('\n', position), start.size());
+        if (end == start.size() && !whole) return std::nullopt;  // runs on past the first bytes: assimp's turn
         std::string_view text = start.substr(position, end - position);
         if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
         position = end + 1;
@@ -137,7 +145,8 @@ std::optional<Diagnostic> checkPlyHeader(std::string_view start, const std::stri
                                  "' is not a PLY header line (format, comment, element, property, end_header)",
                              {name, line, 1});
     }
-    return std::nullopt;
+    if (!whole) return std::nullopt;
+    return makeError("cannot load mesh: the PLY header ends without end_header (the file is cut short)", {name, line, 1});
 }
 
 // --- merge ----------------------------------------------------------------------------------
@@ -334,7 +343,7 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
     std::string start(4096, '\0');
     file.read(start.data(), static_cast<std::streamsize>(start.size()));
     start.resize(static_cast<size_t>(file.gcount()));
-    if (auto error = checkPlyHeader(start, path)) return *error;
+    if (auto error = checkPlyHeader(start, file.eof(), path)) return *error;
     if (!isMeshFile(path))
         return makeError("cannot load mesh: unknown extension '." + lowerExtension(path) +
                              "' (Glint reads .obj, .ply, .stl, .gltf, .glb, .fbx)",
@@ -347,7 +356,8 @@ Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const s
                                           const std::string& name, const MeshImportOptions& options,
                                           const MeshImportProgress& progress) {
     if (size == 0) return makeError("cannot load mesh: the data is empty", {name});
-    if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, name)) return *error;
+    if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, size <= 4096, name))
+        return *error;
     return importWith(
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(data, size, flags, formatHint.c_str());
