@@ -55,7 +55,8 @@ for scene in bench["scenes"]:
                                "environment", "shadows", "combined"), scene["family"]
 assert bench["cold_start_ms"]["median"] > 0 and bench["cold_start_runs"] == 3 and bench["cold_start_peak_mb"] > 0
 assert bench["thumbnails"] == 8 and bench["thumbnails_per_second"] > 0
-assert bench["mesh_triangles"] > 900000 and bench["mesh_load_ms"]["median"] > 0
+assert bench["mesh_triangles"] > 900000 and bench["mesh_load_ms"]["median"] > 0 and bench["mesh_read_ms"]["median"] > 0
+assert abs(bench["mesh_load_ratio"] - bench["mesh_load_ms"]["median"] / bench["mesh_read_ms"]["median"]) < 1e-9
 assert bench["peak_memory_mb"] > 0 and bench["renderer"]
 print("bench JSON: %d scenes, shape as documented" % len(bench["scenes"]))
 PY
