@@ -1,5 +1,6 @@
-// glint: the command-line front. `glint render …` renders headless; `glint [SCENE]` opens the
-// editor, or, with no display, renders the scene headless and says where the image went.
+// glint: the command-line front. `glint render …` renders headless; `glint [FILE]` opens the
+// editor on FILE (as File ▸ Open would), or, with no display, renders it headless and says where
+// the image went.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "cli/thumbnails_command.h"
 #include "editor/editor.h"
 #include "geometry/mesh_import.h"
+#include "interchange/import_formats.h"
 #include "scene/scene_json.h"
 
 namespace {
@@ -27,9 +29,10 @@ constexpr const char* kUsage =
     "Glint " GLINT_VERSION ": a material editor for physically based shading.\n"
     "\n"
     "usage:\n"
-    "  glint [SCENE.json]          open the editor (the default scene when no file is given)\n"
-    "  glint MESH.obj|.ply|.stl|.gltf|.glb|.fbx\n"
-    "                              open the editor on the default scene and load the mesh as an object\n"
+    "  glint [FILE]                open the editor (the default scene when no file is given) and open\n"
+    "                              FILE as File > Open does: a scene or material .json, a BRDF Explorer\n"
+    "                              .brdf, a .mtl, .gltf or .glb material (glTF lights too), a MERL\n"
+    "                              .binary, or a mesh .obj|.ply|.stl|.fbx (added as an object)\n"
     "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
     "                              render headless (no display needed)\n"
     "  glint snapshot SUITE [--out DIR] [--update] [--update-case NAME] [--jobs N] [--shard I/N]\n"
@@ -50,10 +53,31 @@ constexpr const char* kUsage =
     "                              plot the CIE 1931 colour matching functions headless\n"
     "  glint --help | --version\n"
     "\n"
-    "With no display, `glint [SCENE]` renders the scene headless to glint-<name>.png.\n";
+    "With no display, `glint [FILE]` renders the scene (a material on the preview stage) headless\n"
+    "to glint-<name>.png.\n";
 
-// No window could be opened: render the scene offscreen instead and say where it went.
-int renderWithoutDisplay(const glint::Scene& scene, const std::string& sceneName, const std::string& reason) {
+// No window could be opened: render `path` (the default scene when empty) offscreen instead, as
+// `glint render` would, and say where it went.
+int renderWithoutDisplay(const std::string& path, const std::string& reason) {
+    if (!path.empty() && !glint::findImportFormat(path) && glint::isMeshFile(path)) {
+        std::fprintf(stderr, "glint: a mesh opens in the editor, which needs a display (%s); to render one headless, "
+                             "name it in a scene file (an object with \"shape\": \"mesh\")\n", reason.c_str());
+        return 2;
+    }
+    glint::Scene scene = glint::defaultScene();
+    if (!path.empty()) {
+        std::vector<glint::Diagnostic> warnings;
+        auto loaded = glint::loadRenderInput(path, &warnings);
+        for (const glint::Diagnostic& warning : warnings) std::fprintf(stderr, "glint: %s\n", warning.format().c_str());
+        // Custom .brdf shaders are proven to finish (in a child) before this process draws them.
+        glint::Status usable = loaded ? glint::probeSceneBrdfs(*loaded, glint::brdfProbeTimeoutSeconds()) : loaded.error();
+        if (!usable) {
+            std::fprintf(stderr, "glint: %s\n", usable.error().format().c_str());
+            return 2;
+        }
+        scene = std::move(*loaded);
+    }
+    const std::string sceneName = path.empty() ? "default" : std::filesystem::path(path).stem().string();
     const std::string output = "glint-" + sceneName + ".png";
     auto headless = glint::HeadlessRenderer::create();
     if (!headless) {
@@ -113,37 +137,13 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    glint::Scene scene = glint::defaultScene();
-    std::string scenePath, sceneName = "default", meshPath;
-    if (!arguments.empty() && glint::isMeshFile(arguments[0])) {
-        meshPath = arguments[0];  // loaded by the editor in the background, as File ▸ Open mesh does
-    } else if (!arguments.empty()) {
-        scenePath = arguments[0];
-        auto loaded = glint::loadScene(scenePath);
-        if (!loaded) {
-            std::fprintf(stderr, "glint: %s\n", loaded.error().format().c_str());
-            return 2;
-        }
-        // Custom .brdf shaders are proven to finish (in a child) before this process draws them.
-        if (glint::Status probed = glint::probeSceneBrdfs(*loaded, glint::brdfProbeTimeoutSeconds()); !probed) {
-            std::fprintf(stderr, "glint: %s\n", probed.error().format().c_str());
-            return 2;
-        }
-        scene = std::move(*loaded);
-        sceneName = std::filesystem::path(scenePath).stem().string();
-    }
-
+    const std::string openPath = arguments.empty() ? "" : arguments[0];
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if ((!display || !*display) && (!wayland || !*wayland)) {
-        if (!meshPath.empty()) {
-            std::fprintf(stderr, "glint: a mesh opens in the editor, which needs a display; to render one headless, "
-                                 "name it in a scene file (an object with \"shape\": \"mesh\")\n");
-            return 2;
-        }
-        return renderWithoutDisplay(scene, sceneName, "DISPLAY is not set");
-    }
-    auto platform = glint::GlfwPlatform::create(1280, 800, "Glint — " + sceneName);
-    if (!platform) return renderWithoutDisplay(scene, sceneName, platform.error().message);
-    return glint::runEditor(std::move(*platform), std::move(scene), scenePath, meshPath);
+    if ((!display || !*display) && (!wayland || !*wayland)) return renderWithoutDisplay(openPath, "DISPLAY is not set");
+    const std::string title = openPath.empty() ? "untitled" : std::filesystem::path(openPath).filename().string();
+    auto platform = glint::GlfwPlatform::create(1280, 800, "Glint — " + title);
+    if (!platform) return renderWithoutDisplay(openPath, platform.error().message);
+    // The file opens in the editor as File ▸ Open opens it; a failure shows there, located.
+    return glint::runEditor(std::move(*platform), openPath);
 }

@@ -64,7 +64,8 @@ assert by_name["mesh_1m_studio_shadows/2"]["shadow_maps_per_frame"] == 0
 assert by_name["mesh_1m_light_drag/2"]["shadow_maps_per_frame"] == 1
 assert bench["cold_start_ms"]["median"] > 0 and bench["cold_start_runs"] == 3 and bench["cold_start_peak_mb"] > 0
 assert bench["thumbnails"] == 8 and bench["thumbnails_per_second"] > 0
-assert bench["mesh_triangles"] > 900000 and bench["mesh_load_ms"]["median"] > 0
+assert bench["mesh_triangles"] > 900000 and bench["mesh_load_ms"]["median"] > 0 and bench["mesh_read_ms"]["median"] > 0
+assert abs(bench["mesh_load_ratio"] - bench["mesh_load_ms"]["median"] / bench["mesh_read_ms"]["median"]) < 1e-9
 assert bench["peak_memory_mb"] > 0 and bench["renderer"]
 print("bench JSON: %d scenes, shape as documented" % len(bench["scenes"]))
 PY

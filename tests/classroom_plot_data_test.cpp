@@ -1,6 +1,7 @@
 // The classroom plots' numbers (core/classroom): directional albedo of known BRDFs, the warning
 // for the lecture-form Phong, the polar plot and lobe against evalBrdf, the glass delta lobes, and
-// the Fresnel curves' known values (glass 0.04, Brewster, critical angle, Schlick at 0°).
+// the Fresnel curves' known values (glass 0.04, Brewster, critical angle, Schlick at 0°); a MERL
+// table plotted from its lookup, and a sampler's batches. (.brdf on the GPU: plot_sampling_gpu_test.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include "brdf/fresnel.h"
 #include "classroom/brdf_plot_data.h"
 #include "classroom/fresnel_curves.h"
+#include "interchange/measured_brdf.h"
 #include "math/constants.h"
 
 namespace glint {
@@ -124,6 +126,46 @@ TEST(ClassroomFresnelCurves, ConductorIndexFromTheMaterial) {
     EXPECT_NEAR(curves.channels[0].unpolarised.front(), fresnelF0(index->n, index->k).r, 1e-5f);
     EXPECT_NEAR(materialComplexIndex(plotDataMaterial(BrdfModel::Glass))->n.g, 1.5f, 1e-6f);
     EXPECT_FALSE(materialComplexIndex(plotDataMaterial(BrdfModel::Lambert)).has_value());
+}
+
+// A constant MERL table of ρ/π plots as Lambert: f_r·cos θ_o = ρ/π·cos θ_o in the plane, ρ at
+// every incidence, no delta lobes, no Fresnel index.
+TEST(ClassroomPlotData, ConstantMerlTablePlotsAsLambert) {
+    const glm::vec3 albedo(0.6f, 0.4f, 0.2f);
+    auto table = parseMerl(makeConstantMerl(albedo / kPi), "synthetic.binary");
+    ASSERT_TRUE(table) << table.error().format();
+    const Material measured = measuredBrdfMaterial(makeMeasuredBrdf(std::move(*table), "synthetic.binary"));
+    const std::optional<PlotMaterial> material = plotMaterialFrom(measured);
+    ASSERT_TRUE(material.has_value());
+    ASSERT_TRUE(material->measured);
+    const PolarPlotData polar = polarPlotData(*material, 30.0f, 37);
+    for (size_t i = 0; i < polar.outgoingDegrees.size(); ++i) {
+        const float cosOutgoing = std::max(std::cos(polar.outgoingDegrees[i] * kPi / 180.0f), 0.0f);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(polar.cosineWeighted[i][c], albedo[c] / kPi * cosOutgoing, 1e-5f) << polar.outgoingDegrees[i] << "°";
+    }
+    const AlbedoCurve curve = albedoCurve(*material, 4, 16, 32);
+    for (const glm::vec3& value : curve.albedo) EXPECT_NEAR(value.r, albedo.r, 1e-4f);
+    EXPECT_FALSE(deltaLobes(*material, 30.0f).hasReflection);
+    EXPECT_FALSE(materialComplexIndex(*material).has_value());  // a table has no n to plot
+}
+
+// A sampler gets each plot's directions as one batch and its values are what the plot shows.
+TEST(ClassroomPlotData, SampledMaterialUsesItsSamplerInOneBatchPerPlot) {
+    int batches = 0;
+    PlotMaterial sampled{"sampled", BrdfModel::Lambert, {}};
+    sampled.sampler = [&batches](std::span<const glm::vec3> incident, std::span<const glm::vec3> outgoing) {
+        ++batches;
+        std::vector<glm::vec3> values;
+        for (size_t k = 0; k < incident.size(); ++k) values.push_back(glm::vec3(outgoing[k].z));  // f_r = cos θ_o
+        return values;
+    };
+    const PolarPlotData polar = polarPlotData(sampled, 20.0f, 19);
+    EXPECT_NEAR(polar.reflectance[9].r, 1.0f, 1e-6f);  // θ_o = 0
+    // ∫ cos θ_o · cos θ_o dω = 2π/3.
+    EXPECT_NEAR(albedoCurve(sampled, 5, 32, 16).albedo.front().g, 2.0f * kPi / 3.0f, 2e-3f);
+    EXPECT_EQ(batches, 2);
+    EXPECT_FALSE(materialComplexIndex(sampled).has_value());
 }
 
 }  // namespace

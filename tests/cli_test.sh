@@ -94,7 +94,7 @@ else
   echo "FAIL render: good input did not produce the images"; failures=$((failures + 1))
 fi
 # Presets: the list names sources; a preset written to a file is a material file.
-if "$glint" presets >"$out/presets.stdout" && grep -q "^gold .*cook_torrance.*Johnson" "$out/presets.stdout" &&
+if "$glint" presets >"$out/presets.stdout" && grep -q "^gold .*cook_torrance.*McPeak" "$out/presets.stdout" &&
    "$glint" presets copper -o "$out/copper.json" >/dev/null && grep -q '"format": "glint-material"' "$out/copper.json"; then
   echo "ok   presets: listed $(($(wc -l <"$out/presets.stdout") - 1)), copper written"
 else

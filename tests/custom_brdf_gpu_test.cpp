@@ -10,6 +10,7 @@
 #include "gpu_test_support.h"
 #include "interchange/custom_brdf.h"
 #include "scene/preview_stage.h"
+#include "twin_brdf_texts.h"
 
 namespace glint {
 namespace {
@@ -24,35 +25,6 @@ std::shared_ptr<const CustomBrdf> parseCustom(const std::string& text, const std
     }
     return makeCustomBrdf(std::move(*file));
 }
-
-constexpr const char* kLambert = R"(analytic
-::begin parameters
-color albedo 0.8 0.8 0.8
-::end parameters
-::begin shader
-const float PI = 3.14159265358979323846;
-vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return albedo / PI; }
-::end shader
-)";
-
-constexpr const char* kBlinnPhong = R"(analytic
-::begin parameters
-color diffuse 0.5 0.1 0.1
-float specular 0 1 0.04
-float exponent 1 1000 64
-::end parameters
-::begin shader
-const float PI = 3.14159265358979323846;
-float powZeroIsOne(float base, float exponent) { return pow(base, exponent); }  // Glint has one too
-vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)
-{
-    if (dot(N, L) <= 0.0 || dot(N, V) <= 0.0) return vec3(0.0);
-    vec3 H = normalize(L + V);
-    float lobe = powZeroIsOne(max(dot(N, H), 0.0), exponent);
-    return diffuse / PI + vec3(specular * (exponent + 8.0) / (8.0 * PI) * lobe);
-}
-::end shader
-)";
 
 constexpr const char* kGgx = R"(analytic
 ::begin parameters
@@ -119,13 +91,13 @@ void expectMatchesTwin(const std::shared_ptr<const CustomBrdf>& custom, const st
 TEST(CustomBrdfGpu, LambertMatchesBuiltInLambert) {
     Material twin = Material::withDefaults("twin", BrdfModel::Lambert);
     twin.values = {0.6f, 0.3f, 0.15f};
-    expectMatchesTwin(parseCustom(kLambert, "lambert.brdf"), {0.6f, 0.3f, 0.15f}, twin);
+    expectMatchesTwin(parseCustom(test::kLambertTwinBrdf, "lambert.brdf"), {0.6f, 0.3f, 0.15f}, twin);
 }
 
 TEST(CustomBrdfGpu, BlinnPhongMatchesNormalisedBlinnPhong) {
     Material twin = Material::withDefaults("twin", BrdfModel::BlinnPhong);
     twin.values = {0.4f, 0.2f, 0.1f, 0.3f, 0.3f, 0.3f, 40.0f, 3.0f};  // form 3: normalised
-    expectMatchesTwin(parseCustom(kBlinnPhong, "blinn_phong.brdf"), {0.4f, 0.2f, 0.1f, 0.3f, 40.0f}, twin);
+    expectMatchesTwin(parseCustom(test::kBlinnPhongTwinBrdf, "blinn_phong.brdf"), {0.4f, 0.2f, 0.1f, 0.3f, 40.0f}, twin);
 }
 
 TEST(CustomBrdfGpu, GgxMatchesCookTorranceGgxSmithSchlick) {
@@ -149,7 +121,7 @@ TEST(CustomBrdfGpu, GlslErrorNamesTheBrdfLine) {
 }
 
 TEST(CustomBrdfGpu, ReferenceRefusesCustomBrdfs) {
-    const Scene stage = previewStage(customBrdfMaterial(parseCustom(kLambert, "lambert.brdf")), 32, 32);
+    const Scene stage = previewStage(customBrdfMaterial(parseCustom(test::kLambertTwinBrdf, "lambert.brdf")), 32, 32);
     const Status refused = referenceCanRender(stage);
     ASSERT_FALSE(refused);
     EXPECT_NE(refused.error().message.find("only on the GPU preview"), std::string::npos);

@@ -16,6 +16,12 @@ screenshots. One scenario per ctest entry:
                sphere; Ctrl+Z takes it away (one click = one step)
   corrupt_open open a corrupt scene from the UI (after the unsaved-changes prompt): an error
                naming file:line, the work and its undo history untouched
+  environment  the Environment section: the built-in studio lights the sphere and shows behind it;
+               "Show as background" off keeps the light and brings the old background back; two
+               Ctrl+Z undo both steps
+  texture      the texture menu beside the diffuse albedo: a checker draws squares on the sphere
+               (Ctrl+Z removes it); an image file chosen in the file browser colours the sphere; a
+               corrupt image is refused with a message naming it and changes nothing
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
 import json
 import os
@@ -37,6 +43,17 @@ ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
 CASTS_SHADOWS_BOX = (19, 388)        # the selected key light's "Casts shadows" checkbox
 SHADOW_ON_FLOOR = (362, 556)         # a floor point in the key light's shadow (default scene)
 VIEWPORT_PIXELS = (590, 752)         # 1280 − 330 − 360 wide, between menu bar and status bar
+ENVIRONMENT_COMBO = (70, 682)        # Display ▸ Environment: "none"
+ENVIRONMENT_STUDIO = (34, 612)       # its "studio" item (the list opens upwards: no room below)
+SHOW_AS_BACKGROUND_BOX = (19, 763)   # shown once an environment is chosen
+BACKGROUND_BOX = (340, 40, 420, 120)  # viewport corner clear of the sphere, where the studio's softbox shows
+DIFFUSE_TEXTURE_BUTTON = (1245, 142)  # "Tex" beside the diffuse albedo ρ_d; its menu opens at the mouse:
+TEXTURE_MENU_IMAGE = (1222, 181)     #   None, Image file…, Checker, Marble, Wood
+TEXTURE_MENU_CHECKER = (1211, 201)
+IMAGE_TEXTURE_BUTTON = (975, 169)    # once textured, "Image" no longer fits: it opens the next line
+IMAGE_TEXTURE_MENU_IMAGE = (1010, 207)
+TEXTURE_MENU_BOX = (970, 150, 1275, 280)  # where either menu shows
+SPHERE_ROW = (420, 830, 375)         # x from, x to, y: a row across the lit sphere
 
 
 class Editor:
@@ -84,6 +101,14 @@ def save(shot, output, name):
 
 def close_window(x, editor):
     subprocess.run([os.environ["GLINT_X11_CLOSE"], editor.window], env=x.env, check=True)
+
+
+def click_after_hover(x, where):
+    """A checkbox or a menu item needs a frame that sees the hover before the press (frames are
+    slow on llvmpipe)."""
+    x.run("xdotool", "mousemove", "--sync", str(where[0]), str(where[1]))
+    time.sleep(0.5)
+    x.click(*where)
 
 
 def type_path(x, path):
@@ -397,9 +422,7 @@ def scenario_shadow_toggle(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "shadow_0_start")
         unshadowed = sum(pixel(base, *SHADOW_ON_FLOOR))
-        x.run("xdotool", "mousemove", "--sync", str(CASTS_SHADOWS_BOX[0]), str(CASTS_SHADOWS_BOX[1]))
-        time.sleep(0.5)  # a frame that sees the hover before the press (frames are slow on llvmpipe)
-        x.click(*CASTS_SHADOWS_BOX)
+        click_after_hover(x, CASTS_SHADOWS_BOX)
         x.run("xdotool", "mousemove", "--sync", "1100", "600")  # no tooltip over the viewport
         shadowed = x.wait_for(lambda shot: sum(pixel(shot, *SHADOW_ON_FLOOR)) < unshadowed - 60,
                               "the key light's shadow to darken the floor beside the sphere")
@@ -410,6 +433,99 @@ def scenario_shadow_toggle(x, glint, output, state):
         assert editor.wait_exit() == 0
         print(f"ok: shadow on darkened the floor {pixel(base, *SHADOW_ON_FLOOR)} -> "
               f"{pixel(shadowed, *SHADOW_ON_FLOOR)}, undone")
+    finally:
+        editor.kill()
+
+
+def scenario_environment(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        save(base, output, "environment_0_start")
+        click_after_hover(x, ENVIRONMENT_COMBO)
+        time.sleep(0.5)
+        click_after_hover(x, ENVIRONMENT_STUDIO)
+        x.run("xdotool", "mousemove", "--sync", "1100", "700")  # no tooltip over the viewport
+        x.wait_for(lambda shot: region_difference(shot, base, BACKGROUND_BOX) > 20, "the studio behind the sphere")
+        studio = x.wait_stable(VIEWPORT)
+        save(studio, output, "environment_1_studio")
+        lit_by_studio = sum(pixel(studio, *SPHERE_CENTRE))
+        assert lit_by_studio > sum(pixel(base, *SPHERE_CENTRE)) + 30, "the studio should add light to the sphere"
+        click_after_hover(x, SHOW_AS_BACKGROUND_BOX)
+        x.run("xdotool", "mousemove", "--sync", "1100", "700")
+        hidden = x.wait_for(lambda shot: region_difference(shot, base, BACKGROUND_BOX) < 1.0,
+                            "the constant background back once the studio is not shown")
+        hidden = x.wait_stable(VIEWPORT)
+        save(hidden, output, "environment_2_not_shown")
+        assert abs(sum(pixel(hidden, *SPHERE_CENTRE)) - lit_by_studio) < 6, "hiding the studio must keep its light"
+        x.key("ctrl+z")
+        x.wait_for(matches(studio), "Ctrl+Z to show the studio again")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "a second Ctrl+Z to take the studio away")
+        close_window(x, editor)  # back at the saved state: no unsaved-changes prompt
+        assert editor.wait_exit() == 0
+        print(f"ok: studio lit the sphere {pixel(base, *SPHERE_CENTRE)} -> {pixel(studio, *SPHERE_CENTRE)} and "
+              "showed behind it; hidden background kept the light; both steps undone")
+    finally:
+        editor.kill()
+
+
+def edges_across_sphere(shot):
+    """Jumps of more than 20 in red between neighbouring pixels along SPHERE_ROW: a smooth shaded
+    sphere has none, a checker has one per square boundary."""
+    x0, x1, y = SPHERE_ROW
+    reds = [pixel(shot, x_, y)[0] for x_ in range(x0, x1)]
+    return sum(1 for a, b in zip(reds, reds[1:]) if abs(a - b) > 20)
+
+
+def choose_texture(x, menu_item, button=DIFFUSE_TEXTURE_BUTTON):
+    """Opens the diffuse albedo's texture menu, waits until it shows, and picks `menu_item`."""
+    before = x.screenshot()
+    click_after_hover(x, button)
+    x.wait_for(lambda shot: region_difference(shot, before, TEXTURE_MENU_BOX) > 5, "the texture menu")
+    click_after_hover(x, menu_item)
+    x.run("xdotool", "mousemove", "--sync", "1100", "700")
+
+
+def open_texture_file(x, current, path, button=DIFFUSE_TEXTURE_BUTTON, menu_item=TEXTURE_MENU_IMAGE):
+    choose_texture(x, menu_item, button)
+    x.wait_for(modal_shown(current), "the file browser")
+    type_path(x, path)
+
+
+def scenario_texture(x, glint, output, state):
+    green = os.path.join(output, "green.png")
+    write_png((4, 4, bytes([40, 200, 40]) * 16), green)
+    corrupt = os.path.join(output, "corrupt.png")
+    with open(corrupt, "wb") as out:
+        out.write(b"\x89PNG\r\n\x1a\n" + b"not a PNG body" * 4)
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        assert edges_across_sphere(base) == 0, "the untextured sphere should shade smoothly"
+        choose_texture(x, TEXTURE_MENU_CHECKER)
+        checker = x.wait_for(lambda shot: edges_across_sphere(shot) >= 2, "checker squares on the sphere")
+        checker = x.wait_stable(VIEWPORT)
+        save(checker, output, "texture_1_checker")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to take the checker away")
+        open_texture_file(x, base, green)
+        tinted = x.wait_for(lambda shot: pixel(shot, *SPHERE_CENTRE)[1] > pixel(shot, *SPHERE_CENTRE)[0] + 30,
+                            "the green image to colour the sphere")
+        tinted = x.wait_stable(VIEWPORT)
+        save(tinted, output, "texture_2_image")
+        open_texture_file(x, tinted, corrupt, IMAGE_TEXTURE_BUTTON, IMAGE_TEXTURE_MENU_IMAGE)
+        refused = x.wait_for(modal_shown(tinted), "a message refusing the corrupt image")
+        save(refused, output, "texture_3_refused")
+        x.key("Escape")
+        x.wait_for(matches(tinted), "the green sphere, unchanged by the refused image")
+        close_window(x, editor)
+        x.wait_for(modal_shown(tinted), "the unsaved-changes prompt")
+        x.key("n")
+        assert editor.wait_exit() == 0
+        assert "corrupt.png" in editor.log, "the refusal should name the file:\n" + editor.log
+        print(f"ok: checker drew {edges_across_sphere(checker)} edges across the sphere, undone; "
+              f"the image tinted it {pixel(tinted, *SPHERE_CENTRE)}; the corrupt image was refused")
     finally:
         editor.kill()
 

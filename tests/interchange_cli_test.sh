@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `glint export` and `glint render` on interchange files: a material goes to .mtl and .gltf and
 # back, both render on the preview stage, and malformed files exit with code 2 and a message
-# naming file:line; a MERL .binary and a .glb render too. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
+# naming file:line; a MERL .binary and a .glb render too, and `glint FILE` with no display renders
+# them headless as the editor would open them. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
 set -u
 glint=$1
 out=$2
@@ -83,6 +84,19 @@ expect_error short_merl "short.binary: .*truncated" render "$out/short.binary" -
 check render_glb "$glint" render "$out/varnish.glb" -o "$out/varnish_glb.png" --size 64x64
 check same_glb_image cmp "$out/varnish_gltf.png" "$out/varnish_glb.png"
 expect_error lying_glb "lying.glb: byte offset 8: the header says the file is 4000 bytes" render "$out/lying.glb" -o "$out/x.png"
+
+# `glint FILE` (the editor's argument) with no display: the file rendered headless, as it opens.
+glint_path=$(realpath "$glint")  # run from $out, where glint-NAME.png is written
+for file in grey.binary varnish.glb varnish.gltf plastic.mtl; do
+  check "no_display_${file/./_}" bash -c "cd '$out' && DISPLAY= '$glint_path' '$file' | grep -q 'glint-${file%.*}.png' && [[ -s 'glint-${file%.*}.png' ]]"
+done
+(cd "$out" && DISPLAY= "$glint_path" short.binary >/dev/null 2>"$out/no_display_short.stderr")
+code=$?
+if [[ $code -eq 2 ]] && grep -q "short.binary: .*truncated" "$out/no_display_short.stderr"; then
+  echo "ok   no_display_short: $(head -n 1 "$out/no_display_short.stderr")"; passed=$((passed + 1))
+else
+  echo "FAIL no_display_short: exit code $code"; cat "$out/no_display_short.stderr"; failures=$((failures + 1))
+fi
 
 echo "$passed passed, $failures failed"
 [[ $failures -eq 0 ]]

@@ -1,6 +1,7 @@
-// Mesh files written by the tests and the mesh-load benchmark themselves: a flat n×n grid of
-// quads (two triangles each) in OBJ, PLY (ASCII, binary), STL (ASCII, binary), glTF 2.0 with an
-// embedded base64 buffer, and GLB. A grid has (n+1)² vertices and 2n² triangles in every format.
+// Mesh files written by the tests and the mesh-load benchmark themselves: any indexed triangle
+// mesh (with UVs or without) in OBJ, PLY (ASCII, binary), STL (ASCII, binary; no UVs), glTF 2.0
+// with an embedded base64 buffer, and GLB; and a flat n×n grid of quads (two triangles each),
+// (n+1)² vertices and 2n² triangles in every format.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +17,7 @@ namespace glint::test {
 struct GridMesh {
     std::vector<glm::vec3> positions;
     std::vector<uint32_t> indices;
+    std::vector<glm::vec2> uvs;  // one per position, or none
 };
 
 // In the xy plane, [0, n]², facing +z.
@@ -39,22 +41,42 @@ inline void writeObj(const std::string& path, const GridMesh& grid) {
     std::ofstream out(path, std::ios::binary);
     out << "# grid written by Glint's tests\n";
     for (const glm::vec3& p : grid.positions) out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    for (size_t i = 0; i < grid.indices.size(); i += 3)
-        out << "f " << grid.indices[i] + 1 << ' ' << grid.indices[i + 1] + 1 << ' ' << grid.indices[i + 2] + 1 << '\n';
+    for (const glm::vec2& uv : grid.uvs) out << "vt " << uv.x << ' ' << uv.y << '\n';
+    for (size_t i = 0; i < grid.indices.size(); i += 3) {
+        out << 'f';
+        for (size_t k = i; k < i + 3; ++k) {
+            out << ' ' << grid.indices[k] + 1;
+            if (!grid.uvs.empty()) out << '/' << grid.indices[k] + 1;
+        }
+        out << '\n';
+    }
 }
 
 inline void writePly(const std::string& path, const GridMesh& grid, bool binary) {
     std::ofstream out(path, std::ios::binary);
     out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
         << "element vertex " << grid.positions.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
-        << "element face " << grid.indices.size() / 3 << "\nproperty list uchar int vertex_indices\nend_header\n";
+        << (grid.uvs.empty() ? "" : "property float s\nproperty float t\n") << "element face " << grid.indices.size() / 3
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
     if (!binary) {
-        for (const glm::vec3& p : grid.positions) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
+        for (size_t i = 0; i < grid.positions.size(); ++i) {
+            const glm::vec3& p = grid.positions[i];
+            out << p.x << ' ' << p.y << ' ' << p.z;
+            if (!grid.uvs.empty()) out << ' ' << grid.uvs[i].x << ' ' << grid.uvs[i].y;
+            out << '\n';
+        }
         for (size_t i = 0; i < grid.indices.size(); i += 3)
             out << "3 " << grid.indices[i] << ' ' << grid.indices[i + 1] << ' ' << grid.indices[i + 2] << '\n';
         return;
     }
-    out.write(reinterpret_cast<const char*>(grid.positions.data()), grid.positions.size() * sizeof(glm::vec3));
+    if (grid.uvs.empty()) {
+        out.write(reinterpret_cast<const char*>(grid.positions.data()), grid.positions.size() * sizeof(glm::vec3));
+    } else {
+        for (size_t i = 0; i < grid.positions.size(); ++i) {
+            out.write(reinterpret_cast<const char*>(&grid.positions[i]), sizeof(glm::vec3));
+            out.write(reinterpret_cast<const char*>(&grid.uvs[i]), sizeof(glm::vec2));
+        }
+    }
     std::vector<char> faces(grid.indices.size() / 3 * 13);
     for (size_t t = 0; t < grid.indices.size() / 3; ++t) {
         faces[t * 13] = 3;
@@ -108,27 +130,37 @@ inline std::string base64(const std::string& bytes) {
     return out;
 }
 
-// The glTF JSON for a grid whose buffer (positions, then uint32 indices) is `uri` (omitted in a GLB).
+// The glTF JSON for a grid whose buffer (positions, uint32 indices, then UVs if any) is `uri`
+// (omitted in a GLB).
 inline std::string gltfJson(const GridMesh& grid, size_t bufferBytes, const std::string& uri) {
     glm::vec3 low(1e30f), high(-1e30f);
     for (const glm::vec3& p : grid.positions) low = glm::min(low, p), high = glm::max(high, p);
-    const size_t positionBytes = grid.positions.size() * 12;
+    const size_t positionBytes = grid.positions.size() * 12, indexBytes = grid.indices.size() * 4;
     std::string json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)";
-    json += R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)";
+    json += std::string(R"("meshes":[{"primitives":[{"attributes":{"POSITION":0)") +
+            (grid.uvs.empty() ? "" : R"(,"TEXCOORD_0":2)") + R"(},"indices":1}]}],)";
     json += R"("buffers":[{"byteLength":)" + std::to_string(bufferBytes) + (uri.empty() ? "" : R"(,"uri":")" + uri + "\"") + "}],";
     json += R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" + std::to_string(positionBytes) + R"(,"target":34962},)";
     json += R"({"buffer":0,"byteOffset":)" + std::to_string(positionBytes) + R"(,"byteLength":)" +
-            std::to_string(grid.indices.size() * 4) + R"(,"target":34963}],)";
+            std::to_string(indexBytes) + R"(,"target":34963})";
+    if (!grid.uvs.empty())
+        json += R"(,{"buffer":0,"byteOffset":)" + std::to_string(positionBytes + indexBytes) + R"(,"byteLength":)" +
+                std::to_string(grid.uvs.size() * 8) + R"(,"target":34962})";
+    json += "],";
     json += R"("accessors":[{"bufferView":0,"componentType":5126,"count":)" + std::to_string(grid.positions.size()) +
             R"(,"type":"VEC3","min":[)" + std::to_string(low.x) + "," + std::to_string(low.y) + "," + std::to_string(low.z) +
             R"(],"max":[)" + std::to_string(high.x) + "," + std::to_string(high.y) + "," + std::to_string(high.z) + "]},";
-    json += R"({"bufferView":1,"componentType":5125,"count":)" + std::to_string(grid.indices.size()) + R"(,"type":"SCALAR"}]})";
+    json += R"({"bufferView":1,"componentType":5125,"count":)" + std::to_string(grid.indices.size()) + R"(,"type":"SCALAR"})";
+    if (!grid.uvs.empty())
+        json += R"(,{"bufferView":2,"componentType":5126,"count":)" + std::to_string(grid.uvs.size()) + R"(,"type":"VEC2"})";
+    json += "]}";
     return json;
 }
 
 inline std::string gridBuffer(const GridMesh& grid) {
     std::string bytes(reinterpret_cast<const char*>(grid.positions.data()), grid.positions.size() * 12);
     bytes.append(reinterpret_cast<const char*>(grid.indices.data()), grid.indices.size() * 4);
+    bytes.append(reinterpret_cast<const char*>(grid.uvs.data()), grid.uvs.size() * 8);
     return bytes;
 }
 

@@ -16,17 +16,16 @@ namespace {
 
 constexpr const char* kCanvasFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
-void loadCanvasFont(float pixelSize) {
+ImFont* loadCanvasFont(float pixelSize) {
     static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
     ImGuiIO& io = ImGui::GetIO();
     if (std::FILE* file = std::fopen(kCanvasFontPath, "rb")) {
         std::fclose(file);
-        io.Fonts->AddFontFromFileTTF(kCanvasFontPath, pixelSize, nullptr, ranges);
-    } else {
-        ImFontConfig config;
-        config.SizePixels = pixelSize;
-        io.Fonts->AddFontDefault(&config);
+        return io.Fonts->AddFontFromFileTTF(kCanvasFontPath, pixelSize, nullptr, ranges);
     }
+    ImFontConfig config;
+    config.SizePixels = pixelSize;
+    return io.Fonts->AddFontDefault(&config);
 }
 
 // An RGB8 image as a GL texture, top row first (ImGui's UVs run top to bottom).
@@ -44,6 +43,11 @@ GLuint uploadCanvasBackground(const DisplayImage& image) {
 }  // namespace
 
 Result<std::unique_ptr<OverlayCanvas>> OverlayCanvas::create(float fontPixelSize) {
+    return create(std::span(&fontPixelSize, 1));
+}
+
+Result<std::unique_ptr<OverlayCanvas>> OverlayCanvas::create(std::span<const float> fontPixelSizes) {
+    GLINT_CHECK(!fontPixelSizes.empty());
     std::unique_ptr<OverlayCanvas> canvas(new OverlayCanvas());
     ImGuiContext* previous = ImGui::GetCurrentContext();
     canvas->context_ = ImGui::CreateContext();
@@ -52,7 +56,7 @@ Result<std::unique_ptr<OverlayCanvas>> OverlayCanvas::create(float fontPixelSize
     io.IniFilename = nullptr;
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
-    loadCanvasFont(fontPixelSize);
+    for (float pixelSize : fontPixelSizes) canvas->fonts_.push_back(loadCanvasFont(pixelSize));
     const bool initialised = ImGui_ImplOpenGL3_Init("#version 410 core");
     ImGui::SetCurrentContext(previous);
     if (!initialised) return Diagnostic{{}, "the overlay canvas could not set up ImGui's OpenGL renderer"};

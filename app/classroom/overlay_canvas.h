@@ -6,11 +6,14 @@
 #pragma once
 
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "image/image.h"
 #include "util/diagnostic.h"
 
 struct ImGuiContext;
+struct ImFont;
 
 namespace glint {
 
@@ -20,6 +23,10 @@ public:
     // font's height in pixels: DejaVu Sans (Greek letters, ², ·) when installed, else ImGui's
     // built-in font.
     static Result<std::unique_ptr<OverlayCanvas>> create(float fontPixelSize = 16.0f);
+    // The same font at several heights [px], the first the default; font(i) is the i-th, for
+    // ImGui::PushFont between begin() and finish().
+    static Result<std::unique_ptr<OverlayCanvas>> create(std::span<const float> fontPixelSizes);
+    ImFont* font(size_t index) const { return fonts_.at(index); }
     ~OverlayCanvas();
     OverlayCanvas(const OverlayCanvas&) = delete;
     OverlayCanvas& operator=(const OverlayCanvas&) = delete;
@@ -35,6 +42,7 @@ public:
 private:
     OverlayCanvas() = default;
     ImGuiContext* context_ = nullptr;
+    std::vector<ImFont*> fonts_;
     ImGuiContext* previousContext_ = nullptr;
     int width_ = 0, height_ = 0;
 };

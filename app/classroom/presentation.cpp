@@ -65,7 +65,7 @@ ImFont* loadPresentationFont(float pixelSize) {
                              "the normal font is scaled instead\n", kPresentationFontPath);
         return nullptr;
     }
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
+    static const ImWchar ranges[] = {0x0020, 0x017F, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
     return ImGui::GetIO().Fonts->AddFontFromFileTTF(kPresentationFontPath, pixelSize, nullptr, ranges);
 }
 

@@ -34,11 +34,7 @@ constexpr const char* kUsage =
     "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
     "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
     "  --probe X,Y        print the surface probe at pixel (X, Y): the chain from each light to the pixel\n"
-    // Classroom plots (cli/plot_overlay.h).
-    "  --overlay polar|lobe|albedo|fresnel  draw a BRDF or Fresnel plot of the scene's materials over the image (PNG only)\n"
-    "  --incidence DEG    incidence angle θ_i of the polar plot, lobe and albedo marker (default 45)\n"
-    "  --from-inside      Fresnel plot with the light inside the material (critical angle)\n"
-    "  --overlay NAME     draw a classroom overlay over the PNG (repeatable); NAME is one of:\n";
+    "  --overlay NAME     draw a classroom overlay over the PNG (repeatable; one plot per image); NAME is one of:\n";
 
 struct RenderOptions {
     std::string scenePath, outputPath;
@@ -46,13 +42,20 @@ struct RenderOptions {
     bool reference = false;
     bool wireframe = false, normals = false;
     std::optional<glm::ivec2> probePixel;          // --probe X,Y
-    std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order
-    PlotOverlayOptions plots;  // --overlay polar|lobe|albedo|fresnel
+    std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order (the plots among them)
+    std::optional<PlotOverlayKind> plot;         // the one plot among the overlays
+    PlotOverlayOptions plots;                    // --incidence, --from-inside
 };
+
+// Classroom plots' options (cli/plot_overlay.h), after the overlay names.
+constexpr const char* kPlotOptionsUsage =
+    "  --incidence DEG    incidence angle θ_i of the polar plot, lobe and albedo marker (default 45)\n"
+    "  --from-inside      Fresnel plot with the light inside the material (critical angle)\n";
 
 void printUsage(std::FILE* stream) {
     std::fprintf(stream, "%s", kUsage);
     for (const RenderOverlay& overlay : allRenderOverlays()) std::fprintf(stream, "    %-16s %s\n", overlay.name, overlay.help);
+    std::fprintf(stream, "%s", kPlotOptionsUsage);
     std::fprintf(stream, "Classroom (README \"Classroom: compare and display chain\"):\n%s", kClassroomUsage);
 }
 
@@ -71,6 +74,10 @@ int usageError(const std::string& message) {
 
 }  // namespace
 
+Result<Scene> loadRenderInput(const std::string& path, std::vector<Diagnostic>* warnings) {
+    return isBrdfFilePath(path) ? loadBrdfPreviewStage(path) : loadRenderable(path, 0, 0, warnings);
+}
+
 int runRenderCommand(const std::vector<std::string>& arguments) {
     RenderOptions options;
     ClassroomOptions classroom;  // display lessons and compare views (classroom_options.h)
@@ -78,7 +85,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& argument = arguments[i];
         auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
-        std::string plotError;  // classroom plots: their options first
+        std::string plotError;  // classroom plots' options first
         if (const PlotOptionMatch plot = parsePlotOverlayOption(arguments, i, options.plots, plotError);
             plot != PlotOptionMatch::NotMine) {
             if (plot == PlotOptionMatch::Error) return usageError(plotError);
@@ -123,6 +130,9 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             const std::string* value = next();
             const RenderOverlay* overlay = value ? findRenderOverlay(*value) : nullptr;
             if (!overlay) return usageError(value ? "unknown overlay '" + *value + "'" : "--overlay needs a name");
+            if (overlay->plot && options.plot)
+                return usageError("one plot per image (--overlay " + *value + " given after another plot)");
+            if (overlay->plot) options.plot = overlay->plot;
             options.overlays.push_back(overlay);
         } else if (const auto parsed = classroom.parse(arguments, i, classroomError);
                    parsed != ClassroomOptions::Parsed::NotClassroom) {
@@ -139,15 +149,15 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
-    if (const std::string conflict = plotOverlayConflict(options.plots, options.reference, options.outputPath); !conflict.empty())
+    if (const std::string conflict = plotOverlayConflict(options.plots, options.plot, options.reference, options.outputPath);
+        !conflict.empty())
         return usageError(conflict);
     if (const std::string contradiction = classroom.check(); !contradiction.empty()) return usageError(contradiction);
     if (options.reference && classroom.comparing()) return usageError("the compare views are drawn by the OpenGL renderer, not with --reference");
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
     // A material, interchange or .brdf file renders on the preview stage.
-    auto scene = isBrdfFilePath(options.scenePath) ? loadBrdfPreviewStage(options.scenePath)
-                                                   : loadRenderable(options.scenePath, 0, 0, &warnings);
+    auto scene = loadRenderInput(options.scenePath, &warnings);
     for (const Diagnostic& warning : warnings) std::fprintf(stderr, "glint render: %s\n", warning.format().c_str());
     if (!scene) {
         std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
@@ -198,12 +208,6 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             return 2;
         }
         images = std::move(*rendered);
-        if (options.plots.kind != PlotOverlayKind::None) {  // drawn while the headless GL context is current
-            if (Status drawn = drawPlotOverlay(*scene, options.plots, images.display); !drawn) {
-                std::fprintf(stderr, "glint render: %s\n", drawn.error().format().c_str());
-                return 2;
-            }
-        }
     }
     // The classroom surface probe (core/classroom/surface_probe.h) and the overlays drawn over the PNG.
     std::optional<ProbeResult> probe;
@@ -212,7 +216,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         std::printf("%s", probeReport(*probe).c_str());
     }
     if (!options.overlays.empty()) {
-        auto composite = drawRenderOverlays(options.overlays, {*scene, width, height, probe}, images.display);
+        auto composite = drawRenderOverlays(options.overlays, {*scene, width, height, probe, options.plots}, images.display);
         if (!composite) {
             std::fprintf(stderr, "glint render: %s\n", composite.error().format().c_str());
             return 2;

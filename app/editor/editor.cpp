@@ -32,6 +32,7 @@
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
 #include "editor/viewport_refresh.h"
+#include "gl/brdf_sampler.h"
 #include "gl/renderer.h"
 
 namespace glint {
@@ -77,11 +78,11 @@ void installEventTracking(GLFWwindow* window) {
     glfwSetDropCallback(window, noteDrop);
 }
 
-// --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·; sizes follow the UI scale setting -------
+// --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·, ć; sizes follow the UI scale setting ----
 // (presentation mode's font, style and scale: app/classroom/presentation.cpp)
 
 void loadFont(float pixelSize) {
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
+    static const ImWchar ranges[] = {0x0020, 0x017F, 0x0370, 0x03FF, 0x2000, 0x209F, 0x2190, 0x22FF, 0x25CF, 0x25CF, 0};
     const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     ImGuiIO& io = ImGui::GetIO();
     if (std::FILE* file = std::fopen(path, "rb")) {
@@ -121,8 +122,7 @@ double autosaveIntervalSeconds() {
 
 // --- loop -----------------------------------------------------------------------------------
 
-int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath,
-              const std::string& meshPath) {
+int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath) {
     auto created = Renderer::create(*platform, defaultShaderSources());
     if (!created) {
         std::fprintf(stderr, "glint: %s\n", created.error().format().c_str());
@@ -131,13 +131,14 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     Renderer& renderer = **created;
     GLFWwindow* window = platform->window();
 
-    EditorState state;
-    state.session.replace(std::move(scene), scenePath);
+    BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
+
+    EditorState state;  // the default scene
     state.settings = loadSettings();
     state.rendererDescription = renderer.description();
-    if (!scenePath.empty()) noteRecentFile(state.settings, state.session.path());
+    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
+    if (!openPath.empty()) openDroppedFile(state, openPath);  // `glint FILE`: as File ▸ Open
     startRecovery(state);
-    if (!meshPath.empty()) startMeshLoad(state, meshPath);
     const double autosaveInterval = autosaveIntervalSeconds();
     // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
     const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
@@ -164,7 +165,6 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
-    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     while (!state.quitNow) {
         gEventSeen = false;
         const double secondsToWake = std::min({secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime())});
@@ -200,7 +200,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::st
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
         drawDialogs(state);
         drawMeshLoadDialog(state);
-        drawPlotsWindow(state);
+        drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
         ViewportRect viewport;

@@ -6,13 +6,13 @@
 #include <string>
 
 #include "platform/glfw_platform.h"
-#include "scene/scene.h"
 
 namespace glint {
 
-// Runs until the window is closed; returns the process exit code.
-// `meshPath`, when not empty, starts loading that mesh as a new object (as File ▸ Open mesh).
-int runEditor(std::unique_ptr<GlfwPlatform> platform, Scene scene, const std::string& scenePath,
-              const std::string& meshPath = {});
+// Runs until the window is closed; returns the process exit code. Starts on the default scene;
+// `openPath`, when not empty, is then opened as File ▸ Open and a drop open it (document.h
+// openDroppedFile: a scene, a material, .brdf, .mtl, .gltf, .glb, .binary or a mesh), a failure
+// shown in the editor's error dialog.
+int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath = {});
 
 }  // namespace glint

@@ -1,5 +1,6 @@
 // IOR preset menu (see ior_presets.h). The numbers come from the preset table in
-// core/brdf/presets.h (with its sources); this file only picks n and κ out of it.
+// core/brdf/presets.h (with its sources); this file picks n and κ out of it, and a metal's
+// tooltip shows them with the F0 they give and their source.
 #include "editor/ior_presets.h"
 
 #include <imgui.h>
@@ -7,6 +8,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "brdf/fresnel.h"
 #include "brdf/presets.h"
 
 namespace glint {
@@ -72,8 +74,14 @@ bool drawIorPresetMenu(Material& material) {
                 if (ImGui::IsItemHovered()) {
                     const Preset* preset = findPreset(name);
                     const glm::vec3 n = *presetValue(*preset, "ior"), k = *presetValue(*preset, "extinction");
-                    ImGui::SetTooltip("n = (%.3f, %.3f, %.3f)\nκ = (%.3f, %.3f, %.3f)\n%s", n.x, n.y, n.z, k.x, k.y, k.z,
-                                      preset->source);
+                    const glm::vec3 f0 = fresnelF0(n, k);
+                    ImGui::BeginTooltip();
+                    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+                    ImGui::Text("n = (%.3f, %.3f, %.3f)\nκ = (%.3f, %.3f, %.3f)\nF0 = (%.3f, %.3f, %.3f)", n.x, n.y, n.z, k.x,
+                                k.y, k.z, f0.x, f0.y, f0.z);
+                    ImGui::TextUnformatted(preset->source);
+                    ImGui::PopTextWrapPos();
+                    ImGui::EndTooltip();
                 }
             }
         }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "editor/color_space.h"
 #include "editor/ior_presets.h"
@@ -25,11 +26,27 @@ std::string formatRange(const ParamSpec& spec) {
     return text;
 }
 
+float smallButtonWidth(const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
+
+// Narrows the next widget, where ImGui's default (65 % of the column) would push the label and the
+// buttons after it (R, then Presets beside an index or the texture button) past the column's edge; a long label such as "Diffuse albedo ρ_d" keeps them in view.
+void fitParamWidth(const ParamSpec& spec, const std::vector<const char*>& buttonsAfter) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    // One spacing to spare: ImGui's widths round to whole pixels.
+    float trailing = style.ItemSpacing.x + style.ItemInnerSpacing.x + ImGui::CalcTextSize(spec.label, nullptr, true).x;
+    for (const char* button : buttonsAfter) trailing += style.ItemSpacing.x + smallButtonWidth(button);
+    const float fitted = ImGui::GetContentRegionAvail().x - trailing;
+    const float minimum = 7.0f * ImGui::GetFontSize();  // three numbers stay legible
+    ImGui::SetNextItemWidth(std::max(minimum, std::min(ImGui::CalcItemWidth(), fitted)));
+}
+
 // Typed values beyond the slider are kept when the table's valid range allows them, and refused
-// with a message in `refusal` when it does not (never clamped silently).
-bool drawParam(const ParamSpec& spec, float* value, std::string& refusal) {
+// with a message in `refusal` when it does not (never clamped silently). `buttonsAfter` names the
+// buttons the caller puts on the same line, so that the widget leaves room for them.
+bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const std::vector<const char*>& buttonsAfter) {
     bool changed = false;
     ImGui::PushID(spec.name);
+    fitParamWidth(spec, buttonsAfter);
     switch (spec.kind) {
         case ParamKind::Scalar: {
             std::string format = "%.4g";
@@ -152,13 +169,23 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     }
     const auto table = material.custom ? std::span<const ParamSpec>(material.custom->table) : modelInfo(material.model).params;
     for (size_t i = 0; i < table.size(); ++i) {
-        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal);
-        if (material.custom) continue;  // a .brdf file's parameters: no IOR presets, no textures
+        // A .brdf file's parameters have no IOR presets and no textures.
+        const bool indexOfRefraction = !material.custom && std::string_view(table[i].name) == "ior";
+        const bool texturable = !material.custom && (table[i].kind == ParamKind::Scalar || table[i].kind == ParamKind::Color);
+        std::vector<const char*> buttonsAfter = {"R"};
+        if (indexOfRefraction) buttonsAfter.push_back("Presets");
+        if (texturable) buttonsAfter.push_back("Tex");
+        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal, buttonsAfter);
         // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
-        if (std::string_view(table[i].name) == "ior") changed |= drawIorPresetMenu(material);
-        if (table[i].kind != ParamKind::Scalar && table[i].kind != ParamKind::Color) continue;
+        if (indexOfRefraction) changed |= drawIorPresetMenu(material);
+        if (!texturable) continue;
+        // The texture button, where its label ("Checker", "Image", …) no longer fits beside a long
+        // parameter label, opens the next line, above the texture's settings.
         ImGui::SameLine();
+        const bool wraps = ImGui::GetContentRegionAvail().x < smallButtonWidth(textureButtonLabel(material, table[i].name));
+        if (wraps) ImGui::NewLine(), ImGui::Indent();
         changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
+        if (wraps) ImGui::Unindent();
     }
     if (material.custom) {
         ImGui::PushTextWrapPos();

@@ -99,6 +99,11 @@ bool drawProceduralSettings(MaterialTexture& texture, const ParamSpec& spec, std
 
 }  // namespace
 
+const char* textureButtonLabel(const Material& material, const std::string& parameter) {
+    const MaterialTexture* texture = findTexture(material, parameter);
+    return texture ? kKindLabels[static_cast<int>(texture->kind)] : "Tex";
+}
+
 bool drawTextureControls(Material& material, const std::string& parameter, const ParamSpec* spec,
                          std::string& fileRequest, std::string& refusal) {
     bool changed = false;
@@ -106,7 +111,7 @@ bool drawTextureControls(Material& material, const std::string& parameter, const
     const MaterialTexture* current = findTexture(material, parameter);
     const bool textured = current != nullptr;
     const TextureKind currentKind = textured ? current->kind : TextureKind::Image;
-    if (ImGui::SmallButton(textured ? kKindLabels[static_cast<int>(currentKind)] : "Tex")) ImGui::OpenPopup("texture menu");
+    if (ImGui::SmallButton(textureButtonLabel(material, parameter))) ImGui::OpenPopup("texture menu");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drive %s by a texture", parameter.c_str());
     if (ImGui::BeginPopup("texture menu")) {
         if (ImGui::Selectable("None", !textured) && textured) removeTexture(material, parameter), changed = true;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -34,16 +35,23 @@ inline float fresnelDielectric(float cosIncident, float eta) {
     return fresnelDielectricPolarised(cosIncident, eta).unpolarised();
 }
 
-// Conductor: complex relative index η = n + iκ; the same equations in complex arithmetic.
-inline Polarised fresnelConductorPolarised(float cosIncident, float n, float k) {
-    using Complex = std::complex<float>;
-    cosIncident = std::clamp(cosIncident, 0.0f, 1.0f);
+// Conductor: complex relative index η = n + iκ; the same equations in complex arithmetic, in the
+// precision Real (float to render; colour/metal_index_fit.cpp fits in double). Returns (R_s, R_p).
+template <typename Real>
+inline std::pair<Real, Real> fresnelConductorSP(Real cosIncident, Real n, Real k) {
+    using Complex = std::complex<Real>;
+    cosIncident = std::clamp(cosIncident, Real(0), Real(1));
     const Complex eta(n, k);
-    const Complex sin2Transmitted = (1.0f - cosIncident * cosIncident) / (eta * eta);
-    const Complex cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
+    const Complex sin2Transmitted = (Real(1) - cosIncident * cosIncident) / (eta * eta);
+    const Complex cosTransmitted = std::sqrt(Real(1) - sin2Transmitted);
     const Complex rs = (cosIncident - eta * cosTransmitted) / (cosIncident + eta * cosTransmitted);
     const Complex rp = (eta * cosIncident - cosTransmitted) / (eta * cosIncident + cosTransmitted);
     return {std::norm(rs), std::norm(rp)};
+}
+
+inline Polarised fresnelConductorPolarised(float cosIncident, float n, float k) {
+    const auto [s, p] = fresnelConductorSP(cosIncident, n, k);
+    return {s, p};
 }
 
 inline glm::vec3 fresnelConductor(float cosIncident, glm::vec3 n, glm::vec3 k) {

@@ -1,5 +1,6 @@
-// The preset table (see presets.h). Metals: complex index n + iκ at about 650, 550 and 450 nm
-// (R, G, B); dielectrics: κ = 0 and n at 589 nm; natural surfaces: broadband albedo as Lambert.
+// The preset table (see presets.h). Metals: per-channel n + iκ fitted to measured spectra
+// (colour/metal_index_fit.h; tests/metal_spectra_test.cpp recomputes them); dielectrics: κ = 0
+// and n at 589 nm; natural surfaces: broadband albedo as Lambert.
 #include "brdf/presets.h"
 
 #include "brdf/cook_torrance.h"
@@ -33,25 +34,27 @@ constexpr Preset lambertian(const char* name, float albedo, const char* source) 
     return {name, "natural", BrdfModel::Lambert, {{"albedo", glm::vec3(albedo)}}, source};
 }
 
-constexpr const char* kJohnsonChristy1972 =
-    "P. B. Johnson, R. W. Christy, Optical Constants of the Noble Metals, Phys. Rev. B 6, 4370 (1972): "
-    "n, κ near 650/550/450 nm (refractiveindex.info)";
-constexpr const char* kJohnsonChristy1974 =
-    "P. B. Johnson, R. W. Christy, Optical constants of transition metals, Phys. Rev. B 9, 5056 (1974): "
-    "n, κ near 650/550/450 nm (refractiveindex.info)";
-constexpr const char* kRakic1998 =
-    "A. D. Rakić et al., Optical properties of metallic films for vertical-cavity optoelectronic devices, "
-    "Appl. Opt. 37, 5271 (1998): n, κ near 650/550/450 nm (refractiveindex.info)";
+// What the metals' numbers are (the measurements' full references: colour/metal_spectra.cpp).
+#define GLINT_FITTED_TO \
+    "n, κ fitted per sRGB channel to the spectrally integrated Fresnel reflectance (D65, CIE 1931; F0 exact) of "
+constexpr const char* kRakic1998 = GLINT_FITTED_TO
+    "A. D. Rakić et al., Appl. Opt. 37, 5271 (1998), Lorentz-Drude model (refractiveindex.info)";
 constexpr const char* kHechtIndex = "E. Hecht, Optics, 4th ed., Table 4.1: refractive index at 589 nm";
 constexpr const char* kOkeAlbedo = "T. R. Oke, Boundary Layer Climates, 2nd ed. (1987), Table 1.1: broadband albedo";
 
 constexpr Preset kPresets[] = {
-    metal("gold", {0.18299f, 0.42108f, 1.3734f}, {3.4242f, 2.3459f, 1.7704f}, kJohnsonChristy1972),
-    metal("silver", {0.15943f, 0.14512f, 0.13547f}, {3.9291f, 3.1900f, 2.3808f}, kJohnsonChristy1972),
-    metal("copper", {0.27105f, 0.67693f, 1.31640f}, {3.60920f, 2.62480f, 2.29210f}, kJohnsonChristy1972),
-    metal("aluminium", {1.3456f, 0.96521f, 0.61722f}, {7.4746f, 6.3995f, 5.3031f}, kRakic1998),
-    metal("iron", {2.9114f, 2.9497f, 2.5845f}, {3.0893f, 2.9318f, 2.7670f}, kJohnsonChristy1974),
-    metal("chromium", {3.1071f, 3.1812f, 2.3230f}, {3.3314f, 3.3291f, 3.1350f}, kJohnsonChristy1974),
+    // Gold's red clips at F0 = 1 (1.05 before the clip): a lossless conductor, n → 0 (kLosslessIndex).
+    metal("gold", {1e-8f, 0.377525151f, 1.6137383f}, {3.29923153f, 2.2643714f, 1.72846234f},
+          GLINT_FITTED_TO "K. M. McPeak et al., ACS Photonics 2, 326 (2015) (refractiveindex.info); "
+                          "red clipped at F0 = 1, n → 0"),
+    metal("silver", {0.145585939f, 0.134493664f, 0.13750504f}, {3.91282725f, 3.17071915f, 2.26906776f}, kRakic1998),
+    metal("copper", {0.177403733f, 0.968538821f, 1.21253431f}, {3.61480784f, 2.62657404f, 2.35925031f},
+          GLINT_FITTED_TO "H.-J. Hagemann et al., J. Opt. Soc. Am. 65, 742 (1975) (refractiveindex.info)"),
+    metal("aluminium", {1.39020634f, 0.937823951f, 0.561387777f}, {7.38514185f, 6.39095163f, 5.20355606f}, kRakic1998),
+    metal("iron", {2.43629456f, 2.17564368f, 1.70583999f}, {3.32979465f, 3.16553521f, 2.87742519f},
+          GLINT_FITTED_TO "M. R. Querry, Optical constants, CRDC-CR-85034 (1985) (refractiveindex.info)"),
+    metal("chromium", {3.24471188f, 3.1157949f, 2.28574586f}, {3.28565097f, 3.33660555f, 3.11692643f},
+          GLINT_FITTED_TO "P. B. Johnson, R. W. Christy, Phys. Rev. B 9, 5056 (1974) (refractiveindex.info)"),
     dielectric("glass", 1.5f, glm::vec3(0.0f), 0.01f, "dielectric", "Crown glass, n ≈ 1.52 (Hecht, Optics, Table 4.1), rounded to 1.5"),
     dielectric("water", 1.333f, glm::vec3(0.0f), 0.01f, "dielectric", kHechtIndex),
     dielectric("diamond", 2.42f, glm::vec3(0.0f), 0.005f, "dielectric", kHechtIndex),
@@ -66,6 +69,7 @@ constexpr Preset kPresets[] = {
     lambertian("grass", 0.25f, kOkeAlbedo),
     lambertian("soil", 0.15f, kOkeAlbedo),
 };
+#undef GLINT_FITTED_TO
 
 }  // namespace
 

@@ -1,6 +1,7 @@
-// The classroom BRDF plot data (see brdf_plot_data.h): evalBrdf sampled along the plane of
-// incidence and over the hemisphere, the delta lobes of mirror and glass, and the albedo quadrature.
-// Section index: directions · polar plot · 3D lobe · delta lobes · directional albedo.
+// The classroom BRDF plot data (see brdf_plot_data.h): f_r sampled along the plane of incidence and
+// over the hemisphere, the delta lobes of mirror and glass, and the albedo quadrature. Each plot
+// gathers its direction pairs first and evaluates them as one batch (one GPU pass when sampled).
+// Section index: evaluation · directions · polar plot · 3D lobe · delta lobes · directional albedo.
 #include "classroom/brdf_plot_data.h"
 
 #include <algorithm>
@@ -9,7 +10,9 @@
 #include "brdf/fresnel.h"
 #include "brdf/glass.h"
 #include "brdf/mirror.h"
+#include "interchange/measured_brdf.h"
 #include "math/constants.h"
+#include "util/diagnostic.h"
 
 namespace glint {
 namespace {
@@ -17,8 +20,44 @@ namespace {
 constexpr float kPlotDegrees = kPi / 180.0f;
 const ShadingFrame kPlotFrame{};  // tangent x, bitangent y, normal z
 
-glm::vec3 plotEval(const PlotMaterial& material, glm::vec3 wi, glm::vec3 wo) {
-    return evalBrdf(material.model, material.values, wi, wo, kPlotFrame);
+// ---- evaluation ----------------------------------------------------------------------------
+
+// f_r at each (incident[k], outgoing[k]): the sampler, the measured table or the model.
+std::vector<glm::vec3> plotEval(const PlotMaterial& material, std::span<const glm::vec3> incident,
+                                std::span<const glm::vec3> outgoing) {
+    GLINT_CHECK(incident.size() == outgoing.size());
+    if (material.sampler) {
+        std::vector<glm::vec3> sampled = material.sampler(incident, outgoing);
+        GLINT_CHECK(sampled.size() == incident.size());
+        return sampled;
+    }
+    std::vector<glm::vec3> reflectance(incident.size());
+    for (size_t k = 0; k < incident.size(); ++k)
+        reflectance[k] = material.measured ? evalMeasuredBrdf(*material.measured, incident[k], outgoing[k], kPlotFrame)
+                                           : evalBrdf(material.model, material.values, incident[k], outgoing[k], kPlotFrame);
+    return reflectance;
+}
+
+// The albedo quadrature's outgoing directions (see directionalAlbedo) for one ω_i, appended.
+void appendAlbedoDirections(glm::vec3 wi, int thetaSteps, int phiSteps, std::vector<glm::vec3>& incident,
+                            std::vector<glm::vec3>& outgoing) {
+    for (int t = 0; t < thetaSteps; ++t) {
+        const float sin2Theta = (static_cast<float>(t) + 0.5f) / static_cast<float>(thetaSteps);  // u midpoints
+        const float sinTheta = std::sqrt(sin2Theta);
+        const float cosTheta = std::sqrt(1.0f - sin2Theta);
+        for (int p = 0; p < phiSteps; ++p) {
+            const float phi = 2.0f * kPi * (static_cast<float>(p) + 0.5f) / static_cast<float>(phiSteps);
+            incident.push_back(wi);
+            outgoing.push_back({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+        }
+    }
+}
+
+// ∫ f cos θ dω = ∫∫ f · ½ du dφ with du = 1/thetaSteps, dφ = 2π/phiSteps, over one ω_i's samples.
+glm::vec3 albedoFromSamples(std::span<const glm::vec3> reflectance, int thetaSteps, int phiSteps) {
+    glm::vec3 sum(0.0f);
+    for (const glm::vec3& value : reflectance) sum += value;
+    return sum * (kPi / static_cast<float>(thetaSteps * phiSteps));
 }
 
 }  // namespace
@@ -27,7 +66,12 @@ glm::vec3 plotEval(const PlotMaterial& material, glm::vec3 wi, glm::vec3 wo) {
 
 std::optional<PlotMaterial> plotMaterialFrom(const Material& material) {
     if (material.custom) return std::nullopt;
-    return PlotMaterial{material.name, material.model, material.values};
+    return PlotMaterial{material.name, material.model, material.values, material.measured, {}, nullptr};
+}
+
+bool samePlotMaterial(const PlotMaterial& a, const PlotMaterial& b) {
+    return a.name == b.name && a.model == b.model && a.values == b.values && a.measured == b.measured &&
+           a.custom == b.custom && static_cast<bool>(a.sampler) == static_cast<bool>(b.sampler);
 }
 
 glm::vec3 plotIncidentDirection(float incidenceRadians) {
@@ -46,15 +90,16 @@ PolarPlotData polarPlotData(const PlotMaterial& material, float incidenceDegrees
     PolarPlotData data;
     data.incidenceDegrees = incidenceDegrees;
     sampleCount = std::max(sampleCount, 2);
-    const glm::vec3 wi = plotIncidentDirection(incidenceDegrees * kPlotDegrees);
+    const std::vector<glm::vec3> incident(sampleCount, plotIncidentDirection(incidenceDegrees * kPlotDegrees));
+    std::vector<glm::vec3> outgoing;
     for (int i = 0; i < sampleCount; ++i) {
         const float outgoingDegrees = -90.0f + 180.0f * static_cast<float>(i) / static_cast<float>(sampleCount - 1);
-        const float outgoing = outgoingDegrees * kPlotDegrees;
-        const glm::vec3 reflectance = plotEval(material, wi, plotOutgoingDirection(outgoing));
         data.outgoingDegrees.push_back(outgoingDegrees);
-        data.reflectance.push_back(reflectance);
-        data.cosineWeighted.push_back(reflectance * std::max(std::cos(outgoing), 0.0f));
+        outgoing.push_back(plotOutgoingDirection(outgoingDegrees * kPlotDegrees));
     }
+    data.reflectance = plotEval(material, incident, outgoing);
+    for (int i = 0; i < sampleCount; ++i)
+        data.cosineWeighted.push_back(data.reflectance[i] * std::max(std::cos(data.outgoingDegrees[i] * kPlotDegrees), 0.0f));
     return data;
 }
 
@@ -65,17 +110,21 @@ LobeMesh lobeMesh(const PlotMaterial& material, float incidenceDegrees, int thet
     mesh.incidenceDegrees = incidenceDegrees;
     mesh.thetaSteps = std::max(thetaSteps, 1);
     mesh.phiSteps = std::max(phiSteps, 3);
-    const glm::vec3 wi = plotIncidentDirection(incidenceDegrees * kPlotDegrees);
+    std::vector<glm::vec3> outgoing;
     for (int t = 0; t <= mesh.thetaSteps; ++t) {
         // The last row sits just above the horizon, where cos θ_o is still positive.
         const float theta = std::min(static_cast<float>(t) / static_cast<float>(mesh.thetaSteps), 0.999f) * 0.5f * kPi;
         for (int p = 0; p < mesh.phiSteps; ++p) {
             const float phi = 2.0f * kPi * static_cast<float>(p) / static_cast<float>(mesh.phiSteps);
-            const glm::vec3 wo{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-            const float radius = std::max(plotLuminance(plotEval(material, wi, wo)) * wo.z, 0.0f);
-            mesh.points.push_back(radius * wo);
-            mesh.largestRadius = std::max(mesh.largestRadius, radius);
+            outgoing.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
         }
+    }
+    const std::vector<glm::vec3> incident(outgoing.size(), plotIncidentDirection(incidenceDegrees * kPlotDegrees));
+    const std::vector<glm::vec3> reflectance = plotEval(material, incident, outgoing);
+    for (size_t k = 0; k < outgoing.size(); ++k) {
+        const float radius = std::max(plotLuminance(reflectance[k]) * outgoing[k].z, 0.0f);
+        mesh.points.push_back(radius * outgoing[k]);
+        mesh.largestRadius = std::max(mesh.largestRadius, radius);
     }
     return mesh;
 }
@@ -88,6 +137,7 @@ DeltaLobes deltaLobes(const PlotMaterial& material, float incidenceDegrees) {
     const float cosIncident = std::cos(incidence);
     const glm::vec3 wi = plotIncidentDirection(incidence);
     const glm::vec3 mirrored{-wi.x, -wi.y, wi.z};
+    if (material.measured || material.sampler) return lobes;  // f_r is all there is
     if (material.model == BrdfModel::Mirror) {
         const MirrorParams mirror = unpackMirror(material.values.data());
         lobes.hasReflection = true;
@@ -114,29 +164,25 @@ DeltaLobes deltaLobes(const PlotMaterial& material, float incidenceDegrees) {
 // ---- directional albedo --------------------------------------------------------------------
 
 glm::vec3 directionalAlbedo(const PlotMaterial& material, float incidenceDegrees, int thetaSteps, int phiSteps) {
-    const glm::vec3 wi = plotIncidentDirection(incidenceDegrees * kPlotDegrees);
-    glm::vec3 sum(0.0f);
-    for (int t = 0; t < thetaSteps; ++t) {
-        const float sin2Theta = (static_cast<float>(t) + 0.5f) / static_cast<float>(thetaSteps);  // u midpoints
-        const float sinTheta = std::sqrt(sin2Theta);
-        const float cosTheta = std::sqrt(1.0f - sin2Theta);
-        for (int p = 0; p < phiSteps; ++p) {
-            const float phi = 2.0f * kPi * (static_cast<float>(p) + 0.5f) / static_cast<float>(phiSteps);
-            const glm::vec3 wo{sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
-            sum += plotEval(material, wi, wo);
-        }
-    }
-    // ∫ f cos θ dω = ∫∫ f · ½ du dφ with du = 1/thetaSteps, dφ = 2π/phiSteps.
-    return sum * (kPi / static_cast<float>(thetaSteps * phiSteps));
+    std::vector<glm::vec3> incident, outgoing;
+    appendAlbedoDirections(plotIncidentDirection(incidenceDegrees * kPlotDegrees), thetaSteps, phiSteps, incident, outgoing);
+    return albedoFromSamples(plotEval(material, incident, outgoing), thetaSteps, phiSteps);
 }
 
 AlbedoCurve albedoCurve(const PlotMaterial& material, int angleCount, int thetaSteps, int phiSteps) {
     AlbedoCurve curve;
     angleCount = std::max(angleCount, 2);
+    std::vector<glm::vec3> incident, outgoing;  // every angle's samples: one batch
     for (int i = 0; i < angleCount; ++i) {
         const float incidenceDegrees = std::min(90.0f * static_cast<float>(i) / static_cast<float>(angleCount - 1), 89.5f);
-        const glm::vec3 albedo = directionalAlbedo(material, incidenceDegrees, thetaSteps, phiSteps);
         curve.incidenceDegrees.push_back(incidenceDegrees);
+        appendAlbedoDirections(plotIncidentDirection(incidenceDegrees * kPlotDegrees), thetaSteps, phiSteps, incident, outgoing);
+    }
+    const std::vector<glm::vec3> reflectance = plotEval(material, incident, outgoing);
+    const size_t perAngle = static_cast<size_t>(thetaSteps) * static_cast<size_t>(phiSteps);
+    for (int i = 0; i < angleCount; ++i) {
+        const glm::vec3 albedo =
+            albedoFromSamples(std::span(reflectance).subspan(static_cast<size_t>(i) * perAngle, perAngle), thetaSteps, phiSteps);
         curve.albedo.push_back(albedo);
         curve.largestAlbedo = std::max({curve.largestAlbedo, albedo.r, albedo.g, albedo.b});
     }

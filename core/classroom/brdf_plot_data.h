@@ -1,9 +1,13 @@
 // Numbers behind the classroom BRDF plots (issue 7): the polar plot in the plane of incidence, the
 // 3D lobe over the hemisphere, the delta lobes of mirror and glass, and directional albedo against
-// incidence angle. All from evalBrdf, the function the renderers use. Draws nothing (app/classroom).
+// incidence angle. f_r comes from evalBrdf or the MERL table lookup (the functions the renderers
+// use), or from a sampler the caller hands in (a .brdf shader evaluated on the GPU,
+// core/gl/brdf_sampler.h). Draws nothing (app/classroom).
 // Section index: plot material · polar plot · 3D lobe · delta lobes · directional albedo.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,17 +21,32 @@
 namespace glint {
 
 // ---- plot material -------------------------------------------------------------------------
-// A material as the plots see it: a built-in model and its packed values (param_table.h).
-// Local frame throughout: z is the normal, the plane of incidence is xz, the light comes from −x.
+// f_r [1/sr] per channel at each pair (incident[k], outgoing[k]), all in the local frame; returns
+// one value per pair. For a BRDF the CPU cannot evaluate (a .brdf shader).
+using PlotBrdfSampler = std::function<std::vector<glm::vec3>(std::span<const glm::vec3> incident,
+                                                             std::span<const glm::vec3> outgoing)>;
+
+// A material as the plots see it: a built-in model and its packed values (param_table.h), a MERL
+// measured table, or a sampler. Local frame throughout: z is the normal, the plane of incidence is
+// xz, the light comes from −x.
 struct PlotMaterial {
     std::string name;
     BrdfModel model = BrdfModel::Lambert;
     std::vector<float> values;
+    // When set, f_r is the table's (trilinear, as the renderers); model and values are the
+    // Lambert stand-in and unused.
+    std::shared_ptr<const MeasuredBrdf> measured;
+    // When set, f_r comes from here (model unused); `values` are then what was sampled.
+    PlotBrdfSampler sampler;
+    std::shared_ptr<const CustomBrdf> custom;  // the .brdf the sampler runs, so caches can tell materials apart
 };
 
 // A scene material for the plots; nullopt for a BRDF Explorer .brdf material (its GLSL cannot
-// run on the CPU). Textures are not applied: the plots use the material's own values.
+// run on the CPU: the caller makes its sampler, app/classroom/plot_materials.h). Textures are not
+// applied: the plots use the material's own values.
 std::optional<PlotMaterial> plotMaterialFrom(const Material& material);
+// Same material, same values, same table or shader: the plots would not change.
+bool samePlotMaterial(const PlotMaterial& a, const PlotMaterial& b);
 
 // ω_i for incidence angle θ_i [rad] (towards the light, on the −x side) and ω_o for a signed
 // angle θ_o [rad] in the plane of incidence (positive: the mirror side, +x).
@@ -60,7 +79,7 @@ struct LobeMesh {
 LobeMesh lobeMesh(const PlotMaterial& material, float incidenceDegrees, int thetaSteps = 24, int phiSteps = 48);
 
 // ---- delta lobes ---------------------------------------------------------------------------
-// The ideal lobes f_r cannot hold (mirror, glass), drawn as arrows with their weights: the mirror
+// The ideal lobes f_r cannot hold (mirror, glass; none for a measured or sampled material), drawn as arrows with their weights: the mirror
 // direction with the Fresnel reflectance, and for glass the refracted direction below the surface
 // by Snell's law (sin θ_t = sin θ_i / η) with the transmitted fraction of the power, 1 − F
 // (or the classic k_t). Light arrives from the air side.

@@ -27,6 +27,7 @@ glm::vec3 fresnelParamValue(const PlotMaterial& material, std::string_view name,
 }  // namespace
 
 std::optional<ComplexIndex> materialComplexIndex(const PlotMaterial& material) {
+    if (material.measured || material.sampler) return std::nullopt;  // a table or a shader: no n to read
     if (findParam(modelInfo(material.model).params, "ior") < 0) return std::nullopt;
     return ComplexIndex{fresnelParamValue(material, "ior", glm::vec3(1.5f)),
                         fresnelParamValue(material, "extinction", glm::vec3(0.0f))};

@@ -20,7 +20,8 @@ struct ComplexIndex {
 };
 
 // The index of a material whose table has an "ior" parameter (scalar or per channel) and
-// optionally "extinction" (κ); nullopt for models without one (Lambert, Phong, …).
+// optionally "extinction" (κ); nullopt for models without one (Lambert, Phong, …), for a measured
+// table and for a sampled .brdf shader (neither declares an index).
 std::optional<ComplexIndex> materialComplexIndex(const PlotMaterial& material);
 
 struct FresnelChannelCurves {

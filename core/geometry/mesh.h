@@ -28,7 +28,7 @@ struct MeshStatistics {
     size_t vertexCount = 0;
     size_t triangleCount = 0;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // in the file's own units, before centring
-    bool hadNormals = false;  // false: smooth normals were generated
+    bool hadNormals = false;  // false: normals were generated (always for STL, whose facet normals are not kept)
     bool hadUvs = false;      // false: tangents are a fallback, not from UVs
     size_t degenerateTrianglesDropped = 0;  // zero-area faces removed
     size_t meshesMerged = 0;                // meshes of the file's node tree merged into one

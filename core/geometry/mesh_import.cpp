@@ -1,5 +1,6 @@
-// Mesh import through assimp (see mesh_import.h): read, check, merge the node tree's meshes with
-// their transforms, drop zero-area faces, normalise into the unit sphere.
+// Mesh import through assimp (see mesh_import.h): read (triangulated, nothing else asked of
+// assimp), check and merge the node tree's meshes with their transforms into a MeshBuilder (which
+// welds, drops zero-area faces, makes normals and tangents), normalise into the unit sphere.
 // Sections: progress and cancel · messages · checks · merge · normalise · entry points.
 #include "geometry/mesh_import.h"
 
@@ -14,13 +15,16 @@
 #include <regex>
 #include <stdexcept>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
-#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "math/frame.h"
+#include "geometry/mesh_builder.h"
 
 namespace glint {
 namespace {
@@ -43,9 +47,13 @@ public:
         report(0.8f * std::clamp(percentage, 0.0f, 1.0f));
         return !cancelled_;
     }
-    void report(float fraction) {
+    // Passes the fraction on; false once cancelled (and for every later offer).
+    bool offer(float fraction) {
         if (!cancelled_ && progress_ && !progress_(fraction)) cancelled_ = true;
-        if (cancelled_) throw CancelImport();  // again on every later report: assimp may go on after the first
+        return !cancelled_;
+    }
+    void report(float fraction) {
+        if (!offer(fraction)) throw CancelImport();  // again on every later report: assimp may go on after the first
     }
     bool cancelled() const { return cancelled_; }
 
@@ -73,21 +81,41 @@ Diagnostic importError(const std::string& name, const std::string& assimpMessage
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Refuses what assimp lets through: non-finite coordinates and indices outside the mesh.
-std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, const std::string& name) {
-    const std::string which = "mesh " + std::to_string(meshIndex) +
-                              (mesh.mName.length ? " ('" + std::string(mesh.mName.C_Str()) + "')" : std::string());
+std::string meshLabel(const aiMesh& mesh, unsigned meshIndex) {
+    return "mesh " + std::to_string(meshIndex) +
+           (mesh.mName.length ? " ('" + std::string(mesh.mName.C_Str()) + "')" : std::string());
+}
+
+// Refuses, in one pass over the mesh as assimp read it (no processing step has run: assimp's
+// own validation is not asked for, and its steps may crash on what this refuses), missing
+// arrays, non-finite coordinates, faces of more corners than the mesh has vertices and indices
+// outside the mesh. Notes faces of more than three corners in `hasPolygons`.
+std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, const std::string& name, bool& hasPolygons) {
+    if ((mesh.mNumVertices > 0 && !mesh.mVertices) || (mesh.mNumFaces > 0 && !mesh.mFaces))
+        return makeError("cannot load mesh: " + meshLabel(mesh, meshIndex) + " lacks its vertices or faces", {name});
     for (unsigned i = 0; i < mesh.mNumVertices; ++i)
         if (!finite(mesh.mVertices[i]))
-            return makeError("cannot load mesh: vertex " + std::to_string(i) + " of " + which +
+            return makeError("cannot load mesh: vertex " + std::to_string(i) + " of " + meshLabel(mesh, meshIndex) +
                                  " has a coordinate that is not a finite number (NaN or infinity)",
                              {name});
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices > 0 && !face.mIndices)
+            return makeError("cannot load mesh: face " + std::to_string(f) + " of " + meshLabel(mesh, meshIndex) +
+                                 " lacks its indices",
+                             {name});
+        // More corners than vertices is a lie about the count (a PLY list's, say), and assimp's
+        // Triangulate would take ages over it.
+        if (face.mNumIndices > mesh.mNumVertices)
+            return makeError("cannot load mesh: face " + std::to_string(f) + " of " + meshLabel(mesh, meshIndex) + " has " +
+                                 std::to_string(face.mNumIndices) + " corners, but the mesh has only " +
+                                 std::to_string(mesh.mNumVertices) + " vertices",
+                             {name});
+        hasPolygons = hasPolygons || face.mNumIndices > 3;
         for (unsigned k = 0; k < face.mNumIndices; ++k)
             if (face.mIndices[k] >= mesh.mNumVertices)
-                return makeError("cannot load mesh: face " + std::to_string(f) + " of " + which + " uses vertex " +
-                                     std::to_string(face.mIndices[k]) + ", but the mesh has only " +
+                return makeError("cannot load mesh: face " + std::to_string(f) + " of " + meshLabel(mesh, meshIndex) +
+                                     " uses vertex " + std::to_string(face.mIndices[k]) + ", but the mesh has only " +
                                      std::to_string(mesh.mNumVertices) + " vertices",
                                  {name});
     }
@@ -95,17 +123,18 @@ std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, cons
 }
 
 // Assimp 5.2.5's PLY reader never returns on some malformed headers (an unknown keyword,
-// "end_header" running on into the data; found by fuzz_mesh_import), so the header's lines are
-// checked before assimp sees them: each must start with a PLY keyword.
-std::optional<Diagnostic> checkPlyHeader(std::string_view start, const std::string& name) {
+// "end_header" running on into the data, found by fuzz_mesh_import; a file that ends inside its
+// header), so the header's lines are checked before assimp sees them: each must start with a PLY
+// keyword, and a file whose first bytes (`start`) are all of it (`whole`) must hold end_header.
+std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, const std::string& name) {
     if (start.substr(0, 3) != "ply") return std::nullopt;
     static const std::string_view keywords[] = {"ply", "format", "comment", "obj_info", "element", "property"};
     int line = 0;
     size_t position = 0;
     while (position < start.size()) {
         ++line;
-        size_t end = start.find('\n', position);
-        if (end == std::string_view::npos) return std::nullopt;  // header longer than the peek: assimp's turn
+        const size_t end = std::min(start.find('\n', position), start.size());
+        if (end == start.size() && !whole) return std::nullopt;  // runs on past the first bytes: assimp's turn
         std::string_view text = start.substr(position, end - position);
         if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
         position = end + 1;
@@ -116,115 +145,105 @@ std::optional<Diagnostic> checkPlyHeader(std::string_view start, const std::stri
                                  "' is not a PLY header line (format, comment, element, property, end_header)",
                              {name, line, 1});
     }
-    return std::nullopt;
+    if (!whole) return std::nullopt;
+    return makeError("cannot load mesh: the PLY header ends without end_header (the file is cut short)", {name, line, 1});
 }
 
 // --- merge ----------------------------------------------------------------------------------
 
 glm::vec3 toGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
+// The scene's meshes (checked: checkMesh), each instance placed by its node's accumulated
+// transform, into one MeshBuilder.
 struct Merger {
     const aiScene& scene;
     ProgressRelay& relay;
     const std::string& name;
-    Mesh mesh;
+    bool fileNormalsAreFaceNormals;  // STL: its facet normals carry no smoothing; Glint makes its own
+    MeshBuilder builder;
     MeshStatistics statistics;
-    size_t trianglesSeen = 0, trianglesTotal = 0;
+    size_t itemsSeen = 0, itemsTotal = 0;  // vertices and faces, for progress
     std::optional<Diagnostic> error;
 
-    // Depth-first over the node tree, each mesh instance placed by its accumulated transform.
-    void visit(const aiNode& node, const aiMatrix4x4& parent) {
-        const aiMatrix4x4 transform = parent * node.mTransformation;
-        for (unsigned i = 0; i < node.mNumMeshes && !error; ++i) append(*scene.mMeshes[node.mMeshes[i]], transform);
-        for (unsigned i = 0; i < node.mNumChildren && !error; ++i) visit(*node.mChildren[i], transform);
-    }
+    static constexpr int kDeepestNode = 1000;  // deeper is a malformed (or cyclic) node tree
 
-    void append(const aiMesh& source, const aiMatrix4x4& transform) {
-        if (!(source.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;
-        ++statistics.meshesMerged;
-        // Normals and tangents transform with the inverse transpose (DESIGN.md).
-        aiMatrix3x3 normalMatrix(transform);
-        normalMatrix.Inverse().Transpose();
-        const auto first = static_cast<uint32_t>(mesh.vertices.size());
-        for (unsigned i = 0; i < source.mNumVertices; ++i) {
-            Vertex vertex{};
-            vertex.position = toGlm(transform * source.mVertices[i]);
-            if (!std::isfinite(vertex.position.x + vertex.position.y + vertex.position.z)) {
-                error = makeError("cannot load mesh: a node transform takes vertex " + std::to_string(i) +
-                                      " outside the finite numbers",
+    // Depth-first over the node tree: `visit(mesh, meshIndex, transform)` for each mesh instance.
+    template <class Visit>
+    void walk(const aiNode& node, const aiMatrix4x4& parent, int depth, const Visit& visit) {
+        if (error) return;
+        if (depth > kDeepestNode || (node.mNumMeshes > 0 && !node.mMeshes) || (node.mNumChildren > 0 && !node.mChildren)) {
+            error = makeError("cannot load mesh: malformed node tree (lists missing, or more than " +
+                                  std::to_string(kDeepestNode) + " deep)",
+                              {name});
+            return;
+        }
+        const aiMatrix4x4 transform = parent * node.mTransformation;
+        for (unsigned i = 0; i < node.mNumMeshes && !error; ++i) {
+            const unsigned index = node.mMeshes[i];
+            if (index >= scene.mNumMeshes) {
+                error = makeError("cannot load mesh: a node names mesh " + std::to_string(index) + ", but the file has " +
+                                      std::to_string(scene.mNumMeshes),
                                   {name});
                 return;
             }
-            glm::vec3 normal = source.mNormals ? toGlm(normalMatrix * source.mNormals[i]) : glm::vec3(0.0f);
-            vertex.normal = normal;
-            if (source.mTextureCoords[0]) vertex.uv = {source.mTextureCoords[0][i].x, source.mTextureCoords[0][i].y};
-            if (source.mTangents) vertex.tangent = toGlm(normalMatrix * source.mTangents[i]);
-            mesh.vertices.push_back(vertex);
+            visit(*scene.mMeshes[index], index, transform);
         }
-        for (unsigned f = 0; f < source.mNumFaces; ++f) {
-            if ((++trianglesSeen & 0xFFFF) == 0) relay.report(0.8f + 0.15f * trianglesSeen / std::max<size_t>(1, trianglesTotal));
-            const aiFace& face = source.mFaces[f];
-            if (face.mNumIndices != 3) continue;
-            const uint32_t a = first + face.mIndices[0], b = first + face.mIndices[1], c = first + face.mIndices[2];
-            const glm::vec3 edge1 = mesh.vertices[b].position - mesh.vertices[a].position;
-            const glm::vec3 edge2 = mesh.vertices[c].position - mesh.vertices[a].position;
-            const float doubleArea = glm::length(glm::cross(edge1, edge2));
-            const float longestSquared = std::max({glm::dot(edge1, edge1), glm::dot(edge2, edge2),
-                                                   glm::dot(edge2 - edge1, edge2 - edge1)});
-            // Zero area, relative to the triangle's size (collapsed or collinear corners).
-            if (!(doubleArea > 1e-10f * longestSquared)) {
-                ++statistics.degenerateTrianglesDropped;
-                continue;
+        for (unsigned i = 0; i < node.mNumChildren && !error; ++i)
+            if (node.mChildren[i]) walk(*node.mChildren[i], transform, depth + 1, visit);
+    }
+
+    void run() {
+        size_t vertices = 0, faces = 0;
+        walk(*scene.mRootNode, aiMatrix4x4(), 0, [&](const aiMesh& mesh, unsigned, const aiMatrix4x4&) {
+            vertices += mesh.mNumVertices, faces += mesh.mNumFaces;
+        });
+        itemsTotal = vertices + faces;
+        builder.reserve(vertices, faces);
+        walk(*scene.mRootNode, aiMatrix4x4(), 0,
+             [&](const aiMesh& mesh, unsigned index, const aiMatrix4x4& transform) { append(mesh, index, transform); });
+    }
+
+    void progressed() {
+        if ((++itemsSeen & 0xFFFF) == 0) relay.report(0.8f + 0.1f * itemsSeen / std::max<size_t>(1, itemsTotal));
+    }
+
+    void append(const aiMesh& source, unsigned meshIndex, const aiMatrix4x4& transform) {
+        const aiVector3D* normals = fileNormalsAreFaceNormals ? nullptr : source.mNormals;
+        const aiVector3D* uvs = source.mTextureCoords[0];
+        statistics.hadNormals = statistics.hadNormals || normals;
+        statistics.hadUvs = statistics.hadUvs || uvs;
+        // Normals transform with the inverse transpose (DESIGN.md), tangents (along the surface) as positions do.
+        aiMatrix3x3 normalMatrix(transform);
+        normalMatrix.Inverse().Transpose();
+        const aiMatrix3x3 tangentMatrix(transform);
+        const bool identity = transform == aiMatrix4x4();  // exactly (IsIdentity allows 0.01)
+        const auto first = static_cast<uint32_t>(builder.vertexCount());
+        for (unsigned i = 0; i < source.mNumVertices; ++i) {
+            progressed();
+            const glm::vec3 position = toGlm(identity ? source.mVertices[i] : transform * source.mVertices[i]);
+            if (!std::isfinite(position.x + position.y + position.z)) {
+                error = makeError("cannot load mesh: a node transform takes vertex " + std::to_string(i) + " of " +
+                                      meshLabel(source, meshIndex) + " outside the finite numbers",
+                                  {name});
+                return;
             }
-            mesh.indices.insert(mesh.indices.end(), {a, b, c});
+            builder.addVertex(position, normals ? toGlm(normalMatrix * normals[i]) : glm::vec3(0.0f),
+                              uvs ? glm::vec2(uvs[i].x, uvs[i].y) : glm::vec2(0.0f),
+                              source.mTangents ? toGlm(tangentMatrix * source.mTangents[i]) : glm::vec3(0.0f));
         }
+        const size_t trianglesBefore = builder.triangleCount() + builder.degenerateTrianglesDropped();
+        for (unsigned f = 0; f < source.mNumFaces; ++f) {
+            progressed();
+            const aiFace& face = source.mFaces[f];
+            // Points and lines are left out; Triangulate has cut every polygon into triangles.
+            if (face.mNumIndices == 3)
+                builder.addTriangle(first + face.mIndices[0], first + face.mIndices[1], first + face.mIndices[2]);
+        }
+        if (builder.triangleCount() + builder.degenerateTrianglesDropped() > trianglesBefore) ++statistics.meshesMerged;
     }
 };
 
-// Unit normals and tangents everywhere: a vertex whose normal is missing or zero (assimp skips
-// those only of degenerate faces) takes the normal of a face that uses it; a missing tangent
-// (no UVs) is any unit vector ⟂ the normal (Duff et al. 2017).
-void repairFrames(Mesh& mesh) {
-    std::vector<char> valid(mesh.vertices.size());
-    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const float length = glm::length(mesh.vertices[i].normal);
-        valid[i] = std::isfinite(length) && length > 1e-12f;
-        if (valid[i]) mesh.vertices[i].normal /= length;
-    }
-    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        Vertex& a = mesh.vertices[mesh.indices[t]];
-        const Vertex& b = mesh.vertices[mesh.indices[t + 1]];
-        const Vertex& c = mesh.vertices[mesh.indices[t + 2]];
-        const glm::vec3 face = glm::normalize(glm::cross(b.position - a.position, c.position - a.position));
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t index = mesh.indices[t + k];
-            if (!valid[index]) mesh.vertices[index].normal = face, valid[index] = 1;
-        }
-    }
-    for (Vertex& vertex : mesh.vertices) {
-        const glm::vec3 along = vertex.tangent - vertex.normal * glm::dot(vertex.normal, vertex.tangent);
-        const float length = glm::length(along);
-        vertex.tangent = std::isfinite(length) && length > 1e-6f ? along / length
-                                                                  : ShadingFrame::fromNormal(vertex.normal).tangent;
-    }
-}
-
 // --- normalise ------------------------------------------------------------------------------
-
-// Drops vertices no triangle uses (those of dropped faces) and renumbers the indices.
-void compact(Mesh& mesh) {
-    std::vector<uint32_t> remap(mesh.vertices.size(), UINT32_MAX);
-    std::vector<Vertex> kept;
-    kept.reserve(mesh.vertices.size());
-    for (uint32_t& index : mesh.indices) {
-        if (remap[index] == UINT32_MAX) {
-            remap[index] = static_cast<uint32_t>(kept.size());
-            kept.push_back(mesh.vertices[index]);
-        }
-        index = remap[index];
-    }
-    mesh.vertices = std::move(kept);
-}
 
 // Centre of the bounding box to the origin, farthest vertex to distance 1.
 std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
@@ -244,53 +263,57 @@ std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
 
 using ReadFunction = std::function<const aiScene*(Assimp::Importer&, unsigned flags)>;
 
-Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& name, const MeshImportOptions& options,
-                                const MeshImportProgress& progress) {
+// `format`: the extension, lower case, without the dot.
+Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& name, const std::string& format,
+                                const MeshImportOptions& options, const MeshImportProgress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    if (!(options.smoothingAngleDegrees > 0.0f && options.smoothingAngleDegrees <= 180.0f))
-        return makeError("smoothing angle must be in (0°, 180°]", {name});
+    if (!(options.smoothingAngleDegrees >= 0.0f && options.smoothingAngleDegrees <= 180.0f))
+        return makeError("smoothing angle must be in [0°, 180°]", {name});
     Assimp::Importer importer;
     auto* relay = new ProgressRelay(progress);
     importer.SetProgressHandler(relay);  // the importer owns and deletes it
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, options.smoothingAngleDegrees);
-    MeshStatistics statistics;
     try {
-        const aiScene* scene = read(importer, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+        // Triangulate (where there are polygons, after the checks) is the only step asked of
+        // assimp: welding, normals, tangents and the checks are Glint's own (checkMesh,
+        // MeshBuilder), the same for every format.
+        const aiScene* scene = read(importer, 0);
         if (relay->cancelled()) return makeError(kCancelledMessage, {name});
         if (!scene) return importError(name, importer.GetErrorString());
-        if (!scene->mRootNode || scene->mNumMeshes == 0) return makeError("cannot load mesh: the file holds no triangles", {name});
+        if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
+            return makeError("cannot load mesh: the file holds no triangles", {name});
+        bool hasPolygons = false;
         for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-            const aiMesh& mesh = *scene->mMeshes[i];
-            if (auto error = checkMesh(mesh, i, name)) return *error;
-            statistics.hadNormals = statistics.hadNormals || mesh.mNormals;
-            statistics.hadUvs = statistics.hadUvs || mesh.mTextureCoords[0];
+            if (!scene->mMeshes[i]) return makeError("cannot load mesh: mesh " + std::to_string(i) + " is missing", {name});
+            if (auto error = checkMesh(*scene->mMeshes[i], i, name, hasPolygons)) return *error;
         }
-        // Normals where missing (with the crease angle), tangents from UVs, shared vertices.
-        scene = importer.ApplyPostProcessing(aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
-                                             aiProcess_JoinIdenticalVertices);
-        if (relay->cancelled()) return makeError(kCancelledMessage, {name});
-        if (!scene) return importError(name, importer.GetErrorString());
-        Merger merger{*scene, *relay, name, {}, statistics};
-        for (unsigned i = 0; i < scene->mNumMeshes; ++i) merger.trianglesTotal += scene->mMeshes[i]->mNumFaces;
-        merger.visit(*scene->mRootNode, aiMatrix4x4());
+        if (hasPolygons) {
+            scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+            if (relay->cancelled()) return makeError(kCancelledMessage, {name});
+            if (!scene) return importError(name, importer.GetErrorString());
+        }
+        Merger merger{*scene, *relay, name, format == "stl", MeshBuilder(options.smoothingAngleDegrees), {}};
+        merger.run();
         if (merger.error) return *merger.error;
-        statistics = merger.statistics;
-        Mesh mesh = std::move(merger.mesh);
-        if (mesh.indices.empty())
+        importer.FreeScene();  // everything is in the builder now
+#ifdef __GLIBC__
+        malloc_trim(0);  // hands the scene's many small blocks back to the system (peak memory)
+#endif
+        MeshStatistics statistics = merger.statistics;
+        statistics.degenerateTrianglesDropped = merger.builder.degenerateTrianglesDropped();
+        if (merger.builder.triangleCount() == 0)
             return makeError(statistics.degenerateTrianglesDropped > 0
                                  ? "cannot load mesh: every triangle has zero area (" +
                                        std::to_string(statistics.degenerateTrianglesDropped) + " dropped)"
                                  : "cannot load mesh: the file holds no triangles",
                              {name});
-        compact(mesh);
-        if (auto problem = normalise(mesh, statistics)) return makeError("cannot load mesh: " + *problem, {name});
-        repairFrames(mesh);
+        std::optional<Mesh> mesh = merger.builder.build([&](float fraction) { return relay->offer(0.9f + 0.09f * fraction); });
+        if (!mesh) return makeError(kCancelledMessage, {name});
+        if (auto problem = normalise(*mesh, statistics)) return makeError("cannot load mesh: " + *problem, {name});
         relay->report(1.0f);
-        statistics.vertexCount = mesh.vertices.size();
-        statistics.triangleCount = mesh.triangleCount();
+        statistics.vertexCount = mesh->vertices.size();
+        statistics.triangleCount = mesh->triangleCount();
         statistics.loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return ImportedMesh{std::make_shared<const Mesh>(std::move(mesh)), statistics};
+        return ImportedMesh{std::make_shared<const Mesh>(std::move(*mesh)), statistics};
     } catch (const CancelImport&) {
         return makeError(kCancelledMessage, {name});
     } catch (const std::bad_alloc&) {
@@ -320,25 +343,26 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
     std::string start(4096, '\0');
     file.read(start.data(), static_cast<std::streamsize>(start.size()));
     start.resize(static_cast<size_t>(file.gcount()));
-    if (auto error = checkPlyHeader(start, path)) return *error;
+    if (auto error = checkPlyHeader(start, file.eof(), path)) return *error;
     if (!isMeshFile(path))
         return makeError("cannot load mesh: unknown extension '." + lowerExtension(path) +
                              "' (Glint reads .obj, .ply, .stl, .gltf, .glb, .fbx)",
                          {path});
     return importWith([&](Assimp::Importer& importer, unsigned flags) { return importer.ReadFile(path, flags); }, path,
-                      options, progress);
+                      lowerExtension(path), options, progress);
 }
 
 Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const std::string& formatHint,
                                           const std::string& name, const MeshImportOptions& options,
                                           const MeshImportProgress& progress) {
     if (size == 0) return makeError("cannot load mesh: the data is empty", {name});
-    if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, name)) return *error;
+    if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, size <= 4096, name))
+        return *error;
     return importWith(
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(data, size, flags, formatHint.c_str());
         },
-        name, options, progress);
+        name, lowerExtension("data." + formatHint), options, progress);
 }
 
 bool isImportCancellation(const Diagnostic& diagnostic) { return diagnostic.message == kCancelledMessage; }

@@ -14,15 +14,17 @@
 namespace glint {
 
 struct MeshImportOptions {
-    // Vertex normals are generated where the file has none; faces meeting at a crease sharper
-    // than this angle keep separate normals [degrees, in (0, 180]].
+    // Vertex normals are generated where the file has none (crease_normals.h), the same for
+    // every format; faces whose normals differ by more than this angle keep separate normals
+    // [degrees, in [0, 180]: 0 is flat shading, 180 smooth across every edge].
     float smoothingAngleDegrees = 60.0f;
 };
 
 // Called with the fraction done, in [0, 1], from the thread that imports; returning false
 // cancels the import, which then fails with a Diagnostic for which isImportCancellation() is
-// true. Assimp reports progress while it parses OBJ text and between its processing steps;
-// other formats are parsed in one step, so a cancel there takes effect after the parse.
+// true. Assimp reports progress while it parses OBJ text; other formats are parsed in one step,
+// so a cancel there takes effect after the parse, at Glint's next report while it merges, welds
+// and makes normals.
 using MeshImportProgress = std::function<bool(float fraction)>;
 
 struct ImportedMesh {

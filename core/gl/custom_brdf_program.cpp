@@ -85,13 +85,24 @@ GeneratedShaderFiles customBrdfShaderFiles(const CustomBrdf& brdf) {
 
 Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& sources, const CustomBrdf& brdf,
                                                         SurfaceVariant variant) {
+    return cached(sources, brdf, "surface.vert", "surface.frag", variant.prelude());
+}
+
+Result<const ShaderProgram*> CustomBrdfPrograms::samplingProgram(const ShaderSources& sources, const CustomBrdf& brdf) {
+    return cached(sources, brdf, "fullscreen.vert", "brdf_sampler.frag", "");
+}
+
+Result<const ShaderProgram*> CustomBrdfPrograms::cached(const ShaderSources& sources, const CustomBrdf& brdf,
+                                                       const std::string& vertexPath, const std::string& fragmentPath,
+                                                       const std::string& prelude) {
     const GeneratedShaderFiles files = customBrdfShaderFiles(brdf);
     std::string key;
     for (const auto& [path, text] : files) key += path + '\n' + text + '\0';
-    const auto found = programs_.find({key, variant});
-    auto& entry = found != programs_.end() ? found->second : programs_[{key, variant}];
+    const std::pair<std::string, std::string> id{key, vertexPath + '\n' + fragmentPath + '\n' + prelude};
+    const auto found = programs_.find(id);
+    auto& entry = found != programs_.end() ? found->second : programs_[id];
     if (found == programs_.end()) {
-        auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", variant.prelude(), files);
+        auto built = ShaderProgram::build(sources, vertexPath, fragmentPath, prelude, files);
         if (built) {
             built->bindBlock("FrameBlock", kFrameBinding);
             built->bindBlock("LightBlock", kLightBinding);

@@ -1,12 +1,13 @@
 // Custom BRDFs (.brdf files) in Glint's surface shader: the generated wrapper that maps
 // ShadingFrame to BRDF Explorer's L, V, N, X, Y and declares the parameters as uniforms, the
-// compiled programs (cached per source and MSAA count, failures too) and the per-draw uniforms.
+// compiled programs (cached per source and MSAA count, failures too; also the sampling program of
+// gl/brdf_sampler.h, the same wrapper in a full-screen pass) and the per-draw uniforms.
 // Proving a shader finishes (no endless loop) is not done here: app/cli/brdf_probe.h does it.
 #pragma once
 
 #include <map>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <variant>
 
 #include "gl/shader_program.h"
@@ -29,9 +30,15 @@ public:
     // every frame) until the source changes.
     // In the variant `variant` (MSAA, Gouraud, ray-cast sphere), as the built-in models' programs.
     Result<const ShaderProgram*> program(const ShaderSources& sources, const CustomBrdf& brdf, SurfaceVariant variant);
+    // fullscreen.vert + brdf_sampler.frag with the same wrapper: f_r at direction pairs
+    // (gl/brdf_sampler.h). Cached and reported like program().
+    Result<const ShaderProgram*> samplingProgram(const ShaderSources& sources, const CustomBrdf& brdf);
 
 private:
-    std::map<std::tuple<std::string, SurfaceVariant>, std::variant<ShaderProgram, Diagnostic>> programs_;
+    Result<const ShaderProgram*> cached(const ShaderSources& sources, const CustomBrdf& brdf, const std::string& vertexPath,
+                                        const std::string& fragmentPath, const std::string& prelude);
+    // (generated sources, stages + prelude) → the program or its error.
+    std::map<std::pair<std::string, std::string>, std::variant<ShaderProgram, Diagnostic>> programs_;
 };
 
 // Sets the parameter uniforms of a bound custom-BRDF program from packed values.

@@ -24,7 +24,7 @@ MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     mesh.center = reader.vec3("center", mesh.center);
     mesh.scale = static_cast<float>(reader.number("scale", mesh.scale, Bounds::positive()));
     mesh.smoothingAngleDegrees = static_cast<float>(
-        reader.number("smoothing_angle_degrees", mesh.smoothingAngleDegrees, {0.0, 180.0, true}));
+        reader.number("smoothing_angle_degrees", mesh.smoothingAngleDegrees, Bounds::between(0.0, 180.0)));
     const std::filesystem::path written(mesh.path);
     mesh.resolvedPath = (written.is_absolute() ? written : folderOf(sceneFile) / written).lexically_normal().string();
     auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees});

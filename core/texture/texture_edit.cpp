@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <utility>
 
 #include "texture/texture_image.h"
 
@@ -50,10 +51,14 @@ MaterialTexture defaultTexture(const std::string& parameter, const ParamSpec* sp
     return texture;
 }
 
-MaterialTexture* findTexture(Material& material, const std::string& parameter) {
-    for (MaterialTexture& texture : material.textures)
+const MaterialTexture* findTexture(const Material& material, const std::string& parameter) {
+    for (const MaterialTexture& texture : material.textures)
         if (texture.parameter == parameter) return &texture;
     return nullptr;
+}
+
+MaterialTexture* findTexture(Material& material, const std::string& parameter) {
+    return const_cast<MaterialTexture*>(findTexture(std::as_const(material), parameter));
 }
 
 void putTexture(Material& material, MaterialTexture texture) {

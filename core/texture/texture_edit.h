@@ -20,6 +20,7 @@ MaterialTexture defaultTexture(const std::string& parameter, const ParamSpec* sp
 
 // The texture on `parameter`, or nullptr.
 MaterialTexture* findTexture(Material& material, const std::string& parameter);
+const MaterialTexture* findTexture(const Material& material, const std::string& parameter);
 // Puts `texture` on its parameter (replacing one there), keeping table order (normal map last).
 void putTexture(Material& material, MaterialTexture texture);
 void removeTexture(Material& material, const std::string& parameter);

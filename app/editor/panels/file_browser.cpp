@@ -170,7 +170,11 @@ std::optional<std::string> drawFileBrowser(FileBrowser& browser) {
     const bool entered = ImGui::InputText("##path", &browser.typedPath, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     const bool pressed = ImGui::Button(purposeSaves(browser.purpose) ? "Save" : "Open");
-    if (entered || pressed || takeKeyPress(GLFW_KEY_ENTER) || takeKeyPress(GLFW_KEY_KP_ENTER)) chosen = confirm(browser);
+    // Both Enter presses are taken even when the text field already confirmed: one left over would
+    // dismiss, in this same frame, the error dialog that opening the chosen file may raise.
+    const bool enterPressed = takeKeyPress(GLFW_KEY_ENTER);
+    const bool keypadEnterPressed = takeKeyPress(GLFW_KEY_KP_ENTER);
+    if (entered || pressed || enterPressed || keypadEnterPressed) chosen = confirm(browser);
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || takeKeyPress(GLFW_KEY_ESCAPE)) ImGui::CloseCurrentPopup();
     if (!browser.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", browser.error.c_str());

@@ -1,5 +1,6 @@
 // The Plots window (see plots_window.h): the incidence slider, pinned materials, and the four
-// plots in a 2×2 grid; the lobe turns when dragged.
+// plots in a 2×2 grid; the lobe turns when dragged. .brdf materials are sampled on the GPU and
+// MERL materials read from their table (app/classroom/plot_materials.h), each with a note.
 #include "editor/panels/plots_window.h"
 
 #include <algorithm>
@@ -7,14 +8,16 @@
 
 #include <imgui.h>
 
+#include "classroom/plot_materials.h"
 #include "editor/editor_state.h"
 #include "editor/probe_panel.h"
 
 namespace glint {
 namespace {
 
-// The selected object's material first, then the pinned ones (each once); .brdf materials left out.
-std::vector<PlotMaterial> plotsWindowMaterials(const EditorState& state, std::vector<std::string>& leftOut) {
+// The selected object's material first, then the pinned ones (each once); a .brdf material whose
+// shader does not compile for sampling is left out, with its error in `leftOut`.
+std::vector<PlotMaterial> plotsWindowMaterials(const EditorState& state, BrdfSampler& sampler, std::vector<std::string>& leftOut) {
     const Scene& scene = state.session.scene();
     std::vector<int> indices;
     if (state.selectedObject >= 0 && state.selectedObject < static_cast<int>(scene.objects.size()))
@@ -24,17 +27,25 @@ std::vector<PlotMaterial> plotsWindowMaterials(const EditorState& state, std::ve
     std::vector<PlotMaterial> materials;
     for (int index : indices) {
         if (index < 0 || index >= static_cast<int>(scene.materials.size())) continue;
-        if (auto material = plotMaterialFrom(scene.materials[index])) materials.push_back(std::move(*material));
-        else leftOut.push_back(scene.materials[index].name);
+        if (auto material = plotMaterialFor(scene.materials[index], sampler)) materials.push_back(std::move(*material));
+        else leftOut.push_back(scene.materials[index].name + " is not plotted: " + material.error().format());
     }
     return materials;
 }
 
 bool samePlotMaterials(const std::vector<PlotMaterial>& a, const std::vector<PlotMaterial>& b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-        if (a[i].name != b[i].name || a[i].model != b[i].model || a[i].values != b[i].values) return false;
-    return true;
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), samePlotMaterial);
+}
+
+// Why the Fresnel cell is empty: a measured table or a shader has no index to plot.
+std::string noFresnelText(const std::vector<PlottedMaterial>& plotted) {
+    for (const PlottedMaterial& entry : plotted) {
+        if (entry.material.measured)
+            return "Fresnel: " + entry.material.name + " is a measured table (MERL): it has no index n + iκ to plot";
+        if (entry.material.custom)
+            return "Fresnel: " + entry.material.name + " is a .brdf shader: it declares no index n + iκ to plot";
+    }
+    return "Fresnel: no plotted material has an index n (+ iκ)";
 }
 
 void refreshPlotsCache(PlotsWindowState& plots, std::vector<PlotMaterial> materials) {
@@ -82,7 +93,7 @@ bool gPlotsFollowProbe = true;       // θ_i from the surface probe's point when
 
 }  // namespace
 
-void drawPlotsWindow(EditorState& state) {
+void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
     PlotsWindowState& plots = state.plots;
     if (!plots.open) return;
     ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 44.0f, ImGui::GetFontSize() * 34.0f), ImGuiCond_FirstUseEver);
@@ -113,9 +124,10 @@ void drawPlotsWindow(EditorState& state) {
     ImGui::Checkbox("Fresnel from inside", &plots.fresnelFromInside);
     if (!gPlotsIncidenceRefusal.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", gPlotsIncidenceRefusal.c_str());
     std::vector<std::string> leftOut;
-    refreshPlotsCache(plots, plotsWindowMaterials(state, leftOut));
-    for (const std::string& name : leftOut)
-        ImGui::TextDisabled("%s: a .brdf shader runs only on the GPU; it cannot be plotted", name.c_str());
+    refreshPlotsCache(plots, plotsWindowMaterials(state, sampler, leftOut));
+    for (const std::string& reason : leftOut) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", reason.c_str());
+    for (const PlotMaterial& material : plots.cachedMaterials)
+        if (const std::string note = plotSourceNote(material); !note.empty()) ImGui::TextDisabled("%s", note.c_str());
 
     const ImVec2 available = ImGui::GetContentRegionAvail();
     const ImVec2 cell(std::max(available.x * 0.5f - 4.0f, 60.0f), std::max(available.y * 0.5f - 4.0f, 60.0f));
@@ -143,8 +155,11 @@ void drawPlotsWindow(EditorState& state) {
         drawFresnelPlot(drawList, at, ImVec2(at.x + cell.x, at.y + cell.y), *plots.fresnel, plots.fresnelName);
     } else {
         drawList->AddRectFilled(at, ImVec2(at.x + cell.x, at.y + cell.y), IM_COL32(18, 20, 26, 235), 4.0f);
-        drawList->AddText(ImVec2(at.x + 6, at.y + 4), IM_COL32(225, 228, 235, 255),
-                          "Fresnel: no plotted material has an index n (+ iκ)");
+        const std::string why = noFresnelText(plots.plotted);
+        drawList->PushClipRect(at, ImVec2(at.x + cell.x, at.y + cell.y), true);
+        drawList->AddText(nullptr, 0.0f, ImVec2(at.x + 6, at.y + 4), IM_COL32(225, 228, 235, 255), why.c_str(), nullptr,
+                          cell.x - 12.0f);  // wrapped to the cell
+        drawList->PopClipRect();
     }
     ImGui::End();
 }

@@ -11,6 +11,7 @@
 namespace glint {
 
 struct EditorState;
+class BrdfSampler;
 
 struct PlotsWindowState {
     bool open = false;
@@ -27,6 +28,8 @@ struct PlotsWindowState {
     std::string fresnelName;
 };
 
-void drawPlotsWindow(EditorState& state);
+// `sampler` evaluates .brdf materials on the GPU, in the editor's GL context (current while ImGui
+// builds the frame).
+void drawPlotsWindow(EditorState& state, BrdfSampler& sampler);
 
 }  // namespace glint
