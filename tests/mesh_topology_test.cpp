@@ -1,5 +1,5 @@
 // Closed-mesh detection (geometry/mesh_topology.h) on the procedural shapes, open and broken
-// meshes, inside-out and two-sided ones; and the culling decisions built on it
+// meshes, inside-out and two-sided ones, welding by position; and the culling decisions built on it
 // (render/visibility.h): which faces a camera or a shadow map may skip, frustum rejection, and the
 // pixels a sphere may cover.
 #include <gtest/gtest.h>
@@ -27,8 +27,8 @@ Mesh merged(const Mesh& a, const Mesh& b) {
 }
 
 TEST(MeshTopology, ProceduralSolidsAreClosedAndTurnOutwards) {
-    // The cube's faces have their own corners and the sphere and torus a UV seam: welding
-    // joins them (the sphere's seam differs by float rounding of sin 2π).
+    // The cube's faces have their own corners and the sphere and torus a UV seam: welding joins
+    // them.
     EXPECT_EQ(meshClosure(makeCube({0, 0, 0}, 1.0f)), MeshClosure::ClosedOutward);
     EXPECT_EQ(meshClosure(makeUvSphere({1, 2, 3}, 0.5f, 32, 16)), MeshClosure::ClosedOutward);
     EXPECT_EQ(meshClosure(makeUvSphere({0, 0, 0}, 1.0f, 3, 2)), MeshClosure::ClosedOutward);
@@ -58,13 +58,23 @@ TEST(MeshTopology, InsideOutMeshesAndMixedOrientations) {
     EXPECT_EQ(meshClosure(merged(quad, reversed(quad))), MeshClosure::Open);
 }
 
-TEST(MeshTopology, WeldingJoinsPositionsWithinTheTolerance) {
+TEST(MeshTopology, WeldingJoinsEqualPositionsOnly) {
     Mesh mesh;
-    for (const glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1e-7f, 0, 0), glm::vec3(0.5f, 0, 0),
-                              glm::vec3(1.0f - 2e-7f, 1e-7f, 0)})
+    for (const glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(-0.0f, 0, 0), glm::vec3(1e-7f, 0, 0),
+                              glm::vec3(1, 0, 0)})
         mesh.vertices.push_back({p, {0, 0, 1}, {0, 0}, {1, 0, 0}});
-    EXPECT_EQ(weldPositions(mesh, 1e-6f), (std::vector<uint32_t>{0, 1, 0, 3, 1}));
-    EXPECT_EQ(weldPositions(mesh, 1e-8f), (std::vector<uint32_t>{0, 1, 2, 3, 4}));
+    EXPECT_EQ(weldPositions(mesh), (std::vector<uint32_t>{0, 1, 0, 3, 1}));
+}
+
+// The seams of the procedural shapes are exact: a seam 10⁻⁷ apart would leave the sphere open.
+TEST(MeshTopology, ProceduralSeamsShareTheirPositions) {
+    const Mesh sphere = makeUvSphere({0, 0, 0}, 1.0f, 16, 8);
+    const std::vector<uint32_t> welded = weldPositions(sphere);
+    for (int ring = 0; ring <= 8; ++ring) EXPECT_EQ(welded[ring * 17 + 16], welded[ring * 17]) << "ring " << ring;
+    for (int segment = 1; segment <= 16; ++segment) {
+        EXPECT_EQ(welded[segment], welded[0]);            // the north pole
+        EXPECT_EQ(welded[8 * 17 + segment], welded[8 * 17]);  // the south pole
+    }
 }
 
 TEST(Visibility, BackFacesAreCulledOnlyOnClosedMeshesSeenFromOutside) {

@@ -13,14 +13,18 @@ Mesh makeUvSphere(glm::vec3 center, float radius, int segments, int rings) {
     GLINT_CHECK(segments >= 3 && rings >= 2 && radius > 0.0f);
     Mesh mesh;
     mesh.vertices.reserve(static_cast<size_t>(segments + 1) * (rings + 1));
+    // The seam (u = 1) and the poles take the exact coordinates of u = 0 and of the axis, so that
+    // every copy of a position is equal (sin 2π and sin π are not 0 in floats); mesh_topology.h
+    // welds vertices by equal positions.
     for (int ring = 0; ring <= rings; ++ring) {
         const float v = static_cast<float>(ring) / rings;
         const float polar = v * kPi;  // 0 at +y
+        const float sinPolar = ring == 0 || ring == rings ? 0.0f : std::sin(polar);
+        const float cosPolar = ring == 0 ? 1.0f : ring == rings ? -1.0f : std::cos(polar);
         for (int segment = 0; segment <= segments; ++segment) {
             const float u = static_cast<float>(segment) / segments;
-            const float azimuth = u * 2.0f * kPi;
-            const glm::vec3 normal{std::sin(polar) * std::cos(azimuth), std::cos(polar),
-                                   -std::sin(polar) * std::sin(azimuth)};
+            const float azimuth = segment == segments ? 0.0f : u * 2.0f * kPi;
+            const glm::vec3 normal{sinPolar * std::cos(azimuth), cosPolar, -sinPolar * std::sin(azimuth)};
             const glm::vec3 tangent{-std::sin(azimuth), 0.0f, -std::cos(azimuth)};
             mesh.vertices.push_back({center + radius * normal, normal, {u, 1.0f - v}, tangent});
         }
@@ -75,12 +79,13 @@ Mesh makeTorus(glm::vec3 center, float majorRadius, float minorRadius, int segme
     GLINT_CHECK(segments >= 3 && rings >= 3 && majorRadius > 0.0f && minorRadius > 0.0f);
     Mesh mesh;
     mesh.vertices.reserve(static_cast<size_t>(segments + 1) * (rings + 1));
+    // Both seams (u = 1, v = 1) take the exact coordinates of u = 0 and v = 0, as the sphere's.
     for (int ring = 0; ring <= rings; ++ring) {
         const float v = static_cast<float>(ring) / rings;
-        const float tubeAngle = v * 2.0f * kPi;
+        const float tubeAngle = ring == rings ? 0.0f : v * 2.0f * kPi;
         for (int segment = 0; segment <= segments; ++segment) {
             const float u = static_cast<float>(segment) / segments;
-            const float azimuth = u * 2.0f * kPi;
+            const float azimuth = segment == segments ? 0.0f : u * 2.0f * kPi;
             const glm::vec3 radial{std::cos(azimuth), 0.0f, -std::sin(azimuth)};
             const glm::vec3 normal = std::cos(tubeAngle) * radial + glm::vec3(0.0f, std::sin(tubeAngle), 0.0f);
             const glm::vec3 tangent{-std::sin(azimuth), 0.0f, -std::cos(azimuth)};

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/cell_table.h"
+#include "geometry/weld_table.h"
 #include "math/frame.h"
 #include "util/diagnostic.h"
 
@@ -41,8 +41,14 @@ Grid gridOver(const Mesh& mesh, int cellsPerAxis) {
 
 // --- clustering -------------------------------------------------------------------------------
 
-// Dense cell and triangle indices are packed three to a 64-bit key, 21 bits each.
+// Cell coordinates and dense cell indices are packed three to a 64-bit key, 21 bits each.
 constexpr uint32_t kMaxCells = (1u << 21) - 1;
+constexpr uint32_t kAbsent = ~0u;
+
+uint64_t hashKey(uint64_t key) {
+    const uint32_t words[2] = {static_cast<uint32_t>(key), static_cast<uint32_t>(key >> 32)};
+    return hashWords(words, 2);
+}
 
 struct Clustering {
     Grid grid;
@@ -60,26 +66,36 @@ Clustering cluster(const Mesh& mesh, int cellsPerAxis, size_t budget) {
     Clustering result;
     result.grid = gridOver(mesh, cellsPerAxis);
     result.cellOfVertex.resize(mesh.vertices.size());
-    CellTable cellIndex(mesh.vertices.size());
+    std::vector<uint64_t> keyOfCell;  // per dense cell index: its packed coordinates
+    WeldTable cells(mesh.vertices.size() / 4);
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         const glm::ivec3 cell = result.grid.cellOf(mesh.vertices[v].position);
         const uint64_t key = static_cast<uint64_t>(cell.x) | static_cast<uint64_t>(cell.y) << 21 | static_cast<uint64_t>(cell.z) << 42;
-        const uint32_t index = cellIndex.findOrInsert(key, result.cellCount);
-        if (index == result.cellCount && ++result.cellCount > kMaxCells) {
-            result.estimatedTriangles = ~size_t{0};  // far too fine a grid for any budget
-            return result;
+        const auto candidate = static_cast<uint32_t>(keyOfCell.size());
+        const uint32_t index = cells.findOrAdd(hashKey(key), candidate, [&](uint32_t stored) { return keyOfCell[stored] == key; });
+        if (index == candidate) {
+            if (candidate == kMaxCells) {
+                result.estimatedTriangles = ~size_t{0};  // far too fine a grid for any budget
+                return result;
+            }
+            keyOfCell.push_back(key);
         }
         result.cellOfVertex[v] = index;
     }
+    result.cellCount = static_cast<uint32_t>(keyOfCell.size());
     const size_t triangleCount = mesh.triangleCount();
-    CellTable seen(std::min(triangleCount, 2 * budget + 2));
+    std::vector<uint64_t> keyOfKept;  // per kept triangle: its cell triple, smallest first
+    WeldTable seen(std::min(triangleCount, budget + 1));
     for (size_t t = 0; t < triangleCount; ++t) {
-        uint64_t cells[3];
-        for (int k = 0; k < 3; ++k) cells[k] = result.cellOfVertex[mesh.indices[3 * t + k]];
-        if (cells[0] == cells[1] || cells[1] == cells[2] || cells[2] == cells[0]) continue;
-        const int first = cells[0] < cells[1] ? (cells[0] < cells[2] ? 0 : 2) : (cells[1] < cells[2] ? 1 : 2);
-        const uint64_t key = cells[first] | cells[(first + 1) % 3] << 21 | cells[(first + 2) % 3] << 42;
-        if (seen.findOrInsert(key, static_cast<uint32_t>(t)) != t) continue;
+        uint64_t corner[3];
+        for (int k = 0; k < 3; ++k) corner[k] = result.cellOfVertex[mesh.indices[3 * t + k]];
+        if (corner[0] == corner[1] || corner[1] == corner[2] || corner[2] == corner[0]) continue;
+        const int first = corner[0] < corner[1] ? (corner[0] < corner[2] ? 0 : 2) : (corner[1] < corner[2] ? 1 : 2);
+        const uint64_t key = corner[first] | corner[(first + 1) % 3] << 21 | corner[(first + 2) % 3] << 42;
+        const auto candidate = static_cast<uint32_t>(keyOfKept.size());
+        if (seen.findOrAdd(hashKey(key), candidate, [&](uint32_t stored) { return keyOfKept[stored] == key; }) != candidate)
+            continue;
+        keyOfKept.push_back(key);
         result.keptTriangles.push_back(static_cast<uint32_t>(t));
         if (result.keptTriangles.size() > budget) {
             result.estimatedTriangles = result.keptTriangles.size() * triangleCount / (t + 1);
@@ -180,17 +196,17 @@ glm::vec3 normalisedOr(glm::vec3 v, glm::vec3 fallback) {
 }
 
 std::vector<uint32_t> sidesOfVertices(const Mesh& mesh, const Clustering& clustering, std::vector<Side>& sides) {
-    std::vector<uint32_t> firstSide(clustering.cellCount, CellTable::kAbsent);
+    std::vector<uint32_t> firstSide(clustering.cellCount, kAbsent);
     std::vector<uint32_t> sideOfVertex(mesh.vertices.size());
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         const Vertex& vertex = mesh.vertices[v];
         const uint32_t cell = clustering.cellOfVertex[v];
         const glm::vec3 normal = normalisedOr(vertex.normal, glm::vec3(0.0f));
         uint32_t side = firstSide[cell];
-        while (side != CellTable::kAbsent && (glm::dot(sides[side].seedNormal, normal) < kSameSideCosine ||
+        while (side != kAbsent && (glm::dot(sides[side].seedNormal, normal) < kSameSideCosine ||
                                                glm::length(sides[side].seedUv - vertex.uv) > kSameSideUvDistance))
             side = sides[side].nextInCell;
-        if (side == CellTable::kAbsent) {
+        if (side == kAbsent) {
             side = static_cast<uint32_t>(sides.size());
             sides.push_back({cell, firstSide[cell], normal, vertex.uv});
             firstSide[cell] = side;
@@ -209,13 +225,13 @@ Mesh buildProxy(const Mesh& mesh, const Clustering& clustering) {
     const std::vector<glm::vec3> positions = cellPositions(mesh, clustering);
     std::vector<Side> sides;
     const std::vector<uint32_t> sideOfVertex = sidesOfVertices(mesh, clustering, sides);
-    std::vector<uint32_t> outputOfSide(sides.size(), CellTable::kAbsent);
+    std::vector<uint32_t> outputOfSide(sides.size(), kAbsent);
     Mesh proxy;
     proxy.indices.reserve(3 * clustering.keptTriangles.size());
     for (const uint32_t t : clustering.keptTriangles) {
         for (int k = 0; k < 3; ++k) {
             const uint32_t side = sideOfVertex[mesh.indices[3 * t + k]];
-            if (outputOfSide[side] == CellTable::kAbsent) {
+            if (outputOfSide[side] == kAbsent) {
                 const Side& entry = sides[side];
                 const glm::vec3 normal = normalisedOr(entry.normalSum, glm::vec3(0.0f, 0.0f, 1.0f));
                 const glm::vec3 tangent = ShadingFrame::fromNormalAndTangent(normal, entry.tangentSum).tangent;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "geometry/cell_table.h"
+#include "geometry/weld_table.h"
 #include "util/diagnostic.h"
 
 namespace glint {
@@ -27,55 +27,18 @@ Box boundsOf(const Mesh& mesh) {
     return box;
 }
 
-// A grid cell (each index < 2^21) packed into one key.
-uint64_t cellKey(glm::i64vec3 cell) {
-    return static_cast<uint64_t>(cell.x) | static_cast<uint64_t>(cell.y) << 21 | static_cast<uint64_t>(cell.z) << 42;
-}
-
 }  // namespace
 
 // --- welding ----------------------------------------------------------------------------------
 
-// Each position goes into a grid of cells 16 tolerances wide (offset by one, so that every
-// neighbour index is ≥ 0), chained per cell; a vertex looks for an earlier one within the
-// tolerance in its own cell and, on each axis where it lies within a tolerance of the cell's
-// side, the neighbour across it: about 1.4 cells per vertex.
-std::vector<uint32_t> weldPositions(const Mesh& mesh, float tolerance) {
-    GLINT_CHECK(tolerance > 0.0f);
-    constexpr float kCellsPerTolerance = 16.0f;
-    const Box box = boundsOf(mesh);
-    // Within 2^21 cells per axis: a coarser grid (the same tolerance) for a huge extent.
-    const float extent = std::max({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z});
-    const float cellSize = std::max(kCellsPerTolerance * tolerance, extent / static_cast<float>((1 << 21) - 4));
+std::vector<uint32_t> weldPositions(const Mesh& mesh) {
     std::vector<uint32_t> welded(mesh.vertices.size());
-    std::vector<uint32_t> nextInCell(mesh.vertices.size(), CellTable::kAbsent);
-    CellTable firstInCell(mesh.vertices.size());
+    WeldTable firstAt(mesh.vertices.size());
     for (size_t i = 0; i < mesh.vertices.size(); ++i) {
         const glm::vec3 position = mesh.vertices[i].position;
-        const glm::vec3 scaled = (position - box.min) / cellSize + 1.0f;
-        const glm::i64vec3 cell(glm::floor(scaled));
-        const glm::vec3 fraction = (scaled - glm::vec3(cell)) * cellSize;  // [mesh units] from the cell's low sides
-        const glm::ivec3 low(glm::lessThan(fraction, glm::vec3(tolerance)));
-        const glm::ivec3 high(glm::greaterThan(fraction, glm::vec3(cellSize - tolerance)));
-        uint32_t match = CellTable::kAbsent;
-        for (int dz = -low.z; dz <= high.z && match == CellTable::kAbsent; ++dz)
-            for (int dy = -low.y; dy <= high.y && match == CellTable::kAbsent; ++dy)
-                for (int dx = -low.x; dx <= high.x && match == CellTable::kAbsent; ++dx)
-                    for (uint32_t candidate = firstInCell.find(cellKey(cell + glm::i64vec3(dx, dy, dz)));
-                         candidate != CellTable::kAbsent; candidate = nextInCell[candidate]) {
-                        const glm::vec3 offset = glm::abs(mesh.vertices[candidate].position - position);
-                        if (std::max({offset.x, offset.y, offset.z}) <= tolerance) {
-                            match = candidate;
-                            break;
-                        }
-                    }
-        welded[i] = match != CellTable::kAbsent ? match : static_cast<uint32_t>(i);
-        if (match != CellTable::kAbsent) continue;
-        const uint32_t first = firstInCell.findOrInsert(cellKey(cell), static_cast<uint32_t>(i));
-        if (first != i) {  // chain it second in its cell
-            nextInCell[i] = nextInCell[first];
-            nextInCell[first] = static_cast<uint32_t>(i);
-        }
+        const uint32_t key[3] = {floatKey(position.x), floatKey(position.y), floatKey(position.z)};
+        welded[i] = firstAt.findOrAdd(hashWords(key, 3), static_cast<uint32_t>(i),
+                                      [&](uint32_t stored) { return mesh.vertices[stored].position == position; });
     }
     return welded;
 }
@@ -165,9 +128,7 @@ MeshClosure meshClosure(const Mesh& mesh) {
     GLINT_CHECK(mesh.vertices.size() < (1u << 31));
     if (mesh.indices.empty()) return MeshClosure::Open;
     const Box box = boundsOf(mesh);
-    const float diagonal = glm::length(box.max - box.min);
-    if (!(diagonal > 0.0f)) return MeshClosure::Open;
-    const std::vector<uint32_t> welded = weldPositions(mesh, 1e-5f * diagonal);
+    const std::vector<uint32_t> welded = weldPositions(mesh);
     if (!everyEdgeHasTwoOppositeTriangles(mesh.indices, welded)) return MeshClosure::Open;
     return orientationOfParts(mesh, welded, 0.5f * (box.min + box.max));
 }

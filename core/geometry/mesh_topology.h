@@ -18,12 +18,13 @@ enum class MeshClosure {
     ClosedInward,   // closed, every part turned inside out (negative volume)
 };
 
-// The closure of `mesh` (positions welded within 1e-5 of its bounding-box diagonal). Linear in
-// the triangles but for one sort of the edges: about 0.1 s for a million triangles.
+// The closure of `mesh`, its vertices welded by position. Linear in the triangles: about 0.1 s
+// for a million triangles.
 MeshClosure meshClosure(const Mesh& mesh);
 
-// Per vertex, the index of the first vertex whose position is within `tolerance` on every axis
-// (itself when none came before): the welded vertex ids. `tolerance` > 0, in mesh units.
-std::vector<uint32_t> weldPositions(const Mesh& mesh, float tolerance);
+// Per vertex, the index of the first vertex at exactly the same position (−0 = +0; itself when
+// none came before): the welded vertex ids. The importer (mesh_builder.h) and the procedural
+// shapes give every copy of a position (at a crease, a UV seam) the same coordinates.
+std::vector<uint32_t> weldPositions(const Mesh& mesh);
 
 }  // namespace glint
