@@ -139,6 +139,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     if (!openPath.empty()) openDroppedFile(state, openPath);  // `glint FILE`: as File ▸ Open
     startRecovery(state);
+    // The first autosave comes one interval after start, not at the first edit.
+    state.lastAutosaveSeconds = glfwGetTime();
     const double autosaveInterval = autosaveIntervalSeconds();
     // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
     const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;

@@ -94,6 +94,8 @@ void drawRecoveryOffer(EditorState& state) {
         state.selectedLight = 0;
         state.statusMessage = "Recovered unsaved work: save it to keep it";
         state.recoveryOffer.clear();
+        // The file holds this editor's unsaved work now: autosave updates it, a clean exit removes it.
+        state.wroteRecovery = true;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
