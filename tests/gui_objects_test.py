@@ -33,7 +33,7 @@ def triangle_counts(log):
 def slow_click(x, position, hold_seconds=0.6):
     """A click held for longer than a frame (frames take up to ~0.5 s on llvmpipe), so that ImGui
     sees the hover, the press and the release in separate frames."""
-    x.run("xdotool", "mousemove", "--sync", str(position[0]), str(position[1]))
+    x.move(*position)
     time.sleep(0.4)
     x.run("xdotool", "mousedown", "1")
     time.sleep(hold_seconds)
@@ -53,7 +53,7 @@ def add_from_menu(x, kind, selected_material):
 
 def park_mouse(x):
     """Moves the pointer to an empty spot of the material column, so no tooltip covers the viewport."""
-    x.run("xdotool", "mousemove", "--sync", "1100", "740")
+    x.move(1100, 740)
 
 
 def start(x, glint, output, state):

@@ -28,7 +28,7 @@ def scenario_probe(x, glint, output, state):
     editor = Editor(x, glint, output, state)
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
-        x.run("xdotool", "mousemove", "--sync", str(PROBE_POINT[0]), str(PROBE_POINT[1]))
+        x.move(*PROBE_POINT)
         time.sleep(0.3)
         x.run("xdotool", "keydown", "shift")
         time.sleep(0.3)  # a frame that sees Shift held before the press
@@ -39,7 +39,7 @@ def scenario_probe(x, glint, output, state):
                             probe_pixels(shot, PROBE_LIGHT, PROBE_POINT) > 10,
                             "Shift+click to draw the probe's N (white) and L (yellow) arrows on the sphere")
         save(probed, output, "probe_1_on")
-        x.run("xdotool", "mousemove", "--sync", "1100", "600")
+        x.move(1100, 600)
         x.key("i")
         x.wait_for(matches(base), "I to hide the probe (and the click must not have moved the camera)")
         x.key("i")  # armed: the next plain click sets the point

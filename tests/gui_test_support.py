@@ -45,20 +45,28 @@ class XServer:
 
     # --- real input through xdotool ------------------------------------------------------------
 
+    def move(self, x, y):
+        """Moves the pointer to (x, y) and waits until it is there. A --sync move to where the
+        pointer already is would wait for motion that never comes (until xdotool gives up)."""
+        here = self.run("xdotool", "getmouselocation", "--shell").stdout.split()
+        if f"X={int(x)}" in here and f"Y={int(y)}" in here:
+            return
+        self.run("xdotool", "mousemove", "--sync", str(int(x)), str(int(y)))
+
     def click(self, x, y, button=1):
-        self.run("xdotool", "mousemove", "--sync", str(x), str(y))
+        self.move(x, y)
         time.sleep(0.05)
         self.run("xdotool", "click", str(button))
 
     def drag(self, start, end, button=1, steps=12, step_seconds=0.03):
         """Presses at start, moves in steps (the application sees motion events), releases at end."""
-        self.run("xdotool", "mousemove", "--sync", str(start[0]), str(start[1]))
+        self.move(*start)
         time.sleep(0.1)
         self.run("xdotool", "mousedown", str(button))
         for i in range(1, steps + 1):
             x = start[0] + (end[0] - start[0]) * i // steps
             y = start[1] + (end[1] - start[1]) * i // steps
-            self.run("xdotool", "mousemove", "--sync", str(x), str(y))
+            self.move(x, y)
             time.sleep(step_seconds)
         time.sleep(0.1)
         self.run("xdotool", "mouseup", str(button))
