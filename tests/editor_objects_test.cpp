@@ -120,6 +120,45 @@ TEST(EditorMeshLoad, AMeshFileBecomesAnObjectInOneUndoStep) {
     EXPECT_EQ(state.session.scene().objects.size(), objects);
 }
 
+TEST(EditorMeshLoad, AnObjGetsTheMaterialItsMtlLibraryNames) {
+    writeFile("paints.mtl", "newmtl paint\nKd 0.8 0.1 0.1\nillum 1\n\nnewmtl other\nKd 0 0 1\nillum 1\n");
+    const std::string path = writeFile("painted.obj",
+                                       "mtllib paints.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl paint\n"
+                                       "f 1 3 2\nf 1 2 4\nf 1 4 3\nusemtl other\nf 2 3 4\n");
+    EditorState state;
+    startMeshLoad(state, path);
+    waitForMeshLoad(state);
+    state.session.settle(false);
+    const Scene& scene = state.session.scene();
+    const Material& material = scene.materials.at(scene.objects.back().materialIndex);
+    EXPECT_EQ(material.name, "paint");
+    EXPECT_NEAR(material.values[0], 0.8f, 1e-6f);
+    EXPECT_NEAR(material.values[1], 0.1f, 1e-6f);
+    EXPECT_NEAR(material.values[2], 0.1f, 1e-6f);
+    // One material per Glint mesh: the second is named in the status line, at the first usemtl.
+    EXPECT_NE(state.statusMessage.find("painted.obj:6: the file uses 2 materials"), std::string::npos)
+        << state.statusMessage;
+}
+
+TEST(EditorMeshLoad, AnObjWhoseMtlLibraryIsMissingLoadsWithTheDefaultMaterialAndSaysWhy) {
+    const std::string path = writeFile("unpainted.obj", "mtllib missing.mtl\nusemtl paint\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EditorState state;
+    const size_t objects = state.session.scene().objects.size();
+    startMeshLoad(state, path);
+    waitForMeshLoad(state);
+    state.session.settle(false);
+    EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    const Scene& scene = state.session.scene();
+    ASSERT_EQ(scene.objects.size(), objects + 1);
+    const Material& material = scene.materials.at(scene.objects.back().materialIndex);
+    EXPECT_EQ(material.model, BrdfModel::Lambert);
+    EXPECT_EQ(material.name, "unpainted material");
+    EXPECT_NE(state.statusMessage.find("unpainted.obj:1: material library 'missing.mtl' not used"), std::string::npos)
+        << state.statusMessage;
+    EXPECT_NE(state.statusMessage.find("unpainted.obj:2: 'usemtl paint': no such material"), std::string::npos)
+        << state.statusMessage;
+}
+
 TEST(EditorMeshLoad, ACorruptMeshShowsFileAndLineAndLeavesTheSceneAsItWas) {
     const std::string path = writeFile("corrupt.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
     EditorState state;

@@ -13,9 +13,12 @@ MeshLoadJob::MeshLoadJob(std::string path) : path_(std::move(path)) {
             progress_.store(fraction);
             return !cancelRequested_.load();
         });
+        ObjMaterial material;
+        if (imported) material = readObjMaterial(path_);  // an .obj's mtllib and usemtl
         {
             std::lock_guard lock(resultMutex_);
             result_.emplace(std::move(imported));
+            material_ = std::move(material);
         }
         finished_.store(true);
     });
@@ -33,6 +36,11 @@ std::optional<Result<ImportedMesh>> MeshLoadJob::takeResult() {
     return taken;
 }
 
+ObjMaterial MeshLoadJob::takeMaterial() {
+    std::lock_guard lock(resultMutex_);
+    return std::move(material_);
+}
+
 void startMeshLoad(EditorState& state, const std::string& path) {
     if (state.meshLoad) {
         state.statusMessage = "Still loading " + state.meshLoad->path() + "; wait or cancel first";
@@ -46,22 +54,27 @@ bool pollMeshLoad(EditorState& state) {
     if (!state.meshLoad->finished()) return true;
     const std::string path = state.meshLoad->path();
     auto result = state.meshLoad->takeResult();
+    ObjMaterial material = state.meshLoad->takeMaterial();
     state.meshLoad.reset();
     if (!result) return false;
-    if (result->ok()) addMeshObject(state, path, std::move(**result));
+    if (result->ok()) addMeshObject(state, path, std::move(**result), std::move(material));
     else if (isImportCancellation(result->error())) state.statusMessage = "Cancelled loading " + path;
     else state.errorMessage = "Could not load the mesh; the scene is unchanged.\n\n" + result->error().format();
     return false;
 }
 
-void addMeshObject(EditorState& state, const std::string& path, ImportedMesh imported) {
+void addMeshObject(EditorState& state, const std::string& path, ImportedMesh imported, ObjMaterial material) {
     MeshShape shape;
     shape.path = path;
     shape.resolvedPath = path;
     shape.mesh = std::move(imported.mesh);
     shape.statistics = imported.statistics;
-    addObjectWithShape(state, std::filesystem::path(path).stem().string(), std::move(shape));
-    state.statusMessage = "Loaded " + path;
+    std::optional<Material> named;
+    if (material.material) named = std::move(material.material->material);
+    const std::string loaded = "Loaded " + path + (named ? " with its material '" + named->name + "'" : "");
+    addObjectWithShape(state, std::filesystem::path(path).stem().string(), std::move(shape), std::move(named));
+    state.statusMessage = loaded;
+    for (const Diagnostic& warning : material.warnings) state.statusMessage += "; " + warning.format();
 }
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 // Loading a mesh file into the editor's scene on a worker thread: the job reports progress and
-// can be cancelled; when it finishes the frame loop adds a mesh object in one undo step, or shows
-// the error (file and line) and leaves the scene exactly as it was. Drawing the progress modal
+// can be cancelled; when it finishes the frame loop adds a mesh object in one undo step (with the
+// material an .obj names through its .mtl library, else a Lambert one), or shows the error (file
+// and line) and leaves the scene exactly as it was. Drawing the progress modal
 // lives in panels/mesh_load_dialog.cpp; importing itself in core/geometry/mesh_import.h.
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include "editor/editor_state.h"
 #include "geometry/mesh_import.h"
+#include "interchange/obj_material.h"
 
 namespace glint {
 
@@ -29,8 +31,9 @@ public:
     void cancel() { cancelRequested_.store(true); }
     bool cancelRequested() const { return cancelRequested_.load(); }
     bool finished() const { return finished_.load(); }
-    // The import's outcome once finished() (taken once).
+    // The import's outcome once finished() (taken once), and the material an .obj names.
     std::optional<Result<ImportedMesh>> takeResult();
+    ObjMaterial takeMaterial();
 
 private:
     std::string path_;
@@ -39,6 +42,7 @@ private:
     std::atomic<bool> finished_{false};
     std::mutex resultMutex_;
     std::optional<Result<ImportedMesh>> result_;
+    ObjMaterial material_;
     std::thread thread_;
 };
 
@@ -47,7 +51,8 @@ void startMeshLoad(EditorState& state, const std::string& path);
 // Each frame: when the job has finished, adds the mesh object (success), notes the cancel, or
 // shows the error. Returns true while a load is still running (the loop keeps drawing frames).
 bool pollMeshLoad(EditorState& state);
-// Adds an imported mesh as a new object with its own material, selected; one undo step.
-void addMeshObject(EditorState& state, const std::string& path, ImportedMesh imported);
+// Adds an imported mesh as a new object with its own material (the .obj's, when it names one
+// Glint could read; its warnings go to the status line), selected; one undo step.
+void addMeshObject(EditorState& state, const std::string& path, ImportedMesh imported, ObjMaterial material = {});
 
 }  // namespace glint

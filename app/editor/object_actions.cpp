@@ -65,14 +65,14 @@ void addObject(EditorState& state, ObjectKind kind) {
     addObjectWithShape(state, base, defaultShape(kind));
 }
 
-void addObjectWithShape(EditorState& state, const std::string& baseName, Shape shape) {
+void addObjectWithShape(EditorState& state, const std::string& baseName, Shape shape, std::optional<Material> material) {
     const Camera& camera = state.session.scene().camera;
     const glm::vec3 forward = glm::normalize(camera.target - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
     shapeCenter(shape) = camera.target + kNewObjectOffset * right;
     Scene& scene = state.session.change("Add " + baseName);
     const std::string name = uniqueObjectName(scene, baseName);
-    scene.materials.push_back(Material::withDefaults(name + " material", BrdfModel::Lambert));
+    scene.materials.push_back(material ? std::move(*material) : Material::withDefaults(name + " material", BrdfModel::Lambert));
     SceneObject object{name, std::move(shape), static_cast<int>(scene.materials.size()) - 1};
     object.interpolation = defaultInterpolation(object.shape);
     scene.objects.push_back(std::move(object));

@@ -3,6 +3,7 @@
 // get their own default material and become the selection. No drawing here (panels/object_panel.cpp).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "editor/editor_state.h"
@@ -18,9 +19,11 @@ const char* shapeLabel(const Shape& shape);
 // Adds an object of `kind` in front of the camera (at its target, offset to the right so it
 // does not sit inside what is already there), with a new Lambert material.
 void addObject(EditorState& state, ObjectKind kind);
-// The same for a given shape (a loaded mesh); `baseName` gets a number when taken. The shape's
-// centre is replaced by the new object's place; its interpolation is the shape's default.
-void addObjectWithShape(EditorState& state, const std::string& baseName, Shape shape);
+// The same for a given shape (a loaded mesh), with `material` where given (an .obj's own) instead
+// of a Lambert one; `baseName` gets a number when taken. The shape's centre is replaced by the new
+// object's place; its interpolation is the shape's default.
+void addObjectWithShape(EditorState& state, const std::string& baseName, Shape shape,
+                        std::optional<Material> material = std::nullopt);
 // Copies the object and its material beside the original; false when the index is out of range.
 bool duplicateObject(EditorState& state, int objectIndex);
 // Removes the object (its material stays in the scene's list); false when out of range.

@@ -25,6 +25,7 @@
 #include <assimp/scene.h>
 
 #include "geometry/mesh_builder.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -321,13 +322,6 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
     } catch (const std::exception& error) {
         return importError(name, error.what());
     }
-}
-
-std::string lowerExtension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    if (!extension.empty()) extension.erase(0, 1);
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension;
 }
 
 }  // namespace

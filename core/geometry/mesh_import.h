@@ -1,4 +1,4 @@
-// Mesh import through assimp: OBJ (+MTL, whose materials are ignored), PLY, STL, glTF 2.0
+// Mesh import through assimp: OBJ (its .mtl materials: interchange/obj_material.h), PLY, STL, glTF 2.0
 // (.gltf, .glb) and FBX, merged into one indexed triangle Mesh centred and scaled into the unit
 // sphere, with statistics. It loads geometry only (no materials, textures, animation, cameras).
 #pragma once

@@ -1,8 +1,11 @@
-// Small text helpers shared by Glint's line-based parsers (.brdf, .bparam, .mtl). Nothing here
-// knows any file format.
+// Small text helpers shared by Glint's line-based parsers (.brdf, .bparam, .mtl, .obj) and its
+// file-type checks. Nothing here knows any file format.
 #pragma once
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace glint {
@@ -12,6 +15,15 @@ inline std::string_view trimmed(std::string_view text) {
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
     return text;
+}
+
+// A path's extension without the dot, in lower case: "obj" for "Cow.OBJ"; empty when it has none.
+inline std::string lowerExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    if (!extension.empty()) extension.erase(0, 1);
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
 }
 
 }  // namespace glint

@@ -1,0 +1,87 @@
+// An .obj file's `mtllib` and `usemtl` statements (see obj_material.h).
+#include "interchange/obj_material.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "interchange/mtl.h"
+#include "util/file_io.h"
+#include "util/text.h"
+
+namespace glint {
+namespace {
+
+struct MaterialStatements {
+    std::vector<std::pair<std::string, int>> libraries;  // file name as written, its line
+    std::string firstUsed;
+    int firstUsedLine = 0;
+    std::vector<std::string> used;  // distinct names, in order of first use
+};
+
+// The text after `keyword` on a line that starts with it (leading blanks allowed), trimmed; or
+// nothing when the line is another statement.
+std::optional<std::string> statementArgument(std::string_view line, std::string_view keyword) {
+    line = trimmed(line);
+    if (!line.starts_with(keyword)) return std::nullopt;
+    line.remove_prefix(keyword.size());
+    if (!line.empty() && line.front() != ' ' && line.front() != '\t') return std::nullopt;
+    return std::string(trimmed(line));
+}
+
+MaterialStatements scanStatements(const std::string& text) {
+    MaterialStatements found;
+    std::istringstream lines(text);
+    std::string line;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        if (line.empty() || line[0] == 'v' || line[0] == 'f') continue;  // most lines of a big mesh
+        if (auto library = statementArgument(line, "mtllib"); library && !library->empty()) {
+            found.libraries.emplace_back(*library, number);
+        } else if (auto name = statementArgument(line, "usemtl"); name && !name->empty()) {
+            if (found.firstUsed.empty()) found.firstUsed = *name, found.firstUsedLine = number;
+            if (std::find(found.used.begin(), found.used.end(), *name) == found.used.end()) found.used.push_back(*name);
+        }
+    }
+    return found;
+}
+
+}  // namespace
+
+ObjMaterial readObjMaterial(const std::string& objPath) {
+    ObjMaterial result;
+    if (lowerExtension(objPath) != "obj") return result;
+    auto text = readTextFile(objPath);
+    if (!text) return result;  // the mesh importer reports an unreadable file
+    const MaterialStatements statements = scanStatements(*text);
+    if (statements.firstUsed.empty()) return result;  // faces without a material: Glint's default
+    const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
+    for (const auto& [library, line] : statements.libraries) {
+        // One name per statement here (names with spaces are common; several libraries on one
+        // line are rare).
+        auto loaded = loadMtl((folder / library).string());
+        if (!loaded) {
+            result.warnings.push_back(makeError("material library '" + library + "' not used: " + loaded.error().format(),
+                                                {objPath, line, 0}));
+            continue;
+        }
+        for (ImportedMaterial& material : loaded->materials) {
+            if (material.material.name != statements.firstUsed || result.material) continue;
+            result.material = std::move(material);
+            result.warnings.insert(result.warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
+        }
+    }
+    const SourceLocation used{objPath, statements.firstUsedLine, 0};
+    if (!result.material) {
+        result.warnings.push_back(makeError("'usemtl " + statements.firstUsed +
+                                                "': no such material in the file's libraries; the mesh gets Glint's default",
+                                            used));
+    } else if (statements.used.size() > 1) {
+        result.warnings.push_back(makeError("the file uses " + std::to_string(statements.used.size()) +
+                                                " materials; a Glint mesh has one: '" + statements.firstUsed +
+                                                "', the first, covers it all",
+                                            used));
+    }
+    return result;
+}
+
+}  // namespace glint
