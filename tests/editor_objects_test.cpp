@@ -93,6 +93,13 @@ void waitForMeshLoad(EditorState& state) {
     ASSERT_FALSE(state.meshLoad) << "the mesh load did not finish";
 }
 
+// Loads a mesh file the way the editor does and closes the undo step, as the frame loop would.
+void loadMeshAndSettle(EditorState& state, const std::string& path) {
+    startMeshLoad(state, path);
+    waitForMeshLoad(state);
+    state.session.settle(false);
+}
+
 std::string writeFile(const std::string& name, const std::string& text) {
     const std::string path = test::outputDirectory("editor_objects") + "/" + name;
     std::ofstream(path) << text;
@@ -104,9 +111,7 @@ TEST(EditorMeshLoad, AMeshFileBecomesAnObjectInOneUndoStep) {
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
     EditorState state;
     const size_t objects = state.session.scene().objects.size();
-    startMeshLoad(state, path);
-    waitForMeshLoad(state);
-    state.session.settle(false);
+    loadMeshAndSettle(state, path);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Scene& scene = state.session.scene();
     ASSERT_EQ(scene.objects.size(), objects + 1);
@@ -126,9 +131,7 @@ TEST(EditorMeshLoad, AnObjGetsTheMaterialItsMtlLibraryNames) {
                                        "mtllib paints.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl paint\n"
                                        "f 1 3 2\nf 1 2 4\nf 1 4 3\nusemtl other\nf 2 3 4\n");
     EditorState state;
-    startMeshLoad(state, path);
-    waitForMeshLoad(state);
-    state.session.settle(false);
+    loadMeshAndSettle(state, path);
     const Scene& scene = state.session.scene();
     const Material& material = scene.materials.at(scene.objects.back().materialIndex);
     EXPECT_EQ(material.name, "paint");
@@ -144,9 +147,7 @@ TEST(EditorMeshLoad, AnObjWhoseMtlLibraryIsMissingLoadsWithTheDefaultMaterialAnd
     const std::string path = writeFile("unpainted.obj", "mtllib missing.mtl\nusemtl paint\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     EditorState state;
     const size_t objects = state.session.scene().objects.size();
-    startMeshLoad(state, path);
-    waitForMeshLoad(state);
-    state.session.settle(false);
+    loadMeshAndSettle(state, path);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Scene& scene = state.session.scene();
     ASSERT_EQ(scene.objects.size(), objects + 1);
