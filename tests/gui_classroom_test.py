@@ -7,7 +7,6 @@ ctest entry:
 usage: gui_classroom_test.py GLINT OUTPUT_DIR SCENARIO"""
 import json
 import os
-import subprocess
 import sys
 import time
 
@@ -22,9 +21,7 @@ LESSONS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lesson
 
 def start_editor(x, glint, output, state):
     environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LESSONS=LESSONS)
-    process = subprocess.Popen([glint], env=environment, cwd=output, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True)
-    return process, x.find_window("Glint")
+    return x.start_editor([glint], environment, output)
 
 
 def window_title(x, window):

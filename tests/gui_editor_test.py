@@ -62,9 +62,7 @@ class Editor:
         self.x = x
         environment = dict(x.env, GLINT_STATE_DIR=state_dir, GLINT_GUI_FAILURE_DIR=output)
         environment.update(env or {})
-        self.process = subprocess.Popen([glint, *args], env=environment, cwd=output, stdout=subprocess.PIPE,
-                                        stderr=subprocess.STDOUT, text=True)
-        self.window = x.find_window("Glint")
+        self.process, self.window = x.start_editor([glint, *args], environment, output)
         self.log = ""
 
     def wait_exit(self, timeout=20):

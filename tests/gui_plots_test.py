@@ -4,7 +4,6 @@ checked in screenshots. Not a test of the plots' numbers (core_tests) or drawing
                 material's exponent slider changes the plots live; B closes it again
 usage: gui_plots_test.py GLINT OUTPUT_DIR SCENARIO"""
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -18,9 +17,7 @@ EXPONENT_SLIDER = (1018, 198)
 
 def plots_scenario_editor(x, glint, output, state):
     environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output)
-    process = subprocess.Popen([glint], env=environment, cwd=output, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True)
-    x.find_window("Glint")
+    process, _ = x.start_editor([glint], environment, output)
     return process
 
 

@@ -8,6 +8,10 @@ import time
 import zlib
 
 
+class EditorExited(RuntimeError):
+    """The editor process ended before its window appeared."""
+
+
 class XServer:
     """An Xvfb server on a free display number, stopped on exit."""
 
@@ -34,14 +38,31 @@ class XServer:
     def run(self, *args, check=True):
         return subprocess.run(list(args), env=self.env, check=check, capture_output=True, text=True)
 
-    def find_window(self, name, timeout=30.0):
+    def find_window(self, name, timeout=30.0, process=None):
+        """The id of the first window named `name`; raises EditorExited when `process` ends first."""
         deadline = time.time() + timeout
         while time.time() < deadline:
             found = self.run("xdotool", "search", "--name", name, check=False).stdout.split()
             if found:
                 return found[0]
+            if process is not None and process.poll() is not None:
+                raise EditorExited(f"exit status {process.returncode}; its output:\n{process.communicate()[0][-2000:]}")
             time.sleep(0.2)
         raise RuntimeError(f"no window named {name!r} appeared in {timeout} s")
+
+    def start_editor(self, command, env, cwd, attempts=2):
+        """Starts the editor (command = [glint, arguments…]) and waits for its window; returns
+        (process, window). An editor that cannot open a window renders headless and exits (seen
+        once in a while on a loaded machine): it is started once more, and what it printed is
+        shown either way."""
+        for attempt in range(1, attempts + 1):
+            process = subprocess.Popen(command, env=env, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                       text=True)
+            try:
+                return process, self.find_window("Glint", process=process)
+            except EditorExited as exited:
+                print(f"the editor exited before showing a window (attempt {attempt}): {exited}", flush=True)
+        raise RuntimeError(f"the editor did not open a window in {attempts} attempts")
 
     # --- real input through xdotool ------------------------------------------------------------
 
