@@ -14,9 +14,8 @@ namespace {
 
 struct MaterialStatements {
     std::vector<std::pair<std::string, int>> libraries;  // file name as written, its line
-    std::string firstUsed;
-    int firstUsedLine = 0;
     std::vector<std::string> used;  // distinct names, in order of first use
+    int firstUsedLine = 0;          // of used.front()
 };
 
 // The text after `keyword` on a line that starts with it (leading blanks allowed), trimmed; or
@@ -38,7 +37,7 @@ MaterialStatements scanStatements(const std::string& text) {
         if (auto library = statementArgument(line, "mtllib"); library && !library->empty()) {
             found.libraries.emplace_back(*library, number);
         } else if (auto name = statementArgument(line, "usemtl"); name && !name->empty()) {
-            if (found.firstUsed.empty()) found.firstUsed = *name, found.firstUsedLine = number;
+            if (found.used.empty()) found.firstUsedLine = number;
             if (std::find(found.used.begin(), found.used.end(), *name) == found.used.end()) found.used.push_back(*name);
         }
     }
@@ -53,9 +52,11 @@ ObjMaterial readObjMaterial(const std::string& objPath) {
     auto text = readTextFile(objPath);
     if (!text) return result;  // the mesh importer reports an unreadable file
     const MaterialStatements statements = scanStatements(*text);
-    if (statements.firstUsed.empty()) return result;  // faces without a material: Glint's default
+    if (statements.used.empty()) return result;  // faces without a material: Glint's default
+    const std::string& firstUsed = statements.used.front();
     const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
     for (const auto& [library, line] : statements.libraries) {
+        if (result.material) break;  // found in an earlier library
         // One name per statement here (names with spaces are common; several libraries on one
         // line are rare).
         auto loaded = loadMtl((folder / library).string());
@@ -64,20 +65,20 @@ ObjMaterial readObjMaterial(const std::string& objPath) {
                                                 {objPath, line, 0}));
             continue;
         }
-        for (ImportedMaterial& material : loaded->materials) {
-            if (material.material.name != statements.firstUsed || result.material) continue;
-            result.material = std::move(material);
-            result.warnings.insert(result.warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
-        }
+        auto named = std::find_if(loaded->materials.begin(), loaded->materials.end(),
+                                  [&](const ImportedMaterial& material) { return material.material.name == firstUsed; });
+        if (named == loaded->materials.end()) continue;
+        result.material = std::move(*named);
+        result.warnings.insert(result.warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
     }
     const SourceLocation used{objPath, statements.firstUsedLine, 0};
     if (!result.material) {
-        result.warnings.push_back(makeError("'usemtl " + statements.firstUsed +
+        result.warnings.push_back(makeError("'usemtl " + firstUsed +
                                                 "': no such material in the file's libraries; the mesh gets Glint's default",
                                             used));
     } else if (statements.used.size() > 1) {
         result.warnings.push_back(makeError("the file uses " + std::to_string(statements.used.size()) +
-                                                " materials; a Glint mesh has one: '" + statements.firstUsed +
+                                                " materials; a Glint mesh has one: '" + firstUsed +
                                                 "', the first, covers it all",
                                             used));
     }
