@@ -9,6 +9,7 @@
 #include "classroom/plot_materials.h"
 #include "gpu_test_support.h"
 #include "interchange/custom_brdf.h"
+#include "test_support.h"
 #include "twin_brdf_texts.h"
 
 namespace glint {
