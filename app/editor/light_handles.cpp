@@ -1,10 +1,17 @@
 // Light handles (see light_handles.h): project with the scene camera's view-projection, move by
-// unprojecting the mouse at the handle's depth.
+// unprojecting the mouse at the handle's depth, test occlusion with the CPU reference's rays.
+// Sections: projection · occlusion · drawing · input.
 #include "editor/light_handles.h"
 
+#include <cmath>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
+
+#include "light/light_type_name.h"
+#include "render/reference_renderer.h"
 
 namespace glint {
 namespace {
@@ -18,6 +25,8 @@ glm::vec3 handlePosition(const Light& light, const Camera& camera) {
                ? camera.target - glm::normalize(light.direction) * kDirectionalHandleDistance
                : light.position;
 }
+
+// --- projection -------------------------------------------------------------------------
 
 struct ScreenPoint {
     ImVec2 pixel;
@@ -40,7 +49,121 @@ glm::vec3 unproject(const glm::mat4& viewProjection, ImVec2 pixel, float ndcDept
     return glm::vec3(world) / world.w;
 }
 
+// --- occlusion: the primary ray towards the handle meets a surface before it ------------------
+
+bool hiddenBehindAnObject(const Scene& scene, glm::vec3 handle) {
+    const glm::vec3 towardsViewer = towardsViewerFrom(scene.camera, handle);
+    const float distance = viewerDistance(scene.camera, handle);
+    const Ray ray{handle + towardsViewer * distance, -towardsViewer};
+    const auto hit = intersectScene(scene, ray);
+    return hit && hit->distance < distance - 1e-3f;
+}
+
+// Occlusion per light, computed again only when no widget is held: a field dragged on a large
+// mesh would otherwise rebuild its ray-tracing hierarchy every frame.
+const std::vector<bool>& occludedHandles(const Scene& scene) {
+    static std::vector<bool> occluded;
+    if (ImGui::IsAnyItemActive() && occluded.size() == scene.lights.size()) return occluded;
+    occluded.assign(scene.lights.size(), false);
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+        if (scene.lights[i].type != LightType::Ambient)
+            occluded[i] = hiddenBehindAnObject(scene, handlePosition(scene.lights[i], scene.camera));
+    return occluded;
+}
+
+// --- drawing ----------------------------------------------------------------------------------
+
+struct HandleLook {
+    ImU32 colour;
+    ImU32 outline;
+    float alpha;  // faint when hidden behind an object
+};
+
+ImU32 withAlpha(ImU32 colour, float alpha) {
+    const auto a = static_cast<ImU32>(((colour >> IM_COL32_A_SHIFT) & 0xFF) * alpha);
+    return (colour & ~IM_COL32_A_MASK) | (a << IM_COL32_A_SHIFT);
+}
+
+// A spot light's aim line (to where its axis meets the target's distance) and the rim of its cone.
+void drawSpotCone(ImDrawList* drawList, const Light& light, const glm::mat4& viewProjection, const ViewportRect& viewport,
+                  const Camera& camera, ImU32 colour) {
+    const glm::vec3 axis = glm::normalize(light.direction);
+    const float length = std::max(0.5f, glm::dot(camera.target - light.position, axis));
+    const glm::vec3 tip = light.position + axis * length;
+    const auto apex = project(viewProjection, light.position, viewport);
+    const auto aim = project(viewProjection, tip, viewport);
+    if (apex && aim) drawList->AddLine(apex->pixel, aim->pixel, colour, 2.0f);
+    const glm::vec3 side = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    const glm::vec3 other = glm::cross(axis, side);
+    const float radius = length * std::tan(glm::radians(std::min(light.coneHalfAngleDegrees, 85.0f)));
+    constexpr int kRimPoints = 48;
+    std::vector<ImVec2> rim;
+    for (int k = 0; k < kRimPoints; ++k) {
+        const float angle = 2.0f * 3.14159265f * k / kRimPoints;
+        const auto point = project(viewProjection, tip + radius * (std::cos(angle) * side + std::sin(angle) * other), viewport);
+        if (!point) return;  // the rim passes behind the camera: the aim line alone
+        rim.push_back(point->pixel);
+    }
+    drawList->AddPolyline(rim.data(), kRimPoints, colour, ImDrawFlags_Closed, 1.5f);
+    if (apex)
+        for (int k = 0; k < kRimPoints; k += kRimPoints / 4) drawList->AddLine(apex->pixel, rim[k], colour, 1.0f);
+}
+
+// The light's name and kind beside its dot: to the right, or to the left near the viewport's edge.
+void drawLabel(ImDrawList* drawList, ImVec2 dot, const Light& light, bool selected, float alpha, const ViewportRect& viewport) {
+    const std::string label = light.name + " (" + lightTypeName(light.type) + ")";
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    const float gap = ImGui::GetFontSize() * 0.8f;
+    const bool left = dot.x + gap + size.x + 4.0f > viewport.x + viewport.width;
+    const ImVec2 corner(left ? dot.x - gap - size.x : dot.x + gap, dot.y - size.y * 0.5f);
+    const ImVec2 padding(4.0f, 1.0f);
+    const ImU32 back = selected ? IM_COL32(70, 60, 20, 220) : IM_COL32(0, 0, 0, 150);
+    drawList->AddRectFilled(ImVec2(corner.x - padding.x, corner.y - padding.y),
+                            ImVec2(corner.x + size.x + padding.x, corner.y + size.y + padding.y), withAlpha(back, alpha), 3.0f);
+    const ImU32 text = selected ? IM_COL32(255, 240, 190, 255) : IM_COL32(230, 230, 230, 255);
+    drawList->AddText(corner, withAlpha(text, alpha), label.c_str());
+}
+
+void drawHandle(ImDrawList* drawList, const Scene& scene, size_t index, bool selected, bool hidden, ImVec2 dot,
+                const glm::mat4& viewProjection, const ViewportRect& viewport) {
+    const Light& light = scene.lights[index];
+    const float alpha = hidden ? 0.35f : 1.0f;
+    const ImU32 fill = withAlpha(light.enabled ? IM_COL32(255, 220, 90, 255) : IM_COL32(120, 120, 120, 255), alpha);
+    if (light.type == LightType::Spot)
+        drawSpotCone(drawList, light, viewProjection, viewport, scene.camera, withAlpha(fill, selected ? 0.9f : 0.6f));
+    if (light.type == LightType::Directional) {
+        // A short stroke along the light's direction of travel.
+        const glm::vec3 from = handlePosition(light, scene.camera);
+        if (const auto tip = project(viewProjection, from + glm::normalize(light.direction) * 0.3f, viewport))
+            drawList->AddLine(dot, tip->pixel, fill, 2.0f);
+    }
+    const float radius = selected ? 7.0f : 5.0f;
+    if (hidden) drawList->AddCircle(dot, radius, fill, 0, 2.0f);  // behind an object: hollow and faint
+    else drawList->AddCircleFilled(dot, radius, fill);
+    drawList->AddCircle(dot, radius + 2.0f, withAlpha(IM_COL32(0, 0, 0, 200), alpha), 0, 2.0f);
+    if (selected) drawList->AddCircle(dot, radius + 5.0f, withAlpha(IM_COL32(255, 255, 255, 230), alpha), 0, 2.0f);
+    drawLabel(drawList, dot, light, selected, alpha, viewport);
+}
+
 }  // namespace
+
+glm::vec3 newLightPosition(const Camera& camera) {
+    // The camera's own axes in world space (its view matrix inverted), as the picture is drawn.
+    const glm::mat4 cameraToWorld = glm::inverse(camera.view());
+    const glm::vec3 right = glm::normalize(glm::vec3(cameraToWorld[0]));
+    const glm::vec3 up = glm::normalize(glm::vec3(cameraToWorld[1]));
+    const glm::vec3 backwards = glm::normalize(glm::vec3(cameraToWorld[2]));
+    // 40 % of the way from the target to the camera, at 45 % of the half-height to the right and
+    // 55 % of it up (the half-width is at least the half-height).
+    const float distance = glm::length(camera.position - camera.target);
+    const float depth = 0.6f * distance;  // from the camera
+    const float halfHeight = camera.projection == Projection::Perspective
+                                 ? depth * std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f)
+                                 : camera.orthoHeight * 0.5f;
+    return camera.target + backwards * (0.4f * distance) + right * (0.45f * halfHeight) + up * (0.55f * halfHeight);
+}
+
+// --- input ------------------------------------------------------------------------------------
 
 bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
     const Scene& scene = state.session.scene();
@@ -49,6 +172,7 @@ bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left) || gDraggedLight >= static_cast<int>(scene.lights.size()))
         gDraggedLight = -1;
 
+    const std::vector<bool>& occluded = occludedHandles(scene);
     ImDrawList* drawList = ImGui::GetBackgroundDrawList();
     drawList->PushClipRect(ImVec2(viewport.x, viewport.y), ImVec2(viewport.x + viewport.width, viewport.y + viewport.height));
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -57,14 +181,7 @@ bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
         const auto screen = project(viewProjection, handlePosition(light, scene.camera), viewport);
         if (!screen) continue;
         const bool selected = state.selectedLight == static_cast<int>(i);
-        const ImU32 fill = light.enabled ? IM_COL32(255, 220, 90, 255) : IM_COL32(120, 120, 120, 255);
-        drawList->AddCircleFilled(screen->pixel, selected ? 7.0f : 5.0f, fill);
-        drawList->AddCircle(screen->pixel, selected ? 9.0f : 7.0f, IM_COL32(0, 0, 0, 200), 0, 2.0f);
-        if (light.type == LightType::Directional) {
-            // A short stroke along the light's direction of travel.
-            if (const auto tip = project(viewProjection, handlePosition(light, scene.camera) + glm::normalize(light.direction) * 0.3f, viewport))
-                drawList->AddLine(screen->pixel, tip->pixel, fill, 2.0f);
-        }
+        drawHandle(drawList, scene, i, selected, occluded[i], screen->pixel, viewProjection, viewport);
         const float dx = io.MousePos.x - screen->pixel.x, dy = io.MousePos.y - screen->pixel.y;
         if (gDraggedLight < 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse &&
             dx * dx + dy * dy <= kGrabRadiusPixels * kGrabRadiusPixels) {

@@ -55,8 +55,8 @@ void drawDisplaySection(EditorState& state) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("sRGB: IEC 61966-2-1 · gamma: value^(1/γ) · linear: no encoding");
     if (display.transfer == Transfer::Gamma)
-        changed |= boundedDrag("Gamma", display.gamma, 0.1f, 10.0f, "%.2f", state.displayPanelMessage, "γ: the encoded value is value^(1/γ)");
-    changed |= drawQuantisationWidgets(display, state.displayPanelMessage);
+        changed |= boundedDrag("Gamma", display.gamma, 0.1f, 10.0f, "%.2f", state.displayPanelMessage.text(), "γ: the encoded value is value^(1/γ)");
+    changed |= drawQuantisationWidgets(display, state.displayPanelMessage.text());
     if (!state.displayPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.displayPanelMessage.c_str());
     if (changed) state.session.change("Edit display").display = display;
 
