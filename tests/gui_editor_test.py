@@ -53,8 +53,8 @@ BACKGROUND_BOX = (340, 40, 420, 120)  # viewport corner clear of the sphere, whe
 DIFFUSE_TEXTURE_BUTTON = (1253, 165)  # "Tex" beside the diffuse albedo ρ_d (its label above); its menu opens at the mouse:
 TEXTURE_MENU_IMAGE = (1230, 204)     #   None, Image file…, Checker, Marble, Wood
 TEXTURE_MENU_CHECKER = (1219, 224)
-IMAGE_TEXTURE_BUTTON = (975, 169)    # once textured, "Image" no longer fits: it opens the next line
-IMAGE_TEXTURE_MENU_IMAGE = (1010, 207)
+IMAGE_TEXTURE_BUTTON = (975, 189)    # once textured, "Image" no longer fits: it opens the next line
+IMAGE_TEXTURE_MENU_IMAGE = (1010, 227)
 TEXTURE_MENU_BOX = (970, 173, 1275, 303)  # where either menu shows
 DIALOG_BOX = (450, 370, 840, 430)    # the middle of the window, where a centred dialog shows
 SPHERE_ROW = (420, 830, 375)         # x from, x to, y: a row across the lit sphere
@@ -280,7 +280,7 @@ def scenario_crash_signal(x, glint, output, state):
         editor.kill()
 
 
-MATERIAL_COLUMN = (925, 40, 1275, 400)
+MATERIAL_COLUMN = (925, 40, 1275, 520)
 
 
 def refusal_shown(shot):
