@@ -53,11 +53,13 @@ void fitSliderWidth(const ParamSpec& spec, const std::vector<const char*>& butto
     ImGui::SetNextItemWidth(std::max(4.0f * ImGui::GetFontSize(), std::min(ImGui::CalcItemWidth(), fitted)));
 }
 
-// Room a combo needs to show its longest option [px].
+// Room a combo needs to show an option `textWidth` wide, and its arrow [px].
+float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
+
 float comboWidth(const ParamSpec& spec) {
     float widest = 0.0f;
     for (const auto& option : spec.options) widest = std::max(widest, ImGui::CalcTextSize(option.label).x);
-    return widest + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight();
+    return comboWidth(widest);
 }
 
 // Where the next widget's label goes and how wide the widget is (panels/widgets.h): three numbers
@@ -193,9 +195,14 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
     if (ImGui::IsItemHovered() && *spec.help) {
         const bool nearZero = spec.kind == ParamKind::PerChannel &&
                               std::any_of(value, value + 3, [](float v) { return v > 0.0f && v < kShownAsZero; });
-        if (nearZero) ImGui::SetTooltip("%s\n≈ 0: below %g, kept just above 0 (%g) because the value must be positive; "
-                                        "for a metal's index n, all of that colour is reflected.", spec.help, kShownAsZero, *std::min_element(value, value + 3));
-        else ImGui::SetTooltip("%s", spec.help);
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+        ImGui::TextUnformatted(spec.help);
+        if (nearZero)
+            ImGui::Text("≈ 0: below %g, kept just above 0 (%g) as the value must be positive; for a metal's index n, "
+                        "all of that colour is reflected.", kShownAsZero, *std::min_element(value, value + 3));
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
     }
     ImGui::SameLine();
     if (ImGui::SmallButton("R")) {
@@ -217,7 +224,10 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     const std::string measuredLabel = material.measured ? "measured (MERL): " + material.measured->displayName : "";
     const char* modelLabel = material.custom ? material.custom->displayName.c_str()
                              : material.measured ? measuredLabel.c_str() : current.label;
-    if (ImGui::BeginCombo("Model", modelLabel)) {
+    float widestModel = ImGui::CalcTextSize(modelLabel).x;
+    for (const ModelInfo& info : allModels()) widestModel = std::max(widestModel, ImGui::CalcTextSize(info.label).x);
+    const std::string modelComboLabel = placeLabel("Model", comboWidth(widestModel));
+    if (ImGui::BeginCombo(modelComboLabel.c_str(), modelLabel)) {
         for (const ModelInfo& info : allModels()) {
             if (ImGui::Selectable(info.label, !custom && info.model == material.model) && (custom || info.model != material.model)) {
                 material.model = info.model;
