@@ -95,7 +95,7 @@ bool drawProceduralSettings(MaterialTexture& texture, const ParamSpec& spec, std
         if (frequency > 0.0f) texture.frequency = frequency, changed = true;
         else refusal = "Frequency must be greater than 0";
     }
-    changed |= ImGui::SliderFloat("Turbulence", &texture.turbulence, 0.0f, 20.0f, "%.3g");
+    changed |= editNumbers("Turbulence", &texture.turbulence, 1, [](float* typed) { return ImGui::SliderFloat("Turbulence", typed, 0.0f, 20.0f, "%.3g"); });
     changed |= ImGui::SliderInt("Octaves", &texture.octaves, 1, 12);
     return changed;
 }
