@@ -3,6 +3,7 @@
 // Sections: projection · occlusion · drawing · input.
 #include "editor/light_handles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -84,29 +85,42 @@ ImU32 withAlpha(ImU32 colour, float alpha) {
     return (colour & ~IM_COL32_A_MASK) | (a << IM_COL32_A_SHIFT);
 }
 
-// A spot light's aim line (to where its axis meets the target's distance) and the rim of its cone.
-void drawSpotCone(ImDrawList* drawList, const Light& light, const glm::mat4& viewProjection, const ViewportRect& viewport,
-                  const Camera& camera, ImU32 colour) {
+// A world-space line drawn in `pieces`, each faint where an object hides it from the camera
+// (tested only while no widget is held, as occludedHandles()).
+void drawDepthAwareLine(ImDrawList* drawList, const Scene& scene, const glm::mat4& viewProjection, const ViewportRect& viewport,
+                        glm::vec3 from, glm::vec3 to, ImU32 colour, float thickness, int pieces) {
+    const bool testDepth = !ImGui::IsAnyItemActive();
+    for (int k = 0; k < pieces; ++k) {
+        const glm::vec3 a = glm::mix(from, to, static_cast<float>(k) / pieces);
+        const glm::vec3 b = glm::mix(from, to, static_cast<float>(k + 1) / pieces);
+        const auto start = project(viewProjection, a, viewport);
+        const auto end = project(viewProjection, b, viewport);
+        if (!start || !end) continue;  // behind the camera
+        const bool hidden = testDepth && hiddenBehindAnObject(scene, 0.5f * (a + b));
+        drawList->AddLine(start->pixel, end->pixel, hidden ? withAlpha(colour, 0.3f) : colour, thickness);
+    }
+}
+
+// A spot light's aim line (to the camera target's distance along its axis) and its cone: the rim
+// at that distance (half angle θ_c) and four lines from the light to it.
+void drawSpotCone(ImDrawList* drawList, const Scene& scene, const Light& light, const glm::mat4& viewProjection,
+                  const ViewportRect& viewport, ImU32 colour) {
     const glm::vec3 axis = glm::normalize(light.direction);
-    const float length = std::max(0.5f, glm::dot(camera.target - light.position, axis));
-    const glm::vec3 tip = light.position + axis * length;
-    const auto apex = project(viewProjection, light.position, viewport);
-    const auto aim = project(viewProjection, tip, viewport);
-    if (apex && aim) drawList->AddLine(apex->pixel, aim->pixel, colour, 2.0f);
+    const float length = std::max(0.5f, glm::dot(scene.camera.target - light.position, axis));
+    const glm::vec3 centre = light.position + axis * length;
+    drawDepthAwareLine(drawList, scene, viewProjection, viewport, light.position, centre, colour, 2.0f, 16);
     const glm::vec3 side = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
     const glm::vec3 other = glm::cross(axis, side);
     const float radius = length * std::tan(glm::radians(std::min(light.coneHalfAngleDegrees, 85.0f)));
     constexpr int kRimPoints = 48;
-    std::vector<ImVec2> rim;
-    for (int k = 0; k < kRimPoints; ++k) {
-        const float angle = 2.0f * 3.14159265f * k / kRimPoints;
-        const auto point = project(viewProjection, tip + radius * (std::cos(angle) * side + std::sin(angle) * other), viewport);
-        if (!point) return;  // the rim passes behind the camera: the aim line alone
-        rim.push_back(point->pixel);
-    }
-    drawList->AddPolyline(rim.data(), kRimPoints, colour, ImDrawFlags_Closed, 1.5f);
-    if (apex)
-        for (int k = 0; k < kRimPoints; k += kRimPoints / 4) drawList->AddLine(apex->pixel, rim[k], colour, 1.0f);
+    const auto rimPoint = [&](int k) {
+        const float angle = 2.0f * 3.14159265f * static_cast<float>(k) / kRimPoints;
+        return centre + radius * (std::cos(angle) * side + std::sin(angle) * other);
+    };
+    for (int k = 0; k < kRimPoints; ++k)
+        drawDepthAwareLine(drawList, scene, viewProjection, viewport, rimPoint(k), rimPoint(k + 1), colour, 1.5f, 1);
+    for (int k = 0; k < kRimPoints; k += kRimPoints / 4)
+        drawDepthAwareLine(drawList, scene, viewProjection, viewport, light.position, rimPoint(k), colour, 1.0f, 12);
 }
 
 // The light's name and kind beside its dot: to the right, or to the left near the viewport's edge.
@@ -130,12 +144,11 @@ void drawHandle(ImDrawList* drawList, const Scene& scene, size_t index, bool sel
     const float alpha = hidden ? 0.35f : 1.0f;
     const ImU32 fill = withAlpha(light.enabled ? IM_COL32(255, 220, 90, 255) : IM_COL32(120, 120, 120, 255), alpha);
     if (light.type == LightType::Spot)
-        drawSpotCone(drawList, light, viewProjection, viewport, scene.camera, withAlpha(fill, selected ? 0.9f : 0.6f));
+        drawSpotCone(drawList, scene, light, viewProjection, viewport, withAlpha(fill, selected ? 0.9f : 0.6f));
     if (light.type == LightType::Directional) {
         // A short stroke along the light's direction of travel.
         const glm::vec3 from = handlePosition(light, scene.camera);
-        if (const auto tip = project(viewProjection, from + glm::normalize(light.direction) * 0.3f, viewport))
-            drawList->AddLine(dot, tip->pixel, fill, 2.0f);
+        drawDepthAwareLine(drawList, scene, viewProjection, viewport, from, from + glm::normalize(light.direction) * 0.3f, fill, 2.0f, 1);
     }
     const float radius = selected ? 7.0f : 5.0f;
     if (hidden) drawList->AddCircle(dot, radius, fill, 0, 2.0f);  // behind an object: hollow and faint
