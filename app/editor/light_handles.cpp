@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include "classroom/presentation.h"
 #include "light/light_type_name.h"
 #include "render/reference_renderer.h"
 
@@ -18,7 +19,7 @@ namespace glint {
 namespace {
 
 constexpr float kDirectionalHandleDistance = 1.5f;  // [m] from the camera target
-constexpr float kGrabRadiusPixels = 10.0f;
+constexpr float kGrabRadiusPixels = 10.0f;  // at UI scale 1, as the dots' sizes below
 int gDraggedLight = -1;
 
 glm::vec3 handlePosition(const Light& light, const Camera& camera) {
@@ -139,7 +140,7 @@ void drawLabel(ImDrawList* drawList, ImVec2 dot, const Light& light, bool select
 }
 
 void drawHandle(ImDrawList* drawList, const Scene& scene, size_t index, bool selected, bool hidden, ImVec2 dot,
-                const glm::mat4& viewProjection, const ViewportRect& viewport) {
+                const glm::mat4& viewProjection, const ViewportRect& viewport, float uiScale) {
     const Light& light = scene.lights[index];
     const float alpha = hidden ? 0.35f : 1.0f;
     const ImU32 fill = withAlpha(light.enabled ? IM_COL32(255, 220, 90, 255) : IM_COL32(120, 120, 120, 255), alpha);
@@ -150,11 +151,11 @@ void drawHandle(ImDrawList* drawList, const Scene& scene, size_t index, bool sel
         const glm::vec3 from = handlePosition(light, scene.camera);
         drawDepthAwareLine(drawList, scene, viewProjection, viewport, from, from + glm::normalize(light.direction) * 0.3f, fill, 2.0f, 1);
     }
-    const float radius = selected ? 7.0f : 5.0f;
-    if (hidden) drawList->AddCircle(dot, radius, fill, 0, 2.0f);  // behind an object: hollow and faint
+    const float radius = (selected ? 7.0f : 5.0f) * uiScale;
+    if (hidden) drawList->AddCircle(dot, radius, fill, 0, 2.0f * uiScale);  // behind an object: hollow and faint
     else drawList->AddCircleFilled(dot, radius, fill);
-    drawList->AddCircle(dot, radius + 2.0f, withAlpha(IM_COL32(0, 0, 0, 200), alpha), 0, 2.0f);
-    if (selected) drawList->AddCircle(dot, radius + 5.0f, withAlpha(IM_COL32(255, 255, 255, 230), alpha), 0, 2.0f);
+    drawList->AddCircle(dot, radius + 2.0f * uiScale, withAlpha(IM_COL32(0, 0, 0, 200), alpha), 0, 2.0f * uiScale);
+    if (selected) drawList->AddCircle(dot, radius + 5.0f * uiScale, withAlpha(IM_COL32(255, 255, 255, 230), alpha), 0, 2.0f * uiScale);
     drawLabel(drawList, dot, light, selected, alpha, viewport);
 }
 
@@ -186,6 +187,7 @@ bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
         gDraggedLight = -1;
 
     const std::vector<bool>& occluded = occludedHandles(scene);
+    const float uiScale = effectiveUiScale(state.settings);
     ImDrawList* drawList = ImGui::GetBackgroundDrawList();
     drawList->PushClipRect(ImVec2(viewport.x, viewport.y), ImVec2(viewport.x + viewport.width, viewport.y + viewport.height));
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -194,10 +196,10 @@ bool handleLightHandles(EditorState& state, const ViewportRect& viewport) {
         const auto screen = project(viewProjection, handlePosition(light, scene.camera), viewport);
         if (!screen) continue;
         const bool selected = state.selectedLight == static_cast<int>(i);
-        drawHandle(drawList, scene, i, selected, occluded[i], screen->pixel, viewProjection, viewport);
+        drawHandle(drawList, scene, i, selected, occluded[i], screen->pixel, viewProjection, viewport, uiScale);
         const float dx = io.MousePos.x - screen->pixel.x, dy = io.MousePos.y - screen->pixel.y;
         if (gDraggedLight < 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.WantCaptureMouse &&
-            dx * dx + dy * dy <= kGrabRadiusPixels * kGrabRadiusPixels) {
+            dx * dx + dy * dy <= (kGrabRadiusPixels * uiScale) * (kGrabRadiusPixels * uiScale)) {
             gDraggedLight = static_cast<int>(i);
             state.selectedLight = static_cast<int>(i);
         }

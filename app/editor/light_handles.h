@@ -5,7 +5,7 @@
 // (the rim θ_c about its axis) and its aim line. A handle hidden behind an object (a ray from
 // the camera meets a surface first) is drawn faint and hollow. Dragging a dot moves a point or
 // spot light in the plane facing the camera, or turns the directional light; each drag is one
-// undoable edit. Clicking a dot selects the light in the lights panel.
+// undoable edit. Clicking a dot selects the light in the lights panel. Dots grow with the UI scale.
 #pragma once
 
 #include <glm/glm.hpp>
