@@ -1,5 +1,5 @@
 // Numbers typed into a widget (a Ctrl+click or double-click on a slider or a drag field, a colour's
-// channel) reach the scene when the typing ends, not at each key: Enter, Tab or a click elsewhere
+// channel) reach the scene when the typing ends, not at each key: Enter or a click elsewhere
 // commits them, Escape drops them. Until then they are held here, so "-" on the way to "-0.5" is
 // never a value of its own (nor an undo step, nor a reduced preview frame). Dragging still applies
 // at once.
