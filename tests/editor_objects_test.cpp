@@ -12,7 +12,6 @@
 #include "editor/mesh_loading.h"
 #include "editor/model_limits.h"
 #include "editor/object_actions.h"
-#include "render/reference_renderer.h"
 #include "scene/scene_json.h"
 #include "editor_test_support.h"
 #include "test_support.h"
@@ -252,10 +251,17 @@ TEST(EditorLights, ANewLightIsPlacedWhereTheCameraSeesIt) {
             EXPECT_LT(ndc.z, 1.0f);
         }
     }
-    const glm::vec3 light = newLightPosition(scene.camera);
-    const glm::vec3 towardsLight = light - scene.camera.position;
-    const auto hit = intersectScene(scene, Ray{scene.camera.position, glm::normalize(towardsLight)});
-    EXPECT_TRUE(!hit || hit->distance > glm::length(towardsLight)) << "the default ball hides the new light";
+    EXPECT_FALSE(hiddenFromCamera(scene, newLightPosition(scene.camera))) << "the default ball hides the new light";
+}
+
+// A light handle behind the default ball is hidden from the camera (drawn faint, not over the
+// ball); one in front of it, or beside it in the open, is not.
+TEST(EditorLights, AHandleBehindTheBallIsHiddenFromTheCamera) {
+    const Scene scene = defaultScene();
+    const glm::vec3 centre = std::get<SphereShape>(scene.objects[0].shape).center;
+    const glm::vec3 towardsCamera = glm::normalize(scene.camera.position - centre);
+    EXPECT_TRUE(hiddenFromCamera(scene, centre - 2.0f * towardsCamera));
+    EXPECT_FALSE(hiddenFromCamera(scene, centre + 2.0f * towardsCamera));
 }
 
 // The note on what a delta-lobe model leaves out shows only where it applies.

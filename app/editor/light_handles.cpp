@@ -51,15 +51,7 @@ glm::vec3 unproject(const glm::mat4& viewProjection, ImVec2 pixel, float ndcDept
     return glm::vec3(world) / world.w;
 }
 
-// --- occlusion: the primary ray towards the handle meets a surface before it ------------------
-
-bool hiddenBehindAnObject(const Scene& scene, glm::vec3 handle) {
-    const glm::vec3 towardsViewer = towardsViewerFrom(scene.camera, handle);
-    const float distance = viewerDistance(scene.camera, handle);
-    const Ray ray{handle + towardsViewer * distance, -towardsViewer};
-    const auto hit = intersectScene(scene, ray);
-    return hit && hit->distance < distance - 1e-3f;
-}
+// --- occlusion (hiddenFromCamera is below, with the other public functions) -----------------
 
 // Occlusion per light, computed again only when no widget is held: a field dragged on a large
 // mesh would otherwise rebuild its ray-tracing hierarchy every frame.
@@ -69,17 +61,11 @@ const std::vector<bool>& occludedHandles(const Scene& scene) {
     occluded.assign(scene.lights.size(), false);
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (scene.lights[i].type != LightType::Ambient)
-            occluded[i] = hiddenBehindAnObject(scene, handlePosition(scene.lights[i], scene.camera));
+            occluded[i] = hiddenFromCamera(scene, handlePosition(scene.lights[i], scene.camera));
     return occluded;
 }
 
 // --- drawing ----------------------------------------------------------------------------------
-
-struct HandleLook {
-    ImU32 colour;
-    ImU32 outline;
-    float alpha;  // faint when hidden behind an object
-};
 
 ImU32 withAlpha(ImU32 colour, float alpha) {
     const auto a = static_cast<ImU32>(((colour >> IM_COL32_A_SHIFT) & 0xFF) * alpha);
@@ -97,7 +83,7 @@ void drawDepthAwareLine(ImDrawList* drawList, const Scene& scene, const glm::mat
         const auto start = project(viewProjection, a, viewport);
         const auto end = project(viewProjection, b, viewport);
         if (!start || !end) continue;  // behind the camera
-        const bool hidden = testDepth && hiddenBehindAnObject(scene, 0.5f * (a + b));
+        const bool hidden = testDepth && hiddenFromCamera(scene, 0.5f * (a + b));
         drawList->AddLine(start->pixel, end->pixel, hidden ? withAlpha(colour, 0.3f) : colour, thickness);
     }
 }
@@ -160,6 +146,14 @@ void drawHandle(ImDrawList* drawList, const Scene& scene, size_t index, bool sel
 }
 
 }  // namespace
+
+bool hiddenFromCamera(const Scene& scene, glm::vec3 point) {
+    const glm::vec3 towardsViewer = towardsViewerFrom(scene.camera, point);
+    const float distance = viewerDistance(scene.camera, point);
+    const Ray ray{point + towardsViewer * distance, -towardsViewer};
+    const auto hit = intersectScene(scene, ray);
+    return hit && hit->distance < distance - 1e-3f;
+}
 
 glm::vec3 newLightPosition(const Camera& camera) {
     // The camera's own axes in world space (its view matrix inverted), as the picture is drawn.

@@ -19,6 +19,10 @@ namespace glint {
 // camera then ignores the mouse).
 bool handleLightHandles(EditorState& state, const ViewportRect& viewport);
 
+// Whether an object hides `point` [m] from the scene's camera: the primary ray towards it meets a
+// surface first (the CPU reference's intersection).
+bool hiddenFromCamera(const Scene& scene, glm::vec3 point);
+
 // Where a new point or spot light goes [m]: in front of the camera, up and to the right of the
 // target, inside the view of any viewport at least as wide as it is tall.
 glm::vec3 newLightPosition(const Camera& camera);
