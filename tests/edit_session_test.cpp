@@ -1,5 +1,5 @@
-// The edit model: steps, gestures as one step, undo/redo, the dirty flag, history limits; the
-// recovery document round trip; and the crash guard writing the published copy when a child
+// The edit model: steps, gestures as one step, undo/redo, the dirty flag, history limits; messages
+// dropped when the scene changes after them; the recovery document round trip; and the crash guard writing the published copy when a child
 // process dies of SIGSEGV, SIGABRT or SIGTERM.
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include "edit/crash_guard.h"
 #include "edit/edit_session.h"
 #include "edit/recovery.h"
+#include "edit/scene_message.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
 #include "util/file_io.h"
@@ -126,6 +127,46 @@ TEST(EditSession, HistoryIsBoundedAndRevisionsGrow) {
     while (session.undo()) ++undone;
     EXPECT_EQ(undone, EditSession::kMaxUndoSteps);
     EXPECT_TRUE(session.dirty());  // the oldest steps fell off: the opened state is out of reach
+}
+
+// A refusal stays while the scene stays as it was, and goes with the next edit, undo or new scene;
+// a message written in the frame of a change ("Undone") belongs to the scene after it.
+TEST(SceneMessage, IsDroppedWhenTheSceneChangesAfterIt) {
+    EditSession session;
+    SceneMessage refusal;
+    refusal = "Diffuse albedo ρ_d: each channel must be at least 0";
+    refusal.expire(session.revision());
+    refusal.expire(session.revision());
+    EXPECT_FALSE(refusal.empty()) << "nothing changed: the refusal still holds";
+    session.change("Edit albedo").materials[0].values[0] = 0.25f;
+    session.settle(false);
+    refusal.expire(session.revision());
+    EXPECT_TRUE(refusal.empty());
+
+    SceneMessage status;
+    ASSERT_TRUE(session.undo());
+    status = "Undone";
+    status.expire(session.revision());
+    status.expire(session.revision());
+    EXPECT_EQ(status.text(), "Undone");
+    ASSERT_TRUE(session.redo());
+    status = "Redone";
+    status.expire(session.revision());
+    EXPECT_EQ(status.text(), "Redone");
+    ASSERT_TRUE(session.undo());
+    status = "Undone";  // the same words again, about a new change: kept
+    status.expire(session.revision());
+    EXPECT_EQ(status.text(), "Undone");
+
+    // A widget writing through text(), then a new scene.
+    refusal.text() = "Gamma: 0 refused; it must lie in [0.1, 10]";
+    refusal.expire(session.revision());
+    EXPECT_FALSE(refusal.empty());
+    session.replace(defaultScene(), "");
+    refusal.expire(session.revision());
+    status.expire(session.revision());
+    EXPECT_TRUE(refusal.empty());
+    EXPECT_TRUE(status.empty());
 }
 
 TEST(Recovery, DocumentRoundTripsSceneAndPath) {

@@ -128,14 +128,14 @@ TEST_F(EditorBrdf, ChangedFileReloadsAndBrokenChangesKeepTheLastGoodVersion) {
     broken.replace(broken.find("return"), 6, "retur");
     touch(broken);
     EXPECT_EQ(selected(state).custom, firstVersion);
-    EXPECT_NE(state.materialPanelMessage.find("live.brdf:7:"), std::string::npos) << state.materialPanelMessage;
-    EXPECT_NE(state.materialPanelMessage.find("last good version stays"), std::string::npos);
+    EXPECT_NE(state.materialPanelMessage.text().find("live.brdf:7:"), std::string::npos) << state.materialPanelMessage.text();
+    EXPECT_NE(state.materialPanelMessage.text().find("last good version stays"), std::string::npos);
     // A good change: reloaded, values kept where the parameter still exists.
     std::string brighter = kBrdf;
     brighter.replace(brighter.find("/ 3.14159265"), 12, "* 0.5");
     touch(brighter);
     EXPECT_NE(selected(state).custom, firstVersion);
-    EXPECT_TRUE(state.materialPanelMessage.empty()) << state.materialPanelMessage;
+    EXPECT_TRUE(state.materialPanelMessage.text().empty()) << state.materialPanelMessage.text();
     EXPECT_EQ(selected(state).values, (std::vector<float>{0.5f, 1.0f, 0.5f, 0.25f}));
 }
 

@@ -8,14 +8,18 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli/brdf_probe.h"
 #include "edit/recovery.h"
+#include "editor/mesh_loading.h"
 #include "editor/camera_actions.h"
 #include "editor/document.h"
 #include "editor/settings.h"
 #include "editor/texture_panel.h"
 #include "image/image_io.h"
+#include "interchange/merl.h"
 #include "scene/scene_json.h"
 #include "editor_test_support.h"
+#include "environment_test_support.h"
 #include "test_support.h"
 
 namespace glint {
@@ -187,6 +191,91 @@ TEST_F(EditorDocument, TextureImageFromTheFileBrowserIsOneUndoStepAndFailuresCha
     EXPECT_EQ(textured.textures[0].parameter, "diffuse_albedo");
     EXPECT_TRUE(state.session.undo());
     EXPECT_EQ(sceneToJson(state.session.scene()).dump(), before);
+}
+
+// The working directory changed for the life of the object, as a user's shell would have it.
+class WorkingDirectory {
+public:
+    explicit WorkingDirectory(const std::string& path) : previous_(std::filesystem::current_path()) {
+        std::filesystem::current_path(path);
+    }
+    ~WorkingDirectory() { std::filesystem::current_path(previous_); }
+    WorkingDirectory(const WorkingDirectory&) = delete;
+    WorkingDirectory& operator=(const WorkingDirectory&) = delete;
+
+private:
+    std::filesystem::path previous_;
+};
+
+// `glint bunny.obj` and a scene that names every kind of referenced file (mesh, texture image,
+// environment, .brdf, MERL table) by a relative path: after a crash the recovery file, read from
+// another working directory, names the same files; saved elsewhere, the scene names them relative
+// to its own folder and opens again.
+TEST_F(EditorDocument, FilesOpenedByRelativePathsAreRecoveredAndSavedRelativeToTheSceneFile) {
+    const std::string work = std::filesystem::absolute(directory_ + "/work").lexically_normal().string();
+    std::filesystem::create_directories(work);
+    std::ofstream(work + "/bunny.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    DisplayImage image(2, 2);
+    std::fill(image.pixels.begin(), image.pixels.end(), uint8_t{128});
+    ASSERT_TRUE(writeDisplayImage(image, work + "/wood.png").ok());
+    test::writeTestHdr(work + "/sky.hdr", 32);
+    std::ofstream(work + "/tinted.brdf") << "analytic\n::begin parameters\nfloat gain 0 2 0.5\n::end parameters\n"
+                                            "::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) "
+                                            "{ return vec3(gain / 3.14159265); }\n::end shader\n";
+    std::ofstream(work + "/plaster.binary", std::ios::binary) << makeConstantMerl(glm::vec3(0.2f));
+    std::ofstream(work + "/scene.json") << R"({"format": "glint-scene", "version": 1,
+      "environment": {"type": "file", "file": "sky.hdr"},
+      "lights": [],
+      "materials": [
+        {"name": "wood", "model": "lambert", "textures": {"albedo": {"type": "image", "file": "wood.png"}}},
+        {"name": "tinted", "model": "brdf_file", "brdf_file": "tinted.brdf"},
+        {"name": "plaster", "model": "merl", "merl_file": "plaster.binary"}],
+      "objects": [
+        {"name": "ball", "shape": "sphere", "material": "wood"},
+        {"name": "statue", "shape": "mesh", "path": "bunny.obj", "material": "tinted"},
+        {"name": "cube", "shape": "cube", "material": "plaster"}]})";
+    setBrdfProbeExecutable(GLINT_EXECUTABLE);  // opening the .brdf proves its shader in `glint probe-brdf`
+    ::setenv("GLINT_BRDF_TIMEOUT_S", "60", 1);  // a loaded machine may be slow to prove it
+    EditorState state;
+    {
+        const WorkingDirectory inWork(work);
+        openDroppedFile(state, "scene.json");
+        ASSERT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+        test::loadMeshAndSettle(state, "bunny.obj");
+        ASSERT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+    }
+    ::unsetenv("GLINT_BRDF_TIMEOUT_S");
+    ASSERT_TRUE(state.session.dirty());
+    autosave(state, 100.0, 5.0);
+
+    const WorkingDirectory elsewhere(directory_);  // Glint started again from another folder
+    auto recovered = loadRecovery(recoveryFilePath());
+    ASSERT_TRUE(recovered.ok()) << recovered.error().format();
+    const Scene& scene = recovered->scene;
+    const auto meshFile = [&](size_t object) { return std::get<MeshShape>(scene.objects.at(object).shape).resolvedPath; };
+    ASSERT_EQ(scene.objects.size(), 4u);
+    EXPECT_EQ(meshFile(1), work + "/bunny.obj");
+    EXPECT_EQ(meshFile(3), work + "/bunny.obj");
+    EXPECT_EQ(scene.materials[0].textures.at(0).file, work + "/wood.png");
+    EXPECT_EQ(scene.environment.file, work + "/sky.hdr");
+    ASSERT_TRUE(scene.materials[1].custom);
+    EXPECT_EQ(scene.materials[1].custom->file.path, work + "/tinted.brdf");
+    ASSERT_TRUE(scene.materials[2].measured);
+    EXPECT_EQ(scene.materials[2].measured->path, work + "/plaster.binary");
+
+    const std::string copy = directory_ + "/saved/copy.json";
+    ASSERT_TRUE(ensureParentDirectory(copy).ok());
+    ASSERT_TRUE(saveScene(scene, copy).ok());
+    const nlohmann::json saved = nlohmann::json::parse(std::ifstream(copy));
+    EXPECT_EQ(saved["objects"][1]["path"], "../work/bunny.obj");
+    EXPECT_EQ(saved["objects"][3]["path"], "../work/bunny.obj");
+    EXPECT_EQ(saved["materials"][0]["textures"]["albedo"]["file"], "../work/wood.png");
+    EXPECT_EQ(saved["environment"]["file"], "../work/sky.hdr");
+    EXPECT_EQ(saved["materials"][1]["brdf_file"], "../work/tinted.brdf");
+    EXPECT_EQ(saved["materials"][2]["merl_file"], "../work/plaster.binary");
+    auto reopened = loadScene(copy);
+    ASSERT_TRUE(reopened.ok()) << reopened.error().format();
+    EXPECT_EQ(sceneToJson(*reopened), sceneToJson(scene));
 }
 
 }  // namespace

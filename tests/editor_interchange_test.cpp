@@ -39,7 +39,7 @@ TEST_F(EditorInterchange, DroppedMtlGoesOntoTheSelectedObjectAsOneUndoStep) {
     const Material& material = state.session.scene().materials[materialIndex];
     EXPECT_EQ(material.name, "shiny");
     EXPECT_EQ(material.model, BrdfModel::BlinnPhong);
-    EXPECT_NE(state.statusMessage.find("material 'shiny'"), std::string::npos);
+    EXPECT_NE(state.statusMessage.text().find("material 'shiny'"), std::string::npos);
     EXPECT_TRUE(state.session.undo());
     EXPECT_EQ(state.session.scene().materials[materialIndex].name, defaultScene().materials[materialIndex].name);
 }
@@ -91,7 +91,7 @@ TEST_F(EditorInterchange, DroppedMerlFileBecomesAMeasuredMaterialAndSavesWithThe
     const Material& material = state.session.scene().materials[materialIndex];
     ASSERT_TRUE(material.measured);
     EXPECT_EQ(material.measured->displayName, "plaster.binary");
-    EXPECT_NE(state.statusMessage.find("material 'plaster'"), std::string::npos);
+    EXPECT_NE(state.statusMessage.text().find("material 'plaster'"), std::string::npos);
     const nlohmann::json saved = sceneToJson(state.session.scene(), write("scene.json", "{}"));
     EXPECT_EQ(saved["materials"][materialIndex]["merl_file"], "plaster.binary");
     EXPECT_TRUE(state.session.undo());
@@ -116,7 +116,7 @@ TEST_F(EditorInterchange, ExportMaterialWritesGltfOrMtlAndShowsWhatTheFormatLose
     auto mtl = loadMtl(mtlPath);
     ASSERT_TRUE(mtl.ok()) << mtl.error().format();
     EXPECT_EQ(mtl->materials.size(), 1u);
-    EXPECT_NE(state.statusMessage.find("Exported material"), std::string::npos);
+    EXPECT_NE(state.statusMessage.text().find("Exported material"), std::string::npos);
     EXPECT_FALSE(exportMaterialTo(state, write("ball.txt", "")));
     EXPECT_NE(state.errorMessage.find("must end in .mtl or .gltf"), std::string::npos) << state.errorMessage;
     EXPECT_FALSE(state.session.dirty());  // exporting changes nothing

@@ -4,15 +4,16 @@
 // preset sets n (and κ for metals) per channel, and a metal is refused by a model without κ.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <fstream>
-#include <thread>
 
 #include "brdf/presets.h"
 #include "editor/ior_presets.h"
+#include "editor/light_handles.h"
 #include "editor/mesh_loading.h"
+#include "editor/model_limits.h"
 #include "editor/object_actions.h"
 #include "scene/scene_json.h"
+#include "editor_test_support.h"
 #include "test_support.h"
 
 namespace glint {
@@ -85,21 +86,6 @@ TEST(EditorObjects, OverlayTogglesAreUndoable) {
     EXPECT_FALSE(state.session.scene().display.overlays.wireframe);
 }
 
-// Runs the frame loop's polling until the load finishes (at most 60 s).
-void waitForMeshLoad(EditorState& state) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (pollMeshLoad(state) && std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    ASSERT_FALSE(state.meshLoad) << "the mesh load did not finish";
-}
-
-// Loads a mesh file the way the editor does and closes the undo step, as the frame loop would.
-void loadMeshAndSettle(EditorState& state, const std::string& path) {
-    startMeshLoad(state, path);
-    waitForMeshLoad(state);
-    state.session.settle(false);
-}
-
 std::string writeFile(const std::string& name, const std::string& text) {
     const std::string path = test::outputDirectory("editor_objects") + "/" + name;
     std::ofstream(path) << text;
@@ -111,7 +97,7 @@ TEST(EditorMeshLoad, AMeshFileBecomesAnObjectInOneUndoStep) {
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
     EditorState state;
     const size_t objects = state.session.scene().objects.size();
-    loadMeshAndSettle(state, path);
+    test::loadMeshAndSettle(state, path);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Scene& scene = state.session.scene();
     ASSERT_EQ(scene.objects.size(), objects + 1);
@@ -131,7 +117,7 @@ TEST(EditorMeshLoad, AnObjGetsTheMaterialItsMtlLibraryNames) {
                                        "mtllib paints.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl paint\n"
                                        "f 1 3 2\nf 1 2 4\nf 1 4 3\nusemtl other\nf 2 3 4\n");
     EditorState state;
-    loadMeshAndSettle(state, path);
+    test::loadMeshAndSettle(state, path);
     const Scene& scene = state.session.scene();
     const Material& material = scene.materials.at(scene.objects.back().materialIndex);
     EXPECT_EQ(material.name, "paint");
@@ -139,25 +125,25 @@ TEST(EditorMeshLoad, AnObjGetsTheMaterialItsMtlLibraryNames) {
     EXPECT_NEAR(material.values[1], 0.1f, 1e-6f);
     EXPECT_NEAR(material.values[2], 0.1f, 1e-6f);
     // One material per Glint mesh: the second is named in the status line, at the first usemtl.
-    EXPECT_NE(state.statusMessage.find("painted.obj:6: the file uses 2 materials"), std::string::npos)
-        << state.statusMessage;
+    EXPECT_NE(state.statusMessage.text().find("painted.obj:6: the file uses 2 materials"), std::string::npos)
+        << state.statusMessage.text();
 }
 
 TEST(EditorMeshLoad, AnObjWhoseMtlLibraryIsMissingLoadsWithTheDefaultMaterialAndSaysWhy) {
     const std::string path = writeFile("unpainted.obj", "mtllib missing.mtl\nusemtl paint\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     EditorState state;
     const size_t objects = state.session.scene().objects.size();
-    loadMeshAndSettle(state, path);
+    test::loadMeshAndSettle(state, path);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Scene& scene = state.session.scene();
     ASSERT_EQ(scene.objects.size(), objects + 1);
     const Material& material = scene.materials.at(scene.objects.back().materialIndex);
     EXPECT_EQ(material.model, BrdfModel::Lambert);
     EXPECT_EQ(material.name, "unpainted material");
-    EXPECT_NE(state.statusMessage.find("unpainted.obj:1: material library 'missing.mtl' not used"), std::string::npos)
-        << state.statusMessage;
-    EXPECT_NE(state.statusMessage.find("unpainted.obj:2: 'usemtl paint': no such material"), std::string::npos)
-        << state.statusMessage;
+    EXPECT_NE(state.statusMessage.text().find("unpainted.obj:1: material library 'missing.mtl' not used"), std::string::npos)
+        << state.statusMessage.text();
+    EXPECT_NE(state.statusMessage.text().find("unpainted.obj:2: 'usemtl paint': no such material"), std::string::npos)
+        << state.statusMessage.text();
 }
 
 TEST(EditorMeshLoad, ACorruptMeshShowsFileAndLineAndLeavesTheSceneAsItWas) {
@@ -168,7 +154,7 @@ TEST(EditorMeshLoad, ACorruptMeshShowsFileAndLineAndLeavesTheSceneAsItWas) {
     const std::string before = sceneToJson(state.session.scene()).dump();
     const std::string undoLabel = state.session.undoLabel();
     startMeshLoad(state, path);
-    waitForMeshLoad(state);
+    test::waitForMeshLoad(state);
     state.session.settle(false);
     EXPECT_NE(state.errorMessage.find("corrupt.obj"), std::string::npos) << state.errorMessage;
     EXPECT_EQ(sceneToJson(state.session.scene()).dump(), before);
@@ -193,10 +179,10 @@ TEST(EditorMeshLoad, CancelLeavesTheSceneAsItWas) {
     const std::string before = sceneToJson(state.session.scene()).dump();
     startMeshLoad(state, path);
     state.meshLoad->cancel();
-    waitForMeshLoad(state);
+    test::waitForMeshLoad(state);
     state.session.settle(false);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
-    EXPECT_NE(state.statusMessage.find("Cancelled"), std::string::npos) << state.statusMessage;
+    EXPECT_NE(state.statusMessage.text().find("Cancelled"), std::string::npos) << state.statusMessage.text();
     EXPECT_EQ(sceneToJson(state.session.scene()).dump(), before);
     EXPECT_FALSE(state.session.canUndo());
 }
@@ -208,8 +194,8 @@ TEST(EditorMeshLoad, ASecondLoadWaitsForTheFirst) {
     const MeshLoadJob* first = state.meshLoad.get();
     startMeshLoad(state, path);
     EXPECT_EQ(state.meshLoad.get(), first);
-    EXPECT_NE(state.statusMessage.find("Still loading"), std::string::npos);
-    waitForMeshLoad(state);
+    EXPECT_NE(state.statusMessage.text().find("Still loading"), std::string::npos);
+    test::waitForMeshLoad(state);
 }
 
 glm::vec3 param(const Material& material, const char* name) {
@@ -242,6 +228,60 @@ TEST(IorPresets, GlassModelTakesDielectricsButNoMetal) {
     EXPECT_FALSE(applyIorPreset(glass, "unobtainium"));
     Material lambert = Material::withDefaults("l", BrdfModel::Lambert);
     EXPECT_FALSE(applyIorPreset(lambert, "glass"));
+}
+
+// A new light lands inside the view of the camera as it is (it used to appear at a fixed point,
+// off-screen from the default camera), in front of it and not hidden by the default ball.
+TEST(EditorLights, ANewLightIsPlacedWhereTheCameraSeesIt) {
+    const Scene scene = defaultScene();
+    std::vector<Camera> cameras(5, scene.camera);
+    cameras[1].position = 2.0f * cameras[1].target - cameras[1].position;  // orbited to the far side
+    cameras[2].position = cameras[2].target + 6.0f * (cameras[2].position - cameras[2].target);  // far away
+    cameras[3].projection = Projection::Orthographic;
+    cameras[4].position = cameras[4].target + glm::vec3(0.05f, 5.0f, 0.0f);  // looking straight down
+    for (const Camera& camera : cameras) {
+        const glm::vec3 light = newLightPosition(camera);
+        for (const float aspect : {1.0f, 16.0f / 9.0f}) {
+            const glm::vec4 clip = camera.viewProjection(aspect) * glm::vec4(light, 1.0f);
+            ASSERT_GT(clip.w, 0.0f);
+            const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+            EXPECT_LT(std::abs(ndc.x), 0.9f) << "camera at " << camera.position.x << ", " << camera.position.y << ", " << camera.position.z;
+            EXPECT_LT(std::abs(ndc.y), 0.9f) << "camera at " << camera.position.x << ", " << camera.position.y << ", " << camera.position.z;
+            EXPECT_GT(ndc.z, -1.0f);
+            EXPECT_LT(ndc.z, 1.0f);
+        }
+    }
+    EXPECT_FALSE(hiddenFromCamera(scene, newLightPosition(scene.camera))) << "the default ball hides the new light";
+}
+
+// A light handle behind the default ball is hidden from the camera (drawn faint, not over the
+// ball); one in front of it, or beside it in the open, is not.
+TEST(EditorLights, AHandleBehindTheBallIsHiddenFromTheCamera) {
+    const Scene scene = defaultScene();
+    const glm::vec3 centre = std::get<SphereShape>(scene.objects[0].shape).center;
+    const glm::vec3 towardsCamera = glm::normalize(scene.camera.position - centre);
+    EXPECT_TRUE(hiddenFromCamera(scene, centre - 2.0f * towardsCamera));
+    EXPECT_FALSE(hiddenFromCamera(scene, centre + 2.0f * towardsCamera));
+}
+
+// The note on what a delta-lobe model leaves out shows only where it applies.
+TEST(EditorModelLimits, MirrorAndGlassSayWhatTheyDoNotShowWhereItApplies) {
+    Scene scene = defaultScene();
+    const int object = 0;
+    const int material = scene.objects[object].materialIndex;
+    EXPECT_TRUE(modelLimitNotes(scene, object).empty()) << "the default material reflects the lights";
+    scene.materials[material] = Material::withDefaults("mirror", BrdfModel::Mirror);
+    const auto mirrorNotes = modelLimitNotes(scene, object);
+    ASSERT_EQ(mirrorNotes.size(), scene.objects.size() > 1 ? 2u : 1u);
+    EXPECT_NE(mirrorNotes[0].find("no highlight of the point, spot or directional lights"), std::string::npos);
+    for (Light& light : scene.lights) light.enabled = light.type == LightType::Ambient;
+    scene.objects.resize(1);
+    EXPECT_TRUE(modelLimitNotes(scene, object).empty()) << "no delta light and nothing else to see";
+    scene.objects.push_back(scene.objects[0]);
+    scene.materials[material] = Material::withDefaults("glass", BrdfModel::Glass);
+    const auto glassNotes = modelLimitNotes(scene, object);
+    ASSERT_EQ(glassNotes.size(), 1u);
+    EXPECT_NE(glassNotes[0].find("not the other objects"), std::string::npos);
 }
 
 }  // namespace

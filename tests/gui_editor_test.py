@@ -9,6 +9,9 @@ screenshots. One scenario per ctest entry:
   light_handle drag the key light's handle in the viewport (the lighting turns), undo, redo
   typed_values Ctrl+click a slider and type: a value outside the valid range is refused with a
                message; one past the slider's end but valid is kept
+  typed_commit a value being typed changes nothing (picture, undo history); Enter commits -0.5,
+               which is refused and changes nothing; a click elsewhere commits a valid value;
+               the refusal goes with Ctrl+Z
   screenshot   F12 through the file browser writes the viewport as PNG and as EXR
   crash_signal SIGSEGV right after an edit (autosave 30 s away): the crash guard's copy is
                offered on the next start and restores the edit
@@ -38,7 +41,7 @@ from gui_test_support import pixel, region_difference, run_scenario_from_argumen
 VIEWPORT = (340, 40, 910, 760)
 SPHERE_CENTRE = (625, 375)
 BACKGROUND_SPOT = (350, 60)         # dark background inside the viewport, above the floor
-EXPONENT_SLIDER = (1018, 198)        # Blinn-Phong exponent n (64) in the material column
+EXPONENT_SLIDER = (1018, 240)        # Blinn-Phong exponent n (64) in the material column
 ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
 CASTS_SHADOWS_BOX = (19, 388)        # the selected key light's "Casts shadows" checkbox
 SHADOW_ON_FLOOR = (362, 556)         # a floor point in the key light's shadow (default scene)
@@ -47,12 +50,12 @@ ENVIRONMENT_COMBO = (70, 682)        # Display ▸ Environment: "none"
 ENVIRONMENT_STUDIO = (34, 612)       # its "studio" item (the list opens upwards: no room below)
 SHOW_AS_BACKGROUND_BOX = (19, 763)   # shown once an environment is chosen
 BACKGROUND_BOX = (340, 40, 420, 120)  # viewport corner clear of the sphere, where the studio's softbox shows
-DIFFUSE_TEXTURE_BUTTON = (1245, 142)  # "Tex" beside the diffuse albedo ρ_d; its menu opens at the mouse:
-TEXTURE_MENU_IMAGE = (1222, 181)     #   None, Image file…, Checker, Marble, Wood
-TEXTURE_MENU_CHECKER = (1211, 201)
-IMAGE_TEXTURE_BUTTON = (975, 169)    # once textured, "Image" no longer fits: it opens the next line
-IMAGE_TEXTURE_MENU_IMAGE = (1010, 207)
-TEXTURE_MENU_BOX = (970, 150, 1275, 280)  # where either menu shows
+DIFFUSE_TEXTURE_BUTTON = (1253, 165)  # "Tex" beside the diffuse albedo ρ_d (its label above); its menu opens at the mouse:
+TEXTURE_MENU_IMAGE = (1230, 204)     #   None, Image file…, Checker, Marble, Wood
+TEXTURE_MENU_CHECKER = (1219, 224)
+IMAGE_TEXTURE_BUTTON = (975, 189)    # once textured, "Image" no longer fits: it opens the next line
+IMAGE_TEXTURE_MENU_IMAGE = (1010, 227)
+TEXTURE_MENU_BOX = (970, 173, 1275, 303)  # where either menu shows
 DIALOG_BOX = (450, 370, 840, 430)    # the middle of the window, where a centred dialog shows
 SPHERE_ROW = (420, 830, 375)         # x from, x to, y: a row across the lit sphere
 
@@ -277,7 +280,7 @@ def scenario_crash_signal(x, glint, output, state):
         editor.kill()
 
 
-MATERIAL_COLUMN = (925, 40, 1275, 400)
+MATERIAL_COLUMN = (925, 40, 1275, 520)
 
 
 def refusal_shown(shot):
@@ -287,8 +290,9 @@ def refusal_shown(shot):
                                for x_ in range(MATERIAL_COLUMN[0], MATERIAL_COLUMN[2], 2)))
 
 
-def type_into_slider(x, where, text):
-    """Ctrl+click turns an ImGui slider into a text field (its text selected); type and confirm."""
+def start_typing(x, where, text):
+    """Ctrl+click turns an ImGui slider or drag field into a text field (its text selected); type
+    without confirming."""
     x.move(*where)
     x.run("xdotool", "keydown", "ctrl")
     time.sleep(0.15)
@@ -298,6 +302,11 @@ def type_into_slider(x, where, text):
     time.sleep(0.3)
     x.key("ctrl+a")
     x.type_text(text)
+
+
+def type_into_slider(x, where, text):
+    """Type into a slider and confirm with Enter."""
+    start_typing(x, where, text)
     x.key("Return")
 
 
@@ -320,6 +329,57 @@ def scenario_typed_values(x, glint, output, state):
         close_window(x, editor)
         assert editor.wait_exit() == 0
         print("ok: -5 refused with a message, 20000 kept beyond the slider, undone")
+    finally:
+        editor.kill()
+
+
+ALBEDO_RED_FIELD = (960, 165)    # the diffuse albedo's red channel (its label above)
+PANEL_EMPTY_SPOT = (1100, 700)     # empty material column: a click there ends the typing
+
+
+def window_title(x, editor):
+    return x.run("xdotool", "getwindowname", editor.window).stdout.strip()
+
+
+def scenario_typed_commit(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        assert "●" not in window_title(x, editor)
+        start_typing(x, ALBEDO_RED_FIELD, "-0.5")
+        time.sleep(2)  # frames enough for a keystroke to have been applied, were it applied
+        typing = x.screenshot()
+        save(typing, output, "commit_1_typing")
+        assert region_difference(typing, base, VIEWPORT) < 0.3, "a value being typed must not reach the scene"
+        assert not refusal_shown(typing), "nothing is refused before Enter"
+        assert "●" not in window_title(x, editor), "typing must not record an undo step"
+        x.key("Return")
+        refused = x.wait_for(refusal_shown, "Enter to commit -0.5, which is refused")
+        save(refused, output, "commit_2_refused")
+        assert region_difference(refused, base, VIEWPORT) < 0.3, "a refused value must not change the sphere"
+        assert "●" not in window_title(x, editor), "a refused value must not record an undo step"
+
+        start_typing(x, EXPONENT_SLIDER, "5")
+        time.sleep(2)
+        assert region_difference(x.screenshot(), base, VIEWPORT) < 0.3, "exponent 5 is not committed yet"
+        click_after_hover(x, PANEL_EMPTY_SPOT)
+        x.wait_for(differs(base), "a click elsewhere to commit exponent 5")
+        committed = x.wait_stable(VIEWPORT)
+        save(committed, output, "commit_3_focus_lost")
+        assert not refusal_shown(committed), "a valid value clears the refusal"
+        assert "●" in window_title(x, editor), "the committed value is an unsaved change"
+
+        start_typing(x, ALBEDO_RED_FIELD, "-0.5")
+        x.key("Return")
+        x.wait_for(refusal_shown, "-0.5 refused again")
+        x.key("ctrl+z")
+        undone = x.wait_for(lambda shot: matches(base)(shot) and not refusal_shown(shot),
+                            "Ctrl+Z to undo exponent 5 and take the refusal with it")
+        save(undone, output, "commit_4_undone")
+        assert "●" not in window_title(x, editor)
+        close_window(x, editor)
+        assert editor.wait_exit() == 0
+        print("ok: typing changed nothing, -0.5 refused on Enter, 5 committed by a click elsewhere, refusal gone after undo")
     finally:
         editor.kill()
 

@@ -21,7 +21,7 @@ from gui_test_support import region_difference, run_scenario_from_arguments  # n
 # The object section of the material column on the default scene (1280×800 window). The "Add…"
 # button sits below the material panel, so it moves with the selected object's material: the
 # default sphere's Blinn-Phong, or the Lambert material every added object gets (and selects).
-ADD_BUTTON = {"blinn_phong": (953, 431), "lambert": (953, 303)}
+ADD_BUTTON = {"blinn_phong": (953, 494), "lambert": (953, 303)}
 ADD_MENU_OFFSET = {"Sphere": 16, "Plane": 37, "Cube": 58, "Torus": 79}  # below the button [px]
 
 
@@ -113,9 +113,9 @@ def scenario_add_object(x, glint, output, state):
         editor.kill()
 
 
-SHADING_COMBO = (1018, 506)
-SEGMENTS_SLIDER = (1018, 587)
-SHADING_ITEM = {"exact": (975, 533), "flat": (975, 554)}
+SHADING_COMBO = (1018, 569)
+SEGMENTS_SLIDER = (1018, 650)
+SHADING_ITEM = {"exact": (975, 596), "flat": (975, 617)}
 
 
 def scenario_shading(x, glint, output, state):
@@ -124,7 +124,7 @@ def scenario_shading(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         before = x.screenshot()
         slow_click(x, SHADING_COMBO)
-        x.wait_for(lambda shot: region_difference(shot, before, (930, 470, 1000, 530)) > 1.0, "the shading combo's list")
+        x.wait_for(lambda shot: region_difference(shot, before, (930, 533, 1000, 593)) > 1.0, "the shading combo's list")
         slow_click(x, SHADING_ITEM["flat"])
         park_mouse(x)
         x.wait_for(differs(base, 1.0), "flat shading to change the sphere")

@@ -12,7 +12,7 @@ from gui_test_support import region_difference, run_scenario_from_arguments, wri
 # The 1280×800 window on the default scene: ImGui opens the new window near (60, 60), about
 # 660×510 pixels; the Blinn-Phong exponent slider sits in the material column on the right.
 PLOTS_REGION = (80, 120, 640, 540)
-EXPONENT_SLIDER = (1018, 198)
+EXPONENT_SLIDER = (1018, 240)
 
 
 def plots_scenario_editor(x, glint, output, state):

@@ -276,6 +276,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
+        // Refusals and status lines written before the scene's last change no longer hold.
+        for (SceneMessage* message : {&state.statusMessage, &state.materialPanelMessage, &state.lightPanelMessage,
+                                      &state.displayPanelMessage})
+            message->expire(state.session.revision());
         if (const std::string title = windowTitle(state); title != shownTitle) {
             glfwSetWindowTitle(window, title.c_str());
             shownTitle = title;

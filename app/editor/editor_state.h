@@ -13,6 +13,7 @@
 #include "classroom/compare_view.h"
 #include "edit/edit_session.h"
 #include "edit/recovery.h"
+#include "edit/scene_message.h"
 #include "editor/custom_brdf_state.h"
 #include "editor/panels/file_browser.h"
 #include "editor/panels/plots_window.h"
@@ -35,9 +36,10 @@ struct EditorState {
     bool showLeftPanel = true;
     bool showRightPanel = true;
     bool showHelp = false;
-    std::string materialPanelMessage;
-    std::string lightPanelMessage;  // a typed value the material panel refused, and why
-    std::string displayPanelMessage;  // a typed gamma or level count the display panel refused
+    // A typed value a panel refused, and why (dropped once the scene changes: scene_message.h).
+    SceneMessage materialPanelMessage;
+    SceneMessage lightPanelMessage;
+    SceneMessage displayPanelMessage;  // a typed gamma or level count the display panel refused
 
     // Figures for the status bar.
     double lastRenderMilliseconds = 0.0;
@@ -46,7 +48,7 @@ struct EditorState {
     bool shadowMapsRedrawn = false;  // the last render drew the shadow maps again
     long long triangleCount = 0;  // submitted by the last render
     std::string rendererDescription;
-    std::string statusMessage;  // one line ("Saved …")
+    SceneMessage statusMessage;  // one line ("Saved …")
 
     // Dialogs. An action waiting behind the unsaved-changes prompt (quit, new, open) runs once
     // the user saved or discarded; `errorMessage` is shown in a modal until dismissed.

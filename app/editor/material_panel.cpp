@@ -2,6 +2,7 @@
 #include "editor/material_panel.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -11,6 +12,8 @@
 
 #include "editor/color_space.h"
 #include "editor/ior_presets.h"
+#include "editor/panels/typed_numbers.h"
+#include "editor/panels/widgets.h"
 #include "editor/texture_panel.h"
 #include "interchange/custom_brdf.h"
 #include "interchange/measured_brdf.h"
@@ -26,18 +29,77 @@ std::string formatRange(const ParamSpec& spec) {
     return text;
 }
 
+// A positive channel below this reads "≈ 0" (dragChannels).
+constexpr float kShownAsZero = 1e-4f;
+
 float smallButtonWidth(const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
 
-// Narrows the next widget, where ImGui's default (65 % of the column) would push the label and the
-// buttons after it (R, then Presets beside an index or the texture button) past the column's edge; a long label such as "Diffuse albedo ρ_d" keeps them in view.
-void fitParamWidth(const ParamSpec& spec, const std::vector<const char*>& buttonsAfter) {
+// Room the buttons after a widget take on its line (R, then Presets beside an index or the
+// texture button) [px].
+float buttonsWidth(const std::vector<const char*>& buttonsAfter) {
+    float width = 0.0f;
+    for (const char* button : buttonsAfter) width += ImGui::GetStyle().ItemSpacing.x + smallButtonWidth(button);
+    return width;
+}
+
+// Narrows the next slider, where ImGui's default (65 % of the column) would push the label and the
+// buttons after it past the column's edge; a long label such as "Diffuse albedo ρ_d" keeps them in view.
+void fitSliderWidth(const ParamSpec& spec, const std::vector<const char*>& buttonsAfter) {
     const ImGuiStyle& style = ImGui::GetStyle();
     // One spacing to spare: ImGui's widths round to whole pixels.
-    float trailing = style.ItemSpacing.x + style.ItemInnerSpacing.x + ImGui::CalcTextSize(spec.label, nullptr, true).x;
-    for (const char* button : buttonsAfter) trailing += style.ItemSpacing.x + smallButtonWidth(button);
+    const float trailing = style.ItemSpacing.x + style.ItemInnerSpacing.x + ImGui::CalcTextSize(spec.label, nullptr, true).x +
+                           buttonsWidth(buttonsAfter);
     const float fitted = ImGui::GetContentRegionAvail().x - trailing;
-    const float minimum = 7.0f * ImGui::GetFontSize();  // three numbers stay legible
-    ImGui::SetNextItemWidth(std::max(minimum, std::min(ImGui::CalcItemWidth(), fitted)));
+    ImGui::SetNextItemWidth(std::max(4.0f * ImGui::GetFontSize(), std::min(ImGui::CalcItemWidth(), fitted)));
+}
+
+// Room a combo needs to show an option `textWidth` wide, and its arrow [px].
+float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
+
+float comboWidth(const ParamSpec& spec) {
+    float widest = 0.0f;
+    for (const auto& option : spec.options) widest = std::max(widest, ImGui::CalcTextSize(option.label).x);
+    return comboWidth(widest);
+}
+
+// Where the next widget's label goes and how wide the widget is (panels/widgets.h): three numbers
+// and combos take their own line under the label when the column is too narrow for them beside it.
+std::string placeParamLabel(const ParamSpec& spec, const std::vector<const char*>& buttonsAfter) {
+    const float trailing = buttonsWidth(buttonsAfter);
+    switch (spec.kind) {
+        case ParamKind::PerChannel: return placeLabel(spec.label, threeNumbersWidth(false), trailing);
+        case ParamKind::Color: return placeLabel(spec.label, threeNumbersWidth(true), trailing);
+        case ParamKind::Enum: return placeLabel(spec.label, comboWidth(spec), trailing);
+        case ParamKind::Scalar: fitSliderWidth(spec, buttonsAfter); break;
+        case ParamKind::Bool: break;
+    }
+    return spec.label;
+}
+
+// Three linear numbers side by side as DragFloat3 draws them, each with its own format: a channel
+// at a vanishing positive value (gold's red index n = 1e-8, a lossless conductor) reads "≈ 0", not
+// "1e-08".
+bool dragChannels(const char* label, float* values, float minimum, float maximum) {
+    const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+    bool changed = false;
+    ImGui::BeginGroup();
+    ImGui::PushID(label);
+    ImGui::PushMultiItemsWidths(3, ImGui::CalcItemWidth());
+    for (int c = 0; c < 3; ++c) {
+        ImGui::PushID(c);
+        if (c > 0) ImGui::SameLine(0, spacing);
+        const char* format = values[c] > 0.0f && values[c] < kShownAsZero ? "≈ 0" : "%.4g";
+        changed |= ImGui::DragFloat("##channel", &values[c], 0.005f, minimum, maximum, format);
+        ImGui::PopID();
+        ImGui::PopItemWidth();
+    }
+    ImGui::PopID();
+    if (const char* labelEnd = ImGui::FindRenderedTextEnd(label); labelEnd != label) {
+        ImGui::SameLine(0, spacing);
+        ImGui::TextUnformatted(label, labelEnd);
+    }
+    ImGui::EndGroup();
+    return changed;
 }
 
 // Typed values beyond the slider are kept when the table's valid range allows them, and refused
@@ -46,7 +108,8 @@ void fitParamWidth(const ParamSpec& spec, const std::vector<const char*>& button
 bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const std::vector<const char*>& buttonsAfter) {
     bool changed = false;
     ImGui::PushID(spec.name);
-    fitParamWidth(spec, buttonsAfter);
+    const std::string shown = placeParamLabel(spec, buttonsAfter);
+    const char* label = shown.c_str();
     switch (spec.kind) {
         case ParamKind::Scalar: {
             std::string format = "%.4g";
@@ -54,7 +117,9 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
             ImGuiSliderFlags flags = ImGuiSliderFlags_NoRoundToFormat;
             if (spec.scale == ParamScale::Log) flags |= ImGuiSliderFlags_Logarithmic;
             float edited = *value;
-            if (ImGui::SliderFloat(spec.label, &edited, spec.sliderMin, spec.sliderMax, format.c_str(), flags)) {
+            if (editNumbers(spec.label, &edited, 1, [&](float* typed) {
+                    return ImGui::SliderFloat(label, typed, spec.sliderMin, spec.sliderMax, format.c_str(), flags);
+                })) {
                 // Ctrl+click typing may go past the slider but never past the valid range.
                 if ((spec.validMinExclusive ? edited > spec.validMin : edited >= spec.validMin) && edited <= spec.validMax) {
                     *value = edited, changed = true;
@@ -70,7 +135,9 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
         case ParamKind::PerChannel: {
             // Not a colour (an index of refraction, an absorption coefficient): three linear numbers.
             float edited[3] = {value[0], value[1], value[2]};
-            if (ImGui::DragFloat3(spec.label, edited, 0.005f, spec.sliderMin, spec.sliderMax, "%.4g")) {
+            if (editNumbers(spec.label, edited, 3, [&](float* typed) {
+                    return dragChannels(label, typed, spec.sliderMin, spec.sliderMax);
+                })) {
                 bool valid = true;
                 for (float channel : edited)
                     valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
@@ -86,7 +153,9 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
         }
         case ParamKind::Color: {
             float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
-            if (ImGui::ColorEdit3(spec.label, encoded, ImGuiColorEditFlags_Float)) {
+            if (editNumbers(spec.label, encoded, 3, [&](float* typed) {
+                    return ImGui::ColorEdit3(label, typed, ImGuiColorEditFlags_Float);
+                })) {
                 float linear[3];
                 bool valid = true;
                 for (int c = 0; c < 3; ++c) {
@@ -105,13 +174,13 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
         }
         case ParamKind::Bool: {
             bool checked = *value != 0.0f;
-            if (ImGui::Checkbox(spec.label, &checked)) *value = checked ? 1.0f : 0.0f, changed = true;
+            if (ImGui::Checkbox(label, &checked)) *value = checked ? 1.0f : 0.0f, changed = true;
             break;
         }
         case ParamKind::Enum: {
             int selected = static_cast<int>(*value);
             const char* preview = spec.options[selected].label;
-            if (ImGui::BeginCombo(spec.label, preview)) {
+            if (ImGui::BeginCombo(label, preview)) {
                 for (size_t i = 0; i < spec.options.size(); ++i) {
                     if (ImGui::Selectable(spec.options[i].label, selected == static_cast<int>(i))) {
                         *value = static_cast<float>(i);
@@ -123,7 +192,18 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
             break;
         }
     }
-    if (ImGui::IsItemHovered() && *spec.help) ImGui::SetTooltip("%s", spec.help);
+    if (ImGui::IsItemHovered() && *spec.help) {
+        const bool nearZero = spec.kind == ParamKind::PerChannel &&
+                              std::any_of(value, value + 3, [](float v) { return v > 0.0f && v < kShownAsZero; });
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+        ImGui::TextUnformatted(spec.help);
+        if (nearZero)
+            ImGui::Text("≈ 0: below %g, kept just above 0 (%g) as the value must be positive; for a metal's index n, "
+                        "all of that colour is reflected.", kShownAsZero, *std::min_element(value, value + 3));
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
     ImGui::SameLine();
     if (ImGui::SmallButton("R")) {
         for (int c = 0; c < componentCount(spec.kind); ++c) value[c] = spec.defaultValue[c];
@@ -144,7 +224,10 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     const std::string measuredLabel = material.measured ? "measured (MERL): " + material.measured->displayName : "";
     const char* modelLabel = material.custom ? material.custom->displayName.c_str()
                              : material.measured ? measuredLabel.c_str() : current.label;
-    if (ImGui::BeginCombo("Model", modelLabel)) {
+    float widestModel = ImGui::CalcTextSize(modelLabel).x;
+    for (const ModelInfo& info : allModels()) widestModel = std::max(widestModel, ImGui::CalcTextSize(info.label).x);
+    const std::string modelComboLabel = placeLabel("Model", comboWidth(widestModel));
+    if (ImGui::BeginCombo(modelComboLabel.c_str(), modelLabel)) {
         for (const ModelInfo& info : allModels()) {
             if (ImGui::Selectable(info.label, !custom && info.model == material.model) && (custom || info.model != material.model)) {
                 material.model = info.model;

@@ -65,8 +65,10 @@ bool pollMeshLoad(EditorState& state) {
 
 void addMeshObject(EditorState& state, const std::string& path, ImportedMesh imported, ObjMaterial material) {
     MeshShape shape;
-    shape.path = path;
-    shape.resolvedPath = path;
+    // Absolute, as a scene file's meshes are (util/referenced_path.h): the recovery file, written
+    // in another folder, names the same file.
+    shape.path = std::filesystem::absolute(path).lexically_normal().string();
+    shape.resolvedPath = shape.path;
     shape.mesh = std::move(imported.mesh);
     shape.statistics = imported.statistics;
     std::optional<Material> named;

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "editor/color_space.h"
+#include "editor/panels/typed_numbers.h"
 #include "texture/texture_edit.h"
 #include "texture/texture_image.h"
 
@@ -34,13 +35,14 @@ bool inRange(float value, const ParamSpec& spec) {
 bool drawValue(const char* label, glm::vec3& value, const ParamSpec& spec, std::string& refusal) {
     if (spec.kind == ParamKind::Color) {
         float encoded[3] = {encodeSrgb(value.r), encodeSrgb(value.g), encodeSrgb(value.b)};
-        if (!ImGui::ColorEdit3(label, encoded, ImGuiColorEditFlags_Float)) return false;
+        if (!editNumbers(label, encoded, 3, [&](float* typed) { return ImGui::ColorEdit3(label, typed, ImGuiColorEditFlags_Float); }))
+            return false;
         value = {decodeSrgb(encoded[0]), decodeSrgb(encoded[1]), decodeSrgb(encoded[2])};
         return true;
     }
     float edited = value.x;
-    if (!ImGui::SliderFloat(label, &edited, spec.sliderMin, spec.sliderMax, "%.4g",
-                            spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0))
+    const ImGuiSliderFlags flags = spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0;
+    if (!editNumbers(label, &edited, 1, [&](float* typed) { return ImGui::SliderFloat(label, typed, spec.sliderMin, spec.sliderMax, "%.4g", flags); }))
         return false;
     if (!inRange(edited, spec)) {
         refusal = std::string(spec.label) + " texture: " + std::to_string(edited) + " is outside the valid range";
@@ -52,7 +54,8 @@ bool drawValue(const char* label, glm::vec3& value, const ParamSpec& spec, std::
 
 bool drawPositive(const char* label, glm::vec2& value, std::string& refusal) {
     glm::vec2 edited = value;
-    if (!ImGui::DragFloat2(label, &edited.x, 0.05f, 0.0f, 0.0f, "%.3g")) return false;
+    if (!editNumbers(label, &edited.x, 2, [&](float* typed) { return ImGui::DragFloat2(label, typed, 0.05f, 0.0f, 0.0f, "%.3g"); }))
+        return false;
     if (!(edited.x > 0.0f && edited.y > 0.0f)) {
         refusal = std::string(label) + " must be greater than 0";
         return false;
@@ -88,11 +91,11 @@ bool drawProceduralSettings(MaterialTexture& texture, const ParamSpec& spec, std
     changed |= drawValue("B", texture.valueB, spec, refusal);
     if (texture.kind == TextureKind::Checker) return changed | drawPositive("Squares (u, v)", texture.tiling, refusal);
     float frequency = texture.frequency;
-    if (ImGui::DragFloat("Frequency 1/m", &frequency, 0.02f, 0.0f, 0.0f, "%.3g")) {
+    if (editNumbers("Frequency 1/m", &frequency, 1, [&](float* typed) { return ImGui::DragFloat("Frequency 1/m", typed, 0.02f, 0.0f, 0.0f, "%.3g"); })) {
         if (frequency > 0.0f) texture.frequency = frequency, changed = true;
         else refusal = "Frequency must be greater than 0";
     }
-    changed |= ImGui::SliderFloat("Turbulence", &texture.turbulence, 0.0f, 20.0f, "%.3g");
+    changed |= editNumbers("Turbulence", &texture.turbulence, 1, [](float* typed) { return ImGui::SliderFloat("Turbulence", typed, 0.0f, 20.0f, "%.3g"); });
     changed |= ImGui::SliderInt("Octaves", &texture.octaves, 1, 12);
     return changed;
 }

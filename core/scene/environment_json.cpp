@@ -2,13 +2,13 @@
 #include "scene/environment_json.h"
 
 #include <cmath>
-#include <filesystem>
 
 #include "environment/environment_source.h"
+#include "util/referenced_path.h"
 
 namespace glint {
 
-Environment readEnvironment(ObjectReader& root, const std::string& sceneDirectory) {
+Environment readEnvironment(ObjectReader& root, const std::string& sceneFile) {
     Environment environment;
     if (!root.has("environment")) return environment;
     ObjectReader reader = root.object("environment");
@@ -16,10 +16,7 @@ Environment readEnvironment(ObjectReader& root, const std::string& sceneDirector
     if (environment.kind == EnvironmentKind::File) {
         const std::string written = reader.requiredString("file");
         if (written.empty()) reader.fail("file", "names no file");
-        const std::filesystem::path path(written);
-        environment.file = path.is_absolute() || sceneDirectory.empty()
-                               ? written
-                               : (std::filesystem::path(sceneDirectory) / path).string();
+        environment.file = resolveReferencedPath(written, sceneFile).string();
     }
     environment.rotationDegrees =
         static_cast<float>(reader.number("rotation_degrees", environment.rotationDegrees, Bounds::between(-360, 360)));
@@ -31,10 +28,10 @@ Environment readEnvironment(ObjectReader& root, const std::string& sceneDirector
     return environment;
 }
 
-nlohmann::json environmentToJson(const Environment& environment) {
+nlohmann::json environmentToJson(const Environment& environment, const std::string& sceneFile) {
     if (environment.kind == EnvironmentKind::None) return nullptr;
     nlohmann::json out = {{"type", kEnvironmentKindIds[static_cast<int>(environment.kind)]}};
-    if (environment.kind == EnvironmentKind::File) out["file"] = environment.file;
+    if (environment.kind == EnvironmentKind::File) out["file"] = referencedPathFor(environment.file, sceneFile);
     out["rotation_degrees"] = environment.rotationDegrees;
     out["intensity"] = environment.intensity;
     out["show_as_background"] = environment.showAsBackground;

@@ -9,11 +9,12 @@
 
 namespace glint {
 
-// Reads root["environment"] if present (a relative "file" is taken from `sceneDirectory`) and
-// loads its map; throws JsonReadError through the reader on any mistake.
-Environment readEnvironment(ObjectReader& root, const std::string& sceneDirectory);
+// Reads root["environment"] if present (a relative "file" is taken from the folder of
+// `sceneFile`) and loads its map; throws JsonReadError through the reader on any mistake.
+Environment readEnvironment(ObjectReader& root, const std::string& sceneFile);
 
-// The "environment" object, or null for none.
-nlohmann::json environmentToJson(const Environment& environment);
+// The "environment" object, or null for none; its file relative to the folder of `sceneFile`
+// (absolute when "": util/referenced_path.h).
+nlohmann::json environmentToJson(const Environment& environment, const std::string& sceneFile);
 
 }  // namespace glint

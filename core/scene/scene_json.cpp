@@ -3,7 +3,6 @@
 #include "scene/scene_json.h"
 
 #include <array>
-#include <filesystem>
 
 #include "display/quantisation.h"
 #include "interchange/custom_material_json.h"
@@ -235,9 +234,10 @@ SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materi
     return object;
 }
 
-json objectToJson(const SceneObject& object, const std::vector<Material>& materials) {
+// `file`: where the JSON goes, so that a mesh path is written relative to it ("" for absolute).
+json objectToJson(const SceneObject& object, const std::vector<Material>& materials, const std::string& file) {
     json out = {{"name", object.name}, {"shape", kShapes[object.shape.index()]}};
-    out.update(shapeToJson(object.shape));
+    out.update(shapeToJson(object.shape, file));
     if (object.interpolation != defaultInterpolation(object.shape))
         out["interpolation"] = kInterpolations[static_cast<int>(object.interpolation)];
     out["material"] = materials.at(object.materialIndex).name;
@@ -285,7 +285,7 @@ Scene readScene(const JsonDocument& document) {
         scene.camera = readCamera(camera);
     }
     scene.background = readBackground(root);
-    scene.environment = readEnvironment(root, std::filesystem::path(document.file()).parent_path().string());
+    scene.environment = readEnvironment(root, document.file());
     if (root.has("display")) {
         ObjectReader display = root.object("display");
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
@@ -351,7 +351,7 @@ json sceneToJson(const Scene& scene, const std::string& file) {
                      {"near", camera.nearPlane},
                      {"far", camera.farPlane}};
     out["background"] = backgroundToJson(scene.background);
-    if (scene.environment.kind != EnvironmentKind::None) out["environment"] = environmentToJson(scene.environment);
+    if (scene.environment.kind != EnvironmentKind::None) out["environment"] = environmentToJson(scene.environment, file);
     out["display"] = {{"exposure", scene.display.exposureStops},
                       {"transfer", kTransfers[static_cast<int>(scene.display.transfer)]},
                       {"gamma", scene.display.gamma},
@@ -368,14 +368,13 @@ json sceneToJson(const Scene& scene, const std::string& file) {
     out["lights"] = json::array();
     for (const Light& light : scene.lights) out["lights"].push_back(lightToJson(light));
     out["objects"] = json::array();
-    for (const SceneObject& object : scene.objects) out["objects"].push_back(objectToJson(object, scene.materials));
+    for (const SceneObject& object : scene.objects) out["objects"].push_back(objectToJson(object, scene.materials, file));
     return out;
 }
 
 Status saveScene(const Scene& scene, const std::string& path) {
-    json out = sceneToJson(scene, path);  // texture and .brdf paths relative to `path`
-    relocateMeshPaths(scene, path, out);
-    return writeFileAtomically(path, out.dump(2) + "\n");
+    // Meshes, textures, the environment, .brdf and MERL files named relative to `path`.
+    return writeFileAtomically(path, sceneToJson(scene, path).dump(2) + "\n");
 }
 
 Result<Material> parseMaterial(const std::string& text, const std::string& file) {

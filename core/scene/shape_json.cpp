@@ -1,9 +1,8 @@
 // Shape JSON (see shape_json.h).
 #include "scene/shape_json.h"
 
-#include <filesystem>
-
 #include "geometry/mesh_import.h"
+#include "util/referenced_path.h"
 
 namespace glint {
 namespace {
@@ -11,11 +10,6 @@ namespace {
 using nlohmann::json;
 
 json vec3(glm::vec3 v) { return {v.x, v.y, v.z}; }
-
-std::filesystem::path folderOf(const std::string& file) {
-    if (file.empty()) return std::filesystem::current_path();
-    return std::filesystem::absolute(std::filesystem::path(file)).parent_path();
-}
 
 MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     MeshShape mesh;
@@ -25,8 +19,7 @@ MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     mesh.scale = static_cast<float>(reader.number("scale", mesh.scale, Bounds::positive()));
     mesh.smoothingAngleDegrees = static_cast<float>(
         reader.number("smoothing_angle_degrees", mesh.smoothingAngleDegrees, Bounds::between(0.0, 180.0)));
-    const std::filesystem::path written(mesh.path);
-    mesh.resolvedPath = (written.is_absolute() ? written : folderOf(sceneFile) / written).lexically_normal().string();
+    mesh.resolvedPath = resolveReferencedPath(mesh.path, sceneFile).string();
     auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees});
     if (!imported) reader.fail("path", imported.error().format());
     mesh.mesh = imported->mesh;
@@ -74,7 +67,7 @@ Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string&
     return readMeshShape(reader, sceneFile);
 }
 
-json shapeToJson(const Shape& shape) {
+json shapeToJson(const Shape& shape, const std::string& sceneFile) {
     if (const auto* sphere = std::get_if<SphereShape>(&shape))
         return {{"center", vec3(sphere->center)}, {"radius", sphere->radius}, {"segments", sphere->segments},
                 {"rings", sphere->rings}};
@@ -85,18 +78,9 @@ json shapeToJson(const Shape& shape) {
         return {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
                 {"segments", torus->segments}, {"rings", torus->rings}};
     const auto& mesh = std::get<MeshShape>(shape);
-    return {{"path", mesh.path}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
+    const std::string& file = mesh.resolvedPath.empty() ? mesh.path : mesh.resolvedPath;
+    return {{"path", referencedPathFor(file, sceneFile)}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
             {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
-}
-
-void relocateMeshPaths(const Scene& scene, const std::string& sceneFile, json& out) {
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const auto* mesh = std::get_if<MeshShape>(&scene.objects[i].shape);
-        if (!mesh || mesh->resolvedPath.empty() || std::filesystem::path(mesh->path).is_absolute()) continue;
-        std::error_code code;
-        const auto relative = std::filesystem::relative(mesh->resolvedPath, folderOf(sceneFile), code);
-        if (!code && !relative.empty()) out["objects"][i]["path"] = relative.generic_string();
-    }
 }
 
 }  // namespace glint

@@ -18,11 +18,8 @@ PlaneShape readPlaneShape(ObjectReader& reader);
 // path resolved against the folder of `sceneFile`; an import error fails at the "path" key.
 Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string& sceneFile);
 
-// The shape's own keys (not "shape" itself).
-nlohmann::json shapeToJson(const Shape& shape);
-
-// Rewrites the relative "path" of each mesh object in `out` (sceneToJson's output) so that it
-// still names the same file when the scene is saved to `sceneFile`.
-void relocateMeshPaths(const Scene& scene, const std::string& sceneFile, nlohmann::json& out);
+// The shape's own keys (not "shape" itself). A mesh's path is written relative to the folder of
+// `sceneFile`, or absolute when it is "" (util/referenced_path.h).
+nlohmann::json shapeToJson(const Shape& shape, const std::string& sceneFile);
 
 }  // namespace glint

@@ -1,16 +1,14 @@
 // The "textures" object of a material (see texture_json.h).
 #include "texture/texture_json.h"
 
-#include <filesystem>
-
 #include "texture/texture_edit.h"
 #include "texture/texture_image.h"
+#include "util/referenced_path.h"
 
 namespace glint {
 namespace {
 
 using nlohmann::json;
-namespace fs = std::filesystem;
 
 constexpr const char* kKinds[] = {"image", "checker", "marble", "wood"};  // order of TextureKind
 constexpr const char* kColorSpaces[] = {"srgb", "linear"};
@@ -31,12 +29,6 @@ glm::vec3 readValue(ObjectReader& reader, const char* key, glm::vec3 fallback, c
     return glm::vec3(static_cast<float>(reader.number(key, fallback.x, bounds)));
 }
 
-std::string resolve(const std::string& file, const std::string& referencingFile) {
-    fs::path path(file);
-    if (path.is_relative() && !referencingFile.empty()) path = fs::absolute(referencingFile).parent_path() / path;
-    return fs::absolute(path).lexically_normal().string();
-}
-
 MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, const ParamSpec* spec,
                             const std::string& referencingFile) {
     if (!reader.has("type")) reader.failHere("a texture needs the key 'type' (image, checker, marble or wood)");
@@ -45,7 +37,7 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
     MaterialTexture texture = defaultTexture(parameter, spec, kind);
     if (kind == TextureKind::Image) {
         const std::string file = reader.requiredString("file");
-        texture.file = resolve(file, referencingFile);
+        texture.file = resolveReferencedPath(file, referencingFile).string();
         texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(texture.colorSpace)));
         texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(texture.filter)));
         texture.tiling = reader.vec2("tiling", texture.tiling, Bounds::positive());
@@ -107,9 +99,7 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
         json entry = {{"type", kKinds[static_cast<int>(texture.kind)]}};
         switch (texture.kind) {
             case TextureKind::Image: {
-                std::string file = texture.file;
-                if (!targetFile.empty()) file = fs::path(file).lexically_relative(fs::absolute(targetFile).parent_path()).generic_string();
-                entry["file"] = file;
+                entry["file"] = referencedPathFor(texture.file, targetFile);
                 entry["color_space"] = kColorSpaces[static_cast<int>(texture.colorSpace)];
                 entry["filter"] = kFilters[static_cast<int>(texture.filter)];
                 entry["tiling"] = {texture.tiling.x, texture.tiling.y};

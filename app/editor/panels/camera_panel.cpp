@@ -6,6 +6,7 @@
 
 #include "editor/camera_actions.h"
 #include "editor/panels/panels.h"
+#include "editor/panels/typed_numbers.h"
 
 namespace glint {
 
@@ -19,13 +20,13 @@ void drawCameraSection(EditorState& state) {
     }
     if (camera.projection == Projection::Perspective) {
         float fov = camera.verticalFovDegrees;
-        if (ImGui::SliderFloat("Field of view", &fov, 5.0f, 120.0f, "%.1f°")) {
+        if (editNumbers("Field of view", &fov, 1, [](float* typed) { return ImGui::SliderFloat("Field of view", typed, 5.0f, 120.0f, "%.1f°"); })) {
             if (fov > 0.0f && fov < 180.0f) camera.verticalFovDegrees = fov, changed = true;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Vertical field of view");
     } else {
         float height = camera.orthoHeight;
-        if (ImGui::DragFloat("View height", &height, 0.02f, 0.01f, 1000.0f, "%.2f m")) {
+        if (editNumbers("View height", &height, 1, [](float* typed) { return ImGui::DragFloat("View height", typed, 0.02f, 0.01f, 1000.0f, "%.2f m"); })) {
             if (height > 0.0f && std::isfinite(height)) camera.orthoHeight = height, changed = true;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Height of the orthographic view [m]");

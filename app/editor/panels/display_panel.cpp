@@ -8,6 +8,7 @@
 #include "classroom/presentation.h"
 
 #include "editor/panels/panels.h"
+#include "editor/panels/typed_numbers.h"
 #include "editor/panels/widgets.h"
 
 namespace glint {
@@ -39,7 +40,7 @@ void drawDisplaySection(EditorState& state) {
     const Scene& scene = state.session.scene();
     DisplaySettings display = scene.display;
     bool changed = false;
-    changed |= ImGui::SliderFloat("Exposure", &display.exposureStops, -10.0f, 10.0f, "%+.2f EV");
+    changed |= editNumbers("Exposure", &display.exposureStops, 1, [](float* typed) { return ImGui::SliderFloat("Exposure", typed, -10.0f, 10.0f, "%+.2f EV"); });
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance is multiplied by 2^EV before encoding");
     int toneMap = static_cast<int>(display.toneMap);
     if (ImGui::Combo("Tone map", &toneMap, "none (clip)\0Reinhard\0ACES filmic\0")) {
@@ -55,8 +56,8 @@ void drawDisplaySection(EditorState& state) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("sRGB: IEC 61966-2-1 · gamma: value^(1/γ) · linear: no encoding");
     if (display.transfer == Transfer::Gamma)
-        changed |= boundedDrag("Gamma", display.gamma, 0.1f, 10.0f, "%.2f", state.displayPanelMessage, "γ: the encoded value is value^(1/γ)");
-    changed |= drawQuantisationWidgets(display, state.displayPanelMessage);
+        changed |= boundedDrag("Gamma", display.gamma, 0.1f, 10.0f, "%.2f", state.displayPanelMessage.text(), "γ: the encoded value is value^(1/γ)");
+    changed |= drawQuantisationWidgets(display, state.displayPanelMessage.text());
     if (!state.displayPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.displayPanelMessage.c_str());
     if (changed) state.session.change("Edit display").display = display;
 

@@ -7,6 +7,7 @@
 #include "environment/environment_source.h"
 #include "editor/panels/file_browser.h"
 #include "editor/panels/panels.h"
+#include "editor/panels/typed_numbers.h"
 #include "editor/panels/widgets.h"
 
 namespace glint {
@@ -50,7 +51,8 @@ void drawEnvironmentSection(EditorState& state) {
     }
     Environment environment = current;
     bool changed = false;
-    changed |= ImGui::SliderFloat("Rotation", &environment.rotationDegrees, -180.0f, 180.0f, "%.1f°");
+    changed |= editNumbers("Rotation", &environment.rotationDegrees, 1,
+                           [](float* typed) { return ImGui::SliderFloat("Rotation", typed, -180.0f, 180.0f, "%.1f°"); });
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Turns the map about +y (degrees)");
     changed |= boundedDrag("Intensity", environment.intensity, 0.0f, 1e6f, "%.3f", refusal,
                            "Scale on the map's radiance, W/(sr·m²) per map unit (white: L itself)");

@@ -12,8 +12,10 @@
 #include <cmath>
 #include <string>
 
+#include "editor/light_handles.h"
 #include "editor/panels/panels.h"
 #include "editor/panels/shadow_widgets.h"
+#include "editor/panels/typed_numbers.h"
 #include "editor/panels/widgets.h"
 #include "light/light_type_name.h"
 #include "light/photometry.h"
@@ -25,9 +27,9 @@ Light newLight(LightType type, const Scene& scene) {
     Light light;
     light.type = type;
     light.name = std::string(lightTypeName(type)) + " " + std::to_string(scene.lights.size() + 1);
-    light.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.5f));
-    light.position = {0.0f, 2.5f, 2.0f};
-    if (type == LightType::Spot) light.direction = glm::normalize(-light.position);  // aimed at the origin
+    // Where the camera sees it (light_handles.h), aimed at what the camera looks at.
+    light.position = newLightPosition(scene.camera);
+    light.direction = glm::normalize(scene.camera.target - light.position);
     return light;
 }
 
@@ -128,7 +130,8 @@ bool drawLightEditor(Light& light, std::string& refusal) {
     }
     if (light.type == LightType::Directional || light.type == LightType::Spot) {
         glm::vec3 direction = light.direction;
-        if (ImGui::DragFloat3("Direction", &direction.x, 0.01f, -1.0f, 1.0f, "%.2f")) {
+        const std::string shown = placeLabel("Direction", threeNumbersWidth(false));
+        if (editNumbers("Direction", &direction.x, 3, [&](float* typed) { return ImGui::DragFloat3(shown.c_str(), typed, 0.01f, -1.0f, 1.0f, "%.2f"); })) {
             if (glm::length(direction) > 1e-4f && std::isfinite(glm::length(direction)))
                 light.direction = glm::normalize(direction), changed = true, refusal.clear();
             else refusal = "Direction must not be zero";
@@ -137,7 +140,8 @@ bool drawLightEditor(Light& light, std::string& refusal) {
     }
     if (light.type == LightType::Point || light.type == LightType::Spot) {
         glm::vec3 position = light.position;
-        if (ImGui::DragFloat3("Position m", &position.x, 0.02f, 0.0f, 0.0f, "%.2f")) {
+        const std::string shown = placeLabel("Position m", threeNumbersWidth(false));
+        if (editNumbers("Position m", &position.x, 3, [&](float* typed) { return ImGui::DragFloat3(shown.c_str(), typed, 0.02f, 0.0f, 0.0f, "%.2f"); })) {
             if (std::isfinite(position.x + position.y + position.z)) light.position = position, changed = true;
         }
     }
@@ -154,7 +158,8 @@ bool drawLightEditor(Light& light, std::string& refusal) {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("1/(a0 + a1·d + a2·d²) instead of the inverse-square law 1/d²");
         if (light.attenuation.enabled) {
             glm::vec3 coefficients = light.attenuation.coefficients;
-            if (ImGui::DragFloat3("a0 a1 a2", &coefficients.x, 0.01f, 0.0f, 0.0f, "%.3f")) {
+            const std::string shown = placeLabel("a0 a1 a2", threeNumbersWidth(false));
+            if (editNumbers("a0 a1 a2", &coefficients.x, 3, [&](float* typed) { return ImGui::DragFloat3(shown.c_str(), typed, 0.01f, 0.0f, 0.0f, "%.3f"); })) {
                 const bool valid = coefficients.x >= 0 && coefficients.y >= 0 && coefficients.z >= 0 &&
                                    coefficients.x + coefficients.y + coefficients.z > 0;
                 if (valid) light.attenuation.coefficients = coefficients, changed = true, refusal.clear();
@@ -173,11 +178,11 @@ void drawLightsSection(EditorState& state) {
     const Scene& scene = state.session.scene();
     if (state.selectedLight >= static_cast<int>(scene.lights.size())) return;
     ImGui::Separator();
-    ImGui::PushID("selected light");
+    ImGui::PushID(state.selectedLight);  // numbers typed for one light never land on another
     Light edited = scene.lights[state.selectedLight];
-    bool changed = drawLightEditor(edited, state.lightPanelMessage);
+    bool changed = drawLightEditor(edited, state.lightPanelMessage.text());
     if (advancedPanelsVisible(state.settings))  // presentation mode hides shadow-map settings
-        changed |= drawShadowSettings(edited, shadowedLightsOtherThan(scene, state.selectedLight), state.lightPanelMessage);
+        changed |= drawShadowSettings(edited, shadowedLightsOtherThan(scene, state.selectedLight), state.lightPanelMessage.text());
     if (changed) state.session.change("Edit light").lights[state.selectedLight] = std::move(edited);
     if (!state.lightPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.lightPanelMessage.c_str());
     ImGui::PopID();

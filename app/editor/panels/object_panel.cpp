@@ -6,11 +6,15 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <string>
 #include <variant>
 
 #include "editor/material_panel.h"
+#include "editor/model_limits.h"
 #include "editor/object_actions.h"
 #include "editor/panels/panels.h"
+#include "editor/panels/typed_numbers.h"
+#include "editor/panels/widgets.h"
 
 namespace glint {
 namespace {
@@ -18,7 +22,8 @@ namespace {
 // A drag field for a length that must stay positive; `refusal` says why a typed value was refused.
 bool positiveLength(const char* label, float& value, std::string& refusal) {
     float edited = value;
-    if (!ImGui::DragFloat(label, &edited, 0.005f, 0.0f, 0.0f, "%.3f")) return false;
+    if (!editNumbers(label, &edited, 1, [&](float* typed) { return ImGui::DragFloat(label, typed, 0.005f, 0.0f, 0.0f, "%.3f"); }))
+        return false;
     if (edited > 0.0f && std::isfinite(edited)) {
         value = edited;
         refusal.clear();
@@ -26,6 +31,17 @@ bool positiveLength(const char* label, float& value, std::string& refusal) {
     }
     refusal = std::string(label) + " must be greater than 0";
     return false;
+}
+
+// A shape's centre [m], any finite point.
+bool centreField(glm::vec3& centre) {
+    glm::vec3 edited = centre;
+    const std::string shown = placeLabel("Centre m", threeNumbersWidth(false));
+    if (!editNumbers("Centre m", &edited.x, 3, [&](float* typed) { return ImGui::DragFloat3(shown.c_str(), typed, 0.01f, 0.0f, 0.0f, "%.2f"); }))
+        return false;
+    if (!std::isfinite(edited.x + edited.y + edited.z)) return false;
+    centre = edited;
+    return true;
 }
 
 // Segments × rings of a tessellated shape; the slider keeps them in range.
@@ -40,29 +56,30 @@ bool tessellationSliders(int& segments, int& rings, int minimumRings) {
 bool drawShapeEditor(Shape& shape, std::string& refusal) {
     bool changed = false;
     if (auto* sphere = std::get_if<SphereShape>(&shape)) {
-        changed |= ImGui::DragFloat3("Centre m", &sphere->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= centreField(sphere->center);
         changed |= positiveLength("Radius m", sphere->radius, refusal);
         changed |= tessellationSliders(sphere->segments, sphere->rings, 2);
     } else if (auto* cube = std::get_if<CubeShape>(&shape)) {
-        changed |= ImGui::DragFloat3("Centre m", &cube->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= centreField(cube->center);
         changed |= positiveLength("Edge m", cube->size, refusal);
     } else if (auto* torus = std::get_if<TorusShape>(&shape)) {
-        changed |= ImGui::DragFloat3("Centre m", &torus->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= centreField(torus->center);
         changed |= positiveLength("Major radius m", torus->majorRadius, refusal);
         changed |= positiveLength("Tube radius m", torus->minorRadius, refusal);
         changed |= tessellationSliders(torus->segments, torus->rings, 3);
     } else if (auto* mesh = std::get_if<MeshShape>(&shape)) {
-        changed |= ImGui::DragFloat3("Centre m", &mesh->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= centreField(mesh->center);
         changed |= positiveLength("Size (radius) m", mesh->scale, refusal);
     } else if (auto* plane = std::get_if<PlaneShape>(&shape)) {
-        changed |= ImGui::DragFloat3("Centre m", &plane->center.x, 0.01f, 0.0f, 0.0f, "%.2f");
+        changed |= centreField(plane->center);
         glm::vec3 normal = plane->normal;
-        if (ImGui::DragFloat3("Normal", &normal.x, 0.01f, -1.0f, 1.0f, "%.2f")) {
+        const std::string shown = placeLabel("Normal", threeNumbersWidth(false));
+        if (editNumbers("Normal", &normal.x, 3, [&](float* typed) { return ImGui::DragFloat3(shown.c_str(), typed, 0.01f, -1.0f, 1.0f, "%.2f"); })) {
             if (glm::length(normal) > 1e-4f) plane->normal = glm::normalize(normal), changed = true, refusal.clear();
             else refusal = "Normal must not be zero";
         }
         glm::vec2 size = plane->size;
-        if (ImGui::DragFloat2("Size m", &size.x, 0.02f, 0.0f, 0.0f, "%.2f")) {
+        if (editNumbers("Size m", &size.x, 2, [&](float* typed) { return ImGui::DragFloat2("Size m", typed, 0.02f, 0.0f, 0.0f, "%.2f"); })) {
             if (size.x > 0.0f && size.y > 0.0f) plane->size = size, changed = true, refusal.clear();
             else refusal = "Both sides must be longer than 0";
         }
@@ -116,7 +133,7 @@ void drawOverlayToggles(EditorState& state) {
     ImGui::SameLine();
     if (ImGui::Checkbox("Normals (N)", &overlays.normals)) toggleNormals(state);
     if (overlays.normals) {
-        if (positiveLength("Normal length m", overlays.normalLength, state.materialPanelMessage))
+        if (positiveLength("Normal length m", overlays.normalLength, state.materialPanelMessage.text()))
             state.session.change("Normal length").display.overlays.normalLength = overlays.normalLength;
     }
 }
@@ -142,8 +159,10 @@ void drawObjectSection(EditorState& state) {
     ImGui::Text("Material: %s", edited.name.c_str());
     ImGui::Separator();
     std::string textureFileRequest;
-    if (drawMaterialPanel(edited, state.materialPanelMessage, textureFileRequest))
+    ImGui::PushID(materialIndex);  // numbers typed for one material never land on another
+    if (drawMaterialPanel(edited, state.materialPanelMessage.text(), textureFileRequest))
         state.session.change("Edit " + edited.name).materials[materialIndex] = std::move(edited);
+    ImGui::PopID();
     if (!textureFileRequest.empty()) {
         state.textureMaterialIndex = materialIndex;
         state.textureParameter = textureFileRequest;
@@ -152,6 +171,12 @@ void drawObjectSection(EditorState& state) {
     if (!state.materialPanelMessage.empty()) {
         ImGui::PushTextWrapPos();
         ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.materialPanelMessage.c_str());
+        ImGui::PopTextWrapPos();
+    }
+    // What the model leaves out here (a mirror under point lights, glass before other objects).
+    for (const std::string& note : modelLimitNotes(scene, state.selectedObject)) {
+        ImGui::PushTextWrapPos();
+        ImGui::TextColored(ImVec4(0.6f, 0.75f, 0.95f, 1.0f), "Note: %s", note.c_str());
         ImGui::PopTextWrapPos();
     }
     drawPresetBrowser(state, materialIndex);
@@ -168,7 +193,7 @@ void drawObjectSection(EditorState& state) {
     Shape shape = state.session.scene().objects[state.selectedObject].shape;
     ImGui::TextDisabled("%s", shapeLabel(shape));
     drawInterpolationCombo(state);
-    if (drawShapeEditor(shape, state.materialPanelMessage))
+    if (drawShapeEditor(shape, state.materialPanelMessage.text()))
         state.session.change("Edit shape").objects[state.selectedObject].shape = shape;
     if (const auto* mesh = std::get_if<MeshShape>(&shape)) drawMeshStatistics(*mesh);
 }

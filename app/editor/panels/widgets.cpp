@@ -1,19 +1,43 @@
 // Shared panel widgets (see widgets.h).
 #include "editor/panels/widgets.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "editor/color_space.h"
+#include "editor/panels/typed_numbers.h"
 
 namespace glint {
+
+float threeNumbersWidth(bool swatch) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float number = ImGui::CalcTextSize("0.000").x + 2.0f * style.FramePadding.x + 2.0f;
+    return 3.0f * number + 2.0f * style.ItemInnerSpacing.x + (swatch ? style.ItemInnerSpacing.x + ImGui::GetFrameHeight() : 0.0f);
+}
+
+std::string placeLabel(const char* label, float contentWidth, float trailing) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const char* labelEnd = ImGui::FindRenderedTextEnd(label);
+    const float labelWidth = ImGui::CalcTextSize(label, labelEnd).x;
+    const float beside = ImGui::GetContentRegionAvail().x - trailing - style.ItemInnerSpacing.x - labelWidth;
+    if (beside >= contentWidth) {  // wider than the column's usual width where the content needs it
+        ImGui::SetNextItemWidth(std::max(std::min(ImGui::CalcItemWidth(), beside), contentWidth));
+        return label;
+    }
+    ImGui::TextUnformatted(label, labelEnd);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - trailing);
+    return std::string("##") + label;
+}
 
 bool linearColorEdit(const char* label, glm::vec3& linear, const char* tooltip) {
     float encoded[3] = {encodeSrgb(linear.r), encodeSrgb(linear.g), encodeSrgb(linear.b)};
     bool changed = false;
-    if (ImGui::ColorEdit3(label, encoded, ImGuiColorEditFlags_Float)) {
+    const std::string shown = placeLabel(label, threeNumbersWidth(true));
+    if (editNumbers(label, encoded, 3, [&](float* typed) { return ImGui::ColorEdit3(shown.c_str(), typed, ImGuiColorEditFlags_Float); })) {
         for (int c = 0; c < 3; ++c) linear[c] = decodeSrgb(std::max(encoded[c], 0.0f));
         changed = true;
     }
@@ -26,7 +50,7 @@ bool boundedDrag(const char* label, float& value, float minimum, float maximum, 
     float typed = value;
     bool changed = false;
     const float speed = std::max(std::abs(value) * 0.01f, 0.01f);
-    if (ImGui::DragFloat(label, &typed, speed, 0.0f, 0.0f, format)) {
+    if (editNumbers(label, &typed, 1, [&](float* edited) { return ImGui::DragFloat(label, edited, speed, 0.0f, 0.0f, format); })) {
         if (std::isfinite(typed) && typed >= minimum && typed <= maximum) {
             value = typed;
             changed = true;

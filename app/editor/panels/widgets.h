@@ -1,6 +1,6 @@
 // Small widgets shared by the panels: a colour picker that shows sRGB-encoded values while the
-// scene stores linear RGB (DESIGN.md), and a non-negative number field that refuses (with a
-// message) what the scene would refuse. No panel layout here.
+// scene stores linear RGB (DESIGN.md), a non-negative number field that refuses (with a
+// message) what the scene would refuse, and where a wide widget's label goes. No panel layout here.
 #pragma once
 
 #include <string>
@@ -9,7 +9,16 @@
 
 namespace glint {
 
+// Room three numbers need side by side, each "0.000" unclipped [px]; `swatch` adds a colour's.
+float threeNumbersWidth(bool swatch);
+// A widget whose content needs `contentWidth` [px] (three numbers, a combo's longest option) and
+// that leaves `trailing` [px] after it on its line for buttons: when the column leaves it less room
+// beside its label, the label goes on its own line above and the widget takes the line's width.
+// Sets the next item's width; returns the label to give the widget ("##…" when it went above).
+std::string placeLabel(const char* label, float contentWidth, float trailing = 0.0f);
+
 // Edits a linear-RGB radiance or filter through an sRGB-encoded picker; negatives are refused.
+// Its label goes above it where the column is too narrow for three numbers beside it.
 bool linearColorEdit(const char* label, glm::vec3& linear, const char* tooltip);
 // A drag field for a value in [minimum, maximum]; a typed value outside is refused into `refusal`.
 bool boundedDrag(const char* label, float& value, float minimum, float maximum, const char* format,

@@ -1,0 +1,28 @@
+// What the delta-lobe models leave out, said where it applies (see model_limits.h).
+#include "editor/model_limits.h"
+
+#include <algorithm>
+
+namespace glint {
+
+std::vector<std::string> modelLimitNotes(const Scene& scene, int objectIndex) {
+    std::vector<std::string> notes;
+    if (objectIndex < 0 || objectIndex >= static_cast<int>(scene.objects.size())) return notes;
+    const Material& material = scene.materials.at(scene.objects[objectIndex].materialIndex);
+    if (material.custom || material.measured) return notes;
+    const bool mirror = material.model == BrdfModel::Mirror, glass = material.model == BrdfModel::Glass;
+    if (!mirror && !glass) return notes;
+    const std::string what = mirror ? "A mirror's reflection" : "Glass's reflection and refraction";
+    const bool deltaLight = std::ranges::any_of(scene.lights, [](const Light& light) {
+        return light.enabled && light.type != LightType::Ambient;
+    });
+    if (deltaLight)
+        notes.push_back(what + " shows no highlight of the point, spot or directional lights: a light of no size "
+                               "has a reflection of no area. An environment map shows bright spots it can reflect.");
+    if (scene.objects.size() > 1)
+        notes.push_back(what + " shows the " + (scene.environment.kind != EnvironmentKind::None ? "environment" : "background") +
+                        ", not the other objects in the scene (no ray tracing between objects).");
+    return notes;
+}
+
+}  // namespace glint
