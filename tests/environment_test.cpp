@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "brdf/cook_torrance.h"
+#include "brdf/oren_nayar.h"
 #include "environment/environment_lighting.h"
 #include "environment/environment_map.h"
 #include "environment/ggx_sampling.h"
@@ -195,6 +196,27 @@ TEST(EnvironmentMap, RotationTurnsTheMapAboutY) {
     // Turned by 90°, what was seen along +x is seen along −z... (x' = x cos − z sin).
     const glm::vec3 turned = environmentRadiance(environment, {0, 0, -1});
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(turned[c], seen[c], 1e-4f);
+}
+
+TEST(EnvironmentMap, OrenNayarDirectionalAlbedoMatchesQuadrature) {
+    // The closed form the Oren-Nayar environment hook scales E(n)/π by, against ∫ f_r cos θ_i dω_i / ρ
+    // by the midpoint rule over (θ_i, φ_i).
+    const ShadingFrame frame = ShadingFrame::fromNormal({0, 0, 1});
+    for (float sigma : {0.0f, 30.0f, 60.0f})
+        for (float cosOut : {1.0f, 0.7f, 0.3f, 0.1f}) {
+            const OrenNayarParams params{glm::vec3(1.0f), sigma};
+            const glm::vec3 wo{std::sqrt(1.0f - cosOut * cosOut), 0.0f, cosOut};
+            constexpr int kSteps = 400;
+            double albedo = 0.0;
+            for (int i = 0; i < kSteps; ++i)
+                for (int j = 0; j < 2 * kSteps; ++j) {
+                    const float theta = (i + 0.5f) * 0.5f * kPi / kSteps, phi = (j + 0.5f) * kPi / kSteps;
+                    const glm::vec3 wi{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+                    albedo += evalOrenNayar(params, wi, wo, frame).g * std::cos(theta) * std::sin(theta) *
+                              (0.5 * kPi / kSteps) * (kPi / kSteps);
+                }
+            EXPECT_NEAR(directionalAlbedoOrenNayar(sigma, cosOut), albedo, 2e-3) << "σ " << sigma << ", cos θ_o " << cosOut;
+        }
 }
 
 // --- importance sampling of the map ---------------------------------------------------------

@@ -31,7 +31,7 @@ constexpr ModelInfo kModels[] = {
      true, false,
      "M. Oren, S. K. Nayar, Generalization of Lambert's Reflectance Model, SIGGRAPH 1994 (qualitative model, eq. 30)",
      "ambientReflectanceOrenNayar", nullptr,
-     "environmentLightingOrenNayar", "ρ·E(n)/π (irradiance map, as Lambert)"},
+     "environmentLightingOrenNayar", "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo)"},
     {BrdfModel::Phong, "phong", "Phong", "brdf/phong.glsl", "evalPhong", kPhongTable, true, false,
      "B. T. Phong, Illumination for Computer Generated Pictures, CACM 18(6), 1975; "
      "normalisation: R. R. Lewis, Making Shaders More Physically Plausible, 1994",

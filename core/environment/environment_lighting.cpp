@@ -72,8 +72,11 @@ glm::vec3 environmentLightingLambert(const LambertParams& p, glm::vec3, const Sh
     return p.albedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
-glm::vec3 environmentLightingOrenNayar(const OrenNayarParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
-    return p.albedo * environmentDiffuseRadiance(e, frame.normal);
+// The directional albedo × E(n)/π: exact under a uniform map, as for Lambert.
+glm::vec3 environmentLightingOrenNayar(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame,
+                                       const Environment& e) {
+    return p.albedo * directionalAlbedoOrenNayar(p.roughnessDegrees, frame.cosTheta(wo)) *
+           environmentDiffuseRadiance(e, frame.normal);
 }
 
 glm::vec3 environmentLightingRetroreflective(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame,
