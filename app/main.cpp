@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "                              FILE as File > Open does: a scene or material .json, a BRDF Explorer\n"
     "                              .brdf, a .mtl, .gltf or .glb material (glTF lights too), a MERL\n"
     "                              .binary, or a mesh .obj|.ply|.stl|.fbx (added as an object)\n"
-    "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference]\n"
+    "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference [--samples N]]\n"
     "                              render headless (no display needed)\n"
     "  glint snapshot SUITE [--out DIR] [--update] [--update-case NAME] [--jobs N] [--shard I/N]\n"
     "                              compare a suite of scenes and materials with their goldens\n"

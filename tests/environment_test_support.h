@@ -8,19 +8,14 @@
 #include <OpenImageIO/imageio.h>
 
 #include "environment/environment_source.h"
+#include "environment_accuracy_support.h"
 #include "scene/scene.h"
 
 namespace glint::test {
 
 // A unit sphere of `material` seen from +z (orthographic, filling most of the frame).
 inline Scene sphereUnderEnvironment(const Material& material, EnvironmentKind kind, const std::string& file = {}) {
-    Scene scene;
-    scene.camera.projection = Projection::Orthographic;
-    scene.camera.position = {0.0f, 0.0f, 5.0f};
-    scene.camera.target = {0.0f, 0.0f, 0.0f};
-    scene.camera.orthoHeight = 2.2f;
-    scene.materials = {material};
-    scene.objects.push_back({"sphere", SphereShape{}, 0});
+    Scene scene = accuracyScene(material, Environment{});
     scene.environment.kind = kind;
     scene.environment.file = file;
     if (Status loaded = loadEnvironment(scene.environment); !loaded) ADD_FAILURE() << loaded.error().format();

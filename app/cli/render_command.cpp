@@ -22,7 +22,7 @@ namespace glint {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference] [--wireframe] [--normals]\n"
+    "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference [--samples N]] [--wireframe] [--normals]\n"
     "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256);\n"
     "                     also a Wavefront .mtl, a glTF .gltf (its first material on the stage),\n"
     "                     a MERL measured BRDF .binary (preview stage)\n"
@@ -31,6 +31,9 @@ constexpr const char* kUsage =
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
     "  --reference        render with the CPU reference ray caster instead of OpenGL\n"
+    "  --samples N        with --reference: integrate the environment light by Monte-Carlo with N samples\n"
+    "                     per pixel (map, cosine and GGX importance sampling, deterministic), not the\n"
+    "                     preview's image-based lighting; progress on stderr\n"
     "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
     "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
     "  --probe X,Y        print the surface probe at pixel (X, Y): the chain from each light to the pixel\n"
@@ -40,6 +43,7 @@ struct RenderOptions {
     std::string scenePath, outputPath;
     int width = 0, height = 0, msaa = 0;
     bool reference = false;
+    int environmentSamples = 0;  // --samples N: the Monte-Carlo environment (0: the preview's)
     bool wireframe = false, normals = false;
     std::optional<glm::ivec2> probePixel;          // --probe X,Y
     std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order (the plots among them)
@@ -115,6 +119,11 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             options.msaa = std::stoi(*value);
         } else if (argument == "--reference") {
             options.reference = true;
+        } else if (argument == "--samples") {
+            const std::string* value = next();
+            if (!value || !std::regex_match(*value, std::regex(R"(\d{1,7})")) || std::stoi(*value) < 1)
+                return usageError("--samples needs a positive number of samples per pixel, e.g. 1024");
+            options.environmentSamples = std::stoi(*value);
         } else if (argument == "--wireframe") {
             options.wireframe = true;
         } else if (argument == "--normals") {
@@ -147,6 +156,8 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     }
     if (options.scenePath.empty()) return usageError("no scene file given");
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
+    if (options.environmentSamples > 0 && !options.reference)
+        return usageError("--samples sets the CPU reference's Monte-Carlo environment: give it with --reference");
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
     if (const std::string conflict = plotOverlayConflict(options.plots, options.plot, options.reference, options.outputPath);
@@ -198,7 +209,20 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         headless = std::move(*created);
     }
     if (options.reference) {
-        images.radiance = renderReference(*scene, width, height);
+        ReferenceOptions reference;
+        if (options.environmentSamples > 0) {
+            reference.sampleEnvironment = true;
+            reference.environmentSamples = options.environmentSamples;
+            // Progress for renders long enough to wonder about: whole percents, one line at the end.
+            reference.progress = [lastPercent = -1](float done) mutable {
+                const int percent = static_cast<int>(done * 100.0f);
+                if (percent == lastPercent) return;
+                lastPercent = percent;
+                std::fprintf(stderr, "\rglint render: reference %3d%%%s", percent, percent == 100 ? "\n" : "");
+                std::fflush(stderr);
+            };
+        }
+        images.radiance = renderReference(*scene, width, height, reference);
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)

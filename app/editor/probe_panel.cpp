@@ -139,6 +139,7 @@ void drawProbeWindow(ProbeTool& probe, const ProbeResult& result, const Viewport
                             formatProbeRgb(result.ambientRadiance).c_str());
             ImGui::TextUnformatted("Shadows: per light above (shadow rays of lights that cast shadows).");
         }
+        if (const std::string line = probeEnvironmentLine(result); !line.empty()) ImGui::TextWrapped("%s", line.c_str());
         ImGui::Separator();
         ImGui::TextWrapped("%s", probeTotalEquation(result).c_str());
         ImGui::Text("Luminance %s nit", formatProbeNumber(result.luminance).c_str());

@@ -19,7 +19,7 @@ namespace {
 constexpr ModelInfo kModels[] = {
     {BrdfModel::Lambert, "lambert", "Lambert", "brdf/lambert.glsl", "evalLambert", kLambertTable,
      true, true, "J. H. Lambert, Photometria, 1760", "ambientReflectanceLambert", nullptr,
-     "environmentLightingLambert", "ρ·E(n)/π (SH9 irradiance)"},
+     "environmentLightingLambert", "ρ·E(n)/π (irradiance map)"},
     {BrdfModel::BlinnPhong, "blinn_phong", "Blinn-Phong", "brdf/blinn_phong.glsl", "evalBlinnPhong",
      kBlinnPhongTable, true, false,
      "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977",
@@ -31,7 +31,7 @@ constexpr ModelInfo kModels[] = {
      true, false,
      "M. Oren, S. K. Nayar, Generalization of Lambert's Reflectance Model, SIGGRAPH 1994 (qualitative model, eq. 30)",
      "ambientReflectanceOrenNayar", nullptr,
-     "environmentLightingOrenNayar", "ρ·E(n)/π (SH9 irradiance, as Lambert)"},
+     "environmentLightingOrenNayar", "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo)"},
     {BrdfModel::Phong, "phong", "Phong", "brdf/phong.glsl", "evalPhong", kPhongTable, true, false,
      "B. T. Phong, Illumination for Computer Generated Pictures, CACM 18(6), 1975; "
      "normalisation: R. R. Lewis, Making Shaders More Physically Plausible, 1994",

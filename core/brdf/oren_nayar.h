@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <glm/glm.hpp>
 
 #include "brdf/param_table.h"
@@ -40,6 +41,21 @@ inline glm::vec3 evalOrenNayar(const OrenNayarParams& p, glm::vec3 wi, glm::vec3
     const float b = 0.45f * sigma2 / (sigma2 + 0.09f);
     const float azimuthal = std::max(0.0f, glm::dot(wi, wo) - cosIn * cosOut);
     return p.albedo * kInvPi * (a + b * azimuthal / std::max(cosIn, cosOut));
+}
+
+// The qualitative model's directional albedo ∫ f_r cos θ_i dω_i / ρ at cos θ_o, in closed form:
+// A + (2B/π)[sin θ_o (θ_o/2 − sin 2θ_o/4) + tan θ_o (1 − sin³θ_o)/3] (the B term integrated over
+// θ_i < θ_o, where α = θ_o, and θ_i > θ_o, where β = θ_o; ∫ max(0, cos Δφ) dφ = 2).
+inline float directionalAlbedoOrenNayar(float roughnessDegrees, float cosOut) {
+    const float sigma = roughnessDegrees * (kPi / 180.0f);
+    const float sigma2 = sigma * sigma;
+    const float a = 1.0f - 0.5f * sigma2 / (sigma2 + 0.33f);
+    const float b = 0.45f * sigma2 / (sigma2 + 0.09f);
+    const float cosine = std::clamp(cosOut, 1e-4f, 1.0f), sine = std::sqrt(1.0f - cosine * cosine);
+    const float theta = std::acos(cosine);
+    const float below = sine * (0.5f * theta - 0.5f * sine * cosine);
+    const float above = sine / cosine * (1.0f - sine * sine * sine) / 3.0f;
+    return a + 2.0f * b * kInvPi * (below + above);
 }
 
 // Ambient reflectance k_a: the facet albedo ρ, the exact directional albedo at σ = 0 (Lambert).

@@ -115,6 +115,18 @@ std::string probeTotalEquation(const ProbeResult& result) {
     return line + formatProbeRgb(result.radiance) + " W/(sr·m²)";
 }
 
+// --- environment ---
+
+std::string probeEnvironmentLine(const ProbeResult& result) {
+    if (result.environmentMethod.empty()) return {};
+    const float truth = glm::dot(result.environmentTruth, glm::vec3(1.0f));
+    const float preview = glm::dot(result.environment, glm::vec3(1.0f));
+    std::string error = truth > 0.0f ? probeTextPrintf("%+.1f%%", 100.0f * (preview / truth - 1.0f)) : "n/a";
+    return "L_environment by " + result.environmentMethod + ": " + formatProbeRgb(result.environment) +
+           "; Monte-Carlo (" + std::to_string(kProbeEnvironmentSamples) + " samples) " +
+           formatProbeRgb(result.environmentTruth) + " W/(sr·m²): error " + error;
+}
+
 // --- display chain ---
 
 std::vector<std::string> probeDisplayEquation(const ProbeResult& result) {
@@ -181,6 +193,7 @@ std::string probeReport(const ProbeResult& result) {
             out << "ambient: k_a = " << formatProbeRgb(result.ambientReflectance)
                 << ", L_a = " << formatProbeRgb(result.ambientRadiance) << " W/(sr·m²)\n";
     }
+    if (const std::string line = probeEnvironmentLine(result); !line.empty()) out << "environment: " << line << "\n";
     out << probeTotalEquation(result) << " (" << formatProbeNumber(result.luminance) << " nit)\n";
     for (const std::string& line : probeDisplayEquation(result)) out << "display: " << line << "\n";
     return out.str();

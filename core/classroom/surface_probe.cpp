@@ -9,6 +9,8 @@
 #include "brdf/glass.h"
 #include "display/display_chain.h"
 #include "light/photometry.h"
+#include "environment/environment_lighting.h"
+#include "render/environment_sampling.h"
 #include "render/miss_radiance.h"
 #include "render/reference_renderer.h"
 #include "render/shading_breakdown.h"
@@ -142,6 +144,12 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         result.ambientReflectance = breakdown.ambientReflectance;
         result.ambientRadiance = breakdown.ambientRadiance;
         result.environment = breakdown.environment;
+        if (scene.environment.enabled() && !material.measured && modelInfo(material.model).glslEnvironment) {
+            result.environmentMethod = environmentApproximation(material.model);
+            result.environmentTruth = sampleEnvironmentLighting(material.model, breakdown.values, towardsViewer,
+                                                                breakdown.frame, scene.environment, pixelSeed,
+                                                                kProbeEnvironmentSamples);
+        }
         result.specular = breakdown.specular;
         result.radiance = result.gouraud ? shadeHit(scene, *hit, towardsViewer, {}, pixelSeed) : breakdown.total;
     }

@@ -91,7 +91,9 @@ struct ProbeResult {
     std::optional<ProbeRefraction> viewTransmitted;  // the primary ray refracted (refractive materials)
     std::vector<ProbeLight> lights;  // enabled delta lights
     glm::vec3 ambientReflectance{0.0f}, ambientRadiance{0.0f};  // k_a, Σ L_a
-    glm::vec3 environment{0.0f};     // environment light reflected [W/(sr·m²)]
+    glm::vec3 environment{0.0f};     // environment light reflected [W/(sr·m²)]: the preview's approximation
+    std::string environmentMethod;   // how the preview computes it (environmentApproximation); empty: no environment term
+    glm::vec3 environmentTruth{0.0f};  // the same by Monte-Carlo (kProbeEnvironmentSamples samples)
     glm::vec3 specular{0.0f};        // traced delta lobes (mirror, glass) [W/(sr·m²)]
     // Always set:
     glm::vec3 radiance{0.0f};        // the pixel's reference radiance (background when missed)
@@ -99,6 +101,9 @@ struct ProbeResult {
     std::array<ProbeDisplayChannel, 3> display{};
     DisplaySettings displaySettings;
 };
+
+// Samples of the Monte-Carlo environment integral the probe measures the preview's error against.
+inline constexpr int kProbeEnvironmentSamples = 4096;
 
 // Probes pixel (x, y) (y down, pixel centres at +0.5, the reference renderer's rays) of a
 // width×height image of the scene. Pixels outside the image are refused by the caller.

@@ -33,8 +33,7 @@ glm::vec3 environmentRadiance(const Environment& environment, glm::vec3 worldDir
 }
 
 glm::vec3 environmentDiffuseRadiance(const Environment& environment, glm::vec3 normal) {
-    return environment.intensity * kInvPi *
-           shIrradiance(environment.map->irradianceSh, environmentMapDirection(environment, normal));
+    return environment.intensity * diffuseRadiance(*environment.map, environmentMapDirection(environment, normal));
 }
 
 glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 worldDirection, float perceptualRoughness) {
@@ -73,8 +72,11 @@ glm::vec3 environmentLightingLambert(const LambertParams& p, glm::vec3, const Sh
     return p.albedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
-glm::vec3 environmentLightingOrenNayar(const OrenNayarParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
-    return p.albedo * environmentDiffuseRadiance(e, frame.normal);
+// The directional albedo × E(n)/π: exact under a uniform map, as for Lambert.
+glm::vec3 environmentLightingOrenNayar(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame,
+                                       const Environment& e) {
+    return p.albedo * directionalAlbedoOrenNayar(p.roughnessDegrees, frame.cosTheta(wo)) *
+           environmentDiffuseRadiance(e, frame.normal);
 }
 
 glm::vec3 environmentLightingRetroreflective(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame,
@@ -107,12 +109,21 @@ glm::vec3 environmentLightingWard(const WardParams& p, glm::vec3 wo, const Shadi
            p.specular * environmentSpecularRadiance(e, mirrorDirection(wo, frame), perceptual);
 }
 
-// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(R, α) · (F0·A + B) with F0 from n + iκ.
+// The direction the GGX lobe's reflected light mostly comes from: the mirror direction bent
+// towards the normal as α grows (Lagarde & de Rousiers, "Moving Frostbite to PBR", SIGGRAPH 2014
+// course, listing 22: lerp(n, R, s(√s + α)) with s = 1 − α).
+glm::vec3 dominantDirection(glm::vec3 wo, const ShadingFrame& frame, float alpha) {
+    const float smoothness = std::clamp(1.0f - alpha, 0.0f, 1.0f);
+    const float factor = smoothness * (std::sqrt(smoothness) + alpha);
+    return glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * factor);
+}
+
+// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B) with F0 from n + iκ.
 glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm::vec3 wo, const ShadingFrame& frame,
                            const Environment& e) {
     const float perceptual = std::sqrt(alpha);
     const glm::vec2 scaleBias = sampleSplitSum(splitSumLut(), std::max(frame.cosTheta(wo), 0.0f), perceptual);
-    return environmentSpecularRadiance(e, mirrorDirection(wo, frame), perceptual) *
+    return environmentSpecularRadiance(e, dominantDirection(wo, frame, alpha), perceptual) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 
@@ -144,6 +155,18 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
             return std::sqrt(p.roughnessX * p.roughnessY);
         }
         default: return 0.0f;
+    }
+}
+
+const char* environmentApproximation(BrdfModel model) {
+    switch (model) {
+        case BrdfModel::CookTorrance:
+        case BrdfModel::GgxAnisotropic: return "irradiance map + GGX split sum (prefiltered along the dominant direction)";
+        case BrdfModel::BlinnPhong:
+        case BrdfModel::Phong:
+        case BrdfModel::Ward: return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R";
+        case BrdfModel::Glass: return "none (traced)";
+        default: return "irradiance map";
     }
 }
 

@@ -1,8 +1,8 @@
 // Image-based lighting of a surface by the scene's environment, as the GPU computes it (twin of
 // shaders/common/environment.glsl and of each model's environmentLighting<Model> GLSL hook):
-// diffuse terms take the SH9 irradiance E(n)/π, glossy terms the GGX-prefiltered radiance along
+// diffuse terms take the irradiance map's E(n)/π, glossy terms the GGX-prefiltered radiance along
 // the mirror direction at the model's equivalent roughness, microfacet models the split-sum
-// scale and bias. The Monte-Carlo ground truth is render/environment_sampling.h.
+// scale and bias with the lookup along the dominant direction. The Monte-Carlo ground truth is render/environment_sampling.h.
 #pragma once
 
 #include <span>
@@ -29,6 +29,9 @@ glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 
 // 2007, after eq. 30: the Beckmann α of a Blinn exponent n), Phong √(2/(4n+2)) (a Phong lobe
 // around R of exponent n is about a Blinn lobe of exponent 4n, since θ_h ≈ δ/2).
 float environmentRoughness(BrdfModel model, std::span<const float> values);
+
+// How the preview approximates a model's environment light, in a few words (for the probe).
+const char* environmentApproximation(BrdfModel model);
 
 // The model's environment hook (ModelInfo::glslEnvironment): radiance reflected towards wo
 // from the environment by the model's non-delta lobes. Zero for models without one (glass).

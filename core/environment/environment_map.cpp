@@ -1,5 +1,5 @@
 // Precomputed image-based lighting (see environment_map.h).
-// Sections: parallel rows · spherical harmonics · GGX prefiltering · split-sum table · lookups.
+// Sections: parallel rows · irradiance · GGX prefiltering · split-sum table · lookups.
 #include "environment/environment_map.h"
 
 #include <algorithm>
@@ -28,36 +28,53 @@ void forEachRow(int rows, RowFunction&& row) {
     for (std::thread& thread : threads) thread.join();
 }
 
-// --- spherical harmonics --------------------------------------------------------------------
+// --- irradiance ----------------------------------------------------------------------------
 
-// The real SH basis up to l = 2 at a unit direction (Ramamoorthi & Hanrahan 2001, eq. 3).
-std::array<float, 9> shBasis(glm::vec3 d) {
-    return {0.282095f,
-            0.488603f * d.y, 0.488603f * d.z, 0.488603f * d.x,
-            1.092548f * d.x * d.y, 1.092548f * d.y * d.z, 0.315392f * (3.0f * d.z * d.z - 1.0f),
-            1.092548f * d.x * d.z, 0.546274f * (d.x * d.x - d.y * d.y)};
-}
-
-// L_lm = Σ L(texel) ∫_texel Y_lm dω, each texel's integral taken over `strips` strips in θ with
-// their exact solid angles (the basis varies along θ within a tall texel; along φ the column
-// centres already integrate sin and cos of φ and 2φ exactly). Enough strips that a texel is at most
-// 1/256 of π high: a uniform map then projects to L_00 alone within 1e-5.
-std::array<glm::vec3, 9> projectSh(const EquirectImage& image) {
-    std::array<glm::vec3, 9> coefficients{};
-    const int strips = std::clamp(256 / image.height, 1, 64);
-    for (int y = 0; y < image.height; ++y) {
-        for (int strip = 0; strip < strips; ++strip) {
-            const float top = kPi * (y + static_cast<float>(strip) / strips) / image.height;
-            const float bottom = kPi * (y + static_cast<float>(strip + 1) / strips) / image.height;
-            const float solidAngle = 2.0f * kPi / image.width * (std::cos(top) - std::cos(bottom));
-            const float v = 0.5f * (top + bottom) * kInvPi;
-            for (int x = 0; x < image.width; ++x) {
-                const std::array<float, 9> basis = shBasis(equirectDirection({(x + 0.5f) / image.width, v}));
-                for (int i = 0; i < 9; ++i) coefficients[i] += image.at(x, y) * (basis[i] * solidAngle);
-            }
+// E(n)/π at each texel direction n of a width × height image: Σ L cos⁺ Ω over the texels of
+// `source` (a pyramid level, each texel at its centre with its exact solid angle; the pyramid's
+// solid-angle-weighted means keep each source's power, so a light smaller than a texel still
+// counts in full), normalised by the same sum for a uniform map (Σ cos⁺ Ω / π, within 0.4% of 1)
+// so that a uniform map gives E/π = L exactly. Brute force over flat arrays: (64·32)·(128·64) products.
+EquirectImage convolveIrradiance(const EquirectImage& source, int width, int height) {
+    const size_t count = source.texels.size();
+    std::vector<float> dx(count), dy(count), dz(count), red(count), green(count), blue(count), solidAnglesOverPi(count);
+    for (int y = 0; y < source.height; ++y) {
+        const float weight = texelSolidAngle(y, source.width, source.height) * kInvPi;
+        for (int x = 0; x < source.width; ++x) {
+            const size_t i = static_cast<size_t>(y) * source.width + x;
+            const glm::vec3 d = equirectDirection({(x + 0.5f) / source.width, (y + 0.5f) / source.height});
+            dx[i] = d.x, dy[i] = d.y, dz[i] = d.z, solidAnglesOverPi[i] = weight;
+            red[i] = source.texels[i].r * weight, green[i] = source.texels[i].g * weight, blue[i] = source.texels[i].b * weight;
         }
     }
-    return coefficients;
+    EquirectImage irradiance(width, height);
+    forEachRow(height, [&](int y) {
+        for (int x = 0; x < width; ++x) {
+            const glm::vec3 n = equirectDirection({(x + 0.5f) / width, (y + 0.5f) / height});
+            float r = 0.0f, g = 0.0f, b = 0.0f, kernel = 0.0f;
+            for (size_t i = 0; i < count; ++i) {
+                const float cosine = std::max(0.0f, n.x * dx[i] + n.y * dy[i] + n.z * dz[i]);
+                r += cosine * red[i], g += cosine * green[i], b += cosine * blue[i], kernel += cosine * solidAnglesOverPi[i];
+            }
+            irradiance.at(x, y) = glm::vec3(r, g, b) / kernel;
+        }
+    });
+    return irradiance;
+}
+
+// The irradiance map at the prefiltered size: convolved at half that size from the first pyramid
+// level no wider than the prefiltered levels, then resampled bilinearly (E is smooth: the
+// resampling changes it by < 0.2% where a small light sits at the terminator).
+EquirectImage irradianceMap(const std::vector<EquirectImage>& pyramid) {
+    const auto source = std::find_if(pyramid.begin(), pyramid.end(),
+                                     [](const EquirectImage& level) { return level.width <= kPrefilteredWidth; });
+    const EquirectImage coarse = convolveIrradiance(*source, kPrefilteredWidth / 2, kPrefilteredHeight / 2);
+    EquirectImage irradiance(kPrefilteredWidth, kPrefilteredHeight);
+    for (int y = 0; y < irradiance.height; ++y)
+        for (int x = 0; x < irradiance.width; ++x)
+            irradiance.at(x, y) = sampleEquirect(
+                coarse, equirectDirection({(x + 0.5f) / irradiance.width, (y + 0.5f) / irradiance.height}));
+    return irradiance;
 }
 
 // --- GGX prefiltering -----------------------------------------------------------------------
@@ -108,13 +125,14 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float al
 
 std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance) {
     auto map = std::make_shared<EnvironmentMap>();
-    map->irradianceSh = projectSh(radiance);
     std::vector<EquirectImage> pyramid{radiance};
     while (pyramid.back().width > 8 && pyramid.back().height > 4) pyramid.push_back(downsampleEquirect(pyramid.back()));
+    map->irradiance = irradianceMap(pyramid);
     for (int k = 1; k <= kPrefilteredLevels; ++k) {
         const float perceptual = static_cast<float>(k) / kPrefilteredLevels;
         map->prefiltered.push_back(prefilterLevel(pyramid, perceptual * perceptual));
     }
+    map->distribution = EnvironmentDistribution(radiance);
     map->radiance = std::move(radiance);
     return map;
 }
@@ -127,7 +145,7 @@ const SplitSumLut& splitSumLut() {
         SplitSumLut table;
         table.texels.resize(kSplitSumLutSize * kSplitSumLutSize);
         for (int row = 0; row < kSplitSumLutSize; ++row) {
-            const float perceptual = (row + 0.5f) / kSplitSumLutSize;
+            const float perceptual = static_cast<float>(row) / (kSplitSumLutSize - 1);
             const float alpha = perceptual * perceptual;
             for (int column = 0; column < kSplitSumLutSize; ++column) {
                 const float cosOut = (column + 0.5f) / kSplitSumLutSize;
@@ -156,7 +174,7 @@ const SplitSumLut& splitSumLut() {
 
 glm::vec2 sampleSplitSum(const SplitSumLut& lut, float cosOut, float perceptualRoughness) {
     const float x = std::clamp(cosOut * kSplitSumLutSize - 0.5f, 0.0f, kSplitSumLutSize - 1.0f);
-    const float y = std::clamp(perceptualRoughness * kSplitSumLutSize - 0.5f, 0.0f, kSplitSumLutSize - 1.0f);
+    const float y = std::clamp(perceptualRoughness * (kSplitSumLutSize - 1), 0.0f, kSplitSumLutSize - 1.0f);
     const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
     const int x1 = std::min(x0 + 1, kSplitSumLutSize - 1), y1 = std::min(y0 + 1, kSplitSumLutSize - 1);
     const float fx = x - x0, fy = y - y0;
@@ -166,13 +184,7 @@ glm::vec2 sampleSplitSum(const SplitSumLut& lut, float cosOut, float perceptualR
     return top * (1.0f - fy) + bottom * fy;
 }
 
-glm::vec3 shIrradiance(const std::array<glm::vec3, 9>& coefficients, glm::vec3 normal) {
-    const std::array<float, 9> basis = shBasis(normal);
-    constexpr float kBand[3] = {kPi, 2.0f * kPi / 3.0f, kPi / 4.0f};
-    glm::vec3 irradiance(0.0f);
-    for (int i = 0; i < 9; ++i) irradiance += coefficients[i] * (kBand[i == 0 ? 0 : i < 4 ? 1 : 2] * basis[i]);
-    return glm::max(irradiance, glm::vec3(0.0f));  // l ≤ 2 ringing can dip below zero
-}
+glm::vec3 diffuseRadiance(const EnvironmentMap& map, glm::vec3 normal) { return sampleEquirect(map.irradiance, normal); }
 
 glm::vec3 prefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, float perceptualRoughness) {
     const float level = std::clamp(perceptualRoughness, 0.0f, 1.0f) * kPrefilteredLevels;

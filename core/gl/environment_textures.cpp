@@ -70,13 +70,14 @@ void EnvironmentTextures::prepare(const Environment& environment) {
         glBindTexture(GL_TEXTURE_2D, baseTexture_);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, map->radiance.width, map->radiance.height, 0, GL_RGBA, GL_FLOAT,
                      rgba(map->radiance).data());
+        // The prefiltered levels, then the irradiance map as the last layer.
         std::vector<float> layers;
-        for (const EquirectImage& level : map->prefiltered) {
-            const std::vector<float> texels = rgba(level);
+        for (size_t layer = 0; layer <= map->prefiltered.size(); ++layer) {
+            const std::vector<float> texels = rgba(layer < map->prefiltered.size() ? map->prefiltered[layer] : map->irradiance);
             layers.insert(layers.end(), texels.begin(), texels.end());
         }
         glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, kPrefilteredWidth, kPrefilteredHeight, kPrefilteredLevels, 0,
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, kPrefilteredWidth, kPrefilteredHeight, kPrefilteredLevels + 1, 0,
                      GL_RGBA, GL_FLOAT, layers.data());
         uploadedMap_ = map;
         keepAlive_ = environment.map;
@@ -87,7 +88,6 @@ void EnvironmentTextures::prepare(const Environment& environment) {
     block.flags = {map ? 1 : 0, map && environment.showAsBackground ? 1 : 0, 0, 0};
     if (map) {
         block.sizes = {map->radiance.width, map->radiance.height, kPrefilteredWidth, kPrefilteredHeight};
-        for (int i = 0; i < 9; ++i) block.sh[i] = glm::vec4(map->irradianceSh[i], 0.0f);
     }
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);

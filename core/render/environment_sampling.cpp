@@ -5,6 +5,7 @@
 
 #include "brdf/microfacet.h"
 #include "environment/environment_lighting.h"
+#include "environment/environment_map.h"
 #include "environment/ggx_sampling.h"
 #include "math/constants.h"
 
@@ -32,6 +33,15 @@ float visibleNormalPdf(glm::vec3 view, glm::vec3 light, float alpha) {
     return maskingView * distributionGgx(halfway.z, sin2Half, alpha) / (4.0f * view.z);
 }
 
+// The inverse of environmentMapDirection: a map-space direction turned back into the world.
+glm::vec3 worldFromMap(const Environment& environment, glm::vec3 d) {
+    const float angle = environment.rotationDegrees * (kPi / 180.0f);
+    const float cosAngle = std::cos(angle), sinAngle = std::sin(angle);
+    return {cosAngle * d.x + sinAngle * d.z, d.y, -sinAngle * d.x + cosAngle * d.z};
+}
+
+enum Strategy { kEnvironment, kCosine, kGgx, kStrategyCount };
+
 }  // namespace
 
 glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> values, glm::vec3 wo,
@@ -42,29 +52,38 @@ glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> valu
     if (view.z <= 0.0f) return glm::vec3(0.0f);
     const float alpha = std::max(environmentRoughness(model, values), 1e-3f);
     const bool glossy = environmentRoughness(model, values) > 0.0f;
-    const glm::vec2 shift{hashToUnit(2u * pixelSeed), hashToUnit(2u * pixelSeed + 1u)};
+    const EnvironmentDistribution& distribution = environment.map->distribution;
+    // Samples per strategy: the map and the cosine lobe, and for glossy models the GGX lobe too,
+    // each its own Hammersley set (interleaving one set would give each strategy half the azimuths).
+    const int strategies = glossy ? 3 : 2;
+    const int perStrategy = std::max(1, sampleCount / strategies);
+    const float share = 1.0f / strategies;  // n_s / N of each strategy in the balance heuristic
     glm::vec3 sum(0.0f);
-    // Glossy models: the first half of the samples cosine-weighted, the second half GGX, each
-    // half its own Hammersley set (interleaving one set would give each strategy half the azimuths).
-    const int perStrategy = glossy ? (sampleCount + 1) / 2 : sampleCount;
-    for (int i = 0; i < sampleCount; ++i) {
-        const bool useGgx = glossy && i >= perStrategy;
-        const glm::vec2 u = glm::fract(hammersley(useGgx ? i - perStrategy : i, perStrategy) + shift);
-        glm::vec3 light;
-        if (useGgx) {
-            const glm::vec3 halfway = sampleGgxVisibleNormal(view, u, alpha);
-            light = 2.0f * glm::dot(view, halfway) * halfway - view;
-        } else {
-            light = cosineDirection(u);
+    for (int strategy = 0; strategy < strategies; ++strategy) {
+        const uint32_t seed = 2u * (pixelSeed * kStrategyCount + static_cast<uint32_t>(strategy));
+        const glm::vec2 shift{hashToUnit(seed), hashToUnit(seed + 1u)};
+        for (int i = 0; i < perStrategy; ++i) {
+            const glm::vec2 u = glm::fract(hammersley(i, perStrategy) + shift);
+            glm::vec3 lightWorld;
+            if (strategy == kEnvironment) {
+                lightWorld = worldFromMap(environment, distribution.sample(u).direction);
+            } else if (strategy == kCosine) {
+                lightWorld = frame.toWorld(cosineDirection(u));
+            } else {
+                const glm::vec3 halfway = sampleGgxVisibleNormal(view, u, alpha);
+                lightWorld = frame.toWorld(2.0f * glm::dot(view, halfway) * halfway - view);
+            }
+            const glm::vec3 light = frame.toLocal(lightWorld);
+            if (light.z <= 0.0f) continue;
+            // Balance heuristic (Veach 1997, §9.2.2): f·L·cos / Σ_s (n_s/N) p_s.
+            float pdf = share * (distribution.pdf(environmentMapDirection(environment, lightWorld)) + light.z * kInvPi);
+            if (glossy) pdf += share * visibleNormalPdf(view, light, alpha);
+            if (!(pdf > 0.0f)) continue;
+            sum += evalBrdf(model, values, lightWorld, wo, frame) * environmentRadiance(environment, lightWorld) *
+                   (light.z / pdf);
         }
-        if (light.z <= 0.0f) continue;
-        const float cosinePdf = light.z * kInvPi;
-        const float pdf = glossy ? 0.5f * (cosinePdf + visibleNormalPdf(view, light, alpha)) : cosinePdf;
-        const glm::vec3 lightWorld = frame.toWorld(light);
-        sum += evalBrdf(model, values, lightWorld, wo, frame) * environmentRadiance(environment, lightWorld) *
-               (light.z / pdf);
     }
-    return sum / static_cast<float>(sampleCount);
+    return sum / static_cast<float>(perStrategy * strategies);
 }
 
 }  // namespace glint

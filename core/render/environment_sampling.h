@@ -1,9 +1,11 @@
 // Monte-Carlo ground truth for environment lighting, for the CPU reference when asked for
 // (ReferenceOptions::sampleEnvironment): L_o = ∫ f_r(ω_i, ω_o) L_env(ω_i) cos θ_i dω_i estimated
-// with the model's own f_r (evalBrdf), half the samples cosine-weighted and half GGX visible
-// normals (Heitz 2018) at the model's environment roughness, combined by the balance heuristic
-// (Veach 1997, §9.2). Fixed Hammersley points, rotated per pixel by a hash of its seed: the same
-// image on every run and thread count. The environment is not occluded by other objects.
+// with the model's own f_r (evalBrdf) by multiple importance sampling: equal shares of samples
+// drawn from the map's luminance (environment/environment_distribution.h), from the cosine lobe
+// and, for glossy models, from GGX visible normals (Heitz 2018) at the model's environment
+// roughness, combined by the balance heuristic (Veach 1997, §9.2). Fixed Hammersley points,
+// rotated per pixel and strategy by a hash of the pixel's seed: the same image on every run and
+// thread count. The environment is not occluded by other objects.
 #pragma once
 
 #include <cstdint>

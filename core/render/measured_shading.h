@@ -15,7 +15,7 @@ namespace glint {
 glm::vec3 measuredAmbientReflectance(const MeasuredBrdf& brdf, glm::vec3 wo, const ShadingFrame& frame);
 
 // Environment light, approximated as for a diffuse surface with the measured directional
-// albedo: ρ(θ_o)·E(n)/π (SH9 irradiance). Exact for a Lambertian table; for a glossy one it
+// albedo: ρ(θ_o)·E(n)/π (irradiance map). Exact for a Lambertian table; for a glossy one it
 // loses the reflection of the environment's detail. The GPU does the same (merl.glsl).
 glm::vec3 measuredEnvironmentLighting(const MeasuredBrdf& brdf, glm::vec3 wo, const ShadingFrame& frame,
                                       const Environment& environment);

@@ -3,6 +3,7 @@
 #include "render/shading_breakdown.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <thread>
@@ -188,14 +189,18 @@ RadianceImage renderReference(const Scene& scene, int width, int height, const R
     const glm::mat4 inverseViewProjection =
         glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
     const MissRadiance miss(scene.background, &scene.environment);
+    std::atomic<int> rowsDone{0};
     auto renderRows = [&](int firstRow, int rowStep) {
         for (int y = firstRow; y < height; y += rowStep) {
+            if (options.progress && firstRow == 0) options.progress(static_cast<float>(rowsDone.load()) / height);
             for (int x = 0; x < width; ++x) {
                 const Ray ray = primaryRay(inverseViewProjection, x + 0.5f, y + 0.5f, width, height);
                 const auto hit = intersectScene(scene, ray);
-                const uint32_t pixelSeed = static_cast<uint32_t>(y) * static_cast<uint32_t>(width) + static_cast<uint32_t>(x);
+                const uint32_t pixelSeed = static_cast<uint32_t>(y) * static_cast<uint32_t>(width) + static_cast<uint32_t>(x) +
+                                         options.environmentSeed * 0x9E3779B9u;
                 image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction, options, pixelSeed) : miss.primary(ray.direction));
             }
+            ++rowsDone;
         }
     };
     const int threadCount = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
@@ -203,6 +208,7 @@ RadianceImage renderReference(const Scene& scene, int width, int height, const R
     for (int t = 1; t < threadCount; ++t) threads.emplace_back(renderRows, t, threadCount);
     renderRows(0, threadCount);
     for (std::thread& thread : threads) thread.join();
+    if (options.progress) options.progress(1.0f);
     return image;
 }
 

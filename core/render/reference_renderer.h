@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 #include "camera/camera.h"
@@ -46,6 +47,9 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray);
 struct ReferenceOptions {
     bool sampleEnvironment = false;
     int environmentSamples = 512;  // per pixel, when sampling
+    uint32_t environmentSeed = 0;  // another seed: another (independent, as deterministic) estimate
+    // Called now and then from the calling thread with the fraction of rows done (0 … 1).
+    std::function<void(float)> progress = nullptr;
 };
 
 // Outgoing radiance [W/(sr·m²)] at a hit towards `towardsViewer`: Σ f_r·E⊥·cos θ over the delta

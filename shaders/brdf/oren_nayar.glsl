@@ -17,9 +17,23 @@ vec3 ambientReflectanceOrenNayar(MaterialParams p, vec3 wo, ShadingFrame frame) 
     return p.albedo;
 }
 
+// Twin of directionalAlbedoOrenNayar() (see oren_nayar.h).
+float directionalAlbedoOrenNayar(float roughnessDegrees, float cosOut) {
+    float sigma = roughnessDegrees * (PI / 180.0);
+    float sigma2 = sigma * sigma;
+    float a = 1.0 - 0.5 * sigma2 / (sigma2 + 0.33);
+    float b = 0.45 * sigma2 / (sigma2 + 0.09);
+    float cosine = clamp(cosOut, 1e-4, 1.0), sine = sqrt(1.0 - cosine * cosine);
+    float theta = acos(cosine);
+    float below = sine * (0.5 * theta - 0.5 * sine * cosine);
+    float above = sine / cosine * (1.0 - sine * sine * sine) / 3.0;
+    return a + 2.0 * b * INV_PI * (below + above);
+}
+
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingOrenNayar in core/environment/environment_lighting.cpp.
 vec3 environmentLightingOrenNayar(MaterialParams p, vec3 wo, ShadingFrame frame) {
-    return p.albedo * environmentDiffuseRadiance(frame.normal);
+    return p.albedo * directionalAlbedoOrenNayar(p.roughness, cosTheta(frame, wo)) *
+           environmentDiffuseRadiance(frame.normal);
 }
 #endif

@@ -1,5 +1,5 @@
 // The environment map on the GPU: GLSL twin of core/environment (equirect.cpp's bilinear lookup,
-// environment_map.cpp's SH9 irradiance, prefiltered levels and split-sum table, and
+// environment_map.cpp's irradiance map, prefiltered levels and split-sum table, and
 // environment_lighting.cpp's lookups) and of render/miss_radiance.h. Every lookup is a manual
 // bilinear of texelFetch'ed float texels, so the CPU reference computes the same numbers.
 // Needs frame.glsl and background.glsl first. Defines GLINT_HAS_ENVIRONMENT for the model hooks.
@@ -13,10 +13,9 @@ layout(std140) uniform EnvironmentBlock {
     vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity
     ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background
     ivec4 environmentSizes;     // x, y: base level size; z, w: prefiltered level size
-    vec4 environmentSh[9];      // rgb: SH coefficients L_lm of the radiance
 };
 uniform sampler2D environmentBase;             // the radiance image
-uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/5
+uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π
 uniform sampler2D environmentSplitSum;         // rg: split-sum scale A and bias B
 
 vec3 environmentMapDirection(vec3 d) {
@@ -29,7 +28,7 @@ vec3 fetchEnvironmentLevel(int level, ivec2 texel) {
     return texelFetch(environmentPrefiltered, ivec3(texel, level - 1), 0).rgb;
 }
 
-// Bilinear at one level (0: base, k: prefiltered k): twin of sampleEquirect().
+// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance): twin of sampleEquirect().
 vec3 sampleEnvironmentLevel(int level, vec3 d) {
     ivec2 size = level == 0 ? environmentSizes.xy : environmentSizes.zw;
     float u = 0.5 + atan(d.x, -d.z) * (0.5 * INV_PI);
@@ -54,18 +53,9 @@ vec3 environmentRadiance(vec3 worldDirection) {
     return environmentTransform.z * sampleEnvironmentLevel(0, environmentMapDirection(worldDirection));
 }
 
-// E(n)/π from the SH coefficients (Ramamoorthi & Hanrahan 2001): twin of shIrradiance().
+// E(n)/π from the irradiance map: twin of diffuseRadiance().
 vec3 environmentDiffuseRadiance(vec3 normal) {
-    vec3 d = environmentMapDirection(normal);
-    float basis[9] = float[9](0.282095, 0.488603 * d.y, 0.488603 * d.z, 0.488603 * d.x,
-                              1.092548 * d.x * d.y, 1.092548 * d.y * d.z, 0.315392 * (3.0 * d.z * d.z - 1.0),
-                              1.092548 * d.x * d.z, 0.546274 * (d.x * d.x - d.y * d.y));
-    vec3 irradiance = vec3(0.0);
-    for (int i = 0; i < 9; ++i) {
-        float band = i == 0 ? PI : (i < 4 ? 2.0 * PI / 3.0 : PI / 4.0);
-        irradiance += environmentSh[i].rgb * (band * basis[i]);
-    }
-    return environmentTransform.z * INV_PI * max(irradiance, vec3(0.0));
+    return environmentTransform.z * sampleEnvironmentLevel(PREFILTERED_LEVELS + 1, environmentMapDirection(normal));
 }
 
 // Prefiltered radiance for perceptual roughness r: twin of prefilteredRadiance().
@@ -82,7 +72,7 @@ vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness)
 vec2 sampleSplitSum(float cosOut, float perceptualRoughness) {
     float last = float(SPLIT_SUM_SIZE - 1);
     float x = clamp(cosOut * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
-    float y = clamp(perceptualRoughness * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
+    float y = clamp(perceptualRoughness * last, 0.0, last);
     int x0 = int(x), y0 = int(y);
     int x1 = min(x0 + 1, SPLIT_SUM_SIZE - 1), y1 = min(y0 + 1, SPLIT_SUM_SIZE - 1);
     float fx = x - float(x0), fy = y - float(y0);
@@ -105,10 +95,17 @@ float environmentFormWeight(int form, float cosOut, float normalization) {
     return 1.0;
 }
 
+// Twin of dominantDirection() (Lagarde & de Rousiers 2014).
+vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
+    float smoothness = clamp(1.0 - alpha, 0.0, 1.0);
+    float factor = smoothness * (sqrt(smoothness) + alpha);
+    return normalize(frame.normal + (environmentMirrorDirection(wo, frame) - frame.normal) * factor);
+}
+
 vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
     float perceptual = sqrt(alpha);
     vec2 scaleBias = sampleSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
-    return environmentSpecularRadiance(environmentMirrorDirection(wo, frame), perceptual) *
+    return environmentSpecularRadiance(environmentDominantDirection(wo, frame, alpha), perceptual) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 

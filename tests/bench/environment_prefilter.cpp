@@ -1,5 +1,5 @@
 // The environment precomputation on load, timed: reads an equirectangular EXR of the size asked
-// for (written first, a smooth sky with a sun), then makes its SH9 irradiance and GGX-prefiltered
+// for (written first, a smooth sky with a sun), then makes its irradiance map and GGX-prefiltered
 // levels. usage: environment_prefilter WIDTH DIRECTORY. Prints milliseconds; not run by ctest.
 #include <chrono>
 #include <cmath>
@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     const auto map = makeEnvironmentMap(std::move(*image));
     const auto done = std::chrono::steady_clock::now();
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-    std::printf("%dx%d: read and check %.0f ms, precompute (SH9 + %d prefiltered levels %dx%d, %d samples) %.0f ms\n",
+    std::printf("%dx%d: read and check %.0f ms, precompute (irradiance + %d prefiltered levels %dx%d, %d samples) %.0f ms\n",
                 width, height, ms(start, read), kPrefilteredLevels, kPrefilteredWidth, kPrefilteredHeight,
                 kPrefilterSamples, ms(read, done));
     return 0;
