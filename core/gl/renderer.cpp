@@ -409,13 +409,24 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display))
         runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
+    fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
 }
 
 void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
     platform_.makeCurrent();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width() * pixelScale, radianceTarget_.height() * pixelScale);
-    runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
+    const int width = radianceTarget_.width(), height = radianceTarget_.height();
+    glViewport(lowerLeft.x, lowerLeft.y, width * pixelScale, height * pixelScale);
+    if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) {
+        // The radiance pass wrote this very image (fused): each pixel copied to pixelScale² screen pixels.
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, displayTarget_.framebuffer());
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glBlitFramebuffer(0, 0, width, height, lowerLeft.x, lowerLeft.y, lowerLeft.x + width * pixelScale,
+                          lowerLeft.y + height * pixelScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    } else {
+        runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
+    }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), lowerLeft, pixelScale);
 }
 

@@ -58,13 +58,15 @@ public:
     // Fused display (off by default; headless renders turn it on): renders without MSAA also
     // write the display-encoded image into the 8-bit target in the radiance pass itself
     // (shaders/common/display_output.glsl), so that displayOffscreen() with the scene's display
-    // settings has nothing left to do. The float image is written all the same.
+    // settings has nothing left to do but the overlays, and displayToScreen() copies it. The float
+    // image is written all the same.
     void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
     // Specialised programs (on by default; gl/shader_specialisation.h): what a frame and a material
     // keep fixed is compiled in as constants, one program per combination, built when first drawn.
     // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
     void setSpecialisedPrograms(bool enabled) { specialise_ = enabled; }
-    // Display pass into the default framebuffer, at the given lower-left corner.
+    // Display pass into the default framebuffer, at the given lower-left corner; a scaled copy of
+    // the fused image when the last radiance render fused these settings (the editor fuses).
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
     // reduced-resolution preview while dragging).
     void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1);
