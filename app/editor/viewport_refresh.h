@@ -21,6 +21,10 @@ struct RefreshPlan {
 class ViewportRefresh {
 public:
     static constexpr double kFrameBudgetMilliseconds = 33.0;
+    // A drag frame is never coarser than this many screen pixels per rendered pixel along each
+    // axis (½ resolution): coarser previews hide what the drag changes, and the specialised
+    // programs (gl/shader_specialisation.h) make ½ resolution fast enough on llvmpipe.
+    static constexpr int kCoarsestPixelScale = 2;
     // A change outside a drag counts as part of an interaction for this long [s]: wheel ticks and
     // key repeats come faster.
     static constexpr double kSettleSeconds = 0.25;
