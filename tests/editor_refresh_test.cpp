@@ -31,12 +31,12 @@ TEST(ViewportRefresh, ADragOfASlowSceneDrawsSimplifiedMeshesThenTheFullFrame) {
     RefreshPlan plan = refresh.plan(change(10.0, true));
     EXPECT_TRUE(plan.render);
     EXPECT_EQ(plan.detail, MeshDetail::Simplified);
-    EXPECT_EQ(plan.pixelScale, ViewportRefresh::kCoarsestPixelScale);  // ⌈√(1200 / 33)⌉ = 7, capped
-    refresh.rendered(plan, 4.0, true);
+    EXPECT_EQ(plan.pixelScale, 4);
+    refresh.rendered(plan, 8.0, true);
     // Faster than the budget: the next frame of the drag gets more pixels.
     plan = refresh.plan(change(10.1, true));
     EXPECT_EQ(plan.detail, MeshDetail::Simplified);
-    EXPECT_EQ(plan.pixelScale, 1);  // ⌈2·√(4 / 33)⌉ = 1
+    EXPECT_EQ(plan.pixelScale, 2);
     refresh.rendered(plan, 20.0, true);
     // Holding still mid-drag draws nothing and waits for input.
     EXPECT_FALSE(refresh.plan(idle(10.2, true)).render);
@@ -80,13 +80,22 @@ TEST(ViewportRefresh, FastScenesAreAlwaysDrawnInFull) {
     }
 }
 
+TEST(ViewportRefresh, ADragIsNoCoarserThanHalfResolutionUnlessHalfWouldBeFarOverBudget) {
+    // 200 ms in full: ⌈√(200 / 33)⌉ = 3 would meet the budget, but ½ (about 50 ms) is drawn.
+    ViewportRefresh refresh = afterFullFrame(200.0);
+    EXPECT_EQ(refresh.plan(change(1.0, true)).pixelScale, ViewportRefresh::kCoarsestPixelScale);
+    // 400 ms in full: ½ would take about 100 ms, over twice the budget, so ⌈√(400 / 33)⌉ = 4.
+    refresh = afterFullFrame(400.0);
+    EXPECT_EQ(refresh.plan(change(1.0, true)).pixelScale, ViewportRefresh::kCoarsestPixelScaleOfSlowScenes);
+}
+
 TEST(ViewportRefresh, WithTheSettingOffADragOnlyLowersTheResolution) {
     ViewportRefresh refresh = afterFullFrame(300.0);
     Input input = change(1.0, true);
     input.simplifyWhileDragging = false;
     const RefreshPlan plan = refresh.plan(input);
     EXPECT_EQ(plan.detail, MeshDetail::Full);
-    EXPECT_EQ(plan.pixelScale, 2);  // ⌈√(300 / 33)⌉ = 4, capped at ½ resolution
+    EXPECT_EQ(plan.pixelScale, 4);  // ⌈√(300 / 33)⌉ = 4
     refresh.rendered(plan, 25.0, false);
     EXPECT_TRUE(refresh.plan(idle(1.1)).render);  // the full-resolution frame follows
 }
