@@ -25,6 +25,22 @@ refused "--json needs a file in an existing folder" --json "$out"
 refused "no standard scene is named \"teapot\"" --scene teapot
 refused "unknown option --fast" --fast
 refused "takes no arguments" extra
+refused "--scene-file: $out/no-such-scene.json: cannot open" --scene-file "$out/no-such-scene.json"
+refused "--size needs WIDTHxHEIGHT" --size 0x5
+
+# A scene file, timed against the hand-written textbook floor (docs/performance.md).
+scenes=$(dirname "$0")/bench/scenes
+"$glint" bench --scene-file "$scenes/peer_ggx.json" --scene-file "$scenes/peer_empty.json" --size 320x180 --frames 1 \
+  --json "$out/file.json" >"$out/file.txt"
+/usr/bin/python3 - "$out/file.json" <<'PY'
+import json, sys
+bench = json.load(open(sys.argv[1]))
+assert (bench["width"], bench["height"]) == (320, 180) and bench["generic_programs"] is False
+assert [(s["name"], s["family"], s["floor"]) for s in bench["scenes"]] == [("peer_ggx", "file", "textbook"),
+                                                                            ("peer_empty", "file", "textbook")], bench["scenes"]
+assert all(s["frame_ms"]["median"] > 0 and s["bare_ms"]["median"] > 0 and s["first_frame_ms"] > 0 for s in bench["scenes"])
+assert "cold_start_ms" not in bench, "a scene file is timed alone"
+PY
 
 "$glint" bench --scene list >"$out/list.txt"
 grep -q "^lambert/4 " "$out/list.txt" && grep -q "^glass/1 " "$out/list.txt"

@@ -80,6 +80,15 @@ TEST(ViewportRefresh, FastScenesAreAlwaysDrawnInFull) {
     }
 }
 
+TEST(ViewportRefresh, ADragIsNoCoarserThanHalfResolutionUnlessHalfWouldBeFarOverBudget) {
+    // 200 ms in full: ⌈√(200 / 33)⌉ = 3 would meet the budget, but ½ (about 50 ms) is drawn.
+    ViewportRefresh refresh = afterFullFrame(200.0);
+    EXPECT_EQ(refresh.plan(change(1.0, true)).pixelScale, ViewportRefresh::kCoarsestPixelScale);
+    // 400 ms in full: ½ would take about 100 ms, over twice the budget, so ⌈√(400 / 33)⌉ = 4.
+    refresh = afterFullFrame(400.0);
+    EXPECT_EQ(refresh.plan(change(1.0, true)).pixelScale, ViewportRefresh::kCoarsestPixelScaleOfSlowScenes);
+}
+
 TEST(ViewportRefresh, WithTheSettingOffADragOnlyLowersTheResolution) {
     ViewportRefresh refresh = afterFullFrame(300.0);
     Input input = change(1.0, true);

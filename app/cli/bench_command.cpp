@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include <assimp/Importer.hpp>
@@ -25,6 +27,7 @@
 #include "geometry/mesh_import.h"
 #include "geometry/shape_mesh.h"
 #include "gl/bare_shading_pass.h"
+#include "gl/textbook_floor_pass.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
 
@@ -39,20 +42,26 @@ using nlohmann::json;
 // --- options ------------------------------------------------------------------------------------
 
 constexpr const char* kUsage =
-    "usage: glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]...\n"
-    "  --frames N   frames timed per scene, interleaved with the bare pass (default 11; --quick: 1)\n"
-    "  --quick      fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy\n"
-    "  --json FILE  also write the figures as JSON (\"format\": \"glint-bench\")\n"
-    "  --scene NAME time only this standard scene, no program figures (repeatable; e.g. lambert/4;\n"
-    "               `--scene list` lists them)\n";
-
-constexpr int kWidth = 1280, kHeight = 720;
+    "usage: glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]... [--scene-file FILE]... [--size WxH]\n"
+    "                   [--generic]\n"
+    "  --frames N        frames timed per scene, interleaved with the floor pass (default 11; --quick: 1)\n"
+    "  --quick           fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy\n"
+    "  --json FILE       also write the figures as JSON (\"format\": \"glint-bench\")\n"
+    "  --scene NAME      time only this standard scene, no program figures (repeatable; e.g. lambert/4;\n"
+    "                    `--scene list` lists them)\n"
+    "  --scene-file FILE time this scene file (repeatable), no program figures\n"
+    "  --size WxH        frame size (default 1280x720)\n"
+    "  --generic         draw with the generic programs, not the specialised ones (for comparison)\n";
 
 struct BenchOptions {
     int frames = 0;  // 0: the default for the mode
     bool quick = false;
+    bool generic = false;  // Renderer::setSpecialisedPrograms(false)
+    int width = 1280, height = 720;
     std::string jsonPath;
     std::vector<std::string> sceneNames;  // empty: every standard scene
+    std::vector<std::string> sceneFiles;
+    bool scenesOnly() const { return !sceneNames.empty() || !sceneFiles.empty(); }
     int coldStarts() const { return quick ? 3 : 11; }
     int thumbnails() const { return quick ? 8 : 40; }
     int meshLoads() const { return quick ? 1 : 5; }
@@ -124,32 +133,54 @@ ChildRun runSelf(const std::vector<std::string>& arguments) {
 
 struct SceneResult {
     std::string name, family;
-    Timing frame, radiance, display, bare;
-    double ratio = 0, radianceRatio = 0;
+    Timing frame, radiance, display, bare, readback;
+    double ratio = 0, radianceRatio = 0;  // 0 when the scene has no floor
+    std::string floor;                    // "textbook", "generated" or "none"
+    double firstFrameMs = 0;              // the untimed first frame: programs compiled, targets made
     MeshDetail detail = MeshDetail::Full;
     long long triangles = 0;           // submitted by the surface pass per frame
     double shadowMapsPerFrame = 0.0;   // shadow maps drawn per timed frame (0: kept from the first)
 };
 
-// Times `frames` frames of the scene (radiance pass, then display pass) and as many bare passes,
-// interleaved frame by frame, alternating which goes first, each ended by glFinish. A scene drawn
-// with simplified stand-ins has them made first (the editor makes them ahead of a drag).
-Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benchScene, int frames) {
+// The floor a scene's frames are compared with: the hand-written textbook program where it covers
+// the scene (gl/textbook_floor_pass.h), else the generated shading of the first object's material
+// alone (gl/bare_shading_pass.h), else none. Returns the kind and sets `draw`.
+Result<std::string> makeFloor(const Renderer& renderer, const Scene& scene, int width, int height,
+                              std::function<void()>& draw) {
+    if (TextbookFloorPass::covers(scene)) {
+        auto pass = TextbookFloorPass::create(renderer.sources(), scene);
+        if (!pass) return pass.error();
+        draw = [pass = std::shared_ptr<TextbookFloorPass>(std::move(*pass)), &scene, width, height] { pass->draw(scene, width, height); };
+        return std::string("textbook");
+    }
+    if (scene.objects.empty()) return std::string("none");
+    auto pass = BareShadingPass::create(renderer.sources(), scene.materials.at(scene.objects[0].materialIndex));
+    if (!pass) return pass.error();
+    draw = [pass = std::shared_ptr<BareShadingPass>(std::move(*pass)), &scene, width, height] { pass->draw(scene, width, height); };
+    return std::string("generated");
+}
+
+// Times `frames` frames of the scene (radiance pass, then display pass) and as many floor passes,
+// interleaved frame by frame, alternating which goes first, each ended by glFinish; after each
+// frame, the readback of its 8-bit picture, timed apart. A scene drawn with simplified stand-ins
+// has them made first (the editor makes them ahead of a drag).
+Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benchScene, const BenchOptions& options) {
     Renderer& renderer = headless.renderer();
+    const int width = options.width, height = options.height, frames = options.framesPerScene();
     Scene scene = benchScene.build();
     if (benchScene.detail == MeshDetail::Simplified) {
         renderer.prepareSimplifiedMeshes(scene);
         renderer.finishSimplifiedMeshes();
     }
-    GLINT_CHECK(!scene.objects.empty());
-    auto bare = BareShadingPass::create(renderer.sources(), scene.materials.at(scene.objects[0].materialIndex));
-    if (!bare) return bare.error();
-    std::vector<double> frameMs, radianceMs, displayMs, bareMs;
+    std::function<void()> floorDraw;
+    auto floor = makeFloor(renderer, scene, width, height, floorDraw);
+    if (!floor) return floor.error();
+    std::vector<double> frameMs, radianceMs, displayMs, bareMs, readbackMs;
     Status failure = success();
     const auto drawScene = [&] {
         if (benchScene.beforeEachFrame) benchScene.beforeEachFrame(scene);
         const auto start = std::chrono::steady_clock::now();
-        if (Status status = renderer.renderRadiance(scene, kWidth, kHeight, benchScene.detail); !status) failure = status;
+        if (Status status = renderer.renderRadiance(scene, width, height, benchScene.detail); !status) failure = status;
         glFinish();
         const double radiance = millisecondsSince(start);
         renderer.displayOffscreen(scene.display);
@@ -157,27 +188,36 @@ Result<SceneResult> timeScene(HeadlessRenderer& headless, const BenchScene& benc
         frameMs.push_back(millisecondsSince(start));
         radianceMs.push_back(radiance);
         displayMs.push_back(frameMs.back() - radiance);
+        const auto readStart = std::chrono::steady_clock::now();
+        (void)renderer.readDisplay();
+        readbackMs.push_back(millisecondsSince(readStart));
     };
-    const auto drawBare = [&] {
+    const auto drawFloor = [&] {
+        if (!floorDraw) return;
         const auto start = std::chrono::steady_clock::now();
-        (*bare)->draw(scene, kWidth, kHeight);
+        floorDraw();
         glFinish();
         bareMs.push_back(millisecondsSince(start));
     };
     drawScene();  // compiles the programs and allocates the targets: not counted
-    drawBare();
+    const double firstFrameMs = frameMs.back();
+    drawFloor();
     if (!failure) return failure.error();
-    frameMs.clear(), radianceMs.clear(), displayMs.clear(), bareMs.clear();
+    frameMs.clear(), radianceMs.clear(), displayMs.clear(), bareMs.clear(), readbackMs.clear();
     const long long shadowMapsBefore = renderer.shadowMapsDrawn();
     for (int i = 0; i < frames; ++i) {
-        if (i % 2 == 0) drawScene(), drawBare();
-        else drawBare(), drawScene();
+        if (i % 2 == 0) drawScene(), drawFloor();
+        else drawFloor(), drawScene();
     }
     if (!failure) return failure.error();
     SceneResult result{benchScene.name, benchScene.family, summarize(frameMs), summarize(radianceMs),
-                       summarize(displayMs), summarize(bareMs)};
-    result.ratio = result.frame.median / result.bare.median;
-    result.radianceRatio = result.radiance.median / result.bare.median;
+                       summarize(displayMs), bareMs.empty() ? Timing{} : summarize(bareMs), summarize(readbackMs)};
+    result.floor = *floor;
+    result.firstFrameMs = firstFrameMs;
+    if (!bareMs.empty()) {
+        result.ratio = result.frame.median / result.bare.median;
+        result.radianceRatio = result.radiance.median / result.bare.median;
+    }
     result.detail = benchScene.detail;
     result.triangles = renderer.trianglesDrawn();
     result.shadowMapsPerFrame = static_cast<double>(renderer.shadowMapsDrawn() - shadowMapsBefore) / frames;
@@ -277,16 +317,17 @@ Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::pat
 
 void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& program, const BenchOptions& options,
                 const std::string& rendererDescription) {
-    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the bare pass (%s)\n", kWidth, kHeight,
-                options.framesPerScene(), rendererDescription.c_str());
-    std::printf("%-27s %-15s %9s %9s %9s %9s %9s %7s %9s %10s %5s\n", "scene", "family", "frame ms", "IQR ms", "radiance",
-                "display", "bare ms", "ratio", "rad.ratio", "triangles", "maps");
+    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs (%s)\n",
+                options.width, options.height, options.framesPerScene(), options.generic ? "generic" : "specialised",
+                rendererDescription.c_str());
+    std::printf("%-27s %-15s %9s %9s %9s %9s %9s %-9s %7s %9s %9s %9s %10s %5s\n", "scene", "family", "frame ms", "IQR ms",
+                "radiance", "display", "floor ms", "floor", "ratio", "rad.ratio", "readback", "first ms", "triangles", "maps");
     for (const SceneResult& scene : scenes)
-        std::printf("%-27s %-15s %9.2f %9.2f %9.2f %9.2f %9.2f %7.3f %9.3f %10lld %5.1f\n", scene.name.c_str(),
+        std::printf("%-27s %-15s %9.2f %9.2f %9.2f %9.2f %9.2f %-9s %7.3f %9.3f %9.2f %9.0f %10lld %5.1f\n", scene.name.c_str(),
                     scene.family.c_str(), scene.frame.median, scene.frame.upperQuartile - scene.frame.lowerQuartile,
-                    scene.radiance.median, scene.display.median, scene.bare.median, scene.ratio, scene.radianceRatio,
-                    scene.triangles, scene.shadowMapsPerFrame);
-    if (!options.sceneNames.empty()) return;  // --scene: the scenes only
+                    scene.radiance.median, scene.display.median, scene.bare.median, scene.floor.c_str(), scene.ratio,
+                    scene.radianceRatio, scene.readback.median, scene.firstFrameMs, scene.triangles, scene.shadowMapsPerFrame);
+    if (options.scenesOnly()) return;  // --scene, --scene-file: the scenes only
     std::printf("cold start (glint render, 512x512, child process): median %.0f ms over %d runs (IQR %.0f ms), peak %.0f MB\n",
                 program.coldStart.median, options.coldStarts(), program.coldStart.upperQuartile - program.coldStart.lowerQuartile,
                 program.coldStartPeakMegabytes);
@@ -305,13 +346,16 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
     for (const SceneResult& scene : scenes)
         sceneRows.push_back({{"name", scene.name}, {"family", scene.family}, {"frame_ms", toJson(scene.frame)},
                              {"radiance_ms", toJson(scene.radiance)}, {"display_ms", toJson(scene.display)},
-                             {"bare_ms", toJson(scene.bare)}, {"ratio", scene.ratio}, {"radiance_ratio", scene.radianceRatio},
+                             {"bare_ms", toJson(scene.bare)}, {"floor", scene.floor}, {"ratio", scene.ratio},
+                             {"radiance_ratio", scene.radianceRatio}, {"readback_ms", toJson(scene.readback)},
+                             {"first_frame_ms", scene.firstFrameMs},
                              {"mesh_detail", scene.detail == MeshDetail::Simplified ? "simplified" : "full"},
                              {"triangles", scene.triangles}, {"shadow_maps_per_frame", scene.shadowMapsPerFrame}});
     json figures = {{"format", "glint-bench"}, {"version", 1}, {"renderer", rendererDescription},
-                    {"width", kWidth}, {"height", kHeight}, {"frames", options.framesPerScene()}, {"quick", options.quick},
+                    {"width", options.width}, {"height", options.height}, {"frames", options.framesPerScene()},
+                    {"quick", options.quick}, {"generic_programs", options.generic},
                     {"scenes", sceneRows}};
-    if (!options.sceneNames.empty()) return figures;  // --scene: the scenes only
+    if (options.scenesOnly()) return figures;  // --scene, --scene-file: the scenes only
     figures.update(json{{"cold_start_ms", toJson(program.coldStart)}, {"cold_start_runs", options.coldStarts()},
             {"cold_start_peak_mb", program.coldStartPeakMegabytes},
             {"thumbnails", program.thumbnailCount}, {"thumbnails_per_second", program.thumbnailsPerSecond},
@@ -327,6 +371,7 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
 
 int runBenchCommand(const std::vector<std::string>& arguments) {
     BenchOptions options;
+    std::vector<BenchScene> fileScenes;  // --scene-file, in the order given
     const std::vector<CommandOption> known = {
         {{"--frames"}, "a number", wholeNumberOption(options.frames, 1, 1000, "--frames needs a number from 1 to 1000")},
         {{"--quick"}, "", [&](const std::string&) { options.quick = true; return std::string(); }},
@@ -347,6 +392,17 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
              options.sceneNames.push_back(value);
              return std::string();
          }},
+        {{"--scene-file"}, "a scene file",
+         [&](const std::string& value) {
+             auto scene = loadScene(value);  // a malformed file: its located message
+             if (!scene) return "--scene-file: " + scene.error().format();
+             fileScenes.push_back({fs::path(value).stem().string(), "file", [scene = *scene] { return scene; }});
+             options.sceneFiles.push_back(value);
+             return std::string();
+         }},
+        {{"--size"}, "WIDTHxHEIGHT",
+         pixelSizeOption(options.width, options.height, 1, 8192, "--size needs WIDTHxHEIGHT from 1x1 to 8192x8192, e.g. 1280x720")},
+        {{"--generic"}, "", [&](const std::string&) { options.generic = true; return std::string(); }},
     };
     auto parsed = parseCommandOptions(arguments, known, "argument");
     if (!parsed) return usageError(parsed.error().message);
@@ -365,20 +421,27 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
         std::fprintf(stderr, "glint bench: %s\n", headless.error().format().c_str());
         return 2;
     }
-    std::vector<SceneResult> scenes;
+    (*headless)->renderer().setSpecialisedPrograms(!options.generic);
+    std::vector<const BenchScene*> timed;
     for (const BenchScene& benchScene : benchScenes()) {
         const auto& only = options.sceneNames;
-        if (!only.empty() && std::find(only.begin(), only.end(), benchScene.name) == only.end()) continue;
-        auto result = timeScene(**headless, benchScene, options.framesPerScene());
+        const bool chosen = only.empty() ? options.sceneFiles.empty()
+                                         : std::find(only.begin(), only.end(), benchScene.name) != only.end();
+        if (chosen) timed.push_back(&benchScene);
+    }
+    for (const BenchScene& fileScene : fileScenes) timed.push_back(&fileScene);
+    std::vector<SceneResult> scenes;
+    for (const BenchScene* benchScene : timed) {
+        auto result = timeScene(**headless, *benchScene, options);
         if (!result) {
-            std::fprintf(stderr, "glint bench: %s: %s\n", benchScene.name.c_str(), result.error().format().c_str());
+            std::fprintf(stderr, "glint bench: %s: %s\n", benchScene->name.c_str(), result.error().format().c_str());
             return 1;
         }
         scenes.push_back(std::move(*result));
     }
     const std::string description = (*headless)->renderer().description();
     ProgramFigures program;
-    if (options.sceneNames.empty()) {
+    if (!options.scenesOnly()) {
         const fs::path work = fs::temp_directory_path() / ("glint-bench-" + std::to_string(getpid()));
         fs::create_directories(work);
         auto measured = measureProgram(options, work);

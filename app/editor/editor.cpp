@@ -129,6 +129,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         return 2;
     }
     Renderer& renderer = **created;
+    // The radiance pass also writes the displayed image, so that putting it on screen is a scaled
+    // copy rather than a display pass over every screen pixel (renderer.h).
+    renderer.setFusedDisplay(true);
     GLFWwindow* window = platform->window();
 
     BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
@@ -220,6 +223,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);
         ImGui::Render();
+        const auto uiBuilt = std::chrono::steady_clock::now();
 
         // Window (ImGui) pixels to framebuffer pixels (HiDPI).
         const float pixelScale = windowSize.x > 0 ? framebuffer.x / windowSize.x : 1.0f;
@@ -262,18 +266,26 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
+        const auto composeStart = std::chrono::steady_clock::now();
         renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
+        if (logFrames) glFinish();  // so that the log can tell the phases apart
+        const auto displayed = std::chrono::steady_clock::now();
         glViewport(0, 0, framebuffer.x, framebuffer.y);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        if (logFrames) glFinish();
+        const auto composed = std::chrono::steady_clock::now();
         platform->present();
         if (logFrames && plan.render) {
             glFinish();
-            const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+            const auto now = std::chrono::steady_clock::now();
+            const auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
-                         "%d simplified meshes, shadow maps %s, %lld triangles\n",
-                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, total,
-                         state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", state.triangleCount);
+                         "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
+                         "presented %.1f ms, %lld triangles\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, ms(frameStart, now),
+                         state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
+                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         // Refusals and status lines written before the scene's last change no longer hold.

@@ -22,7 +22,9 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
         const double milliseconds = interactiveMeasured_ ? interactiveMilliseconds_ : fullFrameMilliseconds_;
         const int scale = interactiveMeasured_ ? interactiveScale_ : 1;
         const double wanted = std::ceil(scale * std::sqrt(milliseconds / kFrameBudgetMilliseconds));
-        plan.pixelScale = static_cast<int>(std::clamp(wanted, 1.0, 4.0));
+        const double atHalf = milliseconds * scale * scale / (kCoarsestPixelScale * kCoarsestPixelScale);
+        const int coarsest = atHalf > 2.0 * kFrameBudgetMilliseconds ? kCoarsestPixelScaleOfSlowScenes : kCoarsestPixelScale;
+        plan.pixelScale = static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(coarsest)));
     }
     return plan;
 }

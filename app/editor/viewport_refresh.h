@@ -21,6 +21,11 @@ struct RefreshPlan {
 class ViewportRefresh {
 public:
     static constexpr double kFrameBudgetMilliseconds = 33.0;
+    // A drag frame is no coarser than ½ resolution (coarser previews hide what the drag changes;
+    // the specialised programs, gl/shader_specialisation.h, make ½ fast on llvmpipe), unless a
+    // frame at ½ would take more than twice the budget (a million shadowed triangles): then down to ¼.
+    static constexpr int kCoarsestPixelScale = 2;
+    static constexpr int kCoarsestPixelScaleOfSlowScenes = 4;
     // A change outside a drag counts as part of an interaction for this long [s]: wheel ticks and
     // key repeats come faster.
     static constexpr double kSettleSeconds = 0.25;

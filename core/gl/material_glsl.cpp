@@ -24,6 +24,14 @@ std::string hooks(const ModelInfo& model) {
     return glsl;
 }
 
+// A choice's load: the constant GLINT_PARAM_<name> of a specialised program
+// (gl/shader_specialisation.h), else the value from MaterialBlock.
+std::string specialisable(const std::string& name, const std::string& generic) {
+    const std::string constant = "GLINT_PARAM_" + name;
+    return "#ifdef " + constant + "\n    p." + name + " = " + constant + ";\n#else\n    p." + name + " = " + generic +
+           ";\n#endif\n";
+}
+
 }  // namespace
 
 TexturedParams TexturedParams::of(const Material& material) {
@@ -59,11 +67,11 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
                 break;
             case ParamKind::Bool:
                 fields += "    bool " + name + ";\n";
-                loads += "    p." + name + " = " + at(0) + " > 0.5;\n";
+                loads += specialisable(name, at(0) + " > 0.5");
                 break;
             case ParamKind::Enum:
                 fields += "    int " + name + ";\n";
-                loads += "    p." + name + " = int(" + at(0) + " + 0.5);\n";
+                loads += specialisable(name, "int(" + at(0) + " + 0.5)");
                 break;
         }
         offset += componentCount(spec.kind);

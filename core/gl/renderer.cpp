@@ -6,12 +6,14 @@
 #include <cmath>
 #include <cstring>
 
+#include "display/display_chain.h"
 #include "geometry/mesh.h"
 #include "geometry/shape_mesh.h"
 #include "gl/frame_uniforms.h"
 #include "gl/gl_loader.h"
 #include "gl/material_glsl.h"
 #include "gl/material_textures.h"
+#include "gl/shader_specialisation.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
 #include "render/visibility.h"
@@ -64,12 +66,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     renderer->environment_ = std::make_unique<EnvironmentTextures>();
     auto program = ShaderProgram::build(renderer->sources_, "fullscreen.vert", "display.frag");
     if (!program) return program.error();
-    renderer->displayProgram_ = std::move(*program);
+    renderer->displayPrograms_.emplace("", std::move(*program));  // the generic one
     renderer->displayFiles_ = {"fullscreen.vert", "display.frag"};
     renderer->displayBuiltAt_ = renderer->newestModification(renderer->displayFiles_);
-    auto background = renderer->buildBackgroundProgram();
+    auto background = renderer->backgroundProgram("");  // the generic one: the shaders compile
     if (!background) return background.error();
-    renderer->backgroundProgram_ = std::move(*background);
     renderer->backgroundFiles_ = {"fullscreen.vert"};
     if (auto assembled = assembleShader(renderer->sources_, "background.frag"))
         renderer->backgroundFiles_.insert(renderer->backgroundFiles_.end(), assembled->files.begin(), assembled->files.end());
@@ -107,11 +108,18 @@ long long Renderer::newestModification(const std::vector<std::string>& files) co
     return newest;
 }
 
-Result<ShaderProgram> Renderer::buildBackgroundProgram() const {
-    auto program = ShaderProgram::build(sources_, "fullscreen.vert", "background.frag");
+Result<ShaderProgram> Renderer::buildBackgroundProgram(const std::string& prelude) const {
+    auto program = ShaderProgram::build(sources_, "fullscreen.vert", "background.frag", prelude);
     if (program) program->bindBlock("FrameBlock", kFrameBinding);
     if (program) EnvironmentTextures::connect(*program);
     return program;
+}
+
+Result<const ShaderProgram*> Renderer::backgroundProgram(const std::string& prelude) {
+    if (auto found = backgroundPrograms_.find(prelude); found != backgroundPrograms_.end()) return &found->second;
+    auto built = buildBackgroundProgram(prelude);
+    if (!built) return built.error();
+    return &backgroundPrograms_.insert_or_assign(prelude, std::move(*built)).first->second;
 }
 
 Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, SurfaceVariant variant,
@@ -142,6 +150,17 @@ Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, SurfaceVa
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
 
+const ShaderProgram& Renderer::displayProgram(const DisplaySettings& display) {
+    const std::string prelude = specialise_ ? displaySpecialisation(display) : "";
+    if (auto found = displayPrograms_.find(prelude); found != displayPrograms_.end()) return found->second;
+    auto built = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude);
+    if (!built) {
+        shaderError_ = built.error().format();
+        return displayPrograms_.at("");
+    }
+    return displayPrograms_.insert_or_assign(prelude, std::move(*built)).first->second;
+}
+
 bool Renderer::reloadChangedShaders() {
     if (!sources_.readsFromDisk()) return false;
     bool changed = false;
@@ -160,16 +179,20 @@ bool Renderer::reloadChangedShaders() {
     if (newestDisplay > displayBuiltAt_) {
         changed = true;
         displayBuiltAt_ = newestDisplay;
-        if (auto program = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag"))
-            displayProgram_ = std::move(*program);
-        else error = program.error().format();
+        for (auto& [prelude, program] : displayPrograms_) {
+            if (auto rebuilt = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude))
+                program = std::move(*rebuilt);
+            else error = rebuilt.error().format();
+        }
     }
     const long long newestBackground = newestModification(backgroundFiles_);
     if (newestBackground > backgroundBuiltAt_) {
         changed = true;
         backgroundBuiltAt_ = newestBackground;
-        if (auto program = buildBackgroundProgram()) backgroundProgram_ = std::move(*program);
-        else error = program.error().format();
+        for (auto& [prelude, program] : backgroundPrograms_) {
+            if (auto rebuilt = buildBackgroundProgram(prelude)) program = std::move(*rebuilt);
+            else error = rebuilt.error().format();
+        }
     }
     if (changed) shaderError_ = error;
     return changed;
@@ -186,12 +209,13 @@ void Renderer::finishSimplifiedMeshes() { meshes_->finishSimplified(); }
 
 // --- per-frame uniforms ---------------------------------------------------------------------
 
-void Renderer::uploadFrame(const Scene& scene, int width, int height) {
+FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
     const FrameUniforms packed = packFrameUniforms(scene, width, height);
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kFrameBinding]);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof packed.frame, &packed.frame);
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kLightBinding]);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof packed.lights, &packed.lights);
+    return packed;
 }
 
 // --- drawing --------------------------------------------------------------------------------
@@ -232,8 +256,24 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     glDepthFunc(GL_LESS);
     if (samples > 1) glEnable(GL_MULTISAMPLE);
     glClear(GL_DEPTH_BUFFER_BIT);
-    uploadFrame(scene, width, height);
+    const FrameUniforms packed = uploadFrame(scene, width, height);
     environment_->prepare(scene.environment);  // uploads only when the map changed
+    const std::string frameDefines =
+        specialise_ ? frameSpecialisation(packed, shadowMaps_->block(), scene.environment, fusedDisplay_) : "";
+    // A background that is the same at every pixel is a clear (as cheap as a frame can be), not a
+    // pass: constant, no environment shown, and a display value without a dither pattern.
+    const bool uniformBackground = scene.background.kind == BackgroundKind::Constant &&
+                                   !(scene.environment.enabled() && scene.environment.showAsBackground) &&
+                                   (!fusedDisplay_ || fusedDisplay_->dither == Dither::None);
+    if (uniformBackground) {
+        const GLfloat radiance[4] = {scene.background.color.r, scene.background.color.g, scene.background.color.b, 1.0f};
+        glClearBufferfv(GL_COLOR, 0, radiance);
+        if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
+            GLfloat encoded[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            for (int c = 0; c < 3; ++c) encoded[c] = displayValue8(scene.background.color[c], *fusedDisplay_, 0, 0) / 255.0f;
+            glClearBufferfv(GL_COLOR, 1, encoded);
+        }
+    }
 
     std::vector<float> sampleOffsets;
     for (int i = 0; i < samples && samples > 1; ++i) {
@@ -257,7 +297,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
             sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
         if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
         const Material& material = scene.materials.at(object.materialIndex);
-        const SurfaceVariant variant{samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere != nullptr};
+        const bool builtInModel = !material.custom && !material.measured;
+        const SurfaceVariant variant{samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere != nullptr,
+                                     specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines};
         auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, variant)
                        : material.measured ? measured_.program(sources_, variant)
                                            : surfaceProgram(material.model, variant, TexturedParams::of(material));
@@ -302,20 +344,27 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
                                 glm::vec4(placement.offset, placement.scale)});
     }
     glDisable(GL_CULL_FACE);
-    // The background (constant or sky, per primary ray direction) last, only where no object
-    // wrote depth: drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and
-    // MSAA samples) an object covers are rejected before the background shader runs.
-    glDepthMask(GL_FALSE);
-    glDepthFunc(GL_LEQUAL);
-    glDepthRange(1.0, 1.0);
-    glUseProgram(backgroundProgram_.id());
-    setFusedDisplayUniforms(backgroundProgram_, fusedDisplay_);
-    glBindVertexArray(emptyVertexArray_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthRange(0.0, 1.0);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glBindVertexArray(0);
+    // Any other background (sky, environment, dithered) last, only where no object wrote depth:
+    // drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and MSAA samples) an
+    // object covers are rejected before the background shader runs.
+    Result<const ShaderProgram*> background = static_cast<const ShaderProgram*>(nullptr);
+    if (!uniformBackground) background = backgroundProgram(frameDefines);
+    if (!background) {
+        shaderError_ = background.error().format();
+        result = background.error();
+    } else if (*background) {
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glDepthRange(1.0, 1.0);
+        glUseProgram((*background)->id());
+        setFusedDisplayUniforms(**background, fusedDisplay_);
+        glBindVertexArray(emptyVertexArray_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDepthRange(0.0, 1.0);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glBindVertexArray(0);
+    }
     if (samples > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
@@ -358,15 +407,26 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
     // Skipped when the radiance pass already wrote the encoded image with these settings (fused).
     if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display))
-        runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
+        runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
+    fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
 }
 
 void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
     platform_.makeCurrent();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(lowerLeft.x, lowerLeft.y, radianceTarget_.width() * pixelScale, radianceTarget_.height() * pixelScale);
-    runDisplayPass(displayProgram_, radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
+    const int width = radianceTarget_.width(), height = radianceTarget_.height();
+    glViewport(lowerLeft.x, lowerLeft.y, width * pixelScale, height * pixelScale);
+    if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) {
+        // The radiance pass wrote this very image (fused): each pixel copied to pixelScale² screen pixels.
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, displayTarget_.framebuffer());
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glBlitFramebuffer(0, 0, width, height, lowerLeft.x, lowerLeft.y, lowerLeft.x + width * pixelScale,
+                          lowerLeft.y + height * pixelScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    } else {
+        runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
+    }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), lowerLeft, pixelScale);
 }
 

@@ -14,6 +14,7 @@
 #include "gl/custom_brdf_program.h"
 #include "gl/measured_brdf_gpu.h"
 #include "gl/environment_textures.h"
+#include "gl/frame_uniforms.h"
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
 #include "gl/platform.h"
@@ -57,9 +58,15 @@ public:
     // Fused display (off by default; headless renders turn it on): renders without MSAA also
     // write the display-encoded image into the 8-bit target in the radiance pass itself
     // (shaders/common/display_output.glsl), so that displayOffscreen() with the scene's display
-    // settings has nothing left to do. The float image is written all the same.
+    // settings has nothing left to do but the overlays, and displayToScreen() copies it. The float
+    // image is written all the same.
     void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
-    // Display pass into the default framebuffer, at the given lower-left corner.
+    // Specialised programs (on by default; gl/shader_specialisation.h): what a frame and a material
+    // keep fixed is compiled in as constants, one program per combination, built when first drawn.
+    // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
+    void setSpecialisedPrograms(bool enabled) { specialise_ = enabled; }
+    // Display pass into the default framebuffer, at the given lower-left corner; a scaled copy of
+    // the fused image when the last radiance render fused these settings (the editor fuses).
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
     // reduced-resolution preview while dragging).
     void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1);
@@ -93,10 +100,14 @@ private:
     };
 
     Renderer(GlPlatform& platform, ShaderSources sources);
-    Result<ShaderProgram> buildBackgroundProgram() const;
+    Result<ShaderProgram> buildBackgroundProgram(const std::string& prelude) const;
+    Result<const ShaderProgram*> backgroundProgram(const std::string& prelude);
+    // The display pass's program for these settings (specialised unless switched off); the
+    // generic one when a specialised one fails to build.
+    const ShaderProgram& displayProgram(const DisplaySettings& display);
     Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) const;
     Result<const ShaderProgram*> surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured);
-    void uploadFrame(const Scene& scene, int width, int height);
+    FrameUniforms uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
 
     GlPlatform& platform_;
@@ -108,10 +119,10 @@ private:
     std::map<std::tuple<BrdfModel, SurfaceVariant, std::uint32_t>, SurfaceProgram> surfacePrograms_;
     CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
     MeasuredBrdfGpu measured_;  // materials with a MERL table
-    ShaderProgram displayProgram_;
+    std::map<std::string, ShaderProgram> displayPrograms_;  // by specialisation prelude
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
-    ShaderProgram backgroundProgram_;
+    std::map<std::string, ShaderProgram> backgroundPrograms_;  // by specialisation prelude
     std::vector<std::string> backgroundFiles_;
     long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
@@ -125,6 +136,7 @@ private:
     int simplifiedMeshesDrawn_ = 0;
     std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
     bool fuseDisplay_ = false;
+    bool specialise_ = true;
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};
     RenderTarget radianceTarget_{kRadianceFormat, true};

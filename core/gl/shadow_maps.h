@@ -56,6 +56,8 @@ public:
     void update(const Scene& scene, const MeshOfObject& meshOf, MeshDetail detail, int dragResolution);
     // Binds the maps to their texture units and points `program`'s samplers at them.
     void bind(const ShaderProgram& program) const;
+    // What the last update() uploaded (which light has which map: gl/shader_specialisation.h).
+    const ShadowBlockStd140& block() const { return block_; }
     // How many update() calls re-rendered maps, and how many maps they drew (tests of the caching).
     long long renderCount() const { return renderCount_; }
     long long mapRenderCount() const { return mapRenderCount_; }

@@ -6,9 +6,15 @@
 #include "common/display_quantise.glsl"
 
 uniform float exposureScale;  // 2^EV
-uniform int transfer;         // 0: sRGB, 1: gamma, 2: linear (no encoding)
 uniform float gamma;
+// The choices are compile-time constants in a specialised program (gl/shader_specialisation.h).
+#ifdef GLINT_DISPLAY_TRANSFER
+const int transfer = GLINT_DISPLAY_TRANSFER;
+const int toneMap = GLINT_DISPLAY_TONE_MAP;
+#else
+uniform int transfer;         // 0: sRGB, 1: gamma, 2: linear (no encoding)
 uniform int toneMap;          // 0: none (clip), 1: Reinhard x/(1+x), 2: ACES filmic (Narkowicz 2015)
+#endif
 
 float encodeSrgb(float linear) {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;

@@ -7,7 +7,13 @@
 
 layout(location = 0) out vec4 outRadiance;
 layout(location = 1) out vec4 outDisplay;
-uniform bool fusedDisplay;  // false: no second target is bound, the display pass follows
+// false: no second target is bound, the display pass follows (a constant when specialised,
+// gl/shader_specialisation.h).
+#ifdef GLINT_FUSED_DISPLAY
+const bool fusedDisplay = GLINT_FUSED_DISPLAY != 0;
+#else
+uniform bool fusedDisplay;
+#endif
 
 void writeRadiance(vec3 radiance) {
     outRadiance = vec4(radiance, 1.0);

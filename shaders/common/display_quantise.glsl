@@ -3,7 +3,11 @@
 // the encoded value and the pixel; no encoding here (display_encode.glsl).
 
 uniform int levels;  // 2..256
+#ifdef GLINT_DISPLAY_DITHER  // a compile-time constant in a specialised program (gl/shader_specialisation.h)
+const int dither = GLINT_DISPLAY_DITHER;
+#else
 uniform int dither;  // 0: none, 1: Bayer 2×2, 2: Bayer 4×4, 3: clustered-dot halftone 4×4
+#endif
 
 const int kBayer2[4] = int[4](0, 2, 3, 1);
 const int kBayer4[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);

@@ -18,6 +18,16 @@ uniform sampler2D environmentBase;             // the radiance image
 uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π
 uniform sampler2D environmentSplitSum;         // rg: split-sum scale A and bias B
 
+// Whether the scene has an environment, and shows it as the background: compile-time constants
+// in a specialised program (gl/shader_specialisation.h), else the block's flags.
+#ifdef GLINT_ENVIRONMENT_ENABLED
+bool environmentEnabled() { return GLINT_ENVIRONMENT_ENABLED != 0; }
+bool environmentShown() { return GLINT_ENVIRONMENT_ENABLED != 0 && GLINT_ENVIRONMENT_SHOWN != 0; }
+#else
+bool environmentEnabled() { return environmentFlags.x != 0; }
+bool environmentShown() { return environmentFlags.x != 0 && environmentFlags.y != 0; }
+#endif
+
 vec3 environmentMapDirection(vec3 d) {
     float c = environmentTransform.x, s = environmentTransform.y;
     return vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
@@ -111,10 +121,9 @@ vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo
 
 // What a secondary ray sees (twin of MissRadiance::operator()), and a primary ray (::primary).
 vec3 missRadiance(vec3 direction) {
-    return environmentFlags.x != 0 ? environmentRadiance(direction) : backgroundRadiance(direction);
+    return environmentEnabled() ? environmentRadiance(direction) : backgroundRadiance(direction);
 }
 
 vec3 primaryMissRadiance(vec3 direction) {
-    return environmentFlags.x != 0 && environmentFlags.y != 0 ? environmentRadiance(direction)
-                                                              : backgroundRadiance(direction);
+    return environmentShown() ? environmentRadiance(direction) : backgroundRadiance(direction);
 }

@@ -1,6 +1,13 @@
 // What one delta light delivers at a point: the GLSL twin of lightArrival() and spotFactor() in
 // core/light/light.h. Ambient lights arrive as FrameBlock.ambientRadiance, not here.
 
+// What is known of a light when its program is compiled (gl/shader_specialisation.h): nothing
+// (read everything from LightBlock), a directional light, or a point light with the inverse-square
+// law and no cone. A known kind lets the compiler drop the other kinds' code.
+const int LIGHT_ANY = -1;
+const int LIGHT_DIRECTIONAL = 0;
+const int LIGHT_POINT = 1;
+
 struct LightArrival {
     vec3 towardsLight;      // unit
     vec3 normalIrradiance;  // E⊥ [W/m²]
@@ -17,16 +24,21 @@ float spotFactor(float cosAlpha, float cosOuter, float cosInner, float falloffEx
     return pow(cosAlpha, falloffExponent) * edge;
 }
 
-LightArrival lightArrival(GpuLight light, vec3 point) {
-    vec3 toLight = light.position.xyz - point * light.position.w;
+LightArrival lightArrival(GpuLight light, vec3 point, int kind) {
     LightArrival arrival;
-    arrival.towardsLight = normalize(toLight);
-    if (light.position.w == 0.0) {  // directional: E⊥ = M
+    if (kind == LIGHT_DIRECTIONAL || (kind == LIGHT_ANY && light.position.w == 0.0)) {  // directional: E⊥ = M
+        arrival.towardsLight = normalize(light.position.xyz);
         arrival.normalIrradiance = light.emission.rgb;
         return arrival;
     }
     // Point and spot: E⊥ = I/d² (inverse-square law), or the classic 1/(a0 + a1·d + a2·d²).
+    vec3 toLight = light.position.xyz - point;
+    arrival.towardsLight = normalize(toLight);
     float distance = length(toLight);
+    if (kind == LIGHT_POINT) {
+        arrival.normalIrradiance = light.emission.rgb * (1.0 / (distance * distance));
+        return arrival;
+    }
     float distanceFactor = light.attenuation.w > 0.5
         ? 1.0 / (light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance)
         : 1.0 / (distance * distance);

@@ -4,24 +4,36 @@
 // Needs uniforms.glsl, frame.glsl, lights.glsl and generated/material.glsl first.
 #include "common/shadows.glsl"
 
+// One delta light's L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadows.glsl). `kind` and
+// `shadowed` are constants in a specialised program (gl/shader_specialisation.h), so the compiler
+// keeps only the code this light needs.
+vec3 lightTerm(MaterialParams params, int i, int kind, bool shadowed, vec3 position, ShadingFrame frame,
+               vec3 towardsViewer) {
+    LightArrival arrival = lightArrival(lights[i], position, kind);
+    float cosIn = cosTheta(frame, arrival.towardsLight);
+    if (cosIn <= 0.0) return vec3(0.0);
+    float visibility = shadowed ? shadowVisibility(i, position, frame.normal, arrival.towardsLight) : 1.0;
+    if (visibility == 0.0) return vec3(0.0);
+    return GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) * arrival.normalIrradiance * cosIn *
+           visibility;
+}
+
 vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     MaterialParams params = loadMaterialParams();
     vec3 radiance = vec3(0.0);
-    for (int i = 0; i < lightCount.x; ++i) {
-        LightArrival arrival = lightArrival(lights[i], position);
-        float cosIn = cosTheta(frame, arrival.towardsLight);
-        if (cosIn <= 0.0) continue;
-        // L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V for each delta light (V: shadows.glsl).
-        float visibility = shadowVisibility(i, position, frame.normal, arrival.towardsLight);
-        if (visibility == 0.0) continue;
-        radiance += GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) *
-                    arrival.normalIrradiance * cosIn * visibility;
-    }
+#ifdef GLINT_LIGHT_SUM
+    // Specialised: the frame's lights unrolled, GLINT_LIGHT_SUM(term) = term(0, kind, shadowed) + ...
+#define GLINT_LIGHT_TERM(i, kind, shadowed) lightTerm(params, i, kind, shadowed, position, frame, towardsViewer)
+    radiance += GLINT_LIGHT_SUM(GLINT_LIGHT_TERM);
+#else
+    for (int i = 0; i < lightCount.x; ++i)
+        radiance += lightTerm(params, i, LIGHT_ANY, true, position, frame, towardsViewer);
+#endif
     // Ambient: k_a · L_a (GLINT_AMBIENT_REFLECTANCE is the registry's hook, zero when absent).
     radiance += GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;
 #ifdef GLINT_ENVIRONMENT_LIGHTING
     // Environment light: the model's image-based lighting hook (registry glslEnvironment).
-    if (environmentFlags.x != 0) radiance += GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame);
+    if (environmentEnabled()) radiance += GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame);
 #endif
 #ifdef GLINT_SPECULAR_TRANSPORT
     radiance += GLINT_SPECULAR_TRANSPORT(params, position, frame, towardsViewer);

@@ -1,9 +1,14 @@
 """Editor figures under Xvfb (not a test; numbers for the README and reports):
   1. idle CPU: utime+stime of the editor process over 10 s with nothing happening;
   2. edit-to-frame while dragging a material slider with 4 lights (1280×800 window), from the
-     editor's GLINT_LOG_FRAMES log: time from the frame's input arriving to the frame presented;
+     editor's GLINT_LOG_FRAMES log: time from the frame's input arriving to the frame presented,
+     the frames per second drawn during the drag and their resolution, and the full frame after
+     the release;
   3. frame time with both side columns closed (viewport 1280 × ~750), from mouse-wheel zooms.
-usage: /usr/bin/python3 tests/bench/editor_figures.py build/app/glint"""
+--size WxH (e.g. 1920x1080) runs the same on a screen of that size with the window resized to
+fill it (the right column's slider moves with the window's right edge).
+usage: /usr/bin/python3 tests/bench/editor_figures.py build/app/glint [--size WxH]"""
+import argparse
 import os
 import statistics
 import subprocess
@@ -28,7 +33,10 @@ def frames(log_path, start_line):
     parsed = []
     for line in lines:
         words = line.split()
-        parsed.append({"size": words[3], "scale": words[5], "render": float(words[7]), "total": float(words[13])})
+        frame = {"size": words[3], "scale": words[5], "render": float(words[7]), "total": float(words[13])}
+        if "presented" in words[14:]:  # the phases: ui built, displayed, ui drawn, presented [ms]
+            frame.update(ui=float(words[23]), display=float(words[26]), drawn=float(words[30]), present=float(words[33]))
+        parsed.append(frame)
     return parsed
 
 
@@ -39,15 +47,26 @@ def summary(name, values):
 
 
 def main():
-    glint = sys.argv[1]
+    parser = argparse.ArgumentParser()
+    parser.add_argument("glint")
+    parser.add_argument("--size", default="1280x800")
+    args = parser.parse_args()
+    glint = args.glint
+    width, height = (int(v) for v in args.size.split("x"))
+    slider = (EXPONENT_SLIDER[0] + width - 1280, EXPONENT_SLIDER[1])  # the material column is right-aligned
     state = tempfile.mkdtemp(prefix="glint-figures-")
     log_path = os.path.join(state, "frames.log")
-    with XServer(1280, 800) as x, open(log_path, "w") as log:
+    with XServer(width, height) as x, open(log_path, "w") as log:
         env = dict(x.env, GLINT_STATE_DIR=state, GLINT_LOG_FRAMES="1")
         editor = subprocess.Popen([glint], env=env, stdout=log, stderr=log)
         try:
-            x.find_window("Glint")
-            x.wait_for(lit_sphere, "the lit sphere")
+            window = x.find_window("Glint")
+            if (width, height) != (1280, 800):
+                x.run("xdotool", "windowmove", "--sync", window, "0", "0")
+                x.run("xdotool", "windowsize", "--sync", window, str(width), str(height))
+                time.sleep(8)  # the first full frames at the new size
+            else:
+                x.wait_for(lit_sphere, "the lit sphere")
             time.sleep(3)
             before = cpu_seconds(editor.pid)
             time.sleep(10)
@@ -59,22 +78,30 @@ def main():
             x.click(ADD_POINT_LIGHT[0], ADD_POINT_LIGHT[1] + 27)  # the buttons moved down one row
             time.sleep(1.5)
             mark = len(frames(log_path, 0))
-            x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]), steps=40, step_seconds=0.05)
+            start = time.time()
+            x.drag(slider, (slider[0] - 80, slider[1]), steps=40, step_seconds=0.05)
+            drag_seconds = time.time() - start
             time.sleep(1.5)
             dragged = frames(log_path, mark)
             previews = [f for f in dragged if f["scale"] != "1/1"]
-            print(f"slider drag with 4 lights: {len(dragged)} frames, sizes {sorted(set(f['size'] + ' ' + f['scale'] for f in dragged))}")
+            print(f"slider drag with 4 lights ({width}x{height} window): {len(dragged)} frames, "
+                  f"sizes {sorted(set(f['size'] + ' ' + f['scale'] for f in dragged))}")
+            print(f"  frames per second during the drag: {(len(dragged) - 1) / drag_seconds:.1f} "
+                  f"({len(dragged) - 1} frames in {drag_seconds:.2f} s of pointer motion)")
             print("  " + summary("input to presented frame during the drag", [f["total"] for f in dragged[:-1]]))
             print("  " + summary("render only during the drag", [f["render"] for f in dragged[:-1]]))
+            for phase, name in (("ui", "ui built (input, panels)"), ("display", "display pass (clear, radiance to screen)"),
+                                ("drawn", "ui drawn"), ("present", "presented (swap)")):
+                print("  " + summary(name + " during the drag", [f[phase] for f in dragged[:-1] if phase in f]))
             print(f"  preview frames: {len(previews)}; last (refined) frame: {dragged[-1] if dragged else None}")
 
             x.click(316, 34)   # close the scene column
             time.sleep(1.5)
-            x.click(1266, 34)  # close the material column
+            x.click(1266 + width - 1280, 34)  # close the material column
             time.sleep(1.5)
             mark = len(frames(log_path, 0))
             for _ in range(8):
-                x.click(640, 400, button=5)  # wheel: zoom, one full-resolution frame each
+                x.click(width // 2, height // 2, button=5)  # wheel: zoom, one full-resolution frame each
                 time.sleep(0.6)
             full = frames(log_path, mark)
             print(f"full viewport {sorted(set(f['size'] for f in full))}, 4 lights:")

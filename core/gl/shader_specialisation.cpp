@@ -1,0 +1,69 @@
+// Program specialisation preludes (see shader_specialisation.h).
+#include "gl/shader_specialisation.h"
+
+#include "brdf/model_registry.h"
+#include "brdf/param_table.h"
+
+namespace glint {
+namespace {
+
+std::string define(const std::string& name, const std::string& value) { return "#define " + name + " " + value + "\n"; }
+
+// The kind constant of shaders/common/lights.glsl that a packed light needs.
+const char* lightKind(const GpuLightStd140& light) {
+    if (light.position.w == 0.0f) return "LIGHT_DIRECTIONAL";
+    const bool inverseSquare = light.attenuation.w <= 0.5f, noCone = light.spotAxis.w <= -1.5f;
+    return inverseSquare && noCone ? "LIGHT_POINT" : "LIGHT_ANY";
+}
+
+// GLINT_LIGHT_SUM(term): term(i, kind, shadowed) summed over the lights in LightBlock order
+// (shaders/common/shading.glsl), or nothing when there are too many to unroll.
+std::string lightSum(const FrameUniforms& frame, const ShadowBlockStd140& shadows) {
+    const int count = frame.frame.lightCount.x;
+    if (count > kMaxSpecialisedLights) return "";
+    std::string sum;
+    for (int i = 0; i < count; ++i) {
+        const bool shadowed = shadows.mapOfLight[i / 4][i % 4] >= 0;
+        sum += (i ? " + term(" : "term(") + std::to_string(i) + ", " + lightKind(frame.lights.lights[i]) + ", " +
+               (shadowed ? "true" : "false") + ")";
+    }
+    return define("GLINT_LIGHT_SUM(term)", count == 0 ? "vec3(0.0)" : "(" + sum + ")");
+}
+
+}  // namespace
+
+std::string frameSpecialisation(const FrameUniforms& frame, const ShadowBlockStd140& shadows, const Environment& environment,
+                                const std::optional<DisplaySettings>& fusedDisplay) {
+    std::string text = lightSum(frame, shadows);
+    // As EnvironmentTextures::prepare() sets the block's flags.
+    const bool environmentOn = environment.enabled();
+    text += define("GLINT_ENVIRONMENT_ENABLED", environmentOn ? "1" : "0");
+    text += define("GLINT_ENVIRONMENT_SHOWN", environmentOn && environment.showAsBackground ? "1" : "0");
+    text += define("GLINT_BACKGROUND_KIND", std::to_string(frame.frame.backgroundKind.x));
+    text += define("GLINT_FUSED_DISPLAY", fusedDisplay ? "1" : "0");
+    if (fusedDisplay) text += displaySpecialisation(*fusedDisplay);
+    return text;
+}
+
+std::string displaySpecialisation(const DisplaySettings& display) {
+    // The orders of enums Transfer, ToneMap and Dither (display_encode.glsl, display_quantise.glsl).
+    return define("GLINT_DISPLAY_TRANSFER", std::to_string(static_cast<int>(display.transfer))) +
+           define("GLINT_DISPLAY_TONE_MAP", std::to_string(static_cast<int>(display.toneMap))) +
+           define("GLINT_DISPLAY_DITHER", std::to_string(static_cast<int>(display.dither)));
+}
+
+std::string materialSpecialisation(const Material& material) {
+    const auto table = modelInfo(material.model).params;
+    std::string text;
+    int offset = 0;
+    for (const ParamSpec& spec : table) {
+        const float value = offset < static_cast<int>(material.values.size()) ? material.values[offset] : 0.0f;
+        // As the generic loadMaterialParams() reads them: int(v + 0.5) and v > 0.5.
+        if (spec.kind == ParamKind::Enum) text += define("GLINT_PARAM_" + std::string(spec.name), std::to_string(static_cast<int>(value + 0.5f)));
+        if (spec.kind == ParamKind::Bool) text += define("GLINT_PARAM_" + std::string(spec.name), value > 0.5f ? "true" : "false");
+        offset += componentCount(spec.kind);
+    }
+    return text;
+}
+
+}  // namespace glint

@@ -1,0 +1,39 @@
+// Program specialisation: the #define prelude that makes what a frame keeps fixed compile-time
+// constants of the programs that draw it — the lights' count and kinds (unrolled, with no shadow
+// lookup for a light without a map), whether there is an environment and whether it is shown, the
+// background's kind, the fused display's choices (transfer, tone map, dither) and a built-in
+// material's enum and bool parameters. The GLSL compiler then drops the branches, loops and
+// uniform reads a generic program runs at every pixel (llvmpipe runs shaders on the CPU, so that
+// code costs as much as the shading itself). A symbol left undefined keeps the generic,
+// uniform-driven code (shaders/common/*.glsl read both ways), so a new fixed choice is one more
+// line here and one #ifdef where it is read. The text is part of a program's cache key
+// (SurfaceVariant::specialisation): a change of what it names compiles a new program once, and
+// continuous values (colours, roughness, light positions) stay uniforms, so drags never compile.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "gl/frame_uniforms.h"
+#include "gl/shadow_maps.h"
+#include "scene/scene.h"
+
+namespace glint {
+
+// Lights beyond this many are looped over generically (an unrolled sum grows the program).
+inline constexpr int kMaxSpecialisedLights = 8;
+
+// The frame's part: lights (as packed, with their shadow-map slots), environment, background and,
+// when the display chain is fused into the radiance pass, its choices.
+std::string frameSpecialisation(const FrameUniforms& frame, const ShadowBlockStd140& shadows, const Environment& environment,
+                                const std::optional<DisplaySettings>& fusedDisplay);
+
+// The display chain's choices (transfer, tone map, dither) for display_encode.glsl: the fused
+// radiance passes' and the display pass's.
+std::string displaySpecialisation(const DisplaySettings& display);
+
+// A built-in model's enum and bool parameters, by name (GLINT_PARAM_<name>, read by the generated
+// loadMaterialParams(), gl/material_glsl.h).
+std::string materialSpecialisation(const Material& material);
+
+}  // namespace glint

@@ -1,0 +1,118 @@
+// Specialised programs (gl/shader_specialisation.h) draw the same pictures as the generic ones:
+// for every light kind (directional, point, spot, classic attenuation), a shadowed light, a sky
+// and a constant background (a clear), the fused display's choices and a material's enum choices,
+// the radiance agrees to float rounding and the 8-bit display image byte for byte.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "brdf/model_registry.h"
+#include "brdf/param_table.h"
+#include "gl/frame_uniforms.h"
+#include "gl/shader_specialisation.h"
+#include "gpu_test_support.h"
+
+namespace glint {
+namespace {
+
+// The default stage (sphere on a floor) lit by one light of each kind, the key light shadowed.
+Scene everyLightKind() {
+    Scene scene = defaultScene();
+    scene.lights[0].castsShadows = true;
+    Light spot;
+    spot.name = "spot";
+    spot.type = LightType::Spot;
+    spot.position = {-1.5f, 2.5f, 1.5f};
+    spot.direction = glm::normalize(glm::vec3(1.5f, -2.5f, -1.5f));
+    spot.falloffExponent = 2.0f;
+    Light classic;
+    classic.name = "classic";
+    classic.type = LightType::Point;
+    classic.position = {0.0f, 1.0f, 3.0f};
+    classic.attenuation.enabled = true;
+    classic.attenuation.coefficients = {1.0f, 0.2f, 0.05f};
+    scene.lights.push_back(spot);
+    scene.lights.push_back(classic);
+    return scene;
+}
+
+struct Rendered {
+    RadianceImage radiance;
+    DisplayImage display;
+};
+
+Rendered renderWith(const Scene& scene, bool specialised) {
+    Renderer& renderer = test::sharedHeadless().renderer();
+    renderer.setSpecialisedPrograms(specialised);
+    auto images = test::sharedHeadless().render(scene, 96, 72);
+    renderer.setSpecialisedPrograms(true);
+    EXPECT_TRUE(images.ok()) << images.error().format();
+    if (!images.ok()) return {RadianceImage(96, 72), DisplayImage(96, 72)};
+    return {std::move(images->radiance), std::move(images->display)};
+}
+
+void expectSamePictures(const Scene& scene, const std::string& what) {
+    const Rendered generic = renderWith(scene, false), specialised = renderWith(scene, true);
+    ASSERT_EQ(generic.radiance.pixels.size(), specialised.radiance.pixels.size());
+    float worst = 0.0f;
+    for (size_t i = 0; i < generic.radiance.pixels.size(); ++i) {
+        const float a = generic.radiance.pixels[i], b = specialised.radiance.pixels[i];
+        worst = std::max(worst, std::abs(a - b) / std::max(std::abs(a), 1e-3f));
+    }
+    EXPECT_LT(worst, 1e-5f) << what << ": worst relative radiance difference";
+    EXPECT_EQ(generic.display.pixels, specialised.display.pixels) << what;
+}
+
+TEST(Specialisation, EveryLightKindAndAShadowDrawTheGenericPicture) {
+    expectSamePictures(everyLightKind(), "constant background");
+    Scene sky = everyLightKind();
+    sky.background.kind = BackgroundKind::Sky;
+    expectSamePictures(sky, "sky");
+}
+
+TEST(Specialisation, DisplayChoicesDrawTheGenericPicture) {
+    Scene scene = everyLightKind();
+    scene.display = {1.0f, Transfer::Gamma, 1.8f, ToneMap::Reinhard};
+    scene.display.levels = 8;
+    scene.display.dither = Dither::Bayer4;  // a dithered background is drawn, not cleared
+    expectSamePictures(scene, "gamma, Reinhard, 8 levels, Bayer 4x4");
+    scene.display.dither = Dither::None;
+    scene.display.toneMap = ToneMap::AcesFilmic;
+    expectSamePictures(scene, "ACES, 8 levels");
+}
+
+TEST(Specialisation, MaterialChoicesDrawTheGenericPicture) {
+    Scene scene = everyLightKind();
+    Material& material = scene.materials[0];
+    material = Material::withDefaults("metal", BrdfModel::CookTorrance);
+    const auto table = modelInfo(BrdfModel::CookTorrance).params;
+    for (int distribution : {0, 1})
+        for (int geometry : {0, 1})
+            for (int fresnel : {0, 1}) {
+                material.values[packedOffset(table, findParam(table, "distribution"))] = static_cast<float>(distribution);
+                material.values[packedOffset(table, findParam(table, "geometry"))] = static_cast<float>(geometry);
+                material.values[packedOffset(table, findParam(table, "fresnel"))] = static_cast<float>(fresnel);
+                expectSamePictures(scene, "cook_torrance " + std::to_string(distribution) + std::to_string(geometry) +
+                                              std::to_string(fresnel));
+            }
+}
+
+TEST(Specialisation, TheFramesChoicesBecomeConstants) {
+    const Scene scene = everyLightKind();
+    ShadowBlockStd140 shadows{};
+    for (glm::ivec4& entry : shadows.mapOfLight) entry = glm::ivec4(-1);
+    shadows.mapOfLight[0][0] = 0;  // the key light has map 0
+    const std::string text = frameSpecialisation(packFrameUniforms(scene, 64, 64), shadows, scene.environment, scene.display);
+    EXPECT_NE(text.find("#define GLINT_LIGHT_SUM(term) (term(0, LIGHT_DIRECTIONAL, true) + term(1, LIGHT_POINT, false) + "
+                        "term(2, LIGHT_ANY, false) + term(3, LIGHT_ANY, false))"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("#define GLINT_FUSED_DISPLAY 1"), std::string::npos);
+    EXPECT_NE(text.find("#define GLINT_ENVIRONMENT_ENABLED 0"), std::string::npos);
+    EXPECT_NE(materialSpecialisation(Material::withDefaults("plastic", BrdfModel::BlinnPhong)).find("#define GLINT_PARAM_form "),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace glint
