@@ -228,6 +228,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         const glm::ivec2 viewportLowerLeft{static_cast<int>(viewport.x * pixelScale),
                                            static_cast<int>(statusHeight * pixelScale)};
         if (updateCompareView(state, renderer)) renderedSize = {0, 0};  // the compare panes used the renderer
+        if (updatePresetSwatches(state.presetSwatches, renderer)) {  // so did a swatch; the next one on the next frame
+            renderedSize = {0, 0};
+            framesToDraw = std::max(framesToDraw, 2);
+        }
         const bool changed = state.session.revision() != renderedRevision;
         const RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
                                                state.settings.simplifyMeshesWhileDragging});
@@ -249,6 +253,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             state.simplifiedMeshesShown = renderer.simplifiedMeshesDrawn();
             state.shadowMapsRedrawn = renderer.shadowMapRenders() != shadowMapRenders;
             state.triangleCount = renderer.trianglesDrawn();
+            state.samplesNote = renderer.samplesNote(state.session.scene().msaaSamples);
             renderedSize = viewportPixels;
             renderedRevision = state.session.revision();
             renderedScale = plan.pixelScale;
