@@ -15,6 +15,7 @@ namespace glint {
 
 void drawPresetBrowser(EditorState& state, int materialIndex) {
     if (!ImGui::TreeNodeEx("Preset library", ImGuiTreeNodeFlags_None)) return;
+    ImGui::PushStyleVar(ImGuiStyleVar_SelectableTextAlign, ImVec2(0.0f, 0.5f));  // names beside their swatch's middle
     const char* category = "";
     for (const Preset& preset : allPresets()) {
         if (std::string(preset.category) != category) {
@@ -40,6 +41,7 @@ void drawPresetBrowser(EditorState& state, int materialIndex) {
             ImGui::SetTooltip("%s\n%s", modelInfo(preset.model).label, preset.source);
         ImGui::PopID();
     }
+    ImGui::PopStyleVar();
     ImGui::TreePop();
 }
 
