@@ -239,8 +239,16 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             const glm::ivec2 renderPixels = (viewportPixels + plan.pixelScale - 1) / plan.pixelScale;
             const long long shadowMapRenders = renderer.shadowMapRenders();
             const auto start = std::chrono::steady_clock::now();
-            if (Status status = renderer.renderRadiance(state.session.scene(), renderPixels.x, renderPixels.y, plan.detail);
-                !status)
+            // A reduced-resolution preview (while dragging) skips MSAA, about 1.8x the frame on
+            // llvmpipe; the full frame after the drag smooths the edges again.
+            const Scene* drawn = &state.session.scene();
+            Scene preview;
+            if (plan.pixelScale > 1 && drawn->msaaSamples > 1) {
+                preview = *drawn;
+                preview.msaaSamples = 1;
+                drawn = &preview;
+            }
+            if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
             state.lastRenderMilliseconds =

@@ -60,14 +60,6 @@ void drawDisplaySection(EditorState& state) {
     changed |= drawQuantisationWidgets(display, state.displayPanelMessage);
     if (!state.displayPanelMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.displayPanelMessage.c_str());
     if (changed) state.session.change("Edit display").display = display;
-    // Anti-aliasing: the scene's MSAA samples; a count this OpenGL lacks renders with the most it has.
-    static constexpr int kSampleCounts[] = {1, 2, 4, 8, 16};
-    int sampleChoice = 0;
-    while (sampleChoice < 4 && kSampleCounts[sampleChoice] < scene.msaaSamples) ++sampleChoice;
-    if (ImGui::Combo("Anti-aliasing", &sampleChoice, "off\0MSAA 2x\0MSAA 4x\0MSAA 8x\0MSAA 16x\0"))
-        state.session.change("Edit anti-aliasing").msaaSamples = kSampleCounts[sampleChoice];
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Multisample anti-aliasing; the exact sphere's edge is covered analytically per sample");
-    if (!state.samplesNote.empty()) ImGui::TextDisabled("%s", state.samplesNote.c_str());
 
     Background background = scene.background;
     bool backgroundChanged = false;
@@ -85,6 +77,14 @@ void drawDisplaySection(EditorState& state) {
     }
     if (backgroundChanged) state.session.change("Edit background").background = background;
     if (advancedPanelsVisible(state.settings)) drawEnvironmentSection(state);  // hidden in presentation mode
+    // Anti-aliasing: the scene's MSAA samples; a count this OpenGL lacks renders with the most it has.
+    static constexpr int kSampleCounts[] = {1, 2, 4, 8, 16};
+    int sampleChoice = 0;
+    while (sampleChoice < 4 && kSampleCounts[sampleChoice] < scene.msaaSamples) ++sampleChoice;
+    if (ImGui::Combo("Anti-aliasing", &sampleChoice, "off\0MSAA 2x\0MSAA 4x\0MSAA 8x\0MSAA 16x\0"))
+        state.session.change("Edit anti-aliasing").msaaSamples = kSampleCounts[sampleChoice];
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Multisample anti-aliasing; the exact sphere's edge is covered analytically per sample");
+    if (!state.samplesNote.empty()) ImGui::TextDisabled("%s", state.samplesNote.c_str());
 }
 
 }  // namespace glint
