@@ -1,7 +1,7 @@
 #version 410 core
 // Surface fragment shader: finds the exact surface point under the pixel (analytic sphere, or
 // the interpolated point of a triangle mesh with its interpolated (Phong) or face (flat) normal),
-// then shades it (common/shading.glsl): the lights, the ambient light and the traced delta lobes
+// then shades it (common/shading.glsl), fading a plane's edge (common/plane_edge_fade.glsl): the lights, the ambient light and the traced delta lobes
 // of mirror and glass. With GLINT_GOURAUD it outputs the radiance interpolated between vertices.
 // Only with GLINT_RAY_CAST_SPHERE (an exact sphere's program, gl/surface_variant.h) does it write
 // gl_FragDepth: a triangle's depth is the rasterizer's, tested before the shader runs.
@@ -17,6 +17,7 @@
 #include "common/specular_transport.glsl"
 #include "generated/material.glsl"
 #include "common/shading.glsl"
+#include "common/plane_edge_fade.glsl"
 #include "common/display_output.glsl"
 
 #ifdef GLINT_MSAA_SAMPLES
@@ -82,12 +83,12 @@ void main() {
 #endif
     if (dot(normal, ray.direction) > 0.0) normal = -normal;  // two-sided surfaces
 #ifdef GLINT_GOURAUD
-    writeRadiance(vertexRadiance);
+    writeRadiance(fadeIntoBackground(vertexRadiance, position, ray.direction));
     return;
 #endif
     ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
 #ifdef GLINT_NORMAL_MAP_SLOT
     frame = normalMappedFrame(GLINT_NORMAL_MAP_SLOT, frame);
 #endif
-    writeRadiance(shadeSurface(position, frame, -ray.direction));
+    writeRadiance(fadeIntoBackground(shadeSurface(position, frame, -ray.direction), position, ray.direction));
 }

@@ -114,6 +114,17 @@ if "$glint" render "$sun" -o "$out/compare.png" --size 96x64 --compare preset:go
 else
   echo "FAIL classroom: no compare image"; failures=$((failures + 1))
 fi
+# Every sample count --msaa accepts renders: above what this OpenGL offers (llvmpipe: 4) with a note, never a failed check.
+msaa_failed=0
+for samples in 1 2 4 8 16; do
+  DISPLAY= "$glint" render "$sun" -o "$out/msaa$samples.png" --size 48x32 --msaa "$samples" 2>"$out/msaa$samples.stderr" &&
+    [[ -s "$out/msaa$samples.png" ]] || { echo "FAIL msaa $samples:"; cat "$out/msaa$samples.stderr"; msaa_failed=1; }
+done
+if [[ $msaa_failed -eq 0 ]] && grep -q "note: MSAA 16 asked; this OpenGL offers at most [0-9]* samples" "$out/msaa16.stderr"; then
+  echo "ok   msaa: 1 to 16 render; $(head -n 1 "$out/msaa16.stderr")"
+else
+  echo "FAIL msaa: a sample count failed or 16 gave no note"; failures=$((failures + 1))
+fi
 # No display: plain `glint` renders the default scene headless and says where it went.
 if (cd "$out" && DISPLAY= "$glint" >"$out/nodisplay.stdout") && grep -q "glint-default.png" "$out/nodisplay.stdout" &&
    [[ -s "$out/glint-default.png" ]]; then
@@ -122,5 +133,5 @@ else
   echo "FAIL no display: no headless image"; failures=$((failures + 1))
 fi
 
-echo "$((27 - failures)) passed, $failures failed"
+echo "$((28 - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

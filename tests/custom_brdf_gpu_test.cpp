@@ -79,10 +79,10 @@ void expectMatchesTwin(const std::shared_ptr<const CustomBrdf>& custom, const st
     ASSERT_TRUE(custom);
     Material material = customBrdfMaterial(custom);
     material.values = values;
-    const Scene customStage = previewStage(material, kSize, kSize);
+    const Scene customStage = test::keyLitPreviewStage(material, kSize, kSize);
     auto images = test::sharedHeadless().render(customStage, kSize, kSize);
     ASSERT_TRUE(images) << images.error().format();
-    const auto agreement = test::compareWithReference(previewStage(twin, kSize, kSize), images->radiance);
+    const auto agreement = test::compareWithReference(test::keyLitPreviewStage(twin, kSize, kSize), images->radiance);
     EXPECT_GT(agreement.compared, kSize * kSize / 2);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement << " (worst relative "
                                         << agreement.worstRelative << ")";

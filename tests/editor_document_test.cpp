@@ -145,14 +145,15 @@ TEST_F(EditorDocument, CameraActionsAreUndoableEdits) {
     state.selectedObject = 0;  // the unit sphere at the origin
     frameSelected(state);
     const Camera framed = state.session.scene().camera;
+    const float halfFov = glm::radians(0.5f * original.verticalFovDegrees);
     EXPECT_NEAR(glm::length(framed.target), 0.0f, 1e-5f);
     // The bounding sphere fills the vertical field of view with 10 % margin: d = 1.1 r / sin(fov/2).
-    EXPECT_NEAR(glm::length(framed.position - framed.target), 1.1f / std::sin(glm::radians(20.0f)), 1e-3f);
+    EXPECT_NEAR(glm::length(framed.position - framed.target), 1.1f / std::sin(halfFov), 1e-3f);
     toggleProjection(state);
     const Camera& orthographic = state.session.scene().camera;
     EXPECT_EQ(orthographic.projection, Projection::Orthographic);
     // Same apparent size at the target: h = 2 d tan(fov/2).
-    EXPECT_NEAR(orthographic.orthoHeight, 2.0f * glm::length(framed.position - framed.target) * std::tan(glm::radians(20.0f)), 1e-3f);
+    EXPECT_NEAR(orthographic.orthoHeight, 2.0f * glm::length(framed.position - framed.target) * std::tan(halfFov), 1e-3f);
     EXPECT_EQ(state.session.undoLabel(), "Switch projection");
     ASSERT_TRUE(state.session.undo());
     ASSERT_TRUE(state.session.undo());

@@ -49,6 +49,36 @@ TEST(EnvironmentGpu, WhiteOutLambertIsAFlatDisc) {
     EXPECT_EQ(image.at(0, 0), glm::vec3(0.0f));
 }
 
+TEST(EnvironmentGpu, SphereOccludesTheFloorAnalytically) {
+    // A white-out over a Lambert floor with a unit sphere resting on it, seen from straight above
+    // (orthographic): the floor's radiance is ρ·L·(1 − cos θ·(r/D)²) (render/sphere_occlusion.h),
+    // (r/D)³ = 1/(1 + d²)^1.5 at a distance d from the contact point for r = 1. The GLSL twin
+    // agrees pixel by pixel.
+    Scene scene;
+    scene.camera.projection = Projection::Orthographic;
+    scene.camera.position = {0.0f, 5.0f, 0.001f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.orthoHeight = 6.0f;
+    Material floor = Material::withDefaults("floor", BrdfModel::Lambert);
+    floor.values = {0.5f, 0.5f, 0.5f};
+    scene.materials = {Material::withDefaults("ball", BrdfModel::Lambert), floor};
+    scene.objects.push_back({"ball", SphereShape{}, 0});
+    scene.objects.push_back({"floor", PlaneShape{{0.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}}, 1,
+                             SurfaceInterpolation::Phong});
+    scene.environment.kind = EnvironmentKind::White;
+    ASSERT_TRUE(loadEnvironment(scene.environment).ok());
+    const RadianceImage image = renderGpu(scene, 96, 96);
+    const test::PixelAgreement agreement = test::compareWithReference(scene, image, 1e-3f, 1e-4f);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 96 * 96 / 2);
+    // The floor about 1.5 m from the contact point (column 24, row 48): there cos θ = r/D and
+    // D² = 1 + d², so L = 0.5·(1 − D⁻³); unoccluded it would be 0.5.
+    const float x = -3.0f + (24 + 0.5f) * 6.0f / 96.0f, z = -3.0f + (48 + 0.5f) * 6.0f / 96.0f;
+    const float distanceSquared = 1.0f + x * x + z * z;
+    EXPECT_NEAR(image.at(24, 48).r, 0.5f * (1.0f - std::pow(distanceSquared, -1.5f)), 2e-3f);
+    EXPECT_GT(image.at(24, 48).r, 0.4f) << "an open floor 1.5 m away is barely occluded";
+}
+
 TEST(EnvironmentGpu, GgxWhiteFurnaceWithinTheSplitSumTolerance) {
     // F = 1 conductor. Under a uniform environment the prefiltered radiance is exactly L, so the
     // split sum gives L·(A + B) = L·E(μ): exact but for the table's 32×32 bilinear interpolation

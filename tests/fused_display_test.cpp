@@ -28,7 +28,7 @@ DisplayImage throughDisplayPass(const Scene& scene, int width, int height) {
 
 TEST(FusedDisplay, EqualsTheDisplayPassForEveryToneMapAndEncoding) {
     Scene scene = skyScene();
-    for (ToneMap toneMap : {ToneMap::None, ToneMap::Reinhard, ToneMap::AcesFilmic})
+    for (ToneMap toneMap : {ToneMap::None, ToneMap::Reinhard, ToneMap::AcesFilmic, ToneMap::PbrNeutral})
         for (Transfer transfer : {Transfer::Srgb, Transfer::Gamma}) {
             scene.display = {1.5f, transfer, 1.8f, toneMap};
             auto fused = test::sharedHeadless().render(scene, 96, 64);

@@ -68,7 +68,9 @@ TEST(GpuRenderer, EveryBlinnFormMatchesTheCpuReference) {
 TEST(GpuRenderer, PngMatchesTheCpuDisplayChain) {
     Scene scene = test::loadTestScene("scenes/lambert_sun.json");
     // +2.5 EV pushes the lit sphere above 1 so the tone curves differ from a clip.
-    for (ToneMap toneMap : {ToneMap::None, ToneMap::Reinhard, ToneMap::AcesFilmic}) {
+    // A saturated orange albedo: PBR Neutral works on the whole colour, not channel by channel.
+    scene.materials[0].values = {0.9f, 0.35f, 0.05f};
+    for (ToneMap toneMap : {ToneMap::None, ToneMap::Reinhard, ToneMap::AcesFilmic, ToneMap::PbrNeutral}) {
         for (Transfer transfer : {Transfer::Srgb, Transfer::Gamma}) {
             scene.display = {2.5f, transfer, 2.2f, toneMap};
             auto images = test::sharedHeadless().render(scene, 64, 64);
@@ -100,6 +102,34 @@ TEST(GpuRenderer, MsaaSmoothsTheSilhouette) {
     for (size_t i = 0; i < images->display.pixels.size(); ++i) differing += images->display.pixels[i] != reference->display.pixels[i];
     EXPECT_GT(differing, 30) << "edge pixels blend with the background";
     EXPECT_TRUE(takeGlErrors("msaa test").ok());
+}
+
+TEST(GpuRenderer, PlaneEdgeFadeMatchesTheCpuReference) {
+    // A faded floor seen from above under a sky background: its middle is the floor's own
+    // radiance, its corners the background's, the band between the twins' smoothstep.
+    Scene scene;
+    scene.camera.position = {0.0f, 6.0f, 0.01f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.background.kind = BackgroundKind::Sky;
+    scene.materials = {Material::withDefaults("floor", BrdfModel::Lambert)};
+    PlaneShape floor{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {4.0f, 4.0f}};
+    floor.edgeFade = 0.5f;
+    scene.objects.push_back({"floor", floor, 0, SurfaceInterpolation::Phong});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    scene.lights = {sun};
+    auto images = test::sharedHeadless().render(scene, 96, 96);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    const auto agreement = test::compareWithReference(scene, images->radiance);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 3000);
+    // Near a corner the plane shows the background: the fade reached 1 there.
+    const glm::mat4 inverse = glm::inverse(scene.camera.viewProjection(1.0f));
+    const Ray nearCorner = primaryRay(inverse, 48 + 36 + 0.5f, 48 + 36 + 0.5f, 96, 96);
+    ASSERT_TRUE(intersectScene(scene, nearCorner).has_value());
+    const glm::vec3 sky = backgroundRadiance(scene.background, nearCorner.direction);
+    EXPECT_NEAR(images->radiance.at(48 + 36, 48 + 36).g, sky.g, 1e-3f * sky.g);
 }
 
 TEST(GpuRenderer, CameraInsideASphereSeesItsInside) {

@@ -8,6 +8,7 @@
 
 #include "cli/headless.h"
 #include "render/reference_renderer.h"
+#include "scene/preview_stage.h"
 
 namespace glint::test {
 
@@ -42,6 +43,16 @@ struct PixelAgreement {
 // |GPU − CPU| ≤ relativeTolerance·|CPU| + absoluteFloor per channel, on every pixel whose 3×3
 // neighbourhood sees one and the same object (or background) on the CPU, and is not marked in
 // `alsoExcluded` (row-major, optional: other edges, e.g. of total internal reflection).
+// The preview stage lit by its key light alone, unshadowed: for comparing a material's twins
+// pixel by pixel, where neither the environment's GPU approximations (compared on their own in
+// environment_gpu_test.cpp) nor PCF penumbrae (shadows_gpu_test.cpp) are what is tested.
+inline Scene keyLitPreviewStage(const Material& material, int width, int height) {
+    Scene stage = previewStage(material, width, height);
+    stage.environment = Environment{};
+    for (Light& light : stage.lights) light.castsShadows = false;
+    return stage;
+}
+
 inline PixelAgreement compareWithReference(const Scene& scene, const RadianceImage& gpu, float relativeTolerance = 1e-3f,
                                            float absoluteFloor = 1e-5f, const std::vector<bool>& alsoExcluded = {}) {
     const int width = gpu.width, height = gpu.height;

@@ -37,18 +37,21 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
 
 # Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
-# left, material column 360 px on the right, status bar at the bottom).
+# left, material column 360 px on the right, status bar at the bottom). The light handle, shadow,
+# environment and texture scenarios open CLASSIC_SCENE instead: Glint's earlier default scene, a key and a
+# fill light, no shadow and no environment, which the lines marked (classic) are measured on.
+CLASSIC_SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "editor_classic.json")
 VIEWPORT = (340, 40, 910, 760)
 SPHERE_CENTRE = (625, 375)
 BACKGROUND_SPOT = (350, 60)         # dark background inside the viewport, above the floor
 EXPONENT_SLIDER = (1018, 240)        # Blinn-Phong exponent n (64) in the material column
-ADD_POINT_LIGHT = (153, 146)         # "+ Point" in the lights section
-CASTS_SHADOWS_BOX = (19, 388)        # the selected key light's "Casts shadows" checkbox
-SHADOW_ON_FLOOR = (362, 556)         # a floor point in the key light's shadow (default scene)
+ADD_POINT_LIGHT = (153, 119)         # "+ Point" in the lights section (one light: the stage's key)
+CASTS_SHADOWS_BOX = (19, 388)        # the selected key light's "Casts shadows" checkbox (classic)
+SHADOW_ON_FLOOR = (362, 556)         # a floor point in the key light's shadow (classic)
 VIEWPORT_PIXELS = (590, 752)         # 1280 − 330 − 360 wide, between menu bar and status bar
-ENVIRONMENT_COMBO = (70, 682)        # Display ▸ Environment: "none"
-ENVIRONMENT_STUDIO = (34, 612)       # its "studio" item (the list opens upwards: no room below)
-SHOW_AS_BACKGROUND_BOX = (19, 763)   # shown once an environment is chosen
+ENVIRONMENT_COMBO = (70, 682)        # Display ▸ Environment: "none" (classic)
+ENVIRONMENT_STUDIO = (34, 612)       # its "studio" item (the list opens upwards: no room below) (classic)
+SHOW_AS_BACKGROUND_BOX = (19, 763)   # shown once an environment is chosen (classic)
 BACKGROUND_BOX = (340, 40, 420, 120)  # viewport corner clear of the sphere, where the studio's softbox shows
 DIFFUSE_TEXTURE_BUTTON = (1253, 165)  # "Tex" beside the diffuse albedo ρ_d (its label above); its menu opens at the mouse:
 TEXTURE_MENU_IMAGE = (1230, 204)     #   None, Image file…, Checker, Marble, Wood
@@ -181,7 +184,7 @@ def scenario_save_reopen(x, glint, output, state):
         assert os.path.exists(path), "Ctrl+S did not write the scene"
         with open(path) as saved:
             scene = json.load(saved)
-        assert len(scene["lights"]) == 3, f"expected 3 lights in the saved scene, found {len(scene['lights'])}"
+        assert len(scene["lights"]) == 2, f"expected 2 lights (the key and the added one) in the saved scene, found {len(scene['lights'])}"
         exponent = scene["materials"][0]["exponent"]
         assert exponent < 60, f"the dragged exponent was not saved: {exponent}"
         close_window(x, editor)  # saved: no prompt
@@ -206,7 +209,7 @@ def scenario_save_reopen(x, glint, output, state):
         assert second > exponent, f"Ctrl+S did not save the second edit ({second} vs {exponent})"
         close_window(x, editor)
         assert editor.wait_exit() == 0
-        print(f"ok: saved through the file browser (exponent {exponent:.3g}, 3 lights), reopened identical, re-saved {second:.3g}")
+        print(f"ok: saved through the file browser (exponent {exponent:.3g}, 2 lights), reopened identical, re-saved {second:.3g}")
     finally:
         editor.kill()
 
@@ -457,7 +460,7 @@ def find_handle(shot):
 
 
 def scenario_light_handle(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
+    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         handle = find_handle(base)
@@ -482,7 +485,7 @@ def scenario_light_handle(x, glint, output, state):
 
 
 def scenario_shadow_toggle(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
+    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "shadow_0_start")
@@ -503,7 +506,7 @@ def scenario_shadow_toggle(x, glint, output, state):
 
 
 def scenario_environment(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
+    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "environment_0_start")
@@ -564,7 +567,7 @@ def scenario_texture(x, glint, output, state):
     corrupt = os.path.join(output, "corrupt.png")
     with open(corrupt, "wb") as out:
         out.write(b"\x89PNG\r\n\x1a\n" + b"not a PNG body" * 4)
-    editor = Editor(x, glint, output, state)
+    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert edges_across_sphere(base) == 0, "the untextured sphere should shade smoothly"

@@ -47,7 +47,7 @@ void expectMerlGpuAgrees(const Scene& scene, float relativeTolerance) {
 }
 
 TEST(MerlGpu, GlossyTableMatchesTheCpuReferenceUnderLightsAndAmbient) {
-    Scene scene = previewStage(measuredBrdfMaterial(merlGpuGlossyTable()), kMerlGpuSize, kMerlGpuSize);
+    Scene scene = test::keyLitPreviewStage(measuredBrdfMaterial(merlGpuGlossyTable()), kMerlGpuSize, kMerlGpuSize);
     Light ambient;
     ambient.type = LightType::Ambient;
     ambient.ambientRadiance = 0.3f;
@@ -63,12 +63,12 @@ TEST(MerlGpu, ConstantTableRendersAsTheLambertModel) {
     const glm::vec3 albedo(0.7f, 0.45f, 0.2f);
     auto table = parseMerl(makeConstantMerl(albedo / kPi), "lambert.binary");
     ASSERT_TRUE(table.ok()) << table.error().format();
-    const Scene measured = previewStage(measuredBrdfMaterial(makeMeasuredBrdf(std::move(*table), "lambert.binary")),
+    const Scene measured = test::keyLitPreviewStage(measuredBrdfMaterial(makeMeasuredBrdf(std::move(*table), "lambert.binary")),
                                         kMerlGpuSize, kMerlGpuSize);
     Material lambert = Material::withDefaults("lambert", BrdfModel::Lambert);
     lambert.values = {albedo.r, albedo.g, albedo.b};
     const RadianceImage gpu = test::renderGpu(measured, kMerlGpuSize, kMerlGpuSize);
-    const auto agreement = test::compareWithReference(previewStage(lambert, kMerlGpuSize, kMerlGpuSize), gpu);
+    const auto agreement = test::compareWithReference(test::keyLitPreviewStage(lambert, kMerlGpuSize, kMerlGpuSize), gpu);
     EXPECT_GT(agreement.compared, kMerlGpuSize * kMerlGpuSize / 2);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement << " (worst relative " << agreement.worstRelative << ")";
 }

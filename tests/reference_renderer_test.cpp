@@ -112,5 +112,21 @@ TEST(DisplayChain, SrgbAndGammaAndExposure) {
     EXPECT_EQ(quantize8(encodeForDisplay(1.0f, display)), 188);  // sRGB(0.5)
 }
 
+TEST(DisplayChain, PbrNeutralKeepsHueAndCompressesOnlyHighlights) {
+    // Below the compression start (0.76) it only subtracts the black offset, 0.04 once the
+    // darkest channel reaches 0.08: the colour's hue and differences survive unchanged.
+    const glm::vec3 dim = applyToneMap(glm::vec3(0.5f, 0.1f, 0.1f), ToneMap::PbrNeutral);
+    EXPECT_NEAR(glm::length(dim - glm::vec3(0.46f, 0.06f, 0.06f)), 0.0f, 1e-6f);
+    // White 1 → 0.96 after the offset, compressed to 1 − 0.24²/(0.96 + 0.24 − 0.76) = 0.86909.
+    EXPECT_NEAR(applyToneMap(1.0f, ToneMap::PbrNeutral), 1.0f - 0.0576f / 0.44f, 1e-6f);
+    EXPECT_LT(applyToneMap(1000.0f, ToneMap::PbrNeutral), 1.0f);
+    // A bright saturated red stays red (the per-channel ACES curve pushes its green and blue up
+    // towards its red far more).
+    const glm::vec3 red = applyToneMap(glm::vec3(4.0f, 0.3f, 0.3f), ToneMap::PbrNeutral);
+    const glm::vec3 aces = applyToneMap(glm::vec3(4.0f, 0.3f, 0.3f), ToneMap::AcesFilmic);
+    EXPECT_GT(red.r - red.g, aces.r - aces.g);
+    EXPECT_FLOAT_EQ(red.g, red.b);
+}
+
 }  // namespace
 }  // namespace glint

@@ -9,6 +9,7 @@
 #include "geometry/shape_mesh.h"
 #include "mesh_test_files.h"
 #include "render/triangle_bvh.h"
+#include "scene/plane_edge_fade.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
 
@@ -45,6 +46,26 @@ TEST(SceneShapes, CubeTorusAndInterpolationRoundTrip) {
     EXPECT_FALSE(sceneToJson(*scene)["objects"][3].contains("interpolation"));
 }
 
+TEST(SceneShapes, PlaneEdgeFadeRoundTripsAndIsWrittenOnlyWhenSet) {
+    auto scene = parseScene(sceneWithObjects(R"(
+        {"shape": "plane", "size": [4, 2], "edge_fade": 0.5, "material": "m"},
+        {"shape": "plane", "material": "m"})"),
+                            "planes.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().format();
+    const auto& faded = std::get<PlaneShape>(scene->objects[0].shape);
+    EXPECT_EQ(faded.edgeFade, 0.5f);
+    EXPECT_EQ(planeEdgeFadeRadii(faded), glm::vec2(0.5f, 1.0f));  // half the smaller side is 1 m
+    EXPECT_EQ(planeEdgeFade(faded.center, planeEdgeFadeRadii(faded), faded.center + glm::vec3(0.4f, 0.0f, 0.0f)), 0.0f);
+    EXPECT_EQ(planeEdgeFade(faded.center, planeEdgeFadeRadii(faded), faded.center + glm::vec3(0.75f, 0.0f, 0.0f)), 0.5f);
+    EXPECT_EQ(planeEdgeFade(faded.center, planeEdgeFadeRadii(faded), faded.center + glm::vec3(1.2f, 0.0f, 0.0f)), 1.0f);
+    EXPECT_EQ(std::get<PlaneShape>(scene->objects[1].shape).edgeFade, 0.0f);
+    EXPECT_EQ(sceneToJson(*scene)["objects"][0]["edge_fade"], 0.5f);
+    EXPECT_FALSE(sceneToJson(*scene)["objects"][1].contains("edge_fade")) << "a hard edge writes nothing";
+    auto again = parseScene(sceneToJson(*scene).dump(), "again.json");
+    ASSERT_TRUE(again.ok()) << again.error().format();
+    EXPECT_EQ(sceneToJson(*again), sceneToJson(*scene));
+}
+
 TEST(SceneShapes, BadShapeKeysAreLocated) {
     struct Case {
         const char* object;
@@ -57,7 +78,8 @@ TEST(SceneShapes, BadShapeKeysAreLocated) {
                             Case{R"({"shape": "mesh", "material": "m"})", "path"},
                             Case{R"({"shape": "mesh", "path": "nowhere.obj", "material": "m"})", "no such file"},
                             Case{R"({"shape": "mesh", "path": "x.obj", "scale": 0, "material": "m"})", "scale"},
-                            Case{R"({"shape": "cube", "radius": 1, "material": "m"})", "radius"}}) {
+                            Case{R"({"shape": "cube", "radius": 1, "material": "m"})", "radius"},
+                            Case{R"({"shape": "plane", "edge_fade": 1.5, "material": "m"})", "edge_fade"}}) {
         SCOPED_TRACE(bad.object);
         auto scene = parseScene(sceneWithObjects(bad.object), "bad.json");
         ASSERT_FALSE(scene.ok());

@@ -157,23 +157,26 @@ TEST(SnapshotReport, EscapesMarkupAndCountsOutcomes) {
     EXPECT_NE(html.find("s&lt;1&gt;"), std::string::npos);
 }
 
-TEST(PreviewStage, SphereOnAPlaneUnderThreeLights) {
+TEST(PreviewStage, SphereOnAFadingFloorInTheStudio) {
     const Material material = Material::withDefaults("gold", BrdfModel::BlinnPhong);
     const Scene stage = previewStage(material, 200, 100);
     EXPECT_EQ(stage.width, 200);
     EXPECT_EQ(stage.height, 100);
-    ASSERT_EQ(stage.lights.size(), 3u);
-    int directional = 0, point = 0;
-    for (const Light& light : stage.lights) (light.type == LightType::Directional ? directional : point)++;
-    EXPECT_EQ(directional, 2);
-    EXPECT_EQ(point, 1);
+    ASSERT_EQ(stage.lights.size(), 1u);
+    EXPECT_EQ(stage.lights[0].type, LightType::Directional);
+    EXPECT_TRUE(stage.lights[0].castsShadows);
+    EXPECT_TRUE(stage.environment.enabled());
+    EXPECT_EQ(stage.environment.kind, EnvironmentKind::Studio);
+    EXPECT_EQ(stage.display.toneMap, ToneMap::PbrNeutral);
+    EXPECT_EQ(stage.msaaSamples, 4);
     ASSERT_EQ(stage.objects.size(), 2u);
     EXPECT_TRUE(std::holds_alternative<SphereShape>(stage.objects[0].shape));
     EXPECT_EQ(stage.materials[stage.objects[0].materialIndex].name, "gold");
-    EXPECT_TRUE(std::holds_alternative<PlaneShape>(stage.objects[1].shape));
-    EXPECT_EQ(stage.background.kind, BackgroundKind::Constant);
-    EXPECT_GT(stage.background.color.r, 0.0f);
-    EXPECT_EQ(stage.background.color.r, stage.background.color.b);  // neutral
+    const auto* floor = std::get_if<PlaneShape>(&stage.objects[1].shape);
+    ASSERT_NE(floor, nullptr);
+    EXPECT_GT(floor->edgeFade, 0.0f) << "no edge or corner shows";
+    EXPECT_EQ(stage.background.zenith.r, stage.background.zenith.b);  // a neutral backdrop
+    EXPECT_EQ(stage.background.horizon.r, stage.background.horizon.b);
 }
 
 TEST(CaseSource, MaterialsGoOnTheStageAndOtherFormatsAreRefused) {
@@ -183,7 +186,7 @@ TEST(CaseSource, MaterialsGoOnTheStageAndOtherFormatsAreRefused) {
     auto stage = loadRenderable((directory / "m.json").string());
     ASSERT_TRUE(stage.ok()) << stage.error().format();
     EXPECT_EQ(stage->width, kDefaultMaterialPreviewSize);
-    EXPECT_EQ(stage->lights.size(), 3u);
+    EXPECT_TRUE(stage->environment.enabled()) << "the preview stage";
     auto scene = loadRenderable(test::dataPath("scenes/lambert_sun.json"), 40, 30);
     ASSERT_TRUE(scene.ok());
     EXPECT_EQ(scene->width, 40);

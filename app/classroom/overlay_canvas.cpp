@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "gl/display_texture.h"
 #include "gl/gl_loader.h"
 
 namespace glint {
@@ -26,18 +27,6 @@ ImFont* loadCanvasFont(float pixelSize) {
     ImFontConfig config;
     config.SizePixels = pixelSize;
     return io.Fonts->AddFontDefault(&config);
-}
-
-// An RGB8 image as a GL texture, top row first (ImGui's UVs run top to bottom).
-GLuint uploadCanvasBackground(const DisplayImage& image) {
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return texture;
 }
 
 }  // namespace
@@ -98,7 +87,7 @@ Result<DisplayImage> OverlayCanvas::finish(const DisplayImage& under) {
     glClear(GL_COLOR_BUFFER_BIT);
     if (under.width == width_ && under.height == height_ && !under.pixels.empty()) {
         // The image underneath, blitted upside down: its top row was uploaded as GL's bottom row.
-        const GLuint background = uploadCanvasBackground(under);
+        const GLuint background = uploadDisplayTexture(under, GL_NEAREST);
         GLuint readFramebuffer = 0;
         glGenFramebuffers(1, &readFramebuffer);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer);

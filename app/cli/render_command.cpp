@@ -207,6 +207,9 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             return 2;
         }
         headless = std::move(*created);
+        if (!options.reference)
+            if (const std::string note = headless->renderer().samplesNote(scene->msaaSamples); !note.empty())
+                std::fprintf(stderr, "glint render: note: %s\n", note.c_str());
     }
     if (options.reference) {
         ReferenceOptions reference;

@@ -17,6 +17,7 @@
 #include "editor/custom_brdf_state.h"
 #include "editor/panels/file_browser.h"
 #include "editor/panels/plots_window.h"
+#include "editor/preset_swatches.h"
 #include "editor/settings.h"
 
 namespace glint {
@@ -48,6 +49,7 @@ struct EditorState {
     bool shadowMapsRedrawn = false;  // the last render drew the shadow maps again
     long long triangleCount = 0;  // submitted by the last render
     std::string rendererDescription;
+    std::string samplesNote;  // MSAA samples asked above what the OpenGL offers (Renderer::samplesNote)
     SceneMessage statusMessage;  // one line ("Saved …")
 
     // Dialogs. An action waiting behind the unsaved-changes prompt (quit, new, open) runs once
@@ -75,6 +77,7 @@ struct EditorState {
     bool wroteRecovery = false;         // the recovery file on disk is this editor's
 
     ClassroomState classroom;  // lessons and the colour windows (app/classroom/)
+    PresetSwatches presetSwatches;  // the preset browser's pictures (editor/preset_swatches.h)
     CompareViewState compare;  // the classroom's Compare window (classroom/compare_view.h)
     CustomBrdfEditorState customBrdfs;  // .brdf probes and hot reload (custom_brdf_editor.h)
     PlotsWindowState plots;  // classroom BRDF and Fresnel plots (panels/plots_window.h)

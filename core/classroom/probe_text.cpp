@@ -28,6 +28,7 @@ const char* toneMapName(ToneMap toneMap) {
         case ToneMap::None: return "none";
         case ToneMap::Reinhard: return "Reinhard x/(1+x)";
         case ToneMap::AcesFilmic: return "ACES filmic";
+        case ToneMap::PbrNeutral: return "Khronos PBR Neutral";
     }
     return "none";
 }

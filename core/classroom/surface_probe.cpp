@@ -55,13 +55,14 @@ ProbeSource probeSource(const Light& light) {
 
 }  // namespace
 
-ProbeDisplayChannel traceDisplayChannel(float radiance, const DisplaySettings& display) {
+ProbeDisplayChannel traceDisplayChannel(glm::vec3 radiance, int c, const DisplaySettings& display) {
     ProbeDisplayChannel channel;
-    channel.radiance = radiance;
-    channel.exposed = std::max(radiance * std::exp2(display.exposureStops), 0.0f);
-    channel.toneMapped = applyToneMap(channel.exposed, display.toneMap);
+    channel.radiance = radiance[c];
+    const glm::vec3 exposed = glm::max(radiance * std::exp2(display.exposureStops), 0.0f);
+    channel.exposed = exposed[c];
+    channel.toneMapped = applyToneMap(exposed, display.toneMap)[c];
     channel.clamped = std::clamp(channel.toneMapped, 0.0f, 1.0f);
-    channel.encoded = encodeForDisplay(radiance, display);
+    channel.encoded = encodeForDisplay(radiance, display)[c];
     channel.value8 = quantize8(channel.encoded);
     return channel;
 }
@@ -94,7 +95,7 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         if (material.custom) {
             result.gpuOnlyMaterial = true;
             result.modelLabel = "custom .brdf";
-            for (int c = 0; c < 3; ++c) result.display[c] = traceDisplayChannel(0.0f, scene.display);
+            for (int c = 0; c < 3; ++c) result.display[c] = traceDisplayChannel(glm::vec3(0.0f), c, scene.display);
             return result;
         }
         const ShadingBreakdown breakdown = shadingBreakdown(scene, *hit, towardsViewer, {}, pixelSeed);
@@ -154,7 +155,7 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         result.radiance = result.gouraud ? shadeHit(scene, *hit, towardsViewer, {}, pixelSeed) : breakdown.total;
     }
     result.luminance = luminance(result.radiance);
-    for (int c = 0; c < 3; ++c) result.display[c] = traceDisplayChannel(result.radiance[c], scene.display);
+    for (int c = 0; c < 3; ++c) result.display[c] = traceDisplayChannel(result.radiance, c, scene.display);
     return result;
 }
 

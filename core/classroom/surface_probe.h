@@ -110,6 +110,6 @@ inline constexpr int kProbeEnvironmentSamples = 4096;
 ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height);
 
 // One channel through the display chain, step by step.
-ProbeDisplayChannel traceDisplayChannel(float radiance, const DisplaySettings& display);
+ProbeDisplayChannel traceDisplayChannel(glm::vec3 radiance, int channel, const DisplaySettings& display);
 
 }  // namespace glint

@@ -53,6 +53,8 @@ void RenderTarget::ensure(int width, int height, int samples) {
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRenderbuffer_);
     }
     GLINT_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
+    allocatedSamples_ = samples;
+    if (samples > 1) glGetIntegerv(GL_SAMPLES, &allocatedSamples_);
 }
 
 }  // namespace glint

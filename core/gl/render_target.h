@@ -21,7 +21,8 @@ public:
     GLuint depthTexture() const { return depthTexture_; }  // single-sample with depth only
     int width() const { return width_; }
     int height() const { return height_; }
-    int samples() const { return samples_; }
+    int samples() const { return samples_; }  // as asked
+    int allocatedSamples() const { return allocatedSamples_; }  // as allocated (GL_SAMPLES), ≥ samples()
 
 private:
     void release();
@@ -29,7 +30,7 @@ private:
     GLenum colorFormat_;
     bool withDepth_;
     GLuint framebuffer_ = 0, colorTexture_ = 0, colorRenderbuffer_ = 0, depthRenderbuffer_ = 0, depthTexture_ = 0;
-    int width_ = 0, height_ = 0, samples_ = 0;
+    int width_ = 0, height_ = 0, samples_ = 0, allocatedSamples_ = 0;
 };
 
 }  // namespace glint

@@ -14,6 +14,8 @@
 #include "gl/material_glsl.h"
 #include "gl/material_textures.h"
 #include "gl/shader_specialisation.h"
+#include "render/sphere_occlusion.h"
+#include "scene/plane_edge_fade.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
 #include "render/visibility.h"
@@ -63,6 +65,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     if (Status loaded = loadGlFunctions(platform); !loaded) return loaded.error();
     std::unique_ptr<Renderer> renderer(new Renderer(platform, std::move(sources)));
     renderer->description_ = glDescription();
+    glGetIntegerv(GL_MAX_SAMPLES, &renderer->maxSamples_);
+    renderer->maxSamples_ = std::max(1, renderer->maxSamples_);
     renderer->environment_ = std::make_unique<EnvironmentTextures>();
     auto program = ShaderProgram::build(renderer->sources_, "fullscreen.vert", "display.frag");
     if (!program) return program.error();
@@ -207,6 +211,12 @@ void Renderer::prepareSimplifiedMeshes(const Scene& scene) {
 
 void Renderer::finishSimplifiedMeshes() { meshes_->finishSimplified(); }
 
+std::string Renderer::samplesNote(int requested) const {
+    if (requested <= maxSamples_) return {};
+    return "MSAA " + std::to_string(requested) + " asked; this OpenGL offers at most " + std::to_string(maxSamples_) +
+           " samples, so " + std::to_string(maxSamples_) + " are used";
+}
+
 // --- per-frame uniforms ---------------------------------------------------------------------
 
 FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
@@ -230,10 +240,13 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     int dragResolution = 256;
     while (dragResolution < 2 * std::max(width, height)) dragResolution *= 2;
     shadowMaps_->update(scene, meshOf, detail, dragResolution);
-    const int samples = std::max(1, scene.msaaSamples);
     radianceTarget_.ensure(width, height, 1);
+    const int requested = samplesFor(scene.msaaSamples);
+    if (requested > 1) multisampleTarget_.ensure(width, height, requested);
+    // The implementation may allocate more samples than asked (a count it has): the shaders and
+    // sample positions follow what it allocated.
+    const int samples = requested > 1 ? multisampleTarget_.allocatedSamples() : 1;
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
-    if (samples > 1) multisampleTarget_.ensure(width, height, samples);
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
     fusedDisplay_.reset();
     if (fuseDisplay_ && samples == 1 && !scene.display.levelsRamp) {  // the ramp is drawn by the display pass
@@ -284,6 +297,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
 
     Status result = success();
     const glm::mat4 viewProjection = scene.camera.viewProjection(static_cast<float>(width) / height);
+    const std::vector<glm::vec4> occluders = occludingSpheres(scene);  // render/sphere_occlusion.h
     trianglesDrawn_ = 0;
     simplifiedMeshesDrawn_ = 0;
     meshes_->releaseUnused();
@@ -323,6 +337,12 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
         if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
+        const auto* plane = std::get_if<PlaneShape>(&object.shape);
+        const glm::vec2 fadeRadii = plane ? planeEdgeFadeRadii(*plane) : glm::vec2(0.0f);
+        glUniform2f(shader.uniform("fadeRadii"), fadeRadii.x, fadeRadii.y);
+        glUniform1i(shader.uniform("occludingSphereCount"), static_cast<GLint>(occluders.size()));
+        if (!occluders.empty()) glUniform4fv(shader.uniform("occludingSpheres"), static_cast<GLsizei>(occluders.size()), &occluders[0].x);
+        if (plane) glUniform3f(shader.uniform("fadeCenter"), plane->center.x, plane->center.y, plane->center.z);
         // A drag frame draws a large mesh by the stand-in with about as many triangles as the
         // pixels it may cover: more would be smaller than a pixel.
         const size_t budget = detail == MeshDetail::Full ? kEveryTriangle

@@ -3,6 +3,7 @@
 // It never creates a context: it is handed a GlPlatform that is already current.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
@@ -39,7 +40,8 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Draws the scene's radiance at width×height (MSAA per scene.msaaSamples). A shader that
+    // Draws the scene's radiance at width×height (MSAA per scene.msaaSamples, clamped to
+    // maxSamples()). A shader that
     // fails to compile is reported and the model's last good program, if any, is used.
     // MeshDetail::Simplified draws large meshes by simplified stand-ins where they are ready, each
     // with about as many triangles as pixels it may cover (the editor, while the user drags;
@@ -80,6 +82,13 @@ public:
     // The last shader error (empty when all compiled), for the UI.
     const std::string& shaderError() const { return shaderError_; }
     const std::string& description() const { return description_; }
+    // The most MSAA samples this GL implementation offers for the radiance targets (GL_MAX_SAMPLES,
+    // queried once). Requests above it render with this many; samplesNote() says so.
+    int maxSamples() const { return maxSamples_; }
+    // The samples a request renders with: clamped to 1..maxSamples().
+    int samplesFor(int requested) const { return std::clamp(requested, 1, maxSamples_); }
+    // What a user who asked for `requested` samples is told ("" when they render as asked).
+    std::string samplesNote(int requested) const;
     // Triangles submitted by the last renderRadiance (proxy meshes included).
     long long trianglesDrawn() const { return trianglesDrawn_; }
     // Objects the last renderRadiance drew with a simplified stand-in.
@@ -135,6 +144,7 @@ private:
     long long trianglesDrawn_ = 0;
     int simplifiedMeshesDrawn_ = 0;
     std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
+    int maxSamples_ = 1;
     bool fuseDisplay_ = false;
     bool specialise_ = true;
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused

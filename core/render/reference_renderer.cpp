@@ -12,6 +12,8 @@
 #include "math/frame.h"
 #include "environment/environment_lighting.h"
 #include "render/environment_sampling.h"
+#include "render/sphere_occlusion.h"
+#include "scene/plane_edge_fade.h"
 #include "render/measured_shading.h"
 #include "render/shadow_rays.h"
 #include "render/specular_transport.h"
@@ -131,12 +133,14 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
                                                       : ambientReflectance(material.model, values, towardsViewer, frame);
     radiance += ambientFactor * ambient;
     // Environment light: the GPU's image-based lighting, or sampled.
-    const glm::vec3 environment =
+    const glm::vec3 unoccludedEnvironment =
         material.measured ? measuredEnvironmentLighting(*material.measured, towardsViewer, frame, scene.environment)
         : options.sampleEnvironment
             ? sampleEnvironmentLighting(material.model, values, towardsViewer, frame, scene.environment, pixelSeed,
                                         options.environmentSamples)
             : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
+    // ...less what the scene's spheres cover (sphere_occlusion.h).
+    const glm::vec3 environment = unoccludedEnvironment * environmentVisibility(occludingSpheres(scene), hit.position, frame.normal);
     radiance += environment;
     // Delta lobes (mirror, glass), traced against the environment or the background.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;
@@ -198,7 +202,15 @@ RadianceImage renderReference(const Scene& scene, int width, int height, const R
                 const auto hit = intersectScene(scene, ray);
                 const uint32_t pixelSeed = static_cast<uint32_t>(y) * static_cast<uint32_t>(width) + static_cast<uint32_t>(x) +
                                          options.environmentSeed * 0x9E3779B9u;
-                image.set(x, y, hit ? shadeHit(scene, *hit, -ray.direction, options, pixelSeed) : miss.primary(ray.direction));
+                if (!hit) {
+                    image.set(x, y, miss.primary(ray.direction));
+                    continue;
+                }
+                glm::vec3 radiance = shadeHit(scene, *hit, -ray.direction, options, pixelSeed);
+                if (const auto* plane = std::get_if<PlaneShape>(&scene.objects.at(hit->objectIndex).shape))
+                    radiance = glm::mix(radiance, miss.primary(ray.direction),
+                                        planeEdgeFade(plane->center, planeEdgeFadeRadii(*plane), hit->position));
+                image.set(x, y, radiance);
             }
             ++rowsDone;
         }

@@ -55,6 +55,7 @@ struct PlaneShape {
     glm::vec3 center{0, -1, 0};
     glm::vec3 normal{0, 1, 0};
     glm::vec2 size{6, 6};  // [m]
+    float edgeFade = 0.0f;  // [0, 1]: outer share of the half-size that fades into the background (scene/plane_edge_fade.h)
 };
 
 // An axis-aligned cube; `size` is its edge length [m].
@@ -112,7 +113,7 @@ enum class Transfer { Srgb, Gamma, Linear };
 // Ordered dither added before quantising to `levels` (display/quantisation.h has the matrices).
 enum class Dither { None, Bayer2, Bayer4, Halftone };
 // Tone mapping of exposed radiance before encoding (display_chain.h has the formulas).
-enum class ToneMap { None, Reinhard, AcesFilmic };
+enum class ToneMap { None, Reinhard, AcesFilmic, PbrNeutral };
 
 // The display chain: exposure → tone map → clamp → sRGB, gamma or no encoding → quantisation to
 // `levels` per channel (with an optional ordered dither) → 8 bits.
@@ -140,7 +141,7 @@ struct Scene {
     int msaaSamples = 1;  // 1 = off
 };
 
-// The scene Glint opens with no file: a sphere on a plane under a key and a fill light.
+// The scene Glint opens with no file: red plastic on the preview stage (scene/preview_stage.h).
 Scene defaultScene();
 
 }  // namespace glint

@@ -248,7 +248,7 @@ json objectToJson(const SceneObject& object, const std::vector<Material>& materi
 
 constexpr const char* kProjections[] = {"perspective", "orthographic"};
 constexpr const char* kTransfers[] = {"srgb", "gamma", "linear"};  // order of enum Transfer
-constexpr const char* kToneMaps[] = {"none", "reinhard", "aces"};  // order of enum ToneMap
+constexpr const char* kToneMaps[] = {"none", "reinhard", "aces", "pbr_neutral"};  // order of enum ToneMap
 
 Camera readCamera(ObjectReader& reader) {
     Camera camera;

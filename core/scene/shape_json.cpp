@@ -45,6 +45,7 @@ PlaneShape readPlaneShape(ObjectReader& reader) {
     if (glm::length(plane.normal) < 1e-6f) reader.fail("normal", "must not be the zero vector");
     plane.normal = glm::normalize(plane.normal);
     plane.size = reader.vec2("size", plane.size, Bounds::positive());
+    plane.edgeFade = static_cast<float>(reader.number("edge_fade", plane.edgeFade, Bounds::between(0.0, 1.0)));
     return plane;
 }
 
@@ -71,8 +72,11 @@ json shapeToJson(const Shape& shape, const std::string& sceneFile) {
     if (const auto* sphere = std::get_if<SphereShape>(&shape))
         return {{"center", vec3(sphere->center)}, {"radius", sphere->radius}, {"segments", sphere->segments},
                 {"rings", sphere->rings}};
-    if (const auto* plane = std::get_if<PlaneShape>(&shape))
-        return {{"center", vec3(plane->center)}, {"normal", vec3(plane->normal)}, {"size", {plane->size.x, plane->size.y}}};
+    if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
+        json out = {{"center", vec3(plane->center)}, {"normal", vec3(plane->normal)}, {"size", {plane->size.x, plane->size.y}}};
+        if (plane->edgeFade > 0.0f) out["edge_fade"] = plane->edgeFade;  // absent: a hard edge
+        return out;
+    }
     if (const auto* cube = std::get_if<CubeShape>(&shape)) return {{"center", vec3(cube->center)}, {"size", cube->size}};
     if (const auto* torus = std::get_if<TorusShape>(&shape))
         return {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},

@@ -1,5 +1,5 @@
 // Small text helpers shared by Glint's line-based parsers (.brdf, .bparam, .mtl, .obj) and its
-// file-type checks. Nothing here knows any file format.
+// file-type checks, and identifiers shown as words. Nothing here knows any file format.
 #pragma once
 
 #include <algorithm>
@@ -24,6 +24,14 @@ inline std::string lowerExtension(const std::string& path) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return extension;
+}
+
+// An identifier as words for a label: "red_acrylic" → "Red acrylic".
+inline std::string readableName(std::string_view identifier) {
+    std::string words(identifier);
+    std::replace(words.begin(), words.end(), '_', ' ');
+    if (!words.empty()) words[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(words[0])));
+    return words;
 }
 
 }  // namespace glint

@@ -3,6 +3,7 @@
 // GLSL twin of shadeHit() in core/render/reference_renderer.cpp.
 // Needs uniforms.glsl, frame.glsl, lights.glsl and generated/material.glsl first.
 #include "common/shadows.glsl"
+#include "common/sphere_occlusion.glsl"
 
 // One delta light's L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadows.glsl). `kind` and
 // `shadowed` are constants in a specialised program (gl/shader_specialisation.h), so the compiler
@@ -32,8 +33,10 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     // Ambient: k_a · L_a (GLINT_AMBIENT_REFLECTANCE is the registry's hook, zero when absent).
     radiance += GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;
 #ifdef GLINT_ENVIRONMENT_LIGHTING
-    // Environment light: the model's image-based lighting hook (registry glslEnvironment).
-    if (environmentEnabled()) radiance += GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame);
+    // Environment light: the model's image-based lighting hook (registry glslEnvironment), less
+    // what the scene's spheres cover (sphere_occlusion.glsl).
+    if (environmentEnabled())
+        radiance += GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame) * environmentVisibility(position, frame.normal);
 #endif
 #ifdef GLINT_SPECULAR_TRANSPORT
     radiance += GLINT_SPECULAR_TRANSPORT(params, position, frame, towardsViewer);

@@ -1,6 +1,6 @@
-// The display section: exposure (stops), tone map (none, Reinhard, ACES filmic), the transfer
-// function (sRGB, a pure gamma, or none), the classroom's intensity levels, ordered dither and
-// levels ramp (core/display/quantisation.h), and the background (a constant radiance or the sky
+// The display section: exposure (stops), tone map (none, Reinhard, ACES filmic, PBR Neutral), the
+// transfer function (sRGB, a pure gamma, or none), the classroom's intensity levels, ordered
+// dither and levels ramp (core/display/quantisation.h), MSAA samples, and the background (a constant radiance or the sky
 // gradient), then the Environment section (environment_section.cpp). Each change goes through
 // the edit API.
 #include <imgui.h>
@@ -43,12 +43,13 @@ void drawDisplaySection(EditorState& state) {
     changed |= editNumbers("Exposure", &display.exposureStops, 1, [](float* typed) { return ImGui::SliderFloat("Exposure", typed, -10.0f, 10.0f, "%+.2f EV"); });
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance is multiplied by 2^EV before encoding");
     int toneMap = static_cast<int>(display.toneMap);
-    if (ImGui::Combo("Tone map", &toneMap, "none (clip)\0Reinhard\0ACES filmic\0")) {
+    if (ImGui::Combo("Tone map", &toneMap, "none (clip)\0Reinhard\0ACES filmic\0PBR Neutral\0")) {
         display.toneMap = static_cast<ToneMap>(toneMap);
         changed = true;
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("none: values above 1 clip · Reinhard: x/(1+x) · ACES filmic: Narkowicz's 2015 fit");
+        ImGui::SetTooltip("none: values above 1 clip · Reinhard: x/(1+x) · ACES filmic: Narkowicz's 2015 fit · "
+                          "PBR Neutral: Khronos, keeps hue and saturation");
     int transfer = static_cast<int>(display.transfer);
     if (ImGui::Combo("Encoding", &transfer, "sRGB\0gamma\0linear (gamma off)\0")) {
         display.transfer = static_cast<Transfer>(transfer);
@@ -77,6 +78,14 @@ void drawDisplaySection(EditorState& state) {
     }
     if (backgroundChanged) state.session.change("Edit background").background = background;
     if (advancedPanelsVisible(state.settings)) drawEnvironmentSection(state);  // hidden in presentation mode
+    // Anti-aliasing: the scene's MSAA samples; a count this OpenGL lacks renders with the most it has.
+    static constexpr int kSampleCounts[] = {1, 2, 4, 8, 16};
+    int sampleChoice = 0;
+    while (sampleChoice < 4 && kSampleCounts[sampleChoice] < scene.msaaSamples) ++sampleChoice;
+    if (ImGui::Combo("Anti-aliasing", &sampleChoice, "off\0MSAA 2x\0MSAA 4x\0MSAA 8x\0MSAA 16x\0"))
+        state.session.change("Edit anti-aliasing").msaaSamples = kSampleCounts[sampleChoice];
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Multisample anti-aliasing; the exact sphere's edge is covered analytically per sample");
+    if (!state.samplesNote.empty()) ImGui::TextDisabled("%s", state.samplesNote.c_str());
 }
 
 }  // namespace glint
