@@ -11,6 +11,7 @@
 #include "classroom/plot_materials.h"
 #include "editor/editor_state.h"
 #include "editor/probe_panel.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 namespace {
@@ -96,8 +97,9 @@ bool gPlotsFollowProbe = true;       // θ_i from the surface probe's point when
 void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
     PlotsWindowState& plots = state.plots;
     if (!plots.open) return;
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 44.0f, ImGui::GetFontSize() * 34.0f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("BRDF and Fresnel plots", &plots.open)) {
+    // The plot is reserved: other windows open beside it (editor/window_placement.h).
+    if (!beginPlacedWindow("BRDF and Fresnel plots", &plots.open, {ImVec2(44.0f, 34.0f), ImVec2(22.0f, 18.0f)}, 0,
+                           /*reserved=*/true)) {
         ImGui::End();
         return;
     }
