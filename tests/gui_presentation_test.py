@@ -164,11 +164,24 @@ def lesson_files():
     return {path: (os.stat(path).st_mtime_ns, hashlib.sha256(open(path, "rb").read()).hexdigest()) for path in files}
 
 
+def free_point(layout):
+    """A point of the viewport under no window and no reserved rectangle, where a drag orbits."""
+    vx, vy, vw, vh = layout["viewport"]
+    taken = list(layout["window"].values()) + list(layout["reserved"].values())
+    for fy in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8):
+        for fx in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8):
+            px, py = vx + vw * fx, vy + vh * fy
+            if not any(r[0] - 20 <= px <= r[0] + r[2] + 100 and r[1] - 40 <= py <= r[1] + r[3] + 40 for r in taken):
+                return px, py
+    raise AssertionError(f"no free point to orbit from in {layout}")
+
+
 def scenario_lessons(x, glint, output, state):
     before = lesson_files()
     with open(LESSONS) as file:
         count = len(json.load(file)["lessons"])
     shots = os.environ.get("GLINT_LESSON_SHOTS")
+    x.run("xset", "r", "off")  # a PageDown held while the machine is busy must not auto-repeat into two steps
     editor = Editor(x, glint, output, state, ["present", LESSONS])
     try:
         for index in range(1, count + 1):
@@ -179,8 +192,7 @@ def scenario_lessons(x, glint, output, state):
             while f"Lesson {index} —" not in x.run("xdotool", "getwindowname", editor.window, check=False).stdout:
                 assert time.time() < deadline, f"lesson {index} did not open"
                 time.sleep(0.2)
-            viewport = editor.layout()["viewport"]
-            cx, cy = viewport[0] + viewport[2] * 0.6, viewport[1] + viewport[3] * 0.6
+            cx, cy = free_point(editor.layout())
             if shots:
                 time.sleep(1.5)
                 x.wait_stable((0, 0, 400, 300))
