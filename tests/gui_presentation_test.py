@@ -10,6 +10,7 @@ rectangles the editor prints with GLINT_LOG_LAYOUT=1. One scenario per ctest ent
                a screenshot of each lesson there (docs/lessons/)
   prompt       an edited scene: Ctrl+N asks, and Enter does not save (the file is unchanged, the
                prompt stays); Escape cancels
+  remembered   a window moved by the user opens at the same place in the next run (imgui.ini)
 usage: gui_presentation_test.py GLINT OUTPUT_DIR SCENARIO"""
 import glob
 import hashlib
@@ -235,6 +236,38 @@ def scenario_prompt(x, glint, output, state):
     finally:
         editor.stop()
     print("ok: Enter does not answer the unsaved-changes prompt; the file stayed as it was")
+
+
+def scenario_remembered(x, glint, output, state):
+    def lessons_window(editor):
+        x.key("l")
+        return editor.wait_layout(lambda l: "Lessons" in l["window"], "the Lessons window (L)")["window"]["Lessons"]
+
+    editor = Editor(x, glint, output, state, [])
+    try:
+        editor.wait_layout(lambda l: "##status" in l["window"], "the editor")
+        time.sleep(1.0)
+        wx, wy, ww, wh = lessons_window(editor)
+        time.sleep(1.0)
+        target = (max(10, wx - 200), wy + 60)
+        x.drag((wx + 60, wy + 10), (target[0] + 60, target[1] + 10))  # by the title bar
+        moved = editor.wait_layout(lambda l: abs(l["window"]["Lessons"][0] - target[0]) < 2, "the window to move")
+        moved = moved["window"]["Lessons"]
+        x.key("ctrl+q")
+        editor.process.wait(timeout=20)
+    finally:
+        editor.stop()
+    editor = Editor(x, glint, output, state, [])
+    try:
+        editor.wait_layout(lambda l: "##status" in l["window"], "the editor again")
+        time.sleep(1.0)
+        again = lessons_window(editor)
+        time.sleep(0.5)
+        again = editor.layout()["window"]["Lessons"]
+        assert abs(again[0] - moved[0]) < 2 and abs(again[1] - moved[1]) < 2, f"moved to {moved}, reopened at {again}"
+    finally:
+        editor.stop()
+    print(f"ok: the Lessons window moved from {(wx, wy)} to {moved[:2]} and reopened there in the next run")
 
 
 if __name__ == "__main__":

@@ -97,8 +97,9 @@ namespace {
 
 constexpr float kSoftReservedWeight = 20.0f;  // a reserved rectangle that may be covered (the probe's arrows)
 constexpr float kWindowWeight = 10.0f;      // another floating window
-constexpr float kColumnWeight = 3.0f;       // the side columns' controls
-constexpr float kViewMiddleWeight = 2.0f;   // the middle of the 3D view, where the objects usually are
+constexpr float kMaterialColumnWeight = 8.0f;  // the material column: tweaked while a window shows the effect
+constexpr float kSceneColumnWeight = 4.0f;     // the scene column
+constexpr float kViewMiddleWeight = 1.0f;   // the middle of the 3D view, where the objects usually are
 
 struct NamedRect {
     std::string name;
@@ -139,8 +140,8 @@ std::vector<PlacementObstacle> obstaclesFor(const std::string& self) {
         if (window.name != self) obstacles.push_back({window.rect, kWindowWeight});
     const ScreenRect& u = gFrame.usable;
     const ScreenRect& v = gFrame.viewport;
-    obstacles.push_back({{u.x, u.y, v.x - u.x, u.height}, kColumnWeight});
-    obstacles.push_back({{v.right(), u.y, u.right() - v.right(), u.height}, kColumnWeight});
+    obstacles.push_back({{u.x, u.y, v.x - u.x, u.height}, kSceneColumnWeight});
+    obstacles.push_back({{v.right(), u.y, u.right() - v.right(), u.height}, kMaterialColumnWeight});
     obstacles.push_back({{v.x + v.width * 0.25f, v.y + v.height * 0.2f, v.width * 0.5f, v.height * 0.6f}, kViewMiddleWeight});
     return obstacles;
 }

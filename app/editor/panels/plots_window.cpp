@@ -98,7 +98,7 @@ void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
     PlotsWindowState& plots = state.plots;
     if (!plots.open) return;
     // The plot is reserved: other windows open beside it (editor/window_placement.h).
-    if (!beginPlacedWindow("BRDF and Fresnel plots", &plots.open, {ImVec2(44.0f, 34.0f), ImVec2(22.0f, 18.0f)}, 0,
+    if (!beginPlacedWindow("BRDF and Fresnel plots", &plots.open, {ImVec2(44.0f, 34.0f), ImVec2(20.0f, 16.0f)}, 0,
                            /*reserved=*/true)) {
         ImGui::End();
         return;
@@ -133,6 +133,10 @@ void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
 
     const ImVec2 available = ImGui::GetContentRegionAvail();
     const ImVec2 cell(std::max(available.x * 0.5f - 4.0f, 60.0f), std::max(available.y * 0.5f - 4.0f, 60.0f));
+    // Axis labels keep apart in a small window (a large UI font on a small screen): the plots'
+    // text shrinks until a cell is about 11 lines tall and 22 wide, to no less than 55 %.
+    const float font = ImGui::GetFontSize();
+    ImGui::SetWindowFontScale(std::clamp(std::min(cell.y / (11.0f * font), cell.x / (22.0f * font)), 0.55f, 1.0f));
     ImDrawList* drawList = ImGui::GetWindowDrawList();
     auto nextCell = [&](const char* id, bool sameLine) {
         if (sameLine) ImGui::SameLine();
@@ -163,6 +167,7 @@ void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
                           cell.x - 12.0f);  // wrapped to the cell
         drawList->PopClipRect();
     }
+    ImGui::SetWindowFontScale(1.0f);
     ImGui::End();
 }
 
