@@ -142,6 +142,18 @@ TEST_F(EditorClassroom, LessonFilesAreNeverWrittenAndSaveAsKeepsACopyElsewhere) 
     EXPECT_EQ(std::filesystem::last_write_time(lessonFile), before);
 }
 
+TEST_F(EditorClassroom, PresentStartsInPresentationModeOnTheListsFirstLesson) {
+    const std::string scene = write("only.json", R"({"format": "glint-scene", "version": 1, "objects": []})");
+    const std::string list = write("course.json", R"({"format": "glint-lessons", "version": 1, "lessons": [
+  {"title": "Only", "scene": "only.json", "probe": [0.5, 0.5]}]})");
+    EditorState state;
+    startPresentation(state, list);  // `glint present course.json`
+    EXPECT_TRUE(state.settings.presentationMode);
+    EXPECT_TRUE(loadSettings().presentationMode);
+    EXPECT_EQ(openLessonIndex(state), 0);
+    EXPECT_EQ(state.classroom.lessonScenePath, std::filesystem::absolute(scene).lexically_normal().string());
+}
+
 TEST_F(EditorClassroom, ANewSceneOrAnotherFileTakesTheLessonNoteAway) {
     EditorState state;
     openLesson(state, 7);

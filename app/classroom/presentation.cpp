@@ -66,7 +66,7 @@ void togglePresentationMode(EditorState& state) {
 }
 
 void startPresentation(EditorState& state, const std::string& lessonListPath) {
-    state.settings.presentationMode = true;
+    if (!state.settings.presentationMode) togglePresentationMode(state);  // as F11: kept until F11 leaves it
     state.classroom.lessonListPath = lessonListPath;
     openLesson(state, 0);
 }

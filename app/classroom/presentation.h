@@ -30,7 +30,7 @@ float effectiveUiScale(const Settings& settings, float displayHeight = 0.0f);
 bool advancedPanelsVisible(const Settings& settings);
 // F11 / the View menu: flips the mode, saves the settings and says so in the status bar.
 void togglePresentationMode(EditorState& state);
-// `glint present LIST.json`: presentation mode for this run (not saved) on the list's first lesson.
+// `glint present LIST.json`: presentation mode (saved, as F11 does) on the list's first lesson.
 void startPresentation(EditorState& state, const std::string& lessonListPath);
 // The widest a side column may be shown [ImGui px]: 40 % of the window, 26 % while presenting.
 float columnWidthLimit(const Settings& settings);
