@@ -117,6 +117,22 @@ def scenario_layout(x, glint, output, state, width, height):
                                    and l["screen"][2] == width, "lesson 1 with its note and the probe, full screen")
         time.sleep(1.0)
         check_layout(editor.layout(), width, height)
+        # The strips open one column at a time; the viewport keeps 70 %, and no window hides under a column.
+        for strip, column, other in (("##material strip", "Material", "Scene"), ("##scene strip", "Scene", "Material")):
+            sx, sy, sw, sh = editor.layout()["window"][strip]
+            x.click(sx + sw / 2, sy + sh / 2)
+            layout = editor.wait_layout(lambda l: column in l["window"] and other not in l["window"], f"the {column} column")
+            time.sleep(1.0)
+            layout = editor.layout()
+            check_layout(layout, width, height)
+            for name, rect in layout["window"].items():
+                if name in ("Surface probe", "BRDF and Fresnel plots", "Lessons"):
+                    assert not overlap(rect, layout["window"][column]), f"{name} {rect} is under the {column} column"
+        write_png(x.screenshot(), os.path.join(output, "column.png"))
+        cx, cy, cw, _ = layout["window"]["Scene"]
+        bar = layout["window"]["##MainMenuBar"][3]  # a title bar is about as tall as the menu bar
+        x.click(cx + cw - 0.6 * bar, cy + 0.5 * bar)  # the column's close button: back to a strip
+        editor.wait_layout(lambda l: "Scene" not in l["window"] and "##scene strip" in l["window"], "the Scene column to collapse")
         # Each window alone (B and L work in presentation mode), then all of them: inside the screen.
         windows = (("b", "BRDF and Fresnel plots"), ("l", "Lessons"), ("F1", "Keyboard and mouse (F1)"))
         for key, name in windows:

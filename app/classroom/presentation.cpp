@@ -143,10 +143,12 @@ void fitWindowToPresentation(GLFWwindow* window, bool presenting) {
     }
 }
 
-std::uint64_t windowLayoutKey(float uiScale, bool presenting, float displayWidth, float displayHeight) {
-    const auto scale = static_cast<std::uint64_t>(std::lround(uiScale * 100.0f));
-    return (presenting ? 1ull : 0ull) | scale << 1 | static_cast<std::uint64_t>(displayWidth) << 12 |
-           static_cast<std::uint64_t>(displayHeight) << 32;
+std::uint64_t windowLayoutKey(float uiScale, bool presenting, bool leftColumn, bool rightColumn, float displayWidth,
+                              float displayHeight) {
+    std::uint64_t key = (presenting ? 1 : 0) | (leftColumn ? 2 : 0) | (rightColumn ? 4 : 0);
+    for (const float value : {uiScale * 100.0f, displayWidth, displayHeight})
+        key = key * 1'000'003ull + static_cast<std::uint64_t>(std::lround(value));
+    return key;
 }
 
 ImFont* loadPresentationFont(float pixelSize) {

@@ -42,8 +42,11 @@ float collapsedColumnStripWidth(const Settings& settings);
 void drawCollapsedColumnStrips(EditorState& state, float top, float height, float windowWidth);
 // Entering presentation mode fills the screen (the monitor's work area); leaving restores the window.
 void fitWindowToPresentation(GLFWwindow* window, bool presenting);
-// Changes whenever floating windows should be sized and placed afresh (editor/window_placement.h).
-std::uint64_t windowLayoutKey(float uiScale, bool presenting, float displayWidth, float displayHeight);
+// Changes whenever floating windows should be sized and placed afresh (editor/window_placement.h):
+// the UI scale, the mode or the screen changed, or a side column opened or closed (not while a
+// column's edge is dragged: windows do not jump under the pointer).
+std::uint64_t windowLayoutKey(float uiScale, bool presenting, bool leftColumn, bool rightColumn, float displayWidth,
+                              float displayHeight);
 
 // Loads the presentation font at `pixelSize` into ImGui's atlas (before the atlas is built);
 // nullptr and a message on stderr when the file is missing (the normal font is then scaled).

@@ -218,9 +218,13 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                                             (state.showRightPanel ? rightColumnScreenWidth(state)
                                                                   : collapsedColumnStripWidth(state.settings)));
         viewport.height = std::max(1.0f, columnHeight);
-        // Floating windows open where they cover nothing reserved (the lesson note, the probe, the plot).
-        beginWindowLayoutFrame({0.0f, menuHeight, windowSize.x, columnHeight}, {viewport.x, viewport.y, viewport.width, viewport.height},
-                               windowLayoutKey(appliedScale, state.settings.presentationMode, windowSize.x, windowSize.y));
+        // Floating windows open where they cover nothing reserved (the lesson note, the probe, the plot);
+        // while presenting, over the viewport only, so an open side column never hides one.
+        const ScreenRect viewportRect{viewport.x, viewport.y, viewport.width, viewport.height};
+        beginWindowLayoutFrame(state.settings.presentationMode ? viewportRect : ScreenRect{0.0f, menuHeight, windowSize.x, columnHeight},
+                               viewportRect,
+                               windowLayoutKey(appliedScale, state.settings.presentationMode, state.showLeftPanel,
+                                               state.showRightPanel, windowSize.x, windowSize.y));
         drawDialogs(state);
         drawMeshLoadDialog(state);
         drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU

@@ -189,9 +189,13 @@ void drawProbe(const EditorState& state, const ViewportRect& viewport) {
     ProbeTool& probe = gProbeTool;
     if (!probe.active) return;
     const ProbeResult& result = currentProbe(probe, state, viewport);
+    // The legend of angles bottom left, unless the lesson note took that corner (then top left).
+    const float lines = ImGui::GetTextLineHeight() * static_cast<float>(result.lights.size() + 2);
+    const ScreenRect legendBand{viewport.x, viewport.y + viewport.height - lines, viewport.width * 0.6f, lines};
+    const ProbeLegendCorner corner =
+        reservedAreaOf(legendBand, "lesson note") > 1.0f ? ProbeLegendCorner::TopLeft : ProbeLegendCorner::BottomLeft;
     const ProbeOverlayRects covered = drawProbeOverlay(ImGui::GetBackgroundDrawList(), result, state.session.scene().camera,
-                                                       {viewport.x, viewport.y, viewport.width, viewport.height},
-                                                       ProbeLegendCorner::BottomLeft);  // the lesson note is top left
+                                                       {viewport.x, viewport.y, viewport.width, viewport.height}, corner);
     const auto reserve = [](const char* what, const ProbeOverlayArea& r, bool hard) {
         if (r.width > 0.0f && r.height > 0.0f) reserveScreenRect(what, {r.x, r.y, r.width, r.height}, hard);
     };

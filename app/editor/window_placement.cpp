@@ -162,6 +162,13 @@ void reserveScreenRect(const std::string& what, const ScreenRect& rect, bool har
     gFrame.reserved.push_back({what, rect, hard});
 }
 
+float reservedAreaOf(const ScreenRect& rect, std::string_view name) {
+    for (const auto* list : {&gFrame.reserved, &gFrame.previousReserved})
+        for (const NamedRect& reserved : *list)
+            if (reserved.name == name) return rect.overlapArea(reserved.rect);
+    return 0.0f;
+}
+
 float screenAreaTaken(const ScreenRect& rect, std::string_view self, std::span<const std::string_view> heavy) {
     float area = 0.0f;
     for (const auto* list : {&gFrame.reserved, &gFrame.previousReserved, &gFrame.windows, &gFrame.previousWindows})

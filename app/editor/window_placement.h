@@ -57,6 +57,8 @@ void reserveScreenRect(const std::string& what, const ScreenRect& rect, bool har
 // reserved rectangle named in `heavy` counts 10, of any other reserved rectangle or floating
 // window 1 (`self` excluded; this frame's and the last's).
 float screenAreaTaken(const ScreenRect& rect, std::string_view self, std::span<const std::string_view> heavy);
+// How much of `rect` the reserved rectangle named `name` covers (this frame's, else the last's).
+float reservedAreaOf(const ScreenRect& rect, std::string_view name);
 // A floating window's size in font heights, so it scales with the UI.
 struct WindowSizing {
     ImVec2 fonts;                              // preferred
