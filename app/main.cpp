@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "classroom/lessons.h"
 #include "cli/bench_command.h"
 #include "cli/cmf_command.h"
 #include "cli/brdf_probe.h"
@@ -45,6 +46,8 @@ constexpr const char* kUsage =
     "                              write a material (file, scene, .mtl or .gltf) as .mtl or glTF\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
+    "  glint present [LIST.json]   the editor in presentation mode (full screen, large type) on the first\n"
+    "                              lesson of LIST (the shipped lessons when omitted); PageDown / PageUp step\n"
     "  glint lessons [LIST.json] [--check] [--render DIR]\n"
     "                              list the classroom lessons, check that they load, or render them\n"
     "  glint spectral SCENE.json -o OUT.png|OUT.exr [--band NM,FWHM] [--cauchy-b B] [--wavelengths N]\n"
@@ -131,6 +134,30 @@ int main(int argc, char** argv) {
     if (!arguments.empty() && arguments[0] == "--version") {
         std::printf("glint %s\n", GLINT_VERSION);
         return 0;
+    }
+    // `glint present [LIST.json]`: presentation mode on the list's first lesson.
+    if (!arguments.empty() && arguments[0] == "present") {
+        if (arguments.size() > 2 || (arguments.size() == 2 && arguments[1].rfind("-", 0) == 0)) {
+            std::fprintf(stderr, "glint: present takes one lesson list at most\n%s", kUsage);
+            return 2;
+        }
+        const std::string presentList = arguments.size() == 2 ? arguments[1] : glint::defaultLessonListPath();
+        if (auto list = glint::loadLessonList(presentList); !list) {
+            std::fprintf(stderr, "glint: %s\n", list.error().format().c_str());
+            return 2;
+        }
+        const char* display = std::getenv("DISPLAY");
+        const char* wayland = std::getenv("WAYLAND_DISPLAY");
+        if ((!display || !*display) && (!wayland || !*wayland)) {
+            std::fprintf(stderr, "glint: present needs a display (DISPLAY is not set); `glint lessons --render DIR` renders the lessons headless\n");
+            return 2;
+        }
+        auto platform = glint::GlfwPlatform::create(1280, 800, "Glint — presentation");
+        if (!platform) {
+            std::fprintf(stderr, "glint: present needs a window: %s\n", platform.error().message.c_str());
+            return 2;
+        }
+        return glint::runEditor(std::move(*platform), "", presentList);
     }
     if (arguments.size() > 1 || (!arguments.empty() && arguments[0].rfind("-", 0) == 0)) {
         std::fprintf(stderr, "glint: unexpected arguments\n%s", kUsage);

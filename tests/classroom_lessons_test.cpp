@@ -1,5 +1,5 @@
-// Classroom lessons (core/classroom/lessons.h): the shipped list holds the eight lessons in the
-// lecture's order and every scene loads; a broken list is refused with file:line:column; stepping
+// Classroom lessons (core/classroom/lessons.h): the shipped list holds the lessons in the
+// lecture's order, each with a note and a probe point, and every scene loads; a broken list is refused with file:line:column; stepping
 // stays inside the list. Rendering every lesson headless is tests/lessons_cli_test.sh.
 #include <gtest/gtest.h>
 
@@ -18,12 +18,15 @@ TEST(Lessons, ShippedListHasTheLectureOrderAndEverySceneLoads) {
     auto list = loadLessonList(dataPath("../lessons/lessons.json"));
     ASSERT_TRUE(list.ok()) << list.error().format();
     const char* const expectedStarts[] = {"Lambert", "Phong", "Blinn", "Symmetric Blinn", "Cook-Torrance",
-                                          "Fresnel", "Refraction", "White-out"};
+                                          "Fresnel", "Refraction", "White-out", "Radiometry", "The rendering equation",
+                                          "Spot lights", "Oren-Nayar", "Anisotropy", "Beer-Lambert", "Gamma",
+                                          "Flat, Gouraud", "Spectral dispersion"};
     ASSERT_EQ(list->lessons.size(), std::size(expectedStarts));
     for (size_t index = 0; index < list->lessons.size(); ++index) {
         const Lesson& lesson = list->lessons[index];
         EXPECT_EQ(lesson.title.rfind(expectedStarts[index], 0), 0u) << lesson.title;
         EXPECT_FALSE(lesson.note.empty()) << lesson.title;
+        EXPECT_TRUE(lesson.probePoint.has_value()) << lesson.title << ": every lesson starts the probe somewhere";
         auto scene = loadScene(lesson.scenePath);
         EXPECT_TRUE(scene.ok()) << lesson.title << ": " << scene.error().format();
     }
@@ -47,6 +50,10 @@ TEST(Lessons, BrokenListsAreRefusedWithALocation) {
     EXPECT_NE(noScene.error().format().find("scene"), std::string::npos);
     EXPECT_FALSE(parseLessonList(R"({"format": "glint-scene", "version": 1, "lessons": []})", "list.json").ok());
     EXPECT_FALSE(parseLessonList(R"({"format": "glint-lessons", "version": 1, "lessons": []})", "list.json").ok());
+    auto probeOutside = parseLessonList(R"({"format": "glint-lessons", "version": 1,
+  "lessons": [{"title": "A", "scene": "a.json", "probe": [0.5, 1.5]}]})", "list.json");
+    ASSERT_FALSE(probeOutside.ok());
+    EXPECT_NE(probeOutside.error().format().find("probe"), std::string::npos) << probeOutside.error().format();
     auto relative = parseLessonList(R"({"format": "glint-lessons", "version": 1, "lessons": [{"title": "A", "scene": "x/a.json"}]})",
                                     "/course/lessons.json");
     ASSERT_TRUE(relative.ok());

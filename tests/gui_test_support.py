@@ -213,10 +213,11 @@ def write_png(image, path):
         out.write(chunk(b"IEND", b""))
 
 
-def run_scenario_from_arguments(namespace, width=1280, height=800):
+def run_scenario_from_arguments(namespace, width=1280, height=800, screens=None):
     """argv: GLINT OUTPUT_DIR SCENARIO. Runs namespace["scenario_" + SCENARIO](x, glint, output,
-    state) (a test module passes its globals()) in a fresh Xvfb with its own output folder
-    (failure screenshots go there) and an empty state folder."""
+    state) (a test module passes its globals()) in a fresh Xvfb, width×height or the size
+    screens[SCENARIO] names, with its own output folder (failure screenshots go there) and an
+    empty state folder."""
     import shutil
     import sys
     glint, output, scenario = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -225,5 +226,5 @@ def run_scenario_from_arguments(namespace, width=1280, height=800):
     os.environ["GLINT_GUI_FAILURE_DIR"] = output
     state = os.path.join(output, "state")
     shutil.rmtree(state, ignore_errors=True)
-    with XServer(width, height) as x:
+    with XServer(*(screens or {}).get(scenario, (width, height))) as x:
         namespace["scenario_" + scenario](x, glint, output, state)

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "classroom/cmf_plot.h"
+#include "classroom/lesson_document.h"
 #include "classroom/lessons_view.h"
 #include "classroom/presentation.h"
 #include "classroom/spectral_view.h"
@@ -13,8 +14,9 @@
 
 namespace glint {
 
-void drawClassroom(EditorState& state, float viewportLeft, float viewportTop) {
-    drawLessonWindows(state, viewportLeft, viewportTop);
+void drawClassroom(EditorState& state, float viewportLeft, float viewportTop, float viewportWidth, float viewportHeight) {
+    followLessonDocument(state);  // Ctrl+N, another file or Save as: the lesson and its note go
+    drawLessonWindows(state, viewportLeft, viewportTop, viewportWidth, viewportHeight);
     handleLessonKeys(state);
     if (!ImGui::GetIO().WantTextInput && keyPressed(GLFW_KEY_F11)) togglePresentationMode(state);
     drawCmfWindow(state.classroom.showCmfWindow);

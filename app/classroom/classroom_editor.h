@@ -7,8 +7,8 @@
 
 namespace glint {
 
-// Once per frame, after the panels; the viewport's top-left corner places the lesson note.
-void drawClassroom(EditorState& state, float viewportLeft, float viewportTop);
+// Once per frame, after the panels; the viewport's rectangle places the lesson note.
+void drawClassroom(EditorState& state, float viewportLeft, float viewportTop, float viewportWidth, float viewportHeight);
 // Inside the View menu: Lessons, Presentation mode and its scale, the colour windows.
 void drawClassroomViewMenuItems(EditorState& state);
 

@@ -9,6 +9,7 @@
 #include "colour/cie_cmf.h"
 #include "colour/spectral_render.h"
 #include "display/display_chain.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 namespace {
@@ -94,8 +95,7 @@ void drawCmfPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 size, float fontSi
 void drawCmfWindow(bool& open) {
     if (!open) return;
     const float fontSize = ImGui::GetFontSize();
-    ImGui::SetNextWindowSize(ImVec2(fontSize * 32.0f, fontSize * 22.0f), ImGuiCond_Appearing);
-    if (ImGui::Begin("Colour matching functions", &open)) {
+    if (beginPlacedWindow("Colour matching functions", &open, {ImVec2(32.0f, 22.0f), ImVec2(24.0f, 16.0f)})) {
         const ImVec2 origin = ImGui::GetCursorScreenPos();
         ImVec2 available = ImGui::GetContentRegionAvail();
         available.y -= ImGui::GetTextLineHeightWithSpacing() * 2.0f;

@@ -12,6 +12,7 @@
 #include "brdf/model_registry.h"
 #include "brdf/presets.h"
 #include "editor/editor_state.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 namespace {
@@ -136,9 +137,8 @@ void openCompareView(EditorState& state, bool interpolation) {
 void drawCompareWindow(EditorState& state) {
     CompareViewState& view = state.compare;
     if (!view.open) return;
-    ImGui::SetNextWindowSize(ImVec2(560, 520), ImGuiCond_FirstUseEver);
     const char* title = view.interpolation ? "Compare: shading interpolation###compare" : "Compare: materials###compare";
-    if (ImGui::Begin(title, &view.open)) {
+    if (beginPlacedWindow(title, &view.open, {ImVec2(33.0f, 30.0f), ImVec2(22.0f, 20.0f)})) {
         drawCompareControls(state);
         if (!view.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", view.message.c_str());
         drawCompareImage(view);

@@ -1,14 +1,18 @@
 // The editor's lesson window, lesson stepping and the title-and-note overlay (lessons_view.h).
-// Scenes open through openSceneFile behind guardUnsavedChanges, like File ▸ Open.
+// Lessons open read-only (lesson_document.h) behind guardUnsavedChanges, like File ▸ Open.
 #include "classroom/lessons_view.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include <filesystem>
+#include <algorithm>
+#include <string>
+#include <string_view>
 
+#include "classroom/lesson_document.h"
 #include "editor/document.h"
 #include "editor/key_events.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 
@@ -16,7 +20,7 @@ void ensureLessonList(EditorState& state) {
     ClassroomState& classroom = state.classroom;
     if (classroom.lessonListLoaded) return;
     classroom.lessonListLoaded = true;
-    auto list = loadLessonList(defaultLessonListPath());
+    auto list = loadLessonList(classroom.lessonListPath.empty() ? defaultLessonListPath() : classroom.lessonListPath);
     if (list) classroom.lessonList = std::move(*list);
     else classroom.lessonListError = list.error().format();
 }
@@ -29,15 +33,9 @@ void openLesson(EditorState& state, int index) {
         return;
     }
     if (index < 0 || index >= static_cast<int>(lessons.size())) return;
-    const std::string path = lessons[index].scenePath;
-    guardUnsavedChanges(state, "opening lesson " + std::to_string(index + 1), [path, index](EditorState& s) {
-        openSceneFile(s, path);
-        // The index follows the scene only when it opened (a broken lesson file leaves both as they were).
-        if (s.session.path() == std::filesystem::absolute(path).lexically_normal().string()) {
-            s.classroom.lessonIndex = index;
-            s.classroom.showLessonNote = true;
-        }
-    });
+    // A broken lesson file leaves the work and the lesson index as they were.
+    guardUnsavedChanges(state, "opening lesson " + std::to_string(index + 1),
+                        [index](EditorState& s) { openLessonDocument(s, index); });
 }
 
 void handleLessonKeys(EditorState& state) {
@@ -45,7 +43,7 @@ void handleLessonKeys(EditorState& state) {
     if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
     ClassroomState& classroom = state.classroom;
     const int count = static_cast<int>(classroom.lessonList.lessons.size());
-    const bool inLesson = classroom.lessonIndex >= 0;
+    const bool inLesson = openLessonIndex(state) >= 0;
     // Left/Right belong to ImGui while a widget has the keyboard (slider steps); PageUp/PageDown always step.
     const bool arrowsFree = inLesson && !io.WantCaptureKeyboard;
     if (keyPressed(GLFW_KEY_PAGE_DOWN) || (arrowsFree && keyPressed(GLFW_KEY_RIGHT))) {
@@ -61,46 +59,102 @@ void handleLessonKeys(EditorState& state) {
     }
 }
 
-void drawLessonWindows(EditorState& state, float viewportLeft, float viewportTop) {
+namespace {
+
+void drawLessonList(EditorState& state) {
+    ClassroomState& classroom = state.classroom;
+    if (!classroom.lessonListError.empty()) {
+        ImGui::TextWrapped("The lesson list could not be read:\n%s", classroom.lessonListError.c_str());
+        return;
+    }
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", classroom.lessonList.path.c_str());
+    const auto& lessons = classroom.lessonList.lessons;
+    const int open = openLessonIndex(state);
+    for (int index = 0; index < static_cast<int>(lessons.size()); ++index) {
+        // A selectable row as tall as its title wrapped to the window's width.
+        const std::string label = std::to_string(index + 1) + ". " + lessons[index].title;
+        const ImVec2 start = ImGui::GetCursorPos();
+        const float height = ImGui::CalcTextSize(label.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x).y;
+        ImGui::PushID(index);
+        const bool clicked = ImGui::Selectable("##lesson", index == open, ImGuiSelectableFlags_None, ImVec2(0.0f, height));
+        const bool hovered = ImGui::IsItemHovered();
+        ImGui::PopID();
+        const ImVec2 after = ImGui::GetCursorPos();
+        ImGui::SetCursorPos(start);
+        ImGui::TextUnformatted(label.c_str());  // wraps: the text wrap position is the window's edge
+        ImGui::SetCursorPos(after);
+        if (clicked) openLesson(state, index);
+        if (hovered && !lessons[index].note.empty()) {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+            ImGui::TextUnformatted(lessons[index].note.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
+    }
+    ImGui::Separator();
+    if (open >= 0) {
+        if (ImGui::Button("Revert lesson")) revertLesson(state);
+        ImGui::SameLine();
+        if (ImGui::Button("Save as…")) requestFileBrowser(state.fileBrowser, FilePurpose::SaveSceneAs, "my_lesson.json");
+    }
+    ImGui::TextWrapped("PageDown / Right: next lesson · PageUp / Left: previous. Lessons are read-only course material: "
+                       "your edits stay in this session (Revert lesson restores the lesson), Save as… keeps a copy elsewhere. "
+                       "Moving the camera is never an edit.");
+    ImGui::PopTextWrapPos();
+    ImGui::Checkbox("Show the lesson note over the viewport", &classroom.showLessonNote);
+}
+
+}  // namespace
+
+void drawLessonWindows(EditorState& state, float viewportLeft, float viewportTop, float viewportWidth, float viewportHeight) {
     ClassroomState& classroom = state.classroom;
     const float fontSize = ImGui::GetFontSize();
     if (classroom.showLessonWindow) {
         ensureLessonList(state);
-        ImGui::SetNextWindowSize(ImVec2(fontSize * 26.0f, 0.0f), ImGuiCond_Appearing);
-        if (ImGui::Begin("Lessons", &classroom.showLessonWindow)) {
-            if (!classroom.lessonListError.empty()) {
-                ImGui::TextWrapped("The lesson list could not be read:\n%s", classroom.lessonListError.c_str());
-            } else {
-                ImGui::TextDisabled("%s", classroom.lessonList.path.c_str());
-                const auto& lessons = classroom.lessonList.lessons;
-                for (int index = 0; index < static_cast<int>(lessons.size()); ++index) {
-                    const std::string label = std::to_string(index + 1) + ". " + lessons[index].title;
-                    if (ImGui::Selectable(label.c_str(), index == classroom.lessonIndex)) openLesson(state, index);
-                    if (ImGui::IsItemHovered() && !lessons[index].note.empty()) ImGui::SetTooltip("%s", lessons[index].note.c_str());
-                }
-                ImGui::Separator();
-                ImGui::TextWrapped("Right / PageDown: next lesson · Left / PageUp: previous. Each lesson is a scene file: "
-                                   "edit it and save (Ctrl+S) to change the lesson.");
-                ImGui::Checkbox("Show the lesson note over the viewport", &classroom.showLessonNote);
-            }
-        }
+        if (beginPlacedWindow("Lessons", &classroom.showLessonWindow, {ImVec2(26.0f, 22.0f), ImVec2(16.0f, 10.0f)})) drawLessonList(state);
         ImGui::End();
     }
     const auto& lessons = classroom.lessonList.lessons;
-    if (classroom.lessonIndex < 0 || classroom.lessonIndex >= static_cast<int>(lessons.size()) || !classroom.showLessonNote) return;
-    const Lesson& lesson = lessons[classroom.lessonIndex];
-    const float margin = fontSize * 0.6f;
-    ImGui::SetNextWindowPos(ImVec2(viewportLeft + margin, viewportTop + margin));
-    ImGui::SetNextWindowSize(ImVec2(fontSize * 24.0f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+    const int index = openLessonIndex(state);
+    if (index < 0 || !classroom.showLessonNote) return;
+    const Lesson& lesson = lessons[index];
+    // In a corner of the viewport, at most 45 % of its width and height (longer notes scroll): top
+    // left, else the corner that covers least of the probe's arrows and angles, then of windows.
+    // It stays in its corner until another is clearly better.
+    static float noteHeight = 0.0f;  // last frame's, to choose the corner
+    static int cornerShown = 0;
+    const float margin = fontSize * 0.4f;
+    const float width = std::min(fontSize * 26.0f, viewportWidth * 0.45f);
+    const float leftX = viewportLeft + margin, rightX = viewportLeft + viewportWidth - margin - width;
+    const float topY = viewportTop + margin, bottomY = viewportTop + viewportHeight - margin - noteHeight;
+    const ScreenRect corners[] = {{leftX, topY, width, noteHeight}, {rightX, topY, width, noteHeight},
+                                  {rightX, bottomY, width, noteHeight}, {leftX, bottomY, width, noteHeight}};
+    constexpr std::string_view kNote = "lesson note";
+    constexpr std::string_view kProbeOverlay[] = {"probe arrows", "probe angles"};
+    float taken[4];
+    for (int i = 0; i < 4; ++i) taken[i] = screenAreaTaken(corners[i], kNote, kProbeOverlay);
+    int best = 0;
+    for (int i = 1; i < 4; ++i)
+        if (taken[i] < taken[best] - 1.0f) best = i;
+    if (taken[best] < taken[cornerShown] * 0.5f - 1.0f) cornerShown = best;
+    ImGui::SetNextWindowPos(ImVec2(corners[cornerShown].x, corners[cornerShown].y));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, viewportHeight * 0.45f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize;
     if (ImGui::Begin("##lesson note", nullptr, flags)) {
-        ImGui::Text("Lesson %d/%d: %s", classroom.lessonIndex + 1, static_cast<int>(lessons.size()), lesson.title.c_str());
-        ImGui::PushTextWrapPos(fontSize * 23.0f);
+        ImGui::PushTextWrapPos(0.0f);  // titles and notes wrap at the window's edge
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.0f, 1.0f), "Lesson %d/%d: %s", index + 1, static_cast<int>(lessons.size()),
+                           lesson.title.c_str());
         ImGui::TextUnformatted(lesson.note.c_str());
+        ImGui::TextDisabled("PageDown: next · PageUp: previous");
         ImGui::PopTextWrapPos();
-        ImGui::TextDisabled("← / → previous / next lesson");
+        noteHeight = ImGui::GetWindowHeight();
+        reserveScreenRect("lesson note", {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowWidth(),
+                                          ImGui::GetWindowHeight()});
     }
     ImGui::End();
 }

@@ -1,6 +1,7 @@
 // Lessons in the editor: the lesson window (View ▸ Lessons, L), stepping with Left/Right or
-// PageUp/PageDown through the normal open path (unsaved work is asked about first), and the small
-// overlay with the lesson's title and note. The list format lives in core/classroom/lessons.h.
+// PageUp/PageDown behind the unsaved-changes guard (camera moves in a lesson are not unsaved
+// work), and the overlay with the lesson's title and note. Lessons open read-only
+// (classroom/lesson_document.h); the list format lives in core/classroom/lessons.h.
 #pragma once
 
 #include "editor/editor_state.h"
@@ -9,11 +10,12 @@ namespace glint {
 
 // Loads the shipped list on first use (errors are kept for the window, never fatal).
 void ensureLessonList(EditorState& state);
-// Opens lesson `index` (clamped to the list) through the unsaved-changes guard.
+// Opens lesson `index` (ignored outside the list) read-only, through the unsaved-changes guard.
 void openLesson(EditorState& state, int index);
 // Left/Right (while a lesson is open), PageUp/PageDown and L; called once per frame after the panels.
 void handleLessonKeys(EditorState& state);
-// The lesson window and the title-and-note overlay over the viewport's top-left corner.
-void drawLessonWindows(EditorState& state, float viewportLeft, float viewportTop);
+// The lesson window and the title-and-note overlay in a top corner of the viewport (a reserved
+// rectangle: no window opens over it).
+void drawLessonWindows(EditorState& state, float viewportLeft, float viewportTop, float viewportWidth, float viewportHeight);
 
 }  // namespace glint

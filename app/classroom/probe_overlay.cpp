@@ -35,30 +35,84 @@ struct ProbeProjector {
     }
 };
 
-// Text with a dark outline so it reads over bright and dark pixels alike.
-void probeLabel(ImDrawList* drawList, ImVec2 at, ImU32 color, const std::string& text) {
-    for (const ImVec2 offset : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
+// Sizes follow the font, so the overlay reads from the back of a lecture hall in presentation mode.
+struct ProbeStroke {
+    float scale;  // the font's height over the 17 px of the normal UI font
+    float line() const { return 2.5f * scale; }
+    float outline() const { return line() + 3.0f * scale; }
+    float head() const { return 12.0f * scale; }
+};
+
+ImVec2 textSize(const std::string& text) { return ImGui::CalcTextSize(text.c_str()); }
+
+bool rectsOverlap(const ImVec4& a, const ImVec4& b) { return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w; }
+
+// Labels already drawn (and the legend): each new label takes the first spot near its arrow's tip
+// that overlaps none of them.
+struct ProbeLabels {
+    std::vector<ImVec4> taken;  // x0, y0, x1, y1
+
+    ImVec2 place(ImVec2 tip, float ux, float uy, ImVec2 size, float gap) {
+        // Beyond the tip, then to either side of it, then further out.
+        const ImVec2 centres[] = {{tip.x + ux * (gap + size.x * 0.5f), tip.y + uy * (gap + size.y * 0.5f)},
+                                  {tip.x - uy * (gap + size.x * 0.5f), tip.y + ux * (gap + size.y * 0.5f)},
+                                  {tip.x + uy * (gap + size.x * 0.5f), tip.y - ux * (gap + size.y * 0.5f)},
+                                  {tip.x + ux * (gap * 2.0f + size.x), tip.y + uy * (gap * 2.0f + size.y)},
+                                  {tip.x - uy * (gap * 2.0f + size.x), tip.y + ux * (gap * 2.0f + size.y)},
+                                  {tip.x + uy * (gap * 2.0f + size.x), tip.y - ux * (gap * 2.0f + size.y)},
+                                  {tip.x, tip.y - gap - size.y},
+                                  {tip.x, tip.y + gap + size.y}};
+        ImVec4 chosen;
+        int fewest = 1 << 30;
+        for (const ImVec2 centre : centres) {
+            const ImVec4 rect(centre.x - size.x * 0.5f, centre.y - size.y * 0.5f, centre.x + size.x * 0.5f, centre.y + size.y * 0.5f);
+            int overlaps = 0;
+            for (const ImVec4& other : taken) overlaps += rectsOverlap(rect, other) ? 1 : 0;
+            if (overlaps < fewest) {
+                fewest = overlaps;
+                chosen = rect;
+            }
+            if (overlaps == 0) break;
+        }
+        taken.push_back(chosen);
+        return ImVec2(chosen.x, chosen.y);
+    }
+};
+
+// Text on a dark box with a dark outline, so it reads over a white highlight and a black background alike.
+void probeLabel(ImDrawList* drawList, ImVec2 at, ImU32 color, const std::string& text, const ProbeStroke& stroke) {
+    const ImVec2 size = textSize(text);
+    const float pad = 2.0f * stroke.scale;
+    drawList->AddRectFilled(ImVec2(at.x - pad, at.y - pad), ImVec2(at.x + size.x + pad, at.y + size.y + pad),
+                            IM_COL32(0, 0, 0, 150), 3.0f * stroke.scale);
+    const float o = std::max(1.0f, std::round(1.5f * stroke.scale));
+    for (const ImVec2 offset : {ImVec2(-o, 0), ImVec2(o, 0), ImVec2(0, -o), ImVec2(0, o), ImVec2(-o, -o), ImVec2(o, o),
+                                ImVec2(-o, o), ImVec2(o, -o)})
         drawList->AddText(ImVec2(at.x + offset.x, at.y + offset.y), kProbeShadowColor, text.c_str());
     drawList->AddText(at, color, text.c_str());
 }
 
-// An arrow from the probed point along a unit direction, labelled at its tip.
+// An arrow from the probed point along a unit direction, labelled near its tip.
 void probeArrow(ImDrawList* drawList, const ProbeProjector& project, glm::vec3 origin, glm::vec3 direction, float length,
-                ImU32 color, const std::string& label) {
+                ImU32 color, const std::string& label, const ProbeStroke& stroke, ProbeLabels& labels) {
     const auto start = project(origin), end = project(origin + direction * length);
     if (!start || !end) return;
     const float dx = end->x - start->x, dy = end->y - start->y;
     const float pixels = std::sqrt(dx * dx + dy * dy);
-    drawList->AddLine(*start, *end, kProbeShadowColor, 4.0f);
-    drawList->AddLine(*start, *end, color, 2.0f);
+    drawList->AddLine(*start, *end, kProbeShadowColor, stroke.outline());
+    drawList->AddLine(*start, *end, color, stroke.line());
+    float ux = 0.0f, uy = -1.0f;  // straight at the viewer: the label goes above the point
     if (pixels > 4.0f) {  // a head, unless the arrow points straight at the viewer
-        const float ux = dx / pixels, uy = dy / pixels, head = std::min(9.0f, 0.4f * pixels);
-        drawList->AddTriangleFilled(*end, ImVec2(end->x - ux * head - uy * head * 0.5f, end->y - uy * head + ux * head * 0.5f),
-                                    ImVec2(end->x - ux * head + uy * head * 0.5f, end->y - uy * head - ux * head * 0.5f),
-                                    color);
+        ux = dx / pixels;
+        uy = dy / pixels;
+        const float head = std::min(stroke.head(), 0.4f * pixels);
+        const ImVec2 left(end->x - ux * head - uy * head * 0.55f, end->y - uy * head + ux * head * 0.55f);
+        const ImVec2 right(end->x - ux * head + uy * head * 0.55f, end->y - uy * head - ux * head * 0.55f);
+        drawList->AddTriangle(*end, left, right, kProbeShadowColor, stroke.outline() - stroke.line());
+        drawList->AddTriangleFilled(*end, left, right, color);
     }
-    const float away = pixels > 1.0f ? 6.0f / pixels : 0.0f;  // the label just beyond the tip
-    probeLabel(drawList, ImVec2(end->x + dx * away - 4.0f, end->y + dy * away - 7.0f), color, label);
+    const ImVec2 at = labels.place(*end, ux, uy, textSize(label), 4.0f * stroke.scale);
+    probeLabel(drawList, at, color, label, stroke);
 }
 
 // One line of the legend: pieces of text, each in its vector's colour.
@@ -70,16 +124,20 @@ struct ProbeLegendLine {
     std::vector<ProbeLegendPiece> pieces;
 };
 
-void probeLegend(ImDrawList* drawList, ImVec2 at, const std::vector<ProbeLegendLine>& lines) {
-    const float lineHeight = ImGui::GetTextLineHeight();
+ImVec2 probeLegendSize(const std::vector<ProbeLegendLine>& lines) {
     float width = 0.0f;
     for (const ProbeLegendLine& line : lines) {
         float lineWidth = 0.0f;
         for (const ProbeLegendPiece& piece : line.pieces) lineWidth += ImGui::CalcTextSize(piece.text.c_str()).x;
         width = std::max(width, lineWidth);
     }
-    drawList->AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + width + 3, at.y + lineHeight * lines.size() + 2),
-                            IM_COL32(0, 0, 0, 150), 3.0f);
+    return ImVec2(width, ImGui::GetTextLineHeight() * static_cast<float>(lines.size()));
+}
+
+void probeLegend(ImDrawList* drawList, ImVec2 at, const std::vector<ProbeLegendLine>& lines) {
+    const float lineHeight = ImGui::GetTextLineHeight();
+    const ImVec2 size = probeLegendSize(lines);
+    drawList->AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2), IM_COL32(0, 0, 0, 170), 3.0f);
     for (size_t row = 0; row < lines.size(); ++row) {
         float x = at.x;
         for (const ProbeLegendPiece& piece : lines[row].pieces) {
@@ -97,18 +155,22 @@ std::string probeAngle(const char* name, float degrees) {
 
 }  // namespace
 
-void drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Camera& camera, const ProbeOverlayArea& area) {
+ProbeOverlayRects drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Camera& camera,
+                                   const ProbeOverlayArea& area, ProbeLegendCorner corner) {
     const ProbeProjector project{camera.viewProjection(area.width / area.height), area};
+    const ProbeStroke stroke{ImGui::GetFontSize() / 17.0f};
+    ProbeLabels labels;
     drawList->PushClipRect(ImVec2(area.x, area.y), ImVec2(area.x + area.width, area.y + area.height), true);
     if (!probe.hitSurface) {
         // The probed pixel, crossed: the ray sees the background.
         const float scaleX = area.width / static_cast<float>(probe.width), scaleY = area.height / static_cast<float>(probe.height);
         const ImVec2 at(area.x + (probe.pixelX + 0.5f) * scaleX, area.y + (probe.pixelY + 0.5f) * scaleY);
-        drawList->AddLine(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + 6, at.y + 6), kProbeNormalColor, 2.0f);
-        drawList->AddLine(ImVec2(at.x - 6, at.y + 6), ImVec2(at.x + 6, at.y - 6), kProbeNormalColor, 2.0f);
-        probeLabel(drawList, ImVec2(at.x + 9, at.y - 7), kProbeNormalColor, "no surface");
+        const float arm = 6.0f * stroke.scale;
+        drawList->AddLine(ImVec2(at.x - arm, at.y - arm), ImVec2(at.x + arm, at.y + arm), kProbeNormalColor, stroke.line());
+        drawList->AddLine(ImVec2(at.x - arm, at.y + arm), ImVec2(at.x + arm, at.y - arm), kProbeNormalColor, stroke.line());
+        probeLabel(drawList, ImVec2(at.x + arm * 1.5f, at.y - arm), kProbeNormalColor, "no surface", stroke);
         drawList->PopClipRect();
-        return;
+        return {};
     }
     // Arrow length: a fixed fraction of the view's height at the point's depth [m].
     const float viewHeight = camera.projection == Projection::Orthographic
@@ -124,40 +186,68 @@ void drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Came
     const bool severalLights = probe.lights.size() > 1;
     for (const ProbeLight& light : probe.lights) {
         const std::string index = severalLights ? std::to_string(light.lightIndex + 1) : "";
-        const bool dark = light.behindSurface || light.shadowed;
-        const ImU32 lightColor = dark ? kProbeDarkLightColor : kProbeLightColor;
+        const ImU32 lightColor = light.behindSurface || light.shadowed ? kProbeDarkLightColor : kProbeLightColor;
         ProbeLegendLine line;
         line.pieces.push_back({lightColor, "L" + index + probeAngle("θi", light.incidentDegrees) +
                                                (light.shadowed ? " (shadow)" : "") + (light.behindSurface ? " (behind)" : "")});
         line.pieces.push_back({kProbeHalfColor, "  H" + index + probeAngle("∠NH", light.halfDegrees)});
         line.pieces.push_back({kProbeMirrorColor, "  R" + index + probeAngle("∠RV", light.mirrorViewDegrees)});
-        probeArrow(drawList, project, point, light.towardsLight, length, lightColor, "L" + index);
-        probeArrow(drawList, project, point, light.halfVector, length * 0.8f, kProbeHalfColor, "H" + index);
-        probeArrow(drawList, project, point, light.mirror, length * 0.9f, kProbeMirrorColor, "R" + index);
-        if (light.transmitted && !light.transmitted->totalInternalReflection) {
-            probeArrow(drawList, project, point, light.transmitted->direction, length * 0.9f, kProbeTransmitColor, "T" + index);
+        if (light.transmitted && !light.transmitted->totalInternalReflection)
             line.pieces.push_back({kProbeTransmitColor, "  T" + index + probeAngle("θt", light.transmitted->transmittedDegrees)});
-        }
         legend.push_back(std::move(line));
     }
     if (probe.viewTransmitted) {
         const ProbeRefraction& view = *probe.viewTransmitted;
-        if (view.totalInternalReflection) {
-            probeArrow(drawList, project, point, probe.viewMirror, length * 0.9f, kProbeTransmitColor, "TIR");
-            legend.push_back({{{kProbeTransmitColor, "view ray: total internal reflection" + probeAngle("θi", view.incidentDegrees)}}});
-        } else {
-            probeArrow(drawList, project, point, view.direction, length, kProbeTransmitColor, "T(V)");
-            legend.push_back({{{kProbeTransmitColor, "T(V)" + probeAngle("θt", view.transmittedDegrees)}}});
-        }
+        legend.push_back({{{kProbeTransmitColor, view.totalInternalReflection
+                                                     ? "view ray: total internal reflection" + probeAngle("θi", view.incidentDegrees)
+                                                     : "T(V)" + probeAngle("θt", view.transmittedDegrees)}}});
     }
-    probeArrow(drawList, project, point, probe.towardsViewer, length * 0.6f, kProbeViewColor, "V");
-    probeArrow(drawList, project, point, probe.normal, length, kProbeNormalColor, "N");
-    probeLegend(drawList, ImVec2(area.x + 6.0f, area.y + 6.0f), legend);
+    // The legend first, so no arrow label lands on it.
+    const ImVec2 legendSize = probeLegendSize(legend);
+    const float margin = 6.0f * stroke.scale;
+    const ImVec2 legendAt(area.x + margin, corner == ProbeLegendCorner::TopLeft ? area.y + margin
+                                                                                 : area.y + area.height - margin - legendSize.y);
+    labels.taken.emplace_back(legendAt.x - 3, legendAt.y - 2, legendAt.x + legendSize.x + 3, legendAt.y + legendSize.y + 2);
+    // N and V first: the labels placed first keep the spot beyond their tips.
+    probeArrow(drawList, project, point, probe.normal, length, kProbeNormalColor, "N", stroke, labels);
+    probeArrow(drawList, project, point, probe.towardsViewer, length * 0.6f, kProbeViewColor, "V", stroke, labels);
+    for (const ProbeLight& light : probe.lights) {
+        const std::string index = severalLights ? std::to_string(light.lightIndex + 1) : "";
+        const ImU32 lightColor = light.behindSurface || light.shadowed ? kProbeDarkLightColor : kProbeLightColor;
+        probeArrow(drawList, project, point, light.towardsLight, length, lightColor, "L" + index, stroke, labels);
+        probeArrow(drawList, project, point, light.halfVector, length * 0.8f, kProbeHalfColor, "H" + index, stroke, labels);
+        probeArrow(drawList, project, point, light.mirror, length * 0.9f, kProbeMirrorColor, "R" + index, stroke, labels);
+        if (light.transmitted && !light.transmitted->totalInternalReflection)
+            probeArrow(drawList, project, point, light.transmitted->direction, length * 0.9f, kProbeTransmitColor, "T" + index,
+                       stroke, labels);
+    }
+    if (probe.viewTransmitted) {
+        const ProbeRefraction& view = *probe.viewTransmitted;
+        if (view.totalInternalReflection)
+            probeArrow(drawList, project, point, probe.viewMirror, length * 0.9f, kProbeTransmitColor, "TIR", stroke, labels);
+        else probeArrow(drawList, project, point, view.direction, length, kProbeTransmitColor, "T(V)", stroke, labels);
+    }
+    probeLegend(drawList, legendAt, legend);
     if (const auto at = project(point)) {
-        drawList->AddCircleFilled(*at, 4.0f, kProbeShadowColor);
-        drawList->AddCircleFilled(*at, 2.5f, kProbeNormalColor);
+        drawList->AddCircleFilled(*at, 4.5f * stroke.scale, kProbeShadowColor);
+        drawList->AddCircleFilled(*at, 3.0f * stroke.scale, kProbeNormalColor);
     }
     drawList->PopClipRect();
+    ProbeOverlayRects rects;
+    rects.legend = {legendAt.x - 3, legendAt.y - 2, legendSize.x + 6, legendSize.y + 4};
+    ImVec4 box(1e9f, 1e9f, -1e9f, -1e9f);  // the labels (the legend is the first "taken" rectangle) and the point
+    for (size_t i = 1; i < labels.taken.size(); ++i) {
+        const ImVec4& r = labels.taken[i];
+        box = ImVec4(std::min(box.x, r.x), std::min(box.y, r.y), std::max(box.z, r.z), std::max(box.w, r.w));
+    }
+    if (const auto at = project(point))
+        box = ImVec4(std::min(box.x, at->x), std::min(box.y, at->y), std::max(box.z, at->x), std::max(box.w, at->y));
+    if (box.z > box.x) {
+        box = ImVec4(std::max(box.x, area.x), std::max(box.y, area.y), std::min(box.z, area.x + area.width),
+                     std::min(box.w, area.y + area.height));
+        rects.arrows = {box.x, box.y, std::max(0.0f, box.z - box.x), std::max(0.0f, box.w - box.y)};
+    }
+    return rects;
 }
 
 }  // namespace glint

@@ -16,6 +16,20 @@ struct ProbeOverlayArea {
     float x = 0, y = 0, width = 1, height = 1;
 };
 
-void drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Camera& camera, const ProbeOverlayArea& area);
+// Where the legend of angles goes: the CLI's pictures keep it top left; the editor puts it bottom
+// left, clear of the lesson note.
+enum class ProbeLegendCorner { TopLeft, BottomLeft };
+
+// What the overlay covers, for the editor to keep windows off it: the legend (the angle readout)
+// and the box around the arrows and their labels; both empty when the ray sees no surface.
+struct ProbeOverlayRects {
+    ProbeOverlayArea legend{0, 0, 0, 0};
+    ProbeOverlayArea arrows{0, 0, 0, 0};
+};
+
+// Arrows, line widths and labels scale with the current font (thick in presentation mode); each
+// label takes a spot near its arrow's tip that overlaps no other label nor the legend.
+ProbeOverlayRects drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Camera& camera,
+                                   const ProbeOverlayArea& area, ProbeLegendCorner corner = ProbeLegendCorner::TopLeft);
 
 }  // namespace glint

@@ -13,6 +13,7 @@
 #include "colour/cie_cmf.h"
 #include "display/display_chain.h"
 #include "interchange/custom_brdf.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 namespace {
@@ -73,8 +74,7 @@ void drawSpectralWindow(EditorState& state) {
     ClassroomState& classroom = state.classroom;
     if (!classroom.showSpectralWindow) return;
     const float fontSize = ImGui::GetFontSize();
-    ImGui::SetNextWindowSize(ImVec2(fontSize * 24.0f, fontSize * 30.0f), ImGuiCond_Appearing);
-    if (ImGui::Begin("Spectral render", &classroom.showSpectralWindow)) {
+    if (beginPlacedWindow("Spectral render", &classroom.showSpectralWindow, {ImVec2(24.0f, 30.0f), ImVec2(18.0f, 20.0f)})) {
         SpectralSettings& settings = classroom.spectral;
         ImGui::PushItemWidth(fontSize * 10.0f);
         int spectrum = settings.spectrum == EmitterSpectrum::Flat ? 0 : 1;

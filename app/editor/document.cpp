@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "classroom/lesson_document.h"
 #include "cli/brdf_probe.h"
 #include "edit/crash_guard.h"
 #include "editor/mesh_loading.h"
@@ -38,6 +39,10 @@ void openSceneFile(EditorState& state, const std::string& path) {
 }
 
 bool saveSceneTo(EditorState& state, const std::string& path) {
+    if (isLessonFile(state, path)) {
+        state.errorMessage = "Lessons are course material and stay as shipped: save your version under another name.\n\n" + path;
+        return false;
+    }
     state.session.settle(false);
     if (Status saved = glint::saveScene(state.session.scene(), path); !saved) {
         state.errorMessage = "Could not save the scene.\n\n" + saved.error().format();
@@ -118,7 +123,7 @@ void openSceneGuarded(EditorState& state, const std::string& path) {
 void guardUnsavedChanges(EditorState& state, const std::string& what, std::function<void(EditorState&)> action) {
     state.actionAfterPrompt = std::move(action);
     state.actionAfterPromptName = what;
-    if (state.session.dirty()) state.unsavedPromptRequested = true;
+    if (hasUnsavedWork(state)) state.unsavedPromptRequested = true;  // camera moves in a lesson do not count
     else runActionAfterPrompt(state);
 }
 
@@ -162,14 +167,14 @@ double autosave(EditorState& state, double nowSeconds, double autosaveIntervalSe
     if (session.settledRevision() == state.autosavedRevision) return 1e9;
     // Something changed since the last write. The crash copy follows at once (cheap: no disk).
     if (state.crashCopyRevision != session.settledRevision()) {
-        publishCrashCopy(session.dirty() ? recoveryDocument(session.scene(), session.path()) : std::string());
+        publishCrashCopy(hasUnsavedWork(state) ? recoveryDocument(session.scene(), session.path()) : std::string());
         state.crashCopyRevision = session.settledRevision();
     }
     if (!state.recoveryOffer.empty()) return 1e9;  // never overwrite work the user has not decided on
     const double wait = state.lastAutosaveSeconds + autosaveIntervalSeconds - nowSeconds;
     if (wait > 0) return wait;
     const std::string path = recoveryFilePath();
-    if (session.dirty()) {
+    if (hasUnsavedWork(state)) {
         Status written = ensureParentDirectory(path);
         if (written) written = writeFileAtomically(path, recoveryDocument(session.scene(), session.path()));
         if (!written) state.statusMessage = "Autosave failed: " + written.error().format();

@@ -19,9 +19,11 @@
 #include <filesystem>
 
 #include "classroom/classroom_editor.h"
+#include "classroom/lesson_document.h"
 #include "classroom/presentation.h"
 #include "classroom/compare_view.h"
 #include "cli/headless.h"
+#include "edit/recovery.h"
 #include "editor/camera_actions.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
@@ -32,6 +34,7 @@
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
 #include "editor/viewport_refresh.h"
+#include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
 #include "gl/renderer.h"
 
@@ -107,7 +110,8 @@ void saveScreenshot(EditorState& state, Renderer& renderer) {
 std::string windowTitle(const EditorState& state) {
     const std::string& path = state.session.path();
     const std::string name = path.empty() ? "untitled" : std::filesystem::path(path).filename().string();
-    return "Glint — " + name + (state.session.dirty() ? " ●" : "");
+    const std::string lesson = lessonDocumentName(state);
+    return "Glint — " + (lesson.empty() ? name : lesson) + (hasUnsavedWork(state) ? " ●" : "");
 }
 
 double autosaveIntervalSeconds() {
@@ -122,7 +126,7 @@ double autosaveIntervalSeconds() {
 
 // --- loop -----------------------------------------------------------------------------------
 
-int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath) {
+int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath, const std::string& presentLessonList) {
     auto created = Renderer::create(*platform, defaultShaderSources());
     if (!created) {
         std::fprintf(stderr, "glint: %s\n", created.error().format().c_str());
@@ -141,6 +145,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     state.rendererDescription = renderer.description();
     state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     if (!openPath.empty()) openDroppedFile(state, openPath);  // `glint FILE`: as File ▸ Open
+    if (!presentLessonList.empty()) startPresentation(state, presentLessonList);  // `glint present LIST`: lesson 1
     startRecovery(state);
     // The first autosave comes one interval after start, not at the first edit.
     state.lastAutosaveSeconds = glfwGetTime();
@@ -150,7 +155,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write no imgui.ini
+    // Floating windows' places are remembered beside settings.json (editor/window_placement.h).
+    static const std::string layoutFile = windowLayoutFilePath();
+    ImGui::GetIO().IniFilename = ensureParentDirectory(layoutFile) ? layoutFile.c_str() : nullptr;
     ImGui::StyleColorsDark();
     const ImGuiStyle baseStyle = ImGui::GetStyle();
     float appliedScale = 0.0f;
@@ -187,10 +194,13 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
         gDroppedPaths.clear();
-        if (effectiveUiScale(state.settings) != appliedScale || state.settings.presentationMode != appliedPresentation) {
-            appliedScale = effectiveUiScale(state.settings);
+        keepPresentationColumns(state);  // collapsed on entering presentation mode, one open at a time
+        const float displayHeight = ImGui::GetIO().DisplaySize.y;
+        if (effectiveUiScale(state.settings, displayHeight) != appliedScale || state.settings.presentationMode != appliedPresentation) {
+            appliedScale = effectiveUiScale(state.settings, displayHeight);
             appliedPresentation = state.settings.presentationMode;
-            applyEditorLook(state.settings, baseStyle, presentationFont, kFontPixels, kPresentationFontPixels);
+            applyEditorLook(state.settings, displayHeight, baseStyle, presentationFont, kFontPixels, kPresentationFontPixels);
+            fitWindowToPresentation(window, appliedPresentation);  // the whole screen while presenting
         }
 
         ImGui_ImplOpenGL3_NewFrame();
@@ -203,17 +213,27 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         const float columnHeight = windowSize.y - menuHeight - statusHeight;
         drawScenePanel(state, menuHeight, columnHeight);
         drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
+        drawCollapsedColumnStrips(state, menuHeight, columnHeight, windowSize.x);  // presentation mode
+        ViewportRect viewport;
+        viewport.x = state.showLeftPanel ? leftColumnScreenWidth(state) : collapsedColumnStripWidth(state.settings);
+        viewport.y = menuHeight;
+        viewport.width = std::max(1.0f, windowSize.x - viewport.x -
+                                            (state.showRightPanel ? rightColumnScreenWidth(state)
+                                                                  : collapsedColumnStripWidth(state.settings)));
+        viewport.height = std::max(1.0f, columnHeight);
+        // Floating windows open where they cover nothing reserved (the lesson note, the probe, the plot);
+        // while presenting, over the viewport only, so an open side column never hides one.
+        const ScreenRect viewportRect{viewport.x, viewport.y, viewport.width, viewport.height};
+        beginWindowLayoutFrame(state.settings.presentationMode ? viewportRect : ScreenRect{0.0f, menuHeight, windowSize.x, columnHeight},
+                               viewportRect,
+                               windowLayoutKey(appliedScale, state.settings.presentationMode, state.showLeftPanel,
+                                               state.showRightPanel, windowSize.x, windowSize.y));
         drawDialogs(state);
         drawMeshLoadDialog(state);
         drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
-        ViewportRect viewport;
-        viewport.x = state.showLeftPanel ? leftColumnScreenWidth(state) : 0.0f;
-        viewport.y = menuHeight;
-        viewport.width = std::max(1.0f, windowSize.x - viewport.x - (state.showRightPanel ? rightColumnScreenWidth(state) : 0.0f));
-        viewport.height = std::max(1.0f, columnHeight);
-        drawClassroom(state, viewport.x, viewport.y);  // lessons, presentation key, colour windows
+        drawClassroom(state, viewport.x, viewport.y, viewport.width, viewport.height);  // lessons, presentation key, colour windows
         const bool handleDrag = handleLightHandles(state, viewport);
         // Classroom surface probe: Shift+click sets its point (so no camera drag starts), then its arrows and window.
         const bool probeClick = !handleDrag && handleProbeClick(viewport);
@@ -222,6 +242,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
         const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);
+        endWindowLayoutFrame();  // GLINT_LOG_LAYOUT: the rectangles on screen, for the GUI tests
         ImGui::Render();
         const auto uiBuilt = std::chrono::steady_clock::now();
 

@@ -13,6 +13,9 @@ namespace glint {
 // `openPath`, when not empty, is then opened as File ▸ Open and a drop open it (document.h
 // openDroppedFile: a scene, a material, .brdf, .mtl, .gltf, .glb, .binary or a mesh), a failure
 // shown in the editor's error dialog.
-int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath = {});
+// `presentLessonList`, when not empty, starts in presentation mode on that list's first lesson
+// (`glint present LIST.json`).
+int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath = {},
+              const std::string& presentLessonList = {});
 
 }  // namespace glint

@@ -12,6 +12,7 @@
 
 #include "classroom/probe_overlay.h"
 #include "classroom/probe_text.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 namespace {
@@ -102,15 +103,11 @@ void drawProbeLight(const ProbeLight& light) {
     ImGui::PopID();
 }
 
-void drawProbeWindow(ProbeTool& probe, const ProbeResult& result, const ViewportRect& viewport) {
-    // First shown along the bottom of the viewport, below where objects usually sit; movable.
-    const float font = ImGui::GetFontSize();
-    const ImVec2 size(std::min(viewport.width - 20.0f, font * 30.0f), std::min(viewport.height * 0.4f, font * 16.0f));
-    ImGui::SetNextWindowPos(ImVec2(viewport.x + viewport.width - size.x - 10.0f, viewport.y + viewport.height - size.y - 10.0f),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
+void drawProbeWindow(ProbeTool& probe, const ProbeResult& result) {
+    // The readout is reserved: other windows open beside it (editor/window_placement.h).
     bool open = true;
-    if (ImGui::Begin("Surface probe", &open)) {
+    if (beginPlacedWindow("Surface probe", &open, {ImVec2(30.0f, 16.0f), ImVec2(16.0f, 8.0f), ImVec2(0.45f, 0.4f)}, 0,
+                          /*reserved=*/true)) {
         ImGui::Text("Pixel (%d, %d) of %d×%d", result.pixelX, result.pixelY, result.width, result.height);
         if (!result.hitSurface) {
             ImGui::TextUnformatted("No surface: the ray sees the background.");
@@ -161,6 +158,12 @@ void toggleProbeTool() {
     else probe.armed = true;
 }
 
+void showProbeAt(glm::vec2 fractionOfViewport) {
+    gProbeTool.point = glm::clamp(fractionOfViewport, glm::vec2(0.0f), glm::vec2(1.0f));
+    gProbeTool.active = true;
+    gProbeTool.armed = false;
+}
+
 bool probeToolOn() { return gProbeTool.active || gProbeTool.armed; }
 
 std::optional<float> probedIncidenceDegrees() {
@@ -187,9 +190,19 @@ void drawProbe(const EditorState& state, const ViewportRect& viewport) {
     ProbeTool& probe = gProbeTool;
     if (!probe.active) return;
     const ProbeResult& result = currentProbe(probe, state, viewport);
-    drawProbeOverlay(ImGui::GetBackgroundDrawList(), result, state.session.scene().camera,
-                     {viewport.x, viewport.y, viewport.width, viewport.height});
-    drawProbeWindow(probe, result, viewport);
+    // The legend of angles bottom left, unless the lesson note took that corner (then top left).
+    const float lines = ImGui::GetTextLineHeight() * static_cast<float>(result.lights.size() + 2);
+    const ScreenRect legendBand{viewport.x, viewport.y + viewport.height - lines, viewport.width * 0.6f, lines};
+    const ProbeLegendCorner corner =
+        reservedAreaOf(legendBand, "lesson note") > 1.0f ? ProbeLegendCorner::TopLeft : ProbeLegendCorner::BottomLeft;
+    const ProbeOverlayRects covered = drawProbeOverlay(ImGui::GetBackgroundDrawList(), result, state.session.scene().camera,
+                                                       {viewport.x, viewport.y, viewport.width, viewport.height}, corner);
+    const auto reserve = [](const char* what, const ProbeOverlayArea& r, bool hard) {
+        if (r.width > 0.0f && r.height > 0.0f) reserveScreenRect(what, {r.x, r.y, r.width, r.height}, hard);
+    };
+    reserve("probe angles", covered.legend, true);
+    reserve("probe arrows", covered.arrows, false);  // windows avoid them, but may cover them rather than shrink
+    drawProbeWindow(probe, result);
 }
 
 }  // namespace glint

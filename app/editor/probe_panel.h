@@ -13,6 +13,8 @@ namespace glint {
 
 // The I key and the View menu: off when on; else armed, waiting for a click on the viewport.
 void toggleProbeTool();
+// Shows the probe at a point of the viewport given as fractions of its size (0..1, y down): a lesson's point.
+void showProbeAt(glm::vec2 fractionOfViewport);
 // Whether the probe is on (armed or showing a point), for the View menu's check mark.
 bool probeToolOn();
 // A Shift+click (or an armed click) on the viewport sets the point. Returns true when it took

@@ -39,6 +39,7 @@ LessonList readLessonList(const JsonDocument& document) {
         if (scene.empty()) entry.fail("scene", "a lesson needs a scene file");
         lesson.scenePath = (folder / scene).lexically_normal().string();
         lesson.note = entry.string("note", "");
+        if (entry.has("probe")) lesson.probePoint = entry.vec2("probe", glm::vec2(0.5f), Bounds::between(0.0, 1.0));
         entry.rejectUnknownKeys();
         list.lessons.push_back(std::move(lesson));
     }

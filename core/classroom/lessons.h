@@ -3,8 +3,11 @@
 // list is found, and stepping through it. It loads the list only; scenes load through scene_json.h.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "util/diagnostic.h"
 
@@ -14,6 +17,9 @@ struct Lesson {
     std::string title;      // "Lambert: f_r = ρ/π"
     std::string scenePath;  // absolute or relative to the working directory, resolved from the list's folder
     std::string note;       // one or two sentences the overlay shows
+    // Where the surface probe starts: a point of the view as fractions of its width and height
+    // (0..1, y down; "probe": [x, y]), or none.
+    std::optional<glm::vec2> probePoint;
 };
 
 struct LessonList {

@@ -64,6 +64,7 @@ void EditSession::markSaved(std::string path) {
     settle(false);
     path_ = std::move(path);
     savedStep_ = currentStep();
+    ++documentGeneration_;
     ++settledRevision_;  // dirty changed: autosave drops the recovery file, the crash copy empties
 }
 
@@ -76,6 +77,7 @@ void EditSession::replace(Scene scene, std::string path, bool dirty) {
     baseStep_ = nextStepId_++;
     // Recovered work counts as unsaved: its saved state is one no step can reach.
     savedStep_ = dirty ? nextStepId_++ : baseStep_;
+    ++documentGeneration_;
     ++revision_;
     ++settledRevision_;
 }

@@ -52,6 +52,9 @@ public:
     // Grows each time a step is recorded, undone or redone, and on save and replace (not during
     // a gesture): autosave and the crash copy follow it.
     std::uint64_t settledRevision() const { return settledRevision_; }
+    // Grows on replace and save: which document the scene is (a lesson open read-only stays the
+    // lesson until a new scene, another file or Save as takes its place).
+    std::uint64_t documentGeneration() const { return documentGeneration_; }
 
 private:
     struct Step {
@@ -74,6 +77,7 @@ private:
     std::uint64_t savedStep_ = 0;  // state id at the last save or open
     std::uint64_t revision_ = 0;
     std::uint64_t settledRevision_ = 0;
+    std::uint64_t documentGeneration_ = 0;
 };
 
 }  // namespace glint

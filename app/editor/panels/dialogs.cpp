@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "classroom/lesson_document.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/interchange_export.h"
@@ -16,6 +17,7 @@
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
 #include "editor/texture_panel.h"
+#include "editor/window_placement.h"
 #include "editor/shortcuts.h"
 
 namespace glint {
@@ -32,11 +34,18 @@ void drawUnsavedPrompt(EditorState& state) {
     }
     centreNextWindow();
     if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    // No default button: Enter answers nothing here, so a key meant for something else cannot
+    // save over a file. A lesson (no path: read-only course material) offers Save as instead.
     const std::string& path = state.session.path();
-    ImGui::Text("Save changes to %s before %s?", path.empty() ? "the untitled scene" : path.c_str(),
-                state.actionAfterPromptName.c_str());
+    const std::string lesson = lessonDocumentName(state);
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    if (!lesson.empty()) ImGui::Text("Keep your edits to %s before %s? The lesson itself is never changed.", lesson.c_str(),
+                                     state.actionAfterPromptName.c_str());
+    else ImGui::Text("Save changes to %s before %s?", path.empty() ? "the untitled scene" : path.c_str(),
+                     state.actionAfterPromptName.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::Spacing();
-    if (ImGui::Button("Save (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) {
+    if (ImGui::Button(path.empty() ? "Save as… (S)" : "Save (S)") || takeKeyPress(GLFW_KEY_S)) {
         ImGui::CloseCurrentPopup();
         if (path.empty()) {
             state.continueAfterSaveAs = true;
@@ -137,16 +146,17 @@ void handleFileBrowser(EditorState& state) {
 
 void drawHelpWindow(EditorState& state) {
     if (!state.showHelp) return;
-    centreNextWindow();
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 30.0f, 0), ImGuiCond_Appearing);
-    if (ImGui::Begin("Keyboard and mouse (F1)", &state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+    // Rows wrap inside the window, which scales with the UI and never leaves the screen.
+    if (beginPlacedWindow("Keyboard and mouse (F1)", &state.showHelp, {ImVec2(40.0f, 28.0f), ImVec2(20.0f, 10.0f), ImVec2(0.8f, 0.9f)})) {
         if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthStretch, 0.4f);
+            ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch, 0.6f);
             for (const Shortcut& shortcut : allShortcuts()) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(shortcut.keys);
+                ImGui::TextWrapped("%s", shortcut.keys);
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(shortcut.action);
+                ImGui::TextWrapped("%s", shortcut.action);
             }
             ImGui::EndTable();
         }

@@ -11,6 +11,7 @@
 #include "classroom/plot_materials.h"
 #include "editor/editor_state.h"
 #include "editor/probe_panel.h"
+#include "editor/window_placement.h"
 
 namespace glint {
 namespace {
@@ -96,8 +97,9 @@ bool gPlotsFollowProbe = true;       // θ_i from the surface probe's point when
 void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
     PlotsWindowState& plots = state.plots;
     if (!plots.open) return;
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 44.0f, ImGui::GetFontSize() * 34.0f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("BRDF and Fresnel plots", &plots.open)) {
+    // The plot is reserved: other windows open beside it (editor/window_placement.h).
+    if (!beginPlacedWindow("BRDF and Fresnel plots", &plots.open, {ImVec2(44.0f, 34.0f), ImVec2(20.0f, 16.0f)}, 0,
+                           /*reserved=*/true)) {
         ImGui::End();
         return;
     }
@@ -131,6 +133,10 @@ void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
 
     const ImVec2 available = ImGui::GetContentRegionAvail();
     const ImVec2 cell(std::max(available.x * 0.5f - 4.0f, 60.0f), std::max(available.y * 0.5f - 4.0f, 60.0f));
+    // Axis labels keep apart in a small window (a large UI font on a small screen): the plots'
+    // text shrinks until a cell is about 11 lines tall and 22 wide, to no less than 55 %.
+    const float font = ImGui::GetFontSize();
+    ImGui::SetWindowFontScale(std::clamp(std::min(cell.y / (11.0f * font), cell.x / (22.0f * font)), 0.55f, 1.0f));
     ImDrawList* drawList = ImGui::GetWindowDrawList();
     auto nextCell = [&](const char* id, bool sameLine) {
         if (sameLine) ImGui::SameLine();
@@ -161,6 +167,7 @@ void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
                           cell.x - 12.0f);  // wrapped to the cell
         drawList->PopClipRect();
     }
+    ImGui::SetWindowFontScale(1.0f);
     ImGui::End();
 }
 

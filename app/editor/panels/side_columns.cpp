@@ -17,19 +17,20 @@ constexpr ImGuiWindowFlags kColumnFlags = ImGuiWindowFlags_NoMove | ImGuiWindowF
 void pushPanelItemWidth() { ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f); }
 
 float columnScreenWidth(float widthAtScaleOne, const EditorState& state) {
-    return std::min(widthAtScaleOne * effectiveUiScale(state.settings), 0.4f * ImGui::GetIO().DisplaySize.x);
+    return std::min(widthAtScaleOne * effectiveUiScale(state.settings, ImGui::GetIO().DisplaySize.y), columnWidthLimit(state.settings));
 }
 
-// How far the user may drag a column's inner edge [px]: 160 up to 40 % of the window.
-void setColumnSizeConstraints() {
-    ImGui::SetNextWindowSizeConstraints(ImVec2(160.0f, 0.0f), ImVec2(std::max(160.0f, 0.4f * ImGui::GetIO().DisplaySize.x), 1e6f));
+// How far the user may drag a column's inner edge [px]: 160 up to 40 % of the window (26 % while presenting).
+void setColumnSizeConstraints(const EditorState& state) {
+    const float limit = columnWidthLimit(state.settings);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(160.0f, limit), 0.0f), ImVec2(std::max(std::min(160.0f, limit), limit), 1e6f));
 }
 
 // After the user dragged the column's inner edge: its new width back in scale-1 units. Untouched
 // otherwise, so the 40 % limit of a small window never shrinks the stored width.
 void keepDraggedWidth(float& widthAtScaleOne, float shownWidth, const EditorState& state) {
     const float now = ImGui::GetWindowWidth();
-    if (std::abs(now - shownWidth) > 0.5f) widthAtScaleOne = now / effectiveUiScale(state.settings);
+    if (std::abs(now - shownWidth) > 0.5f) widthAtScaleOne = now / effectiveUiScale(state.settings, ImGui::GetIO().DisplaySize.y);
 }
 
 }  // namespace
@@ -42,7 +43,7 @@ void drawScenePanel(EditorState& state, float top, float height) {
     ImGui::SetNextWindowPos(ImVec2(0, top), ImGuiCond_Always);
     const float shownWidth = leftColumnScreenWidth(state);
     ImGui::SetNextWindowSize(ImVec2(shownWidth, height), ImGuiCond_Always);
-    setColumnSizeConstraints();
+    setColumnSizeConstraints(state);
     if (ImGui::Begin("Scene", &state.showLeftPanel, kColumnFlags)) {
         keepDraggedWidth(state.leftPanelWidth, shownWidth, state);
         pushPanelItemWidth();
@@ -59,7 +60,7 @@ void drawMaterialColumn(EditorState& state, float top, float height, float windo
     const float shownWidth = rightColumnScreenWidth(state);
     ImGui::SetNextWindowPos(ImVec2(windowWidth - shownWidth, top), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(shownWidth, height), ImGuiCond_Always);
-    setColumnSizeConstraints();
+    setColumnSizeConstraints(state);
     if (ImGui::Begin("Material", &state.showRightPanel, kColumnFlags)) {
         keepDraggedWidth(state.rightPanelWidth, shownWidth, state);
         pushPanelItemWidth();

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "classroom/lesson_document.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
@@ -17,7 +18,9 @@ float drawStatusBar(EditorState& state, float top, float width) {
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 2));
     ImGui::Begin("##status", nullptr, flags);
-    ImGui::Text("%s%s", state.session.dirty() ? "● " : "", state.session.path().empty() ? "untitled" : state.session.path().c_str());
+    const std::string lesson = lessonDocumentName(state);
+    const std::string& path = state.session.path();
+    ImGui::Text("%s%s", hasUnsavedWork(state) ? "● " : "", !lesson.empty() ? lesson.c_str() : path.empty() ? "untitled" : path.c_str());
     ImGui::SameLine(0, 24);
     // While dragging: what the frame left out (editor/viewport_refresh.h).
     std::string reduced = state.previewScale > 1 ? "preview 1/" + std::to_string(state.previewScale) : "";
