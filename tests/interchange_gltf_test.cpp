@@ -51,7 +51,7 @@ TEST(Gltf, DielectricMapsToGgxSmithSchlickCookTorrance) {
     EXPECT_EQ(paramScalar(material, "distribution"), 1.0f);
     EXPECT_EQ(paramScalar(material, "geometry"), 1.0f);
     EXPECT_EQ(paramScalar(material, "fresnel"), 0.0f);
-    EXPECT_TRUE(file.warnings.empty());
+    EXPECT_TRUE(allWarnings(file).empty());
 }
 
 TEST(Gltf, MetalAndSpecularGiveTheRightNormalReflectance) {
@@ -103,10 +103,10 @@ TEST(Gltf, ClearcoatEmissionTexturesAndAlphaAreReportedNotDropped) {
             {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}},
              {"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}},
              {"VENDOR_sparkle", json::object()}}}}}}}.dump(2));
-    EXPECT_TRUE(hasWarning(file.warnings, "clear-coat"));
-    EXPECT_TRUE(hasWarning(file.warnings, "emission"));
-    EXPECT_TRUE(hasWarning(file.warnings, "opaque"));
-    EXPECT_TRUE(hasWarning(file.warnings, "VENDOR_sparkle"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "clear-coat"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "emission"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "opaque"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "VENDOR_sparkle"));
     ASSERT_EQ(file.materials[0].textures.size(), 1u);
     EXPECT_EQ(file.materials[0].textures[0].path, "albedo.png");
     EXPECT_EQ(file.materials[0].textures[0].slot, "baseColorTexture");

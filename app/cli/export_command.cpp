@@ -62,7 +62,7 @@ int runExportCommand(const std::vector<std::string>& arguments) {
     if (!isExportPath(output)) return fail("the output must end in .mtl or .gltf (got '" + output + "')");
     auto file = readInput(input);
     if (!file) return fail(file.error().format());
-    for (const Diagnostic& warning : file->warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
+    for (const Diagnostic& warning : allWarnings(*file)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
     if (file->materials.empty()) return fail(input + ": no material to export");
     auto written = exportMaterials(file->materials, file->lights, output);
     if (!written) return fail(written.error().message);

@@ -24,6 +24,10 @@ struct Mesh {
 };
 
 // What the importer found in a mesh file (geometry/mesh_import.h); shown in the editor.
+// Which of the file's axes points up: Y (glTF, OBJ from most tools) or Z (CAD, 3ds Max, Blender
+// files exported without the axis conversion); a Z-up mesh is turned a quarter about x.
+enum class MeshUpAxis { Y, Z };
+
 struct MeshStatistics {
     size_t vertexCount = 0;
     size_t triangleCount = 0;
@@ -31,6 +35,7 @@ struct MeshStatistics {
     bool hadNormals = false;  // false: normals were generated (always for STL, whose facet normals are not kept)
     bool hadUvs = false;      // false: tangents are a fallback, not from UVs
     size_t degenerateTrianglesDropped = 0;  // zero-area faces removed
+    size_t pointsAndLinesDropped = 0;       // faces of one or two corners (OBJ `p` and `l`, PLY edges) left out
     size_t meshesMerged = 0;                // meshes of the file's node tree merged into one
     double loadSeconds = 0.0;               // wall time of the whole import
 };

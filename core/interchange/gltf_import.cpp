@@ -91,8 +91,9 @@ void readTexture(const Context& context, ObjectReader& reader, const std::string
 float dielectricIorForF0(float f0) { return (1.0f + std::sqrt(f0)) / (1.0f - std::sqrt(f0)); }
 float conductorExtinctionForF0(float f0) { return 2.0f * std::sqrt(f0 / (1.0f - f0)); }
 
-ImportedMaterial readMaterial(const Context& context, ObjectReader& reader, const nlohmann::json& root, int index) {
+ImportedMaterial readMaterial(const Context& fileContext, ObjectReader& reader, const nlohmann::json& root, int index) {
     ImportedMaterial imported;
+    const Context context{fileContext.document, imported.warnings};  // this material's warnings stay with it
     const std::string name = reader.string("name", "gltf material " + std::to_string(index));
     glm::vec4 baseColor(1.0f);
     float metallic = 1.0f, roughness = 1.0f;
@@ -400,6 +401,11 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
                 result.materials.push_back(readMaterial(context, material, document->root(), index++));
         }
         readLights(context, root, result);
+        const nlohmann::json& meshes = document->root().contains("meshes") ? document->root()["meshes"] : nlohmann::json();
+        for (size_t i = 0; meshes.is_array() && i < meshes.size(); ++i)
+            result.meshNames.push_back(meshes[i].is_object() && meshes[i].contains("name") && meshes[i]["name"].is_string()
+                                           ? meshes[i]["name"].get<std::string>()
+                                           : "mesh " + std::to_string(i));
         if (result.materials.empty() && result.lights.empty())
             root.failHere("the file has no material and no light (KHR_lights_punctual) for Glint to open");
     } catch (const JsonReadError& error) {

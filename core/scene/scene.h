@@ -81,6 +81,7 @@ struct MeshShape {
     glm::vec3 center{0.0f};
     float scale = 1.0f;  // radius of the mesh's bounding sphere [m]
     float smoothingAngleDegrees = 60.0f;  // crease angle for normals the file lacks (mesh_import.h)
+    MeshUpAxis upAxis = MeshUpAxis::Y;    // the file's up axis ("up": "y" | "z")
     std::shared_ptr<const Mesh> mesh;  // shared between copies of the scene (undo history)
     MeshStatistics statistics;
 };

@@ -25,9 +25,12 @@ MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     mesh.scale = static_cast<float>(reader.number("scale", mesh.scale, Bounds::positive()));
     mesh.smoothingAngleDegrees = static_cast<float>(
         reader.number("smoothing_angle_degrees", mesh.smoothingAngleDegrees, Bounds::between(0.0, 180.0)));
+    const std::string up = reader.string("up", "y");
+    if (up != "y" && up != "z") reader.fail("up", "expected \"y\" or \"z\" (the file's axis that points up)");
+    mesh.upAxis = up == "z" ? MeshUpAxis::Z : MeshUpAxis::Y;
     const std::filesystem::path written(mesh.path);
     mesh.resolvedPath = (written.is_absolute() ? written : folderOf(sceneFile) / written).lexically_normal().string();
-    auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees});
+    auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees, mesh.upAxis});
     if (!imported) reader.fail("path", imported.error().format());
     mesh.mesh = imported->mesh;
     mesh.statistics = imported->statistics;
@@ -85,8 +88,10 @@ json shapeToJson(const Shape& shape) {
         return {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
                 {"segments", torus->segments}, {"rings", torus->rings}};
     const auto& mesh = std::get<MeshShape>(shape);
-    return {{"path", mesh.path}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
-            {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
+    json out = {{"path", mesh.path}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
+                {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
+    if (mesh.upAxis == MeshUpAxis::Z) out["up"] = "z";
+    return out;
 }
 
 void relocateMeshPaths(const Scene& scene, const std::string& sceneFile, json& out) {

@@ -17,7 +17,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     auto brdf = glint::makeCustomBrdf(std::move(*file));
     const std::vector<float> values = glint::defaultValues(brdf->table);
-    auto reread = glint::parseBparam(glint::formatBparam(*brdf, values), "fuzz.bparam", *brdf, values);
-    if (!reread || *reread != values) __builtin_trap();  // the round trip keeps every value
+    std::vector<glint::Diagnostic> warnings;
+    auto reread = glint::parseBparam(glint::formatBparam(*brdf, values), "fuzz.bparam", *brdf, values, warnings);
+    if (!reread || *reread != values || !warnings.empty()) __builtin_trap();  // the round trip keeps every value
+    glint::parseBparamFile(text, "fuzz.bparam");  // the same bytes as a .bparam file
     return 0;
 }
