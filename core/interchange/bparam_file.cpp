@@ -135,7 +135,7 @@ Result<std::string> findBparamBrdf(const BparamFile& file, const std::string& bp
     namespace fs = std::filesystem;
     if (file.brdfPath.empty())
         return makeError("the file does not name its .brdf (BRDF Explorer writes a first line 'bparam NAME.brdf'); "
-                         "open the .brdf first, then this file",
+                         "open the .brdf file first, then this file",
                          {bparamPath, 1, 1});
     const fs::path written(file.brdfPath), folder = fs::path(bparamPath).parent_path();
     std::error_code code;
