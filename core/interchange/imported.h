@@ -12,8 +12,9 @@
 
 namespace glint {
 
-// A texture the source file names. Glint does not render material textures yet, so the path is
-// kept for the user and written back on export, but the material uses its constant values.
+// A texture the source file names, kept for the user and written back on export. Those Glint's
+// material textures carry (a glTF's base colour on a dielectric, its normal map) are also in the
+// material's `textures`; for the rest the material uses its constant values.
 struct TextureReference {
     std::string slot;     // the source's name for it: "map_Kd", "baseColorTexture", ...
     std::string path;     // as written in the file (relative to it)

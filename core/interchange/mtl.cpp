@@ -234,7 +234,7 @@ ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file) {
     auto warn = [&](const std::string& message) { imported.warnings.push_back(makeError("warning: " + message, where)); };
     imported.textures = block.textures;
     if (!block.textures.empty())
-        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint has no material textures yet)");
+        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint renders a glTF's base colour and normal textures only)");
     const bool reflective = block.illum == 3 || block.illum == 5 || block.illum == 8;
     const bool refractive = block.illum == 4 || block.illum == 6 || block.illum == 7 || block.illum == 9;
     if (block.dissolve < 1.0f && !refractive)
