@@ -50,6 +50,9 @@ Mesh makePlane(glm::vec3 center, glm::vec3 normal, glm::vec2 size);
 // An axis-aligned cube of edge `size`: 24 vertices (four per face, with the face's normal), 12
 // triangles.
 Mesh makeCube(glm::vec3 center, float size);
+// Turns the mesh about `pivot` by Euler angles [degrees]: about x, then y, then z (positions,
+// normals and tangents alike; a rotation keeps them unit length).
+void rotateMesh(Mesh& mesh, glm::vec3 pivot, glm::vec3 degrees);
 
 // A torus around +y (segments ≥ 3 around the axis, rings ≥ 3 around the tube) with analytic
 // normals; u runs around the axis, v around the tube.
