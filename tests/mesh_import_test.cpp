@@ -266,6 +266,27 @@ TEST(MeshImport, CutShortAndOutOfRangeFilesAreRefusedWhereTheyBreak) {
     EXPECT_EQ(lines->statistics.pointsAndLinesDropped, 2u);
 }
 
+// PLY triangle strips (assimp 5.2.5 would read each as one polygon) become their triangles, every
+// other one flipped so that all face the same way; -1 separates strips; the binary file too.
+TEST(MeshImport, PlyTriangleStripsBecomeTrianglesWoundAlike) {
+    const std::string files = std::string(GLINT_TEST_DATA_DIR) + "/files/ply/";
+    auto ascii = importMesh(files + "tristrips_ascii.ply");
+    ASSERT_TRUE(ascii.ok()) << ascii.error().format();
+    EXPECT_EQ(ascii->statistics.triangleCount, 8u);
+    for (const Vertex& vertex : ascii->mesh->vertices) EXPECT_NEAR(vertex.normal.z, 1.0f, 1e-5f);
+    auto binary = importMesh(files + "tristrips_binary.ply");
+    ASSERT_TRUE(binary.ok()) << binary.error().format();
+    EXPECT_EQ(binary->statistics.triangleCount, 4u);
+    for (const Vertex& vertex : binary->mesh->vertices) EXPECT_NEAR(vertex.normal.z, 1.0f, 1e-5f);
+    // A strip cut short is refused, naming the element.
+    auto bytes = readTextFile(files + "tristrips_binary.ply");
+    ASSERT_TRUE(bytes.ok());
+    auto cut = importMeshFromMemory(bytes->data(), bytes->size() - 6, "ply", "cut.ply");
+    ASSERT_FALSE(cut.ok());
+    EXPECT_NE(cut.error().message.find("element 'tristrips' record 0 is malformed or cut short"), std::string::npos)
+        << cut.error().format();
+}
+
 // A Z-up file (CAD, 3ds Max) turned upright: its +z becomes +y.
 TEST(MeshImport, ZUpMeshesStandUp) {
     test::writeText(meshPath("tall_z.obj"), "v 0 0 0\nv 0.1 0 0\nv 0 0 4\nf 1 2 3\n");

@@ -40,11 +40,6 @@ std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, con
         position = end + 1;
         if (text == "end_header") return std::nullopt;
         const std::string_view word = text.substr(0, text.find(' '));
-        if (word == "element" && trimmed(text.substr(7)).substr(0, 10) == "tristrips ")
-            return makeError("cannot load mesh: the PLY file holds triangle strips ('element tristrips'), which Glint's "
-                             "reader (assimp 5.2.5) would read as a single polygon; convert them to faces first "
-                             "(e.g. in MeshLab: File > Export Mesh As, PLY)",
-                             {name, line, 1});
         if (std::find(std::begin(keywords), std::end(keywords), word) == std::end(keywords))
             return makeError("cannot load mesh: malformed PLY header: '" + std::string(text.substr(0, 40)) +
                                  "' is not a PLY header line (format, comment, element, property, end_header)",

@@ -1,6 +1,6 @@
 // Checks on mesh files before assimp reads them, for what assimp 5.2.5 (Debian 12) gets wrong
-// silently or never returns from: PLY headers that hang its reader, PLY triangle strips it reads as
-// one polygon, OBJ files cut short (a face of fewer than three corners, a corner cut in half,
+// silently or never returns from (PLY triangle strips, which it reads as one polygon, are rewritten
+// as faces instead: ply_strips.h): PLY headers that hang its reader, OBJ files cut short (a face of fewer than three corners, a corner cut in half,
 // indices past the vertices), glTF indices past a primitive's vertices (assimp drops the
 // triangle). Each finding is a Diagnostic naming the file and, where the format has them, the
 // line (OBJ, PLY header) or the JSON key (glTF). Nothing here builds a mesh.

@@ -26,6 +26,7 @@
 
 #include "geometry/mesh_builder.h"
 #include "geometry/mesh_file_checks.h"
+#include "geometry/ply_strips.h"
 #include "util/file_io.h"
 #include "util/text.h"
 
@@ -322,6 +323,18 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
     }
 }
 
+// A PLY of triangle strips, rewritten with faces (ply_strips.h), read from memory.
+Result<ImportedMesh> importStrips(std::string_view bytes, const std::string& name, const MeshImportOptions& options,
+                                  const MeshImportProgress& progress) {
+    auto faces = plyStripsToFaces(bytes, name);
+    if (!faces) return faces.error();
+    return importWith(
+        [&](Assimp::Importer& importer, unsigned flags) {
+            return importer.ReadFileFromMemory(faces->data(), faces->size(), flags, "ply");
+        },
+        name, "ply", options, progress);
+}
+
 }  // namespace
 
 Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions& options,
@@ -340,6 +353,11 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
         return makeError("cannot load mesh: unknown extension '." + lowerExtension(path) +
                              "' (Glint reads .obj, .ply, .stl, .gltf, .glb, .fbx)",
                          {path});
+    if (plyHasTristrips(start)) {  // assimp would read each strip as one polygon: Glint makes them faces
+        auto bytes = readTextFile(path);
+        if (!bytes) return bytes.error();
+        return importStrips(*bytes, path, options, progress);
+    }
     if (const std::string extension = lowerExtension(path); needsWholeFileCheck(extension)) {
         auto bytes = readTextFile(path);  // reads bytes as they are
         if (!bytes) return bytes.error();
@@ -356,6 +374,8 @@ Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const s
     if (size == 0) return makeError("cannot load mesh: the data is empty", {name});
     if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, size <= 4096, name))
         return *error;
+    if (plyHasTristrips({static_cast<const char*>(data), std::min<size_t>(size, 4096)}))
+        return importStrips({static_cast<const char*>(data), size}, name, options, progress);
     if (const std::string extension = lowerExtension("data." + formatHint); needsWholeFileCheck(extension))
         if (auto error = checkWholeFile({static_cast<const char*>(data), size}, extension, "", name)) return *error;
     return importWith(
