@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "brdf/model_registry.h"
 #include "cli/render_input.h"
 #include "geometry/mesh_import.h"
 #include "interchange/bparam_file.h"

@@ -22,7 +22,9 @@ Scene stageFor(const Material& material) {
 // material its OBJ library names, else Glint's default.
 Result<Scene> meshStage(const std::string& path, const RenderInputOptions& options, std::vector<Diagnostic>& warnings,
                         std::vector<std::string>& notes) {
-    auto imported = importMesh(path, MeshImportOptions{60.0f, options.upAxis});
+    MeshImportOptions importOptions;
+    importOptions.upAxis = options.upAxis;
+    auto imported = importMesh(path, importOptions);
     if (!imported) return imported.error();
     ObjMaterial objMaterial = readObjMaterial(path);
     warnings.insert(warnings.end(), objMaterial.warnings.begin(), objMaterial.warnings.end());

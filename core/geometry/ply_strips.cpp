@@ -1,11 +1,14 @@
 // PLY triangle strips to faces (see ply_strips.h). PLY: Greg Turk's format description (1994).
 #include "geometry/ply_strips.h"
 
+#include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "util/text.h"
