@@ -16,12 +16,12 @@
 #include "cli/lessons_command.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
+#include "cli/render_input.h"
+#include "cli/info_command.h"
 #include "cli/snapshot_command.h"
 #include "cli/spectral_command.h"
 #include "cli/thumbnails_command.h"
 #include "editor/editor.h"
-#include "geometry/mesh_import.h"
-#include "interchange/import_formats.h"
 #include "scene/scene_json.h"
 
 namespace {
@@ -33,8 +33,10 @@ constexpr const char* kUsage =
     "  glint [FILE]                open the editor (the default scene when no file is given) and open\n"
     "                              FILE as File > Open does: a scene or material .json, a BRDF Explorer\n"
     "                              .brdf, a .mtl, .gltf or .glb material (glTF lights too), a MERL\n"
-    "                              .binary, or a mesh .obj|.ply|.stl|.fbx (added as an object)\n"
+    "                              .binary, a .bparam, or a mesh .obj|.ply|.stl|.fbx (added as an object)\n"
+    "  glint info FILE             list what a file holds (materials, meshes, lights, parameters) and its warnings\n"
     "  glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference [--samples N]]\n"
+    "                              [--material NAME|INDEX]\n"
     "                              render headless (no display needed)\n"
     "  glint snapshot SUITE [--out DIR] [--update] [--update-case NAME] [--jobs N] [--shard I/N]\n"
     "                              compare a suite of scenes and materials with their goldens\n"
@@ -62,16 +64,13 @@ constexpr const char* kUsage =
 // No window could be opened: render `path` (the default scene when empty) offscreen instead, as
 // `glint render` would, and say where it went.
 int renderWithoutDisplay(const std::string& path, const std::string& reason) {
-    if (!path.empty() && !glint::findImportFormat(path) && glint::isMeshFile(path)) {
-        std::fprintf(stderr, "glint: a mesh opens in the editor, which needs a display (%s); to render one headless, "
-                             "name it in a scene file (an object with \"shape\": \"mesh\")\n", reason.c_str());
-        return 2;
-    }
     glint::Scene scene = glint::defaultScene();
     if (!path.empty()) {
         std::vector<glint::Diagnostic> warnings;
-        auto loaded = glint::loadRenderInput(path, &warnings);
+        std::vector<std::string> notes;
+        auto loaded = glint::loadRenderInput(path, {}, warnings, notes);
         for (const glint::Diagnostic& warning : warnings) std::fprintf(stderr, "glint: %s\n", warning.format().c_str());
+        for (const std::string& note : notes) std::printf("glint: %s\n", note.c_str());
         // Custom .brdf shaders are proven to finish (in a child) before this process draws them.
         glint::Status usable = loaded ? glint::probeSceneBrdfs(*loaded, glint::brdfProbeTimeoutSeconds()) : loaded.error();
         if (!usable) {
@@ -117,6 +116,8 @@ int main(int argc, char** argv) {
         return glint::runThumbnailsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "bench")
         return glint::runBenchCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "info")
+        return glint::runInfoCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "export")
         return glint::runExportCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")

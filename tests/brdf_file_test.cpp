@@ -94,7 +94,8 @@ TEST(BrdfFile, MalformedCorpusGetsLocatedMessages) {
          "unterminated block"},
         {"unterminated shader", "analytic\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {}\n",
          "bad.brdf:2:1", "unterminated block"},
-        {"unknown section", "analytic\n::begin textures\n", "bad.brdf:2:9", "unknown section 'textures'"},
+        {"unterminated unknown section", "analytic\n::begin textures\n", "bad.brdf:2:1", "unterminated block: '::begin textures'"},
+        {"mismatched end", "analytic\n::begin isFunc\n::end shader\n", "bad.brdf:3:1", "'::end shader' without"},
         {"end without begin", "analytic\n::end shader\n", "bad.brdf:2:1", "without '::begin shader'"},
         {"nested", "analytic\n::begin parameters\n::begin shader\n", "bad.brdf:3:1", "inside the block opened at line 2"},
         {"second shader", withShader("") + "::begin shader\n::end shader\n", "bad.brdf:7:1", "a second"},
@@ -137,6 +138,20 @@ TEST(BrdfFile, TooLargeFileIsRefused) {
     EXPECT_NE(file.error().message.find("at most 1 MiB"), std::string::npos);
 }
 
+// BRDF Explorer reads a header line's first word and warns about sections it does not know
+// (BRDFBase::loadBRDF); an `isFunc` section (importance sampling) is skipped with a located warning.
+TEST(BrdfFile, ReadsWhatBrdfExplorerReads) {
+    std::string text = kGood;
+    text.replace(0, 8, "analytic  # written by hand");
+    text += "::begin isFunc\nvec3 sample(float u, float v) { return vec3(0); }\n::end isFunc\n";
+    auto file = parseBrdfFile(text, "wild.brdf");
+    ASSERT_TRUE(file) << file.error().format();
+    ASSERT_EQ(file->warnings.size(), 1u);
+    EXPECT_EQ(file->warnings[0].format().rfind("wild.brdf:19:9: warning: section 'isFunc' is skipped", 0), 0u)
+        << file->warnings[0].format();
+    EXPECT_EQ(file->shaderText.find("sample("), std::string::npos);  // not part of the shader
+}
+
 TEST(Bparam, RoundTripsEveryKind) {
     auto file = parseBrdfFile(kGood, "good.brdf");
     ASSERT_TRUE(file);
@@ -144,29 +159,81 @@ TEST(Bparam, RoundTripsEveryKind) {
     const std::vector<float> values = {0.625f, 0.0f, 0.1f, 0.2f, 0.3f};
     const std::string path = test::outputDirectory("bparam") + "/saved.bparam";
     ASSERT_TRUE(saveBparam(path, *brdf, values));
-    auto loaded = loadBparam(path, *brdf, defaultValues(brdf->table));
+    // What BRDF Explorer reads: the first line names the .brdf (createBRDFFromFile opens it).
+    const std::string text = formatBparam(*brdf, values);
+    EXPECT_EQ(text.rfind("bparam /", 0), 0u) << text;
+    EXPECT_NE(text.find("good.brdf\n\n::begin parameters\n"), std::string::npos) << text;
+    std::vector<Diagnostic> warnings;
+    auto loaded = loadBparam(path, *brdf, defaultValues(brdf->table), warnings);
     ASSERT_TRUE(loaded) << loaded.error().format();
     EXPECT_EQ(*loaded, values);
+    EXPECT_TRUE(warnings.empty());
+}
+
+// A file as BRDF Explorer's saveParamsFile writes it (printf's %f), with a section it only warns about.
+TEST(Bparam, ReadsWhatBrdfExplorerWrites) {
+    auto file = parseBrdfFile(kGood, "good.brdf");
+    ASSERT_TRUE(file);
+    auto brdf = makeCustomBrdf(std::move(*file));
+    const std::string written =
+        "bparam /home/someone/brdfs/good.brdf\n\n"
+        "::begin parameters\n"
+        "float roughness 0.010000 1.000000 0.300000\n"
+        "bool useFresnel 0\n"
+        "color tint 0.100000 0.200000 0.300000\n"
+        "::end parameters\n"
+        "::begin isFunc\n"
+        "anything at all\n"
+        "::end isFunc\n";
+    auto parsed = parseBparamFile(written, "explorer.bparam");
+    ASSERT_TRUE(parsed) << parsed.error().format();
+    EXPECT_EQ(parsed->brdfPath, "/home/someone/brdfs/good.brdf");
+    std::vector<Diagnostic> warnings;
+    auto values = parseBparam(written, "explorer.bparam", *brdf, defaultValues(brdf->table), warnings);
+    ASSERT_TRUE(values) << values.error().format();
+    EXPECT_EQ(*values, (std::vector<float>{0.3f, 0.0f, 0.1f, 0.2f, 0.3f}));
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].format().rfind("explorer.bparam:8:1: warning: section 'isFunc' is skipped", 0), 0u)
+        << warnings[0].format();
+    // A .brdf file read as a .bparam (BRDF Explorer accepts an `analytic` header) gives its defaults.
+    auto analytic = parseBparam(std::string(kGood).replace(0, 8, "analytic # comment"), "a.bparam", *brdf,
+                                defaultValues(brdf->table), warnings);
+    ASSERT_TRUE(analytic) << analytic.error().format();
+    EXPECT_EQ(*analytic, defaultValues(brdf->table));
 }
 
 TEST(Bparam, PartialFileKeepsOtherValuesAndBadOnesAreLocated) {
     auto file = parseBrdfFile(kGood, "good.brdf");
     ASSERT_TRUE(file);
     auto brdf = makeCustomBrdf(std::move(*file));
+    std::vector<Diagnostic> warnings;
     auto partial = parseBparam("::begin parameters\nbool useFresnel 0\n::end parameters\n", "p.bparam", *brdf,
-                               defaultValues(brdf->table));
+                               defaultValues(brdf->table), warnings);
     ASSERT_TRUE(partial) << partial.error().format();
     EXPECT_EQ(*partial, (std::vector<float>{0.25f, 0.0f, 1.0f, 0.5f, 0.25f}));
+    // What BRDF Explorer skips silently is a located warning; the rest of the file is read.
+    const std::vector<std::pair<std::string, std::string>> skipped = {
+        {"::begin parameters\nfloat shininess 0 1 0.5\n::end parameters\n", "p.bparam:2:1: warning: 'shininess' is not a parameter"},
+        {"::begin parameters\ncolor roughness 1 1 1\n::end parameters\n", "p.bparam:2:1: warning: 'roughness' has another type"},
+        {"::begin parameters\nfloat roughness 0 5 4\n::end parameters\n", "p.bparam:2:1: warning: roughness = 4 lies outside"},
+    };
+    for (const auto& [text, expected] : skipped) {
+        warnings.clear();
+        auto values = parseBparam(text, "p.bparam", *brdf, defaultValues(brdf->table), warnings);
+        ASSERT_TRUE(values) << values.error().format();
+        ASSERT_EQ(warnings.size(), 1u) << text;
+        EXPECT_EQ(warnings[0].format().rfind(expected, 0), 0u) << warnings[0].format();
+    }
     const std::vector<std::pair<std::string, std::string>> bad = {
-        {"::begin parameters\nfloat shininess 0 1 0.5\n::end parameters\n", "p.bparam:2:1: 'shininess' is not a parameter"},
-        {"::begin parameters\ncolor roughness 1 1 1\n::end parameters\n", "p.bparam:2:1: 'roughness' has another type"},
-        {"::begin parameters\nfloat roughness 0 5 4\n::end parameters\n", "p.bparam:2:1: roughness: 4.000000 lies outside"},
-        {"::begin parameters\nbool useFresnel 1\n", "p.bparam:1:1: unterminated block"},
-        {"float roughness 0 1 0.5\n", "p.bparam:1:1: expected '::begin parameters'"},
+        {"::begin parameters\nbool useFresnel 1\n", "p.bparam:1:1: unterminated section"},
+        {"float roughness 0 1 0.5\n", "p.bparam:1:1: text outside a section"},
+        {"bparam x.brdf\n::begin parameters\n::begin shader\n", "p.bparam:3:1: '::begin shader' inside the section"},
+        {"bparam x.brdf\n::begin parameters\n::end shader\n", "p.bparam:3:1: '::end shader' without"},
+        {"::begin parameters\nfloat roughness 0 1\n::end parameters\n", "p.bparam:2:"},
         {"", "p.bparam:1:1: no '::begin parameters' block"},
     };
     for (const auto& [text, expected] : bad) {
-        auto values = parseBparam(text, "p.bparam", *brdf, defaultValues(brdf->table));
+        auto values = parseBparam(text, "p.bparam", *brdf, defaultValues(brdf->table), warnings);
         ASSERT_FALSE(values) << text;
         EXPECT_EQ(values.error().format().rfind(expected, 0), 0u) << values.error().format();
     }

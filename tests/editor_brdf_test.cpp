@@ -95,6 +95,22 @@ TEST_F(EditorBrdf, DroppedBrdfAndBparamSetTheMaterial) {
     EXPECT_EQ(reread->values, selected(state).values);
 }
 
+// A .bparam as BRDF Explorer writes it names its .brdf: dropped on a scene without that .brdf, it
+// opens the .brdf with the file's values (the path written is found beside the .bparam).
+TEST_F(EditorBrdf, BrdfExplorerBparamOpensTheBrdfItNames) {
+    write("tinted.brdf", kBrdf);
+    EditorState state;
+    openDroppedFile(state, write("explorer.bparam", "bparam /elsewhere/tinted.brdf\n\n::begin parameters\n"
+                                                    "float gain 0.000000 2.000000 1.250000\n"
+                                                    "color tint 0.100000 0.200000 0.300000\n::end parameters\n"
+                                                    "::begin isFunc\nvec3 f() { return vec3(0); }\n::end isFunc\n"));
+    settle(state);
+    ASSERT_TRUE(selected(state).custom) << state.errorMessage;
+    EXPECT_EQ(selected(state).values, (std::vector<float>{1.25f, 0.1f, 0.2f, 0.3f}));
+    EXPECT_NE(state.errorMessage.find("explorer.bparam:7:1: warning: section 'isFunc' is skipped"), std::string::npos)
+        << state.errorMessage;
+}
+
 TEST_F(EditorBrdf, BadFilesAreRefusedWithLocations) {
     EditorState state;
     openDroppedFile(state, write("bad.brdf", "analytic\n::begin parameters\nfloat gain 2 1 1\n::end parameters\n"));

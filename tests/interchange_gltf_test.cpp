@@ -3,6 +3,7 @@
 // valid (accessor counts, bufferView lengths, min/max, embedded buffer); round trips keep every
 // parameter glTF holds; malformed files give located errors.
 #include <cmath>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -10,9 +11,11 @@
 #include "brdf/fresnel.h"
 #include "interchange/base64.h"
 #include "interchange/gltf.h"
+#include "image/image_io.h"
 #include "interchange/material_values.h"
 #include "light/photometry.h"
 #include "math/constants.h"
+#include "test_support.h"
 
 namespace glint {
 namespace {
@@ -51,7 +54,7 @@ TEST(Gltf, DielectricMapsToGgxSmithSchlickCookTorrance) {
     EXPECT_EQ(paramScalar(material, "distribution"), 1.0f);
     EXPECT_EQ(paramScalar(material, "geometry"), 1.0f);
     EXPECT_EQ(paramScalar(material, "fresnel"), 0.0f);
-    EXPECT_TRUE(file.warnings.empty());
+    EXPECT_TRUE(allWarnings(file).empty());
 }
 
 TEST(Gltf, MetalAndSpecularGiveTheRightNormalReflectance) {
@@ -103,13 +106,53 @@ TEST(Gltf, ClearcoatEmissionTexturesAndAlphaAreReportedNotDropped) {
             {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}},
              {"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}},
              {"VENDOR_sparkle", json::object()}}}}}}}.dump(2));
-    EXPECT_TRUE(hasWarning(file.warnings, "clear-coat"));
-    EXPECT_TRUE(hasWarning(file.warnings, "emission"));
-    EXPECT_TRUE(hasWarning(file.warnings, "opaque"));
-    EXPECT_TRUE(hasWarning(file.warnings, "VENDOR_sparkle"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "clear-coat"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "emission"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "opaque"));
+    EXPECT_TRUE(hasWarning(allWarnings(file), "VENDOR_sparkle"));
     ASSERT_EQ(file.materials[0].textures.size(), 1u);
     EXPECT_EQ(file.materials[0].textures[0].path, "albedo.png");
     EXPECT_EQ(file.materials[0].textures[0].slot, "baseColorTexture");
+}
+
+// A dielectric's base colour texture becomes its diffuse albedo texture (sRGB), a normal texture
+// the normal map (linear), both read from image files beside the .gltf; what Glint's textures
+// cannot carry (the metallic-roughness texture, an embedded image) stays a reference with a warning.
+TEST(Gltf, BaseColourAndNormalTexturesAreUsed) {
+    const std::string folder = test::outputDirectory("gltf_textures");
+    DisplayImage image(2, 2);
+    std::fill(image.pixels.begin(), image.pixels.end(), uint8_t{128});
+    ASSERT_TRUE(writeDisplayImage(image, folder + "/albedo.png").ok());
+    ASSERT_TRUE(writeDisplayImage(image, folder + "/normal.png").ok());
+    const std::string text = json{
+        {"asset", {{"version", "2.0"}}},
+        {"images", {{{"uri", "albedo.png"}}, {{"uri", "normal.png"}}, {{"uri", "data:image/png;base64,AAAA"}}}},
+        {"textures", {{{"source", 0}}, {{"source", 1}}, {{"source", 2}}}},
+        {"materials",
+         {{{"name", "tiles"},
+           {"pbrMetallicRoughness",
+            {{"metallicFactor", 0.0}, {"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 2}}}}},
+           {"normalTexture", {{"index", 1}}}}}}}.dump(2);
+    auto file = parseGltf(text, folder + "/tiles.gltf");
+    ASSERT_TRUE(file.ok()) << file.error().format();
+    const Material& material = file->materials[0].material;
+    ASSERT_EQ(material.textures.size(), 2u);
+    EXPECT_EQ(material.textures[0].parameter, "diffuse_albedo");
+    EXPECT_EQ(material.textures[0].colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(material.textures[0].file, folder + "/albedo.png");
+    ASSERT_TRUE(material.textures[0].image);
+    EXPECT_EQ(material.textures[1].parameter, kNormalMapKey);
+    EXPECT_EQ(material.textures[1].colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(file->materials[0].textures.size(), 3u);  // all three kept as references
+    EXPECT_TRUE(hasWarning(allWarnings(*file), "/materials/0/pbrMetallicRoughness/metallicRoughnessTexture: texture kept as a reference"));
+    for (const Diagnostic& warning : allWarnings(*file))
+        EXPECT_EQ(warning.format().find("/pbrMetallicRoughness/baseColorTexture:"), std::string::npos) << warning.format();
+    // A missing image: a located warning, the material without the texture.
+    std::filesystem::remove(folder + "/albedo.png");
+    auto missing = parseGltf(text, folder + "/tiles.gltf");
+    ASSERT_TRUE(missing.ok());
+    EXPECT_EQ(missing->materials[0].material.textures.size(), 1u);
+    EXPECT_TRUE(hasWarning(allWarnings(*missing), "/materials/0/pbrMetallicRoughness/baseColorTexture: texture not rendered"));
 }
 
 TEST(Gltf, PunctualLightUnitsConvertAt683LumensPerWatt) {

@@ -83,6 +83,11 @@ TEST(Merl, MalformedFilesAreRefusedWithAClearMessage) {
     refused(good.substr(0, good.size() - 1), "(truncated)");
     refused(good.substr(0, 12), "(truncated)");
     refused(good + "extra", "(trailing data)");
+    // What a checkout without git-lfs leaves in place of the file.
+    refused("version https://git-lfs.github.com/spec/v1\n"
+            "oid sha256:4d7a214614ab2935c943f9e0ff69d22eadbb8f32b1258daaa5e2ca24d17e2393\nsize 33030156\n",
+            "a Git LFS pointer");
+    refused("version https://git-lfs.github.com/spec/v1\n", "git lfs pull");
     std::string dimensions = good;
     const int32_t lying[3] = {90, 90, 360};  // the full φ_d range some tools write: not MERL's layout
     std::memcpy(dimensions.data(), lying, 12);

@@ -88,7 +88,7 @@ TEST(MeasuredMaterial, BinaryFilesOpenThroughTheImportTable) {
     ASSERT_TRUE(imported.ok()) << imported.error().format();
     ASSERT_EQ(imported->materials.size(), 1u);
     EXPECT_TRUE(imported->materials[0].material.measured);
-    EXPECT_TRUE(imported->warnings.empty());
+    EXPECT_TRUE(allWarnings(*imported).empty());
 }
 
 TEST(MeasuredMaterial, CpuReferenceOfAConstantTableIsTheLambertModel) {

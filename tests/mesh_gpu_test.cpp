@@ -79,6 +79,12 @@ TEST(MeshGpu, TorusMatchesTheCpuReferenceInEveryMode) {
     }
 }
 
+// "rotation" turns the triangles both renderers draw (geometry/shape_mesh.h).
+TEST(MeshGpu, RotatedCubeAndTorusMatchTheCpuReference) {
+    expectAgreement(meshStage(CubeShape{{0, 0, 0}, 1.4f, {20, 35, 10}}, SurfaceInterpolation::Flat), true, 2500);
+    expectAgreement(meshStage(TorusShape{{0, 0, 0}, 0.9f, 0.35f, 24, 12, {70, 0, 15}}, SurfaceInterpolation::Flat), true, 1500);
+}
+
 TEST(MeshGpu, TessellatedSphereMatchesTheCpuReferenceInEveryMode) {
     for (SurfaceInterpolation mode : kModes) {
         SCOPED_TRACE(kModeNames[static_cast<int>(mode)]);

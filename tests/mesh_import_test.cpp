@@ -225,6 +225,81 @@ TEST(MeshImport, MalformedFilesAreRefusedWithTheFileNamed) {
     expectRefused("lying_accessor.gltf", json);
 }
 
+// What assimp 5.2.5 reads silently half: an OBJ cut short (a face of fewer than three corners, a
+// corner or a vertex cut in half), OBJ and glTF indices past the vertices (assimp drops the
+// triangle). Each is refused with its line, or its JSON key.
+TEST(MeshImport, CutShortAndOutOfRangeFilesAreRefusedWhereTheyBreak) {
+    const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n";
+    const std::pair<const char*, std::string> objs[] = {
+        {"f 1 2 3\nf 2 4\n", ":6:1: cannot load mesh: a face with 2 corner(s)"},
+        {"f 1 2 3\nf 2 4 3/\n", ":6:1: cannot load mesh: face corner '3/' is incomplete"},
+        {"f 1//1 2//1 3//\n", ":5:1: cannot load mesh: face corner '3//' is incomplete"},
+        {"f 1 2 0\n", ":5:1: cannot load mesh: face corner '0': vertex index 0"},
+        {"f 1 2 5\n", ":5:1: cannot load mesh: face corner '5' uses vertex 5, but the file has only 4 vertices"},
+        {"f -1 -2 -5\n", ":5:1: cannot load mesh: face corner '-5' counts back 5 vertices"},
+        {"f 1 2 3\nv 1 1\n", ":6:1: cannot load mesh: a vertex needs x y z (2 number(s) given"},
+    };
+    for (const auto& [faces, expected] : objs) {
+        const std::string path = meshPath("cut.obj");
+        test::writeText(path, v + faces);
+        auto imported = importMesh(path);
+        ASSERT_FALSE(imported.ok()) << faces;
+        EXPECT_EQ(imported.error().format(), path + expected + imported.error().format().substr(path.size() + expected.size()))
+            << imported.error().format();
+    }
+    test::GridMesh grid = test::makeGrid(2);
+    grid.indices.back() = 99;
+    test::writeGlb(meshPath("index_out_of_range.glb"), grid);
+    auto glb = importMesh(meshPath("index_out_of_range.glb"));
+    ASSERT_FALSE(glb.ok());
+    EXPECT_NE(glb.error().format().find("index_out_of_range.glb (JSON chunk):1:"), std::string::npos) << glb.error().format();
+    EXPECT_NE(glb.error().message.find("/accessors/1: index 23 is 99, but mesh 0 primitive 0 has only 9 vertices"),
+              std::string::npos)
+        << glb.error().format();
+    test::writeGltf(meshPath("index_out_of_range.gltf"), grid);
+    EXPECT_FALSE(importMesh(meshPath("index_out_of_range.gltf")).ok());
+    // Continued lines and points and lines: read, and the points and lines counted as dropped.
+    test::writeText(meshPath("lines.obj"), v + "f 1 2 \\\n 3\nl 1 2\np 4\n");
+    auto lines = importMesh(meshPath("lines.obj"));
+    ASSERT_TRUE(lines.ok()) << lines.error().format();
+    EXPECT_EQ(lines->statistics.triangleCount, 1u);
+    EXPECT_EQ(lines->statistics.pointsAndLinesDropped, 2u);
+}
+
+// PLY triangle strips (assimp 5.2.5 would read each as one polygon) become their triangles, every
+// other one flipped so that all face the same way; -1 separates strips; the binary file too.
+TEST(MeshImport, PlyTriangleStripsBecomeTrianglesWoundAlike) {
+    const std::string files = std::string(GLINT_TEST_DATA_DIR) + "/files/ply/";
+    auto ascii = importMesh(files + "tristrips_ascii.ply");
+    ASSERT_TRUE(ascii.ok()) << ascii.error().format();
+    EXPECT_EQ(ascii->statistics.triangleCount, 8u);
+    for (const Vertex& vertex : ascii->mesh->vertices) EXPECT_NEAR(vertex.normal.z, 1.0f, 1e-5f);
+    auto binary = importMesh(files + "tristrips_binary.ply");
+    ASSERT_TRUE(binary.ok()) << binary.error().format();
+    EXPECT_EQ(binary->statistics.triangleCount, 4u);
+    for (const Vertex& vertex : binary->mesh->vertices) EXPECT_NEAR(vertex.normal.z, 1.0f, 1e-5f);
+    // A strip cut short is refused, naming the element.
+    auto bytes = readTextFile(files + "tristrips_binary.ply");
+    ASSERT_TRUE(bytes.ok());
+    auto cut = importMeshFromMemory(bytes->data(), bytes->size() - 6, "ply", "cut.ply");
+    ASSERT_FALSE(cut.ok());
+    EXPECT_NE(cut.error().message.find("element 'tristrips' record 0 is malformed or cut short"), std::string::npos)
+        << cut.error().format();
+}
+
+// A Z-up file (CAD, 3ds Max) turned upright: its +z becomes +y.
+TEST(MeshImport, ZUpMeshesStandUp) {
+    test::writeText(meshPath("tall_z.obj"), "v 0 0 0\nv 0.1 0 0\nv 0 0 4\nf 1 2 3\n");
+    auto yUp = importMesh(meshPath("tall_z.obj"));
+    auto zUp = importMesh(meshPath("tall_z.obj"), MeshImportOptions{60.0f, MeshUpAxis::Z});
+    ASSERT_TRUE(yUp.ok() && zUp.ok());
+    float yExtentAsIs = 0, yExtentTurned = 0;
+    for (const Vertex& vertex : yUp->mesh->vertices) yExtentAsIs = std::max(yExtentAsIs, std::abs(vertex.position.y));
+    for (const Vertex& vertex : zUp->mesh->vertices) yExtentTurned = std::max(yExtentTurned, std::abs(vertex.position.y));
+    EXPECT_LT(yExtentAsIs, 0.01f);
+    EXPECT_GT(yExtentTurned, 0.99f);
+}
+
 TEST(MeshImport, SmoothingAngleOutsideItsRangeIsRefused) {
     test::writeObj(meshPath("angle.obj"), test::makeGrid(1));
     EXPECT_FALSE(importMesh(meshPath("angle.obj"), MeshImportOptions{-1.0f}).ok());

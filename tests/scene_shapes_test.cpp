@@ -3,6 +3,7 @@
 // triangle BVH against brute force.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -79,7 +80,10 @@ TEST(SceneShapes, BadShapeKeysAreLocated) {
                             Case{R"({"shape": "mesh", "path": "nowhere.obj", "material": "m"})", "no such file"},
                             Case{R"({"shape": "mesh", "path": "x.obj", "scale": 0, "material": "m"})", "scale"},
                             Case{R"({"shape": "cube", "radius": 1, "material": "m"})", "radius"},
-                            Case{R"({"shape": "plane", "edge_fade": 1.5, "material": "m"})", "edge_fade"}}) {
+                            Case{R"({"shape": "plane", "edge_fade": 1.5, "material": "m"})", "edge_fade"},
+                            Case{R"({"shape": "cube", "rotation": [0, 45], "material": "m"})", "'rotation'"},
+                            Case{R"({"shape": "torus", "rotation": [0, 1e9, 0], "material": "m"})", "'rotation"},
+                            Case{R"({"shape": "mesh", "path": "x.obj", "up": "x", "material": "m"})", "'up'"}}) {
         SCOPED_TRACE(bad.object);
         auto scene = parseScene(sceneWithObjects(bad.object), "bad.json");
         ASSERT_FALSE(scene.ok());
@@ -112,6 +116,34 @@ TEST(SceneShapes, MeshPathIsRelativeToTheSceneAndFollowsASaveElsewhere) {
     EXPECT_EQ(std::get<MeshShape>(copy->objects[0].shape).path, "../../assets/grid.obj");
     EXPECT_EQ(copy->objects[0].interpolation, SurfaceInterpolation::Flat);
     EXPECT_EQ(std::get<MeshShape>(copy->objects[0].shape).statistics.triangleCount, 18u);
+}
+
+// "rotation" turns a cube, a torus or a mesh about its centre (x, then y, then z, in degrees), the
+// same triangles for the GPU and the CPU reference (proceduralMesh); "up": "z" stands a mesh up.
+TEST(SceneShapes, RotationTurnsTheTrianglesAboutTheCentreAndRoundTrips) {
+    const std::string folder = test::outputDirectory("scene_shapes");
+    test::writeText(folder + "/tall_z.obj", "v -0.1 0 0\nv 0.1 0 0\nv 0 0 4\nf 1 2 3\n");
+    test::writeText(folder + "/rotated.json", sceneWithObjects(R"(
+        {"shape": "cube", "center": [1, 0, 0], "size": 2, "rotation": [0, 45, 0], "material": "m"},
+        {"shape": "torus", "major_radius": 1, "minor_radius": 0.25, "rotation": [90, 0, 0], "material": "m"},
+        {"shape": "mesh", "path": "tall_z.obj", "up": "z", "rotation": [0, 0, 90], "material": "m"})"));
+    auto scene = loadScene(folder + "/rotated.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().format();
+    float farthestX = 0, farthestZ = 0, meshX = 0;
+    for (const Vertex& vertex : proceduralMesh(scene->objects[0].shape).vertices)
+        farthestX = std::max(farthestX, vertex.position.x - 1.0f);  // a corner turned onto the x axis: √2
+    EXPECT_NEAR(farthestX, std::sqrt(2.0f), 1e-5f);
+    for (const Vertex& vertex : proceduralMesh(scene->objects[1].shape).vertices)
+        farthestZ = std::max(farthestZ, std::abs(vertex.position.z));  // the ring now stands in the xy plane
+    EXPECT_NEAR(farthestZ, 0.25f, 1e-5f);
+    for (const Vertex& vertex : proceduralMesh(scene->objects[2].shape).vertices)
+        meshX = std::max(meshX, std::abs(vertex.position.x));  // stood up along y, then laid along x
+    EXPECT_GT(meshX, 0.99f);
+    auto again = parseScene(sceneToJson(*scene, folder + "/rotated.json").dump(), folder + "/rotated.json");
+    ASSERT_TRUE(again.ok()) << again.error().format();
+    EXPECT_EQ(sceneToJson(*again), sceneToJson(*scene));
+    EXPECT_EQ(std::get<TorusShape>(again->objects[1].shape).rotationDegrees, glm::vec3(90, 0, 0));
+    EXPECT_EQ(std::get<MeshShape>(again->objects[2].shape).upAxis, MeshUpAxis::Z);
 }
 
 TEST(SceneShapes, BrokenMeshFailsTheSceneAtItsPathWithTheMeshFileNamed) {

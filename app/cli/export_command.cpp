@@ -12,11 +12,12 @@ namespace glint {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: glint export IN -o OUT.mtl|OUT.gltf\n"
+    "usage: glint export IN -o OUT.mtl|OUT.gltf [--material NAME|INDEX]\n"
     "  IN     a material file, a scene (its materials; for glTF the first object's material and\n"
     "         the scene's lights), or a .mtl / .gltf file\n"
     "  OUT    .mtl: every material as a Wavefront library; .gltf: a UV sphere carrying the\n"
-    "         material, the lights as KHR_lights_punctual, the buffer embedded (base64)\n";
+    "         material, the lights as KHR_lights_punctual, the buffer embedded (base64)\n"
+    "  --material NAME|INDEX  only that material of IN (`glint info IN` lists them), with its warnings\n";
 
 int fail(const std::string& message) {
     std::fprintf(stderr, "glint export: %s\n", message.c_str());
@@ -53,8 +54,9 @@ int runExportCommand(const std::vector<std::string>& arguments) {
         std::printf("%s", kUsage);
         return 0;
     }
-    if (arguments.size() != 3 || (arguments[1] != "-o" && arguments[1] != "--output")) {
-        std::fprintf(stderr, "glint export: expected IN -o OUT.mtl|OUT.gltf\n%s", kUsage);
+    const bool chooses = arguments.size() == 5 && arguments[3] == "--material";
+    if ((arguments.size() != 3 && !chooses) || (arguments[1] != "-o" && arguments[1] != "--output")) {
+        std::fprintf(stderr, "glint export: expected IN -o OUT.mtl|OUT.gltf [--material NAME|INDEX]\n%s", kUsage);
         return 2;
     }
     const std::string& input = arguments[0];
@@ -62,7 +64,14 @@ int runExportCommand(const std::vector<std::string>& arguments) {
     if (!isExportPath(output)) return fail("the output must end in .mtl or .gltf (got '" + output + "')");
     auto file = readInput(input);
     if (!file) return fail(file.error().format());
-    for (const Diagnostic& warning : file->warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
+    if (chooses) {
+        auto chosen = chooseMaterial(*file, arguments[4], input);
+        if (!chosen) return fail(chosen.error().format());
+        for (const Diagnostic& warning : warningsFor(*file, *chosen)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
+        file->materials = {file->materials[*chosen]};
+    } else {
+        for (const Diagnostic& warning : allWarnings(*file)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
+    }
     if (file->materials.empty()) return fail(input + ": no material to export");
     auto written = exportMaterials(file->materials, file->lights, output);
     if (!written) return fail(written.error().message);

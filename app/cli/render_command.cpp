@@ -13,10 +13,10 @@
 #include "classroom/surface_probe.h"
 #include "cli/plot_overlay.h"
 #include "cli/render_overlays.h"
+#include "cli/render_input.h"
 #include "display/display_chain.h"
 #include "image/image_io.h"
 #include "render/reference_renderer.h"
-#include "snapshot/case_source.h"
 
 namespace glint {
 namespace {
@@ -24,9 +24,12 @@ namespace {
 constexpr const char* kUsage =
     "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference [--samples N]] [--wireframe] [--normals]\n"
     "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256);\n"
-    "                     also a Wavefront .mtl, a glTF .gltf (its first material on the stage),\n"
-    "                     a MERL measured BRDF .binary (preview stage)\n"
-    "                     or a BRDF Explorer .brdf file (preview stage, GPU only)\n"
+    "                     also a Wavefront .mtl, a glTF .gltf|.glb (a material and its lights on the stage),\n"
+    "                     a MERL measured BRDF .binary (preview stage), a BRDF Explorer .brdf or\n"
+    "                     .bparam file (preview stage, GPU only), or a mesh .obj|.ply|.stl|.fbx\n"
+    "                     (on the stage in the sphere's place; what was loaded is printed)\n"
+    "  --material NAME|INDEX  which material of a .mtl, .gltf or .glb (default: the first; `glint info` lists them)\n"
+    "  --up y|z           a mesh file's up axis (default y; z for Z-up files)\n"
     "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
     "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
     "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
@@ -41,6 +44,7 @@ constexpr const char* kUsage =
 
 struct RenderOptions {
     std::string scenePath, outputPath;
+    RenderInputOptions input;  // --material, --up
     int width = 0, height = 0, msaa = 0;
     bool reference = false;
     int environmentSamples = 0;  // --samples N: the Monte-Carlo environment (0: the preview's)
@@ -78,10 +82,6 @@ int usageError(const std::string& message) {
 
 }  // namespace
 
-Result<Scene> loadRenderInput(const std::string& path, std::vector<Diagnostic>* warnings) {
-    return isBrdfFilePath(path) ? loadBrdfPreviewStage(path) : loadRenderable(path, 0, 0, warnings);
-}
-
 int runRenderCommand(const std::vector<std::string>& arguments) {
     RenderOptions options;
     ClassroomOptions classroom;  // display lessons and compare views (classroom_options.h)
@@ -117,6 +117,14 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
             if (!value || !std::regex_match(*value, std::regex("1|2|4|8|16")))
                 return usageError("--msaa needs 1, 2, 4, 8 or 16");
             options.msaa = std::stoi(*value);
+        } else if (argument == "--material") {
+            const std::string* value = next();
+            if (!value || value->empty()) return usageError("--material needs a material's name or index");
+            options.input.material = *value;
+        } else if (argument == "--up") {
+            const std::string* value = next();
+            if (!value || (*value != "y" && *value != "z")) return usageError("--up needs y or z");
+            options.input.upAxis = *value == "z" ? MeshUpAxis::Z : MeshUpAxis::Y;
         } else if (argument == "--reference") {
             options.reference = true;
         } else if (argument == "--samples") {
@@ -167,9 +175,11 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
     if (options.reference && classroom.comparing()) return usageError("the compare views are drawn by the OpenGL renderer, not with --reference");
 
     std::vector<Diagnostic> warnings;  // what an interchange file could not carry over exactly
-    // A material, interchange or .brdf file renders on the preview stage.
-    auto scene = loadRenderInput(options.scenePath, &warnings);
+    std::vector<std::string> notes;    // what was loaded
+    // A material, interchange, .brdf, .bparam or mesh file renders on the preview stage.
+    auto scene = loadRenderInput(options.scenePath, options.input, warnings, notes);
     for (const Diagnostic& warning : warnings) std::fprintf(stderr, "glint render: %s\n", warning.format().c_str());
+    for (const std::string& note : notes) std::printf("glint render: %s\n", note.c_str());
     if (!scene) {
         std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
         return 2;

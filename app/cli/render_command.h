@@ -7,15 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
-#include "util/diagnostic.h"
 
 namespace glint {
-
-// What `glint render FILE` (and `glint FILE` without a display) renders: a scene, or a material,
-// interchange (.mtl, .gltf, .glb, .binary) or .brdf file on the preview stage. `warnings` gets
-// what an interchange file could not carry over exactly. Custom BRDFs are not probed here.
-Result<Scene> loadRenderInput(const std::string& path, std::vector<Diagnostic>* warnings);
 
 // Returns the process exit code: 0 written, 2 bad arguments or input, or failure to render.
 int runRenderCommand(const std::vector<std::string>& arguments);

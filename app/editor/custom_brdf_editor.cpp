@@ -10,6 +10,7 @@
 
 #include "cli/brdf_probe.h"
 #include "interchange/bparam_file.h"
+#include "util/file_io.h"
 
 namespace glint {
 namespace {
@@ -80,6 +81,7 @@ void finishProbe(EditorState& state, PendingBrdfProbe& pending, const Status& ve
         if (pending.materialIndex >= static_cast<int>(scene.materials.size())) return;
         Material material = customBrdfMaterial(pending.brdf);
         material.name = scene.materials[pending.materialIndex].name;
+        material.values = pending.values;  // the defaults, or a .bparam file's values
         state.session.change("Open " + brdf.displayName).materials[pending.materialIndex] = std::move(material);
         state.statusMessage = "Custom BRDF from " + brdf.file.path;
     } else {
@@ -95,11 +97,20 @@ void finishProbe(EditorState& state, PendingBrdfProbe& pending, const Status& ve
     state.session.settle(false);
 }
 
+// What a file held that Glint skipped, shown as the open goes on.
+void showWarnings(EditorState& state, const std::string& path, const std::vector<Diagnostic>& warnings) {
+    if (warnings.empty()) return;
+    std::string text = "Opened " + path + " with warnings:\n";
+    for (const Diagnostic& warning : warnings) text += "\n" + warning.format();
+    state.errorMessage = text;
+}
+
 }  // namespace
 
 // --- open and save --------------------------------------------------------------------------
 
-void openBrdfFile(EditorState& state, const std::string& path) {
+void openBrdfFile(EditorState& state, const std::string& path, std::vector<float> values,
+                  const std::vector<Diagnostic>& warnings) {
     const Scene& scene = state.session.scene();
     if (scene.objects.empty()) {
         state.errorMessage = "The scene has no object to put the BRDF on.";
@@ -116,28 +127,51 @@ void openBrdfFile(EditorState& state, const std::string& path) {
         return;
     }
     const int materialIndex = scene.objects[state.selectedObject].materialIndex;
-    const std::vector<float> values = defaultValues((*brdf)->table);
-    startProbe(state, std::move(*brdf), values, false, materialIndex);
+    if (values.size() != static_cast<size_t>(packedSize((*brdf)->table))) values = defaultValues((*brdf)->table);
+    std::vector<Diagnostic> all = (*brdf)->file.warnings;
+    all.insert(all.end(), warnings.begin(), warnings.end());
+    startProbe(state, std::move(*brdf), std::move(values), false, materialIndex);
+    showWarnings(state, path, all);
 }
 
 void openBparamFile(EditorState& state, const std::string& path) {
+    auto text = readTextFile(path);
+    auto file = text ? parseBparamFile(*text, path) : Result<BparamFile>(text.error());
+    if (!file) {
+        state.errorMessage = "Could not read the parameter values; your material is unchanged.\n\n" + file.error().format();
+        return;
+    }
     const Scene& scene = state.session.scene();
     const int materialIndex = scene.objects.empty() ? -1 : scene.objects[state.selectedObject].materialIndex;
-    if (materialIndex < 0 || !scene.materials[materialIndex].custom) {
-        state.errorMessage = "A .bparam file holds parameter values for a .brdf material: open the .brdf file first "
-                             "(File ▸ Open BRDF Explorer file…), then its .bparam.";
-        return;
+    const Material* material = materialIndex < 0 ? nullptr : &scene.materials[materialIndex];
+    std::vector<Diagnostic> warnings = file->warnings;
+    // A file naming another .brdf than the selected material's (BRDF Explorer's first line
+    // `bparam NAME.brdf`) opens that .brdf with its values, as BRDF Explorer does.
+    const bool sameBrdf = material && material->custom &&
+                          (file->brdfPath.empty() || std::filesystem::path(file->brdfPath).filename() ==
+                                                         std::filesystem::path(material->custom->file.path).filename());
+    if (!sameBrdf) {
+        auto brdfPath = findBparamBrdf(*file, path);
+        if (!brdfPath) {
+            state.errorMessage = "A .bparam file holds parameter values for a .brdf material; your work is unchanged.\n\n" +
+                                 brdfPath.error().format();
+            return;
+        }
+        auto brdf = loadBrdfFile(*brdfPath);
+        if (!brdf) {
+            state.errorMessage = "Could not open the BRDF the file names; your work is unchanged.\n\n" + brdf.error().format();
+            return;
+        }
+        auto custom = makeCustomBrdf(std::move(*brdf));
+        std::vector<float> values = applyBparam(*file, *custom, defaultValues(custom->table), warnings);
+        return openBrdfFile(state, *brdfPath, std::move(values), warnings);
     }
-    const Material& material = scene.materials[materialIndex];
-    auto values = loadBparam(path, *material.custom, material.values);
-    if (!values) {
-        state.errorMessage = "Could not read the parameter values; your material is unchanged.\n\n" + values.error().format();
-        return;
-    }
+    std::vector<float> values = applyBparam(*file, *material->custom, material->values, warnings);
     state.session.change("Open " + std::filesystem::path(path).filename().string()).materials[materialIndex].values =
-        std::move(*values);
+        std::move(values);
     state.session.settle(false);
     state.statusMessage = "Parameter values from " + path;
+    showWarnings(state, path, warnings);
 }
 
 bool saveBparamTo(EditorState& state, const std::string& path) {

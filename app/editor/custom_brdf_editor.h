@@ -5,12 +5,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "editor/editor_state.h"
 
 namespace glint {
 
-void openBrdfFile(EditorState& state, const std::string& path);
+// `values`: the parameters' packed values (empty: the file's defaults); `warnings` about them are
+// shown with the file's own.
+void openBrdfFile(EditorState& state, const std::string& path, std::vector<float> values = {},
+                  const std::vector<Diagnostic>& warnings = {});
+// Values for the selected .brdf material; a file naming another .brdf (BRDF Explorer's first line
+// `bparam NAME.brdf`) opens that .brdf with them.
 void openBparamFile(EditorState& state, const std::string& path);
 bool saveBparamTo(EditorState& state, const std::string& path);
 // Each frame: takes a finished probe's verdict and looks for changed .brdf files (twice a

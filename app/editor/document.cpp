@@ -11,6 +11,7 @@
 #include "editor/mesh_loading.h"
 #include "editor/interchange_open.h"
 #include "editor/custom_brdf_editor.h"
+#include "interchange/bparam_file.h"
 #include "interchange/custom_brdf.h"
 #include "editor/settings.h"
 #include "scene/scene_json.h"
@@ -103,7 +104,7 @@ bool saveMaterialTo(EditorState& state, const std::string& path) {
 
 void openDroppedFile(EditorState& state, const std::string& path) {
     if (isBrdfFilePath(path)) return openBrdfFile(state, path);  // BRDF Explorer files
-    if (std::filesystem::path(path).extension() == ".bparam") return openBparamFile(state, path);
+    if (isBparamFilePath(path)) return openBparamFile(state, path);
     // .mtl, .gltf: a material (and glTF lights), by extension (interchange/import_formats.h). A
     // .gltf dropped is read for its material; File ▸ Open mesh… reads it as a mesh.
     if (openInterchangeFile(state, path)) return;

@@ -35,9 +35,10 @@ bool openInterchangeFile(EditorState& state, const std::string& path) {
         summary += " (first of " + std::to_string(imported->materials.size()) + ")";
     if (!imported->lights.empty()) summary += ", " + std::to_string(imported->lights.size()) + " light(s)";
     state.statusMessage = summary;
-    if (!imported->warnings.empty()) {
+    // Warnings about the file and the material used; the other materials' are not this open's.
+    if (const std::vector<Diagnostic> warnings = warningsFor(*imported, 0); !warnings.empty()) {
         std::string text = "Opened " + path + " with warnings:\n";
-        for (const Diagnostic& warning : imported->warnings) text += "\n" + warning.format();
+        for (const Diagnostic& warning : warnings) text += "\n" + warning.format();
         state.errorMessage = text;
     }
     return true;

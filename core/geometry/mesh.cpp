@@ -55,6 +55,20 @@ Mesh makePlane(glm::vec3 center, glm::vec3 normal, glm::vec2 size) {
     return mesh;
 }
 
+void rotateMesh(Mesh& mesh, glm::vec3 pivot, glm::vec3 degrees) {
+    if (degrees == glm::vec3(0.0f)) return;
+    const glm::vec3 r = glm::radians(degrees);
+    const glm::mat3 aboutX(1, 0, 0, 0, std::cos(r.x), std::sin(r.x), 0, -std::sin(r.x), std::cos(r.x));
+    const glm::mat3 aboutY(std::cos(r.y), 0, -std::sin(r.y), 0, 1, 0, std::sin(r.y), 0, std::cos(r.y));
+    const glm::mat3 aboutZ(std::cos(r.z), std::sin(r.z), 0, -std::sin(r.z), std::cos(r.z), 0, 0, 0, 1);
+    const glm::mat3 turn = aboutZ * aboutY * aboutX;  // column-major: x is applied first
+    for (Vertex& vertex : mesh.vertices) {
+        vertex.position = pivot + turn * (vertex.position - pivot);
+        vertex.normal = turn * vertex.normal;
+        vertex.tangent = turn * vertex.tangent;
+    }
+}
+
 Mesh makeCube(glm::vec3 center, float size) {
     GLINT_CHECK(size > 0.0f);
     Mesh mesh;

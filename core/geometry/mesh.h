@@ -24,6 +24,10 @@ struct Mesh {
 };
 
 // What the importer found in a mesh file (geometry/mesh_import.h); shown in the editor.
+// Which of the file's axes points up: Y (glTF, OBJ from most tools) or Z (CAD, 3ds Max, Blender
+// files exported without the axis conversion); a Z-up mesh is turned a quarter about x.
+enum class MeshUpAxis { Y, Z };
+
 struct MeshStatistics {
     size_t vertexCount = 0;
     size_t triangleCount = 0;
@@ -31,6 +35,7 @@ struct MeshStatistics {
     bool hadNormals = false;  // false: normals were generated (always for STL, whose facet normals are not kept)
     bool hadUvs = false;      // false: tangents are a fallback, not from UVs
     size_t degenerateTrianglesDropped = 0;  // zero-area faces removed
+    size_t pointsAndLinesDropped = 0;       // faces of one or two corners (OBJ `p` and `l`, PLY edges) left out
     size_t meshesMerged = 0;                // meshes of the file's node tree merged into one
     double loadSeconds = 0.0;               // wall time of the whole import
 };
@@ -45,6 +50,9 @@ Mesh makePlane(glm::vec3 center, glm::vec3 normal, glm::vec2 size);
 // An axis-aligned cube of edge `size`: 24 vertices (four per face, with the face's normal), 12
 // triangles.
 Mesh makeCube(glm::vec3 center, float size);
+// Turns the mesh about `pivot` by Euler angles [degrees]: about x, then y, then z (positions,
+// normals and tangents alike; a rotation keeps them unit length).
+void rotateMesh(Mesh& mesh, glm::vec3 pivot, glm::vec3 degrees);
 
 // A torus around +y (segments ≥ 3 around the axis, rings ≥ 3 around the tube) with analytic
 // normals; u runs around the axis, v around the tube.

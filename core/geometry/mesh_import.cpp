@@ -25,6 +25,9 @@
 #include <assimp/scene.h>
 
 #include "geometry/mesh_builder.h"
+#include "geometry/mesh_file_checks.h"
+#include "geometry/ply_strips.h"
+#include "util/file_io.h"
 #include "util/text.h"
 
 namespace glint {
@@ -123,33 +126,6 @@ std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, cons
     return std::nullopt;
 }
 
-// Assimp 5.2.5's PLY reader never returns on some malformed headers (an unknown keyword,
-// "end_header" running on into the data, found by fuzz_mesh_import; a file that ends inside its
-// header), so the header's lines are checked before assimp sees them: each must start with a PLY
-// keyword, and a file whose first bytes (`start`) are all of it (`whole`) must hold end_header.
-std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, const std::string& name) {
-    if (start.substr(0, 3) != "ply") return std::nullopt;
-    static const std::string_view keywords[] = {"ply", "format", "comment", "obj_info", "element", "property"};
-    int line = 0;
-    size_t position = 0;
-    while (position < start.size()) {
-        ++line;
-        const size_t end = std::min(start.find('\n', position), start.size());
-        if (end == start.size() && !whole) return std::nullopt;  // runs on past the first bytes: assimp's turn
-        std::string_view text = start.substr(position, end - position);
-        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-        position = end + 1;
-        if (text == "end_header") return std::nullopt;
-        const std::string_view word = text.substr(0, text.find(' '));
-        if (std::find(std::begin(keywords), std::end(keywords), word) == std::end(keywords))
-            return makeError("cannot load mesh: malformed PLY header: '" + std::string(text.substr(0, 40)) +
-                                 "' is not a PLY header line (format, comment, element, property, end_header)",
-                             {name, line, 1});
-    }
-    if (!whole) return std::nullopt;
-    return makeError("cannot load mesh: the PLY header ends without end_header (the file is cut short)", {name, line, 1});
-}
-
 // --- merge ----------------------------------------------------------------------------------
 
 glm::vec3 toGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
@@ -236,15 +212,28 @@ struct Merger {
         for (unsigned f = 0; f < source.mNumFaces; ++f) {
             progressed();
             const aiFace& face = source.mFaces[f];
-            // Points and lines are left out; Triangulate has cut every polygon into triangles.
+            // Points and lines are left out (and counted); Triangulate has cut every polygon into triangles.
             if (face.mNumIndices == 3)
                 builder.addTriangle(first + face.mIndices[0], first + face.mIndices[1], first + face.mIndices[2]);
+            else
+                ++statistics.pointsAndLinesDropped;
         }
         if (builder.triangleCount() + builder.degenerateTrianglesDropped() > trianglesBefore) ++statistics.meshesMerged;
     }
 };
 
 // --- normalise ------------------------------------------------------------------------------
+
+// A quarter turn about x, (x, y, z) → (x, z, −y): the file's +z becomes Glint's up (+y). A rotation,
+// so normals and tangents turn the same way and stay unit length.
+void turnZUpToYUp(Mesh& mesh) {
+    auto turn = [](glm::vec3 v) { return glm::vec3(v.x, v.z, -v.y); };
+    for (Vertex& vertex : mesh.vertices) {
+        vertex.position = turn(vertex.position);
+        vertex.normal = turn(vertex.normal);
+        vertex.tangent = turn(vertex.tangent);
+    }
+}
 
 // Centre of the bounding box to the origin, farthest vertex to distance 1.
 std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
@@ -261,6 +250,15 @@ std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
 }
 
 // --- entry points ---------------------------------------------------------------------------
+
+// OBJ and glTF are read whole by Glint's own checks first (mesh_file_checks.h).
+bool needsWholeFileCheck(const std::string& extension) { return extension == "obj" || extension == "gltf" || extension == "glb"; }
+
+std::optional<Diagnostic> checkWholeFile(std::string_view bytes, const std::string& extension, const std::string& folder,
+                                         const std::string& name) {
+    if (extension == "obj") return checkObjText(bytes, name);
+    return checkGltfIndices(bytes, extension == "glb", folder, name);
+}
 
 using ReadFunction = std::function<const aiScene*(Assimp::Importer&, unsigned flags)>;
 
@@ -309,6 +307,7 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
                              {name});
         std::optional<Mesh> mesh = merger.builder.build([&](float fraction) { return relay->offer(0.9f + 0.09f * fraction); });
         if (!mesh) return makeError(kCancelledMessage, {name});
+        if (options.upAxis == MeshUpAxis::Z) turnZUpToYUp(*mesh);
         if (auto problem = normalise(*mesh, statistics)) return makeError("cannot load mesh: " + *problem, {name});
         relay->report(1.0f);
         statistics.vertexCount = mesh->vertices.size();
@@ -322,6 +321,18 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
     } catch (const std::exception& error) {
         return importError(name, error.what());
     }
+}
+
+// A PLY of triangle strips, rewritten with faces (ply_strips.h), read from memory.
+Result<ImportedMesh> importStrips(std::string_view bytes, const std::string& name, const MeshImportOptions& options,
+                                  const MeshImportProgress& progress) {
+    auto faces = plyStripsToFaces(bytes, name);
+    if (!faces) return faces.error();
+    return importWith(
+        [&](Assimp::Importer& importer, unsigned flags) {
+            return importer.ReadFileFromMemory(faces->data(), faces->size(), flags, "ply");
+        },
+        name, "ply", options, progress);
 }
 
 }  // namespace
@@ -342,6 +353,17 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
         return makeError("cannot load mesh: unknown extension '." + lowerExtension(path) +
                              "' (Glint reads .obj, .ply, .stl, .gltf, .glb, .fbx)",
                          {path});
+    if (plyHasTristrips(start)) {  // assimp would read each strip as one polygon: Glint makes them faces
+        auto bytes = readTextFile(path);
+        if (!bytes) return bytes.error();
+        return importStrips(*bytes, path, options, progress);
+    }
+    if (const std::string extension = lowerExtension(path); needsWholeFileCheck(extension)) {
+        auto bytes = readTextFile(path);  // reads bytes as they are
+        if (!bytes) return bytes.error();
+        if (auto error = checkWholeFile(*bytes, extension, std::filesystem::path(path).parent_path().string(), path))
+            return *error;
+    }
     return importWith([&](Assimp::Importer& importer, unsigned flags) { return importer.ReadFile(path, flags); }, path,
                       lowerExtension(path), options, progress);
 }
@@ -352,6 +374,10 @@ Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const s
     if (size == 0) return makeError("cannot load mesh: the data is empty", {name});
     if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, size <= 4096, name))
         return *error;
+    if (plyHasTristrips({static_cast<const char*>(data), std::min<size_t>(size, 4096)}))
+        return importStrips({static_cast<const char*>(data), size}, name, options, progress);
+    if (const std::string extension = lowerExtension("data." + formatHint); needsWholeFileCheck(extension))
+        if (auto error = checkWholeFile({static_cast<const char*>(data), size}, extension, "", name)) return *error;
     return importWith(
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(data, size, flags, formatHint.c_str());

@@ -18,6 +18,7 @@ struct MeshImportOptions {
     // every format; faces whose normals differ by more than this angle keep separate normals
     // [degrees, in [0, 180]: 0 is flat shading, 180 smooth across every edge].
     float smoothingAngleDegrees = 60.0f;
+    MeshUpAxis upAxis = MeshUpAxis::Y;
 };
 
 // Called with the fraction done, in [0, 1], from the thread that imports; returning false

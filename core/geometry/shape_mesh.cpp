@@ -14,9 +14,16 @@ Mesh proceduralMesh(const Shape& shape) {
     if (const auto* sphere = std::get_if<SphereShape>(&shape))
         return makeUvSphere(sphere->center, sphere->radius, sphere->segments, sphere->rings);
     if (const auto* plane = std::get_if<PlaneShape>(&shape)) return makePlane(plane->center, plane->normal, plane->size);
-    if (const auto* cube = std::get_if<CubeShape>(&shape)) return makeCube(cube->center, cube->size);
-    if (const auto* torus = std::get_if<TorusShape>(&shape))
-        return makeTorus(torus->center, torus->majorRadius, torus->minorRadius, torus->segments, torus->rings);
+    if (const auto* cube = std::get_if<CubeShape>(&shape)) {
+        Mesh mesh = makeCube(cube->center, cube->size);
+        rotateMesh(mesh, cube->center, cube->rotationDegrees);
+        return mesh;
+    }
+    if (const auto* torus = std::get_if<TorusShape>(&shape)) {
+        Mesh mesh = makeTorus(torus->center, torus->majorRadius, torus->minorRadius, torus->segments, torus->rings);
+        rotateMesh(mesh, torus->center, torus->rotationDegrees);
+        return mesh;
+    }
     const auto& mesh = std::get<MeshShape>(shape);
     return mesh.mesh ? *mesh.mesh : Mesh{};
 }

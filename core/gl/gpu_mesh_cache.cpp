@@ -24,12 +24,13 @@ bool sameTriangles(const Shape& a, const Shape& b) {
     }
     if (const auto* cube = std::get_if<CubeShape>(&a)) {
         const auto& other = std::get<CubeShape>(b);
-        return cube->center == other.center && cube->size == other.size;
+        return cube->center == other.center && cube->size == other.size && cube->rotationDegrees == other.rotationDegrees;
     }
     const auto& torus = std::get<TorusShape>(a);
     const auto& other = std::get<TorusShape>(b);
     return torus.center == other.center && torus.majorRadius == other.majorRadius &&
-           torus.minorRadius == other.minorRadius && torus.segments == other.segments && torus.rings == other.rings;
+           torus.minorRadius == other.minorRadius && torus.segments == other.segments && torus.rings == other.rings &&
+           torus.rotationDegrees == other.rotationDegrees;
 }
 
 }  // namespace

@@ -1,21 +1,35 @@
-// .bparam reading and writing (see bparam_file.h).
+// .bparam reading and writing (see bparam_file.h), after BRDF Explorer's BRDFBase::loadBRDF,
+// createBRDFFromFile and saveParamsFile.
 #include "interchange/bparam_file.h"
 
 #include <algorithm>
-#include <cctype>
+#include <cstdio>
+#include <filesystem>
 
+#include "scene/preview_stage.h"
+#include "snapshot/case_source.h"
 #include "util/file_io.h"
 #include "util/text.h"
 
 namespace glint {
+namespace {
 
-Result<std::vector<float>> parseBparam(std::string_view text, const std::string& path, const CustomBrdf& brdf,
-                                       std::vector<float> values) {
-    GLINT_CHECK(static_cast<int>(values.size()) == packedSize(brdf.table));
+std::string formatNumber(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+}  // namespace
+
+Result<BparamFile> parseBparamFile(std::string_view text, const std::string& path) {
     if (text.size() > kMaxBrdfFileBytes) return makeError("the file is larger than 1 MiB", {path, 1, 1});
     if (Status utf8 = checkUtf8(text, path); !utf8) return utf8.error();
-    bool inBlock = false, sawBlock = false;
-    int lineNumber = 0, blockLine = 0;
+    BparamFile file;
+    file.path = path;
+    bool sawHeader = false, sawBlock = false;
+    std::string section;  // the open section's name; empty outside one
+    int lineNumber = 0, sectionLine = 0;
     size_t position = 0;
     while (position < text.size()) {
         const size_t end = std::min(text.find('\n', position), text.size());
@@ -25,50 +39,135 @@ Result<std::vector<float>> parseBparam(std::string_view text, const std::string&
         const std::string_view content = trimmed(line);
         const SourceLocation here{path, lineNumber, static_cast<int>(content.data() - line.data()) + 1};
         if (content.empty() || content[0] == '#') continue;
-        if (content == "::begin parameters") {
-            if (sawBlock) return makeError("a second '::begin parameters' block", here);
-            inBlock = sawBlock = true;
-            blockLine = lineNumber;
+        if (!sawHeader && section.empty()) {
+            sawHeader = true;
+            const std::string_view word = headerWord(content);
+            if (word == "bparam") {  // `bparam PATH`: the rest of the line, as BRDF Explorer takes it
+                file.brdfPath = std::string(trimmed(content.substr(word.size())));
+                continue;
+            }
+            if (word == "analytic") continue;  // a .brdf file read for its parameters
+            // Glint before 2026 wrote no header: a file that starts with its block is read as well.
+        }
+        if (content.rfind("::", 0) == 0) {
+            const std::string_view words = trimmed(content.substr(2));
+            const std::string_view verb = headerWord(words);
+            const std::string name(headerWord(trimmed(words.substr(verb.size()))));
+            if ((verb != "begin" && verb != "end") || name.empty())
+                return makeError("expected '::begin SECTION' or '::end SECTION'", here);
+            if (verb == "begin") {
+                if (!section.empty())
+                    return makeError("'::begin " + name + "' inside the section opened at line " + std::to_string(sectionLine) +
+                                         " (close it with ::end first)",
+                                     here);
+                if (name == "parameters") {
+                    if (sawBlock) return makeError("a second '::begin parameters' block", here);
+                    sawBlock = true;
+                } else {
+                    file.warnings.push_back(makeError("warning: section '" + name + "' is skipped (a .bparam file's values are in 'parameters')", here));
+                }
+                section = name;
+                sectionLine = lineNumber;
+            } else {
+                if (name != section) return makeError("'::end " + name + "' without '::begin " + name + "'", here);
+                section.clear();
+            }
             continue;
         }
-        if (content == "::end parameters") {
-            if (!inBlock) return makeError("'::end parameters' without '::begin parameters'", here);
-            inBlock = false;
-            continue;
-        }
-        if (!inBlock)
-            return makeError("expected '::begin parameters' (a .bparam file holds one parameters block)", here);
+        if (section.empty()) return makeError("text outside a section (expected '::begin parameters')", here);
+        if (section != "parameters") continue;
         auto param = parseBrdfParamLine(line, path, lineNumber);
         if (!param) return param.error();
-        const int index = findParam(brdf.table, param->name);
-        if (index < 0)
-            return makeError("'" + param->name + "' is not a parameter of " + brdf.displayName, here);
-        const ParamSpec& spec = brdf.table[index];
-        if (spec.kind != param->kind)
-            return makeError("'" + param->name + "' has another type in " + brdf.displayName, here);
-        const float value = param->defaultValue[0];
-        if (spec.kind == ParamKind::Scalar && (value < spec.validMin || value > spec.validMax))
-            return makeError(param->name + ": " + std::to_string(value) + " lies outside the range of " +
-                                 brdf.displayName + " [" + std::to_string(spec.validMin) + ", " +
-                                 std::to_string(spec.validMax) + "]",
-                             here);
-        const int offset = packedOffset(brdf.table, index);
-        for (int c = 0; c < componentCount(spec.kind); ++c) values[offset + c] = param->defaultValue[c];
+        file.params.push_back(std::move(*param));
     }
-    if (inBlock) return makeError("unterminated block: '::begin parameters' has no matching ::end", {path, blockLine, 1});
-    if (!sawBlock) return makeError("no '::begin parameters' block", {path, 1, 1});
+    if (!section.empty())
+        return makeError("unterminated section: '::begin " + section + "' has no matching ::end", {path, sectionLine, 1});
+    if (!sawBlock) return makeError("no '::begin parameters' block", {path, std::max(1, lineNumber), 1});
+    return file;
+}
+
+std::vector<float> applyBparam(const BparamFile& file, const CustomBrdf& brdf, std::vector<float> values,
+                               std::vector<Diagnostic>& warnings) {
+    GLINT_CHECK(static_cast<int>(values.size()) == packedSize(brdf.table));
+    for (const BrdfFileParam& param : file.params) {
+        auto warn = [&](const std::string& message) {
+            warnings.push_back(makeError("warning: " + message, {file.path, param.line, 1}));
+        };
+        const int index = findParam(brdf.table, param.name);
+        if (index < 0) {
+            warn("'" + param.name + "' is not a parameter of " + brdf.displayName + "; skipped");
+            continue;
+        }
+        const ParamSpec& spec = brdf.table[index];
+        if (spec.kind != param.kind) {
+            warn("'" + param.name + "' has another type in " + brdf.displayName + "; skipped");
+            continue;
+        }
+        float value[3] = {param.defaultValue[0], param.defaultValue[1], param.defaultValue[2]};
+        if (spec.kind == ParamKind::Scalar && (value[0] < spec.validMin || value[0] > spec.validMax)) {
+            const float clamped = std::clamp(value[0], spec.validMin, spec.validMax);
+            warn(param.name + " = " + formatNumber(value[0]) + " lies outside the range of " + brdf.displayName + " [" +
+                 formatNumber(spec.validMin) + ", " + formatNumber(spec.validMax) + "]; " + formatNumber(clamped) + " used");
+            value[0] = clamped;
+        }
+        const int offset = packedOffset(brdf.table, index);
+        for (int c = 0; c < componentCount(spec.kind); ++c) values[offset + c] = value[c];
+    }
     return values;
 }
 
-Result<std::vector<float>> loadBparam(const std::string& path, const CustomBrdf& brdf, std::vector<float> current) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseBparam(*text, path, brdf, std::move(current));
+Result<std::vector<float>> parseBparam(std::string_view text, const std::string& path, const CustomBrdf& brdf,
+                                       std::vector<float> current, std::vector<Diagnostic>& warnings) {
+    auto file = parseBparamFile(text, path);
+    if (!file) return file.error();
+    warnings.insert(warnings.end(), file->warnings.begin(), file->warnings.end());
+    return applyBparam(*file, brdf, std::move(current), warnings);
 }
 
+Result<std::vector<float>> loadBparam(const std::string& path, const CustomBrdf& brdf, std::vector<float> current,
+                                      std::vector<Diagnostic>& warnings) {
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    return parseBparam(*text, path, brdf, std::move(current), warnings);
+}
+
+Result<std::string> findBparamBrdf(const BparamFile& file, const std::string& bparamPath) {
+    namespace fs = std::filesystem;
+    if (file.brdfPath.empty())
+        return makeError("the file does not name its .brdf (BRDF Explorer writes a first line 'bparam NAME.brdf'); "
+                         "open the .brdf file first, then this file",
+                         {bparamPath, 1, 1});
+    const fs::path written(file.brdfPath), folder = fs::path(bparamPath).parent_path();
+    std::error_code code;
+    for (const fs::path& candidate : {written, folder / written, folder / written.filename()})
+        if (fs::is_regular_file(candidate, code)) return candidate.string();
+    return makeError("the .brdf file it names, '" + file.brdfPath + "', is neither there nor beside this file",
+                     {bparamPath, 1, 1});
+}
+
+Result<Scene> loadBparamPreviewStage(const std::string& path, std::vector<Diagnostic>& warnings, int width, int height) {
+    auto text = readTextFile(path);
+    if (!text) return text.error();
+    auto file = parseBparamFile(*text, path);
+    if (!file) return file.error();
+    auto brdfPath = findBparamBrdf(*file, path);
+    if (!brdfPath) return brdfPath.error();
+    auto brdf = loadCustomBrdf(*brdfPath);
+    if (!brdf) return brdf.error();
+    warnings.insert(warnings.end(), (*brdf)->file.warnings.begin(), (*brdf)->file.warnings.end());
+    warnings.insert(warnings.end(), file->warnings.begin(), file->warnings.end());
+    Material material = customBrdfMaterial(*brdf);
+    material.values = applyBparam(*file, **brdf, std::move(material.values), warnings);
+    return previewStage(material, width > 0 ? width : kDefaultMaterialPreviewSize,
+                        height > 0 ? height : kDefaultMaterialPreviewSize);
+}
+
+bool isBparamFilePath(const std::string& path) { return lowerExtension(path) == "bparam"; }
+
 std::string formatBparam(const CustomBrdf& brdf, const std::vector<float>& values) {
-    std::string text = "# Parameter values for " + brdf.displayName + " (BRDF Explorer .bparam, written by Glint)\n"
-                       "::begin parameters\n";
+    // BRDF Explorer opens the named file from its working folder: the path is written absolute.
+    std::string text = "bparam " + std::filesystem::absolute(brdf.file.path).lexically_normal().string() +
+                       "\n\n::begin parameters\n";
     for (size_t i = 0; i < brdf.file.params.size(); ++i)
         text += formatBrdfParamLine(brdf.file.params[i], values.data() + packedOffset(brdf.table, static_cast<int>(i))) + "\n";
     return text + "::end parameters\n";

@@ -68,6 +68,11 @@ Status checkName(const Token& token, const std::string& path, int line) {
 
 }  // namespace
 
+std::string_view headerWord(std::string_view line) {
+    const std::string_view content = trimmed(line);
+    return content.substr(0, content.find_first_of(" \t"));
+}
+
 Status checkUtf8(std::string_view text, const std::string& path) {
     int line = 1, column = 1;
     for (size_t i = 0; i < text.size();) {
@@ -267,7 +272,7 @@ const char* glslTypeOf(ParamKind kind) {
 
 // --- the file -----------------------------------------------------------------------------------
 
-enum class Block { None, Parameters, Shader };
+enum class Block { None, Parameters, Shader, Skipped };  // Skipped: a section BRDF Explorer knows, Glint does not use
 
 }  // namespace
 
@@ -280,6 +285,7 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
     file.path = path;
     Block block = Block::None;
     int blockLine = 0;
+    std::string skippedSection;  // the open Block::Skipped's name
     bool sawHeader = false, sawParameters = false, sawShader = false;
     std::string shaderLines;  // the shader block's lines; others blank
     int lineNumber = 0;
@@ -304,24 +310,32 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
             const std::string section = tokens.size() > 1 ? std::string(tokens[1].text) : "";
             if (tokens.size() != 2 || (verb != "begin" && verb != "end"))
                 return makeError("expected '::begin SECTION' or '::end SECTION'", here);
-            if (section != "parameters" && section != "shader")
-                return makeError("unknown section '" + section + "' (a .brdf file has 'parameters' and 'shader')",
-                                 {path, lineNumber, column + 2 + tokens[1].column - 1});
-            const Block named = section == "parameters" ? Block::Parameters : Block::Shader;
+            const Block named = section == "parameters" ? Block::Parameters
+                                : section == "shader"   ? Block::Shader
+                                                        : Block::Skipped;
             if (verb == "begin") {
                 if (block != Block::None)
                     return makeError("'::begin " + section + "' inside the block opened at line " +
                                          std::to_string(blockLine) + " (close it with ::end first)",
                                      here);
                 if (!sawHeader) return makeError("the file must start with the line 'analytic'", here);
-                bool& seen = named == Block::Parameters ? sawParameters : sawShader;
-                if (seen) return makeError("a second '::begin " + section + "' block", here);
-                seen = true;
+                if (named == Block::Skipped) {  // BRDF Explorer warns and reads on; so does Glint
+                    file.warnings.push_back(makeError(
+                        "warning: section '" + section + "' is skipped" +
+                            (section == "isFunc" ? " (BRDF Explorer's importance-sampling function, which Glint does not use)"
+                                                 : " (Glint reads 'parameters' and 'shader')"),
+                        {path, lineNumber, column + 2 + tokens[1].column - 1}));
+                    skippedSection = section;
+                } else {
+                    bool& seen = named == Block::Parameters ? sawParameters : sawShader;
+                    if (seen) return makeError("a second '::begin " + section + "' block", here);
+                    seen = true;
+                }
                 block = named;
                 blockLine = lineNumber;
                 if (named == Block::Shader) file.shaderLine = lineNumber;
             } else {
-                if (block != named)
+                if (block != named || (named == Block::Skipped && section != skippedSection))
                     return makeError("'::end " + section + "' without '::begin " + section + "'", here);
                 block = Block::None;
             }
@@ -333,6 +347,7 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
             continue;
         }
         shaderLines += "\n";
+        if (block == Block::Skipped) continue;
         if (content.empty() || content[0] == '#') continue;
         if (block == Block::Parameters) {
             auto param = parseBrdfParamLine(line, path, lineNumber);
@@ -348,7 +363,7 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
             continue;
         }
         if (!sawHeader) {
-            if (content == "analytic") {
+            if (headerWord(content) == "analytic") {
                 sawHeader = true;
                 continue;
             }
@@ -359,8 +374,9 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
         return makeError("text outside a block (expected '::begin parameters' or '::begin shader')", here);
     }
     if (block != Block::None)
-        return makeError(std::string("unterminated block: '::begin ") +
-                             (block == Block::Shader ? "shader" : "parameters") + "' has no matching ::end",
+        return makeError("unterminated block: '::begin " +
+                             (block == Block::Shader ? std::string("shader") : block == Block::Parameters ? "parameters" : skippedSection) +
+                             "' has no matching ::end",
                          {path, blockLine, 1});
     if (!sawHeader) return makeError("the file must start with the line 'analytic'", {path, 1, 1});
     if (!sawShader) return makeError("no '::begin shader' block", {path, lineNumber, 1});

@@ -40,6 +40,7 @@ struct BrdfFile {
     std::vector<std::string> topLevelNames;
     std::vector<std::string> macroNames;
     std::vector<std::string> declaredUniforms;  // parameters the shader declares as `uniform T name;`
+    std::vector<Diagnostic> warnings;           // sections skipped (BRDF Explorer's `isFunc`, ...), located
 };
 
 // Parses .brdf text; `path` names it in messages.
@@ -48,6 +49,9 @@ Result<BrdfFile> loadBrdfFile(const std::string& path);
 
 // --- shared with .bparam (bparam_file.h) ---------------------------------------------------------
 
+// The first word of a header line (`analytic`, `bparam NAME`): BRDF Explorer reads only the word
+// before the first space, so `analytic  # comment` is an `analytic` header.
+std::string_view headerWord(std::string_view line);
 // Checks that `text` is UTF-8; the error names the line and column of the first bad byte.
 Status checkUtf8(std::string_view text, const std::string& path);
 // Parses one parameter line (already split from its block); `line` locates errors.

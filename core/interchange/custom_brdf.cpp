@@ -49,9 +49,10 @@ bool isBrdfFilePath(const std::string& path) {
     return extension == ".brdf";
 }
 
-Result<Scene> loadBrdfPreviewStage(const std::string& path, int width, int height) {
+Result<Scene> loadBrdfPreviewStage(const std::string& path, std::vector<Diagnostic>* warnings, int width, int height) {
     auto brdf = loadCustomBrdf(path);
     if (!brdf) return brdf.error();
+    if (warnings) warnings->insert(warnings->end(), (*brdf)->file.warnings.begin(), (*brdf)->file.warnings.end());
     return previewStage(customBrdfMaterial(std::move(*brdf)), width > 0 ? width : kDefaultMaterialPreviewSize,
                         height > 0 ? height : kDefaultMaterialPreviewSize);
 }

@@ -31,8 +31,10 @@ Result<std::shared_ptr<const CustomBrdf>> loadCustomBrdf(const std::string& path
 // A material using the custom BRDF at its defaults, named after the file.
 Material customBrdfMaterial(std::shared_ptr<const CustomBrdf> brdf);
 bool isBrdfFilePath(const std::string& path);  // ends in .brdf (any case)
-// `glint render foo.brdf`: the file's BRDF at its defaults on the preview stage (0: default size).
-Result<Scene> loadBrdfPreviewStage(const std::string& path, int width = 0, int height = 0);
+// `glint render foo.brdf`: the file's BRDF at its defaults on the preview stage (0: default size);
+// the sections it skipped go to `warnings` when given.
+Result<Scene> loadBrdfPreviewStage(const std::string& path, std::vector<Diagnostic>* warnings = nullptr, int width = 0,
+                                   int height = 0);
 
 // Refuses a scene that holds a custom BRDF: the CPU reference cannot run GLSL.
 Status referenceCanRender(const Scene& scene);

@@ -26,7 +26,7 @@ Diagnostic atOffset(const std::string& file, size_t offset, const std::string& m
 
 }  // namespace
 
-Result<std::string> glbJsonChunk(std::string_view bytes, const std::string& file) {
+Result<GlbChunks> glbChunks(std::string_view bytes, const std::string& file) {
     if (bytes.size() < kGlbHeaderBytes)
         return atOffset(file, 0, "not a .glb: " + std::to_string(bytes.size()) + " bytes is too short for the 12-byte header");
     if (readLittleEndian32(bytes, 0) != kGlbMagic) return atOffset(file, 0, "not a .glb: the file does not start with \"glTF\"");
@@ -35,7 +35,7 @@ Result<std::string> glbJsonChunk(std::string_view bytes, const std::string& file
     if (const uint32_t length = readLittleEndian32(bytes, 8); length != bytes.size())
         return atOffset(file, 8, "the header says the file is " + std::to_string(length) + " bytes, but it is " +
                                      std::to_string(bytes.size()) + (length > bytes.size() ? " (truncated)" : " (trailing data)"));
-    std::string json;
+    GlbChunks chunks;
     bool sawJson = false, sawBin = false;
     for (size_t offset = kGlbHeaderBytes; offset < bytes.size();) {
         if (bytes.size() - offset < kChunkHeaderBytes)
@@ -49,15 +49,22 @@ Result<std::string> glbJsonChunk(std::string_view bytes, const std::string& file
         if (type == kJsonChunk) {
             if (sawJson) return atOffset(file, offset + 4, "a second JSON chunk (a .glb has exactly one)");
             sawJson = true;
-            json.assign(bytes.data() + dataStart, length);
+            chunks.json.assign(bytes.data() + dataStart, length);
         } else if (type == kBinChunk) {
             if (sawBin) return atOffset(file, offset + 4, "a second BIN chunk (a .glb has at most one)");
             sawBin = true;
+            chunks.bin = bytes.substr(dataStart, length);
         }  // chunks of other types are skipped, as the specification asks
         offset = dataStart + length;
     }
     if (!sawJson) return atOffset(file, kGlbHeaderBytes, "the file has no JSON chunk");
-    return json;
+    return chunks;
+}
+
+Result<std::string> glbJsonChunk(std::string_view bytes, const std::string& file) {
+    auto chunks = glbChunks(bytes, file);
+    if (!chunks) return chunks.error();
+    return std::move(chunks->json);
 }
 
 Result<ImportedFile> parseGlb(std::string_view bytes, const std::string& file) {

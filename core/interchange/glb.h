@@ -11,6 +11,11 @@
 
 namespace glint {
 
+struct GlbChunks {
+    std::string json;
+    std::string_view bin;  // into the bytes given; empty when the file has no BIN chunk
+};
+Result<GlbChunks> glbChunks(std::string_view bytes, const std::string& file);
 // The JSON chunk's text, or an error naming the byte offset where the layout goes wrong.
 Result<std::string> glbJsonChunk(std::string_view bytes, const std::string& file);
 // Materials and lights of a .glb; JSON errors are located in the JSON chunk as

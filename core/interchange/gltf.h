@@ -2,7 +2,8 @@
 // _transmission, _volume; _clearcoat and _emissive_strength are read and reported, not rendered)
 // into Glint's Cook-Torrance / glass models and KHR_lights_punctual lights with their photometric
 // units converted; exporting a material on a UV sphere, plus lights, as a self-contained .gltf.
-// Meshes, textures' pixels, animations and cameras of an imported file are not read.
+// A dielectric's baseColorTexture and any normalTexture (image files) become material textures;
+// other textures are kept as references. Meshes, animations and cameras are not read here.
 #pragma once
 
 #include <span>

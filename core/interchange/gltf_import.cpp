@@ -4,6 +4,7 @@
 #include "interchange/gltf.h"
 
 #include <cmath>
+#include <filesystem>
 #include <set>
 
 #include <glm/gtc/quaternion.hpp>
@@ -12,6 +13,8 @@
 #include "light/photometry.h"
 #include "math/constants.h"
 #include "scene/json_object_reader.h"
+#include "texture/material_texture.h"
+#include "texture/texture_image.h"
 #include "util/file_io.h"
 
 namespace glint {
@@ -44,6 +47,7 @@ const std::set<std::string> kKnownExtensions = {
 struct Context {
     const JsonDocument& document;
     std::vector<Diagnostic>& warnings;
+    std::filesystem::path folder;  // image URIs are relative to it
     void warn(const std::string& pointer, const std::string& message) const {
         warnings.push_back(makeError("warning: " + pointer + ": " + message, document.locate(pointer)));
     }
@@ -82,8 +86,45 @@ void readTexture(const Context& context, ObjectReader& reader, const std::string
         }
     }
     imported.textures.push_back({key, path, ""});
-    context.warn(appendPointer(reader.pointer(), key),
-                 "texture kept as a reference (" + path + ") but not rendered: Glint has no material textures yet");
+}
+
+// The textures Glint's material textures (texture/material_texture.h) carry: baseColorTexture as
+// the diffuse albedo of a dielectric (metallicFactor 0) and normalTexture as the normal map, from
+// image files beside the glTF. The others stay references, with a warning each: they belong to a
+// standard surface Glint does not have yet.
+void useTextures(const Context& context, const std::string& pointer, ImportedMaterial& imported, glm::vec4 baseColor,
+                 float metallic) {
+    for (const TextureReference& reference : imported.textures) {
+        const bool baseColorSlot = reference.slot == "baseColorTexture";
+        const std::string where = pointer + (baseColorSlot || reference.slot == "metallicRoughnessTexture"
+                                                 ? "/pbrMetallicRoughness/" + reference.slot
+                                                 : "/" + reference.slot);
+        const bool carried = (baseColorSlot && imported.material.model == BrdfModel::CookTorrance && metallic == 0.0f) ||
+                             reference.slot == "normalTexture";
+        if (!carried) {
+            context.warn(where, "texture kept as a reference (" + reference.path + ") but not rendered: Glint's textures carry " +
+                                    "baseColorTexture on a dielectric (metallicFactor 0) and normalTexture only");
+            continue;
+        }
+        if (reference.path.empty() || reference.path[0] == '(') {
+            context.warn(where, "texture " + reference.path + " not rendered: Glint reads texture images from files only");
+            continue;
+        }
+        MaterialTexture texture;
+        texture.parameter = baseColorSlot ? "diffuse_albedo" : kNormalMapKey;
+        texture.kind = TextureKind::Image;
+        texture.file = (context.folder / reference.path).lexically_normal().string();
+        texture.colorSpace = baseColorSlot ? TextureColorSpace::Srgb : TextureColorSpace::Linear;  // glTF 2.0 §3.9.3, §3.9.4
+        auto image = loadTextureImage(texture.file, texture.colorSpace);
+        if (!image) {
+            context.warn(where, "texture not rendered: " + image.error().format());
+            continue;
+        }
+        texture.image = *image;
+        imported.material.textures.push_back(std::move(texture));
+        if (baseColorSlot && glm::vec3(baseColor) != glm::vec3(1.0f))
+            context.warn(where, "the texture is used as the albedo; baseColorFactor is not multiplied into it");
+    }
 }
 
 // F0 → index: a dielectric n = (1 + √F0)/(1 − √F0) (inverting F0 = ((n−1)/(n+1))²); a conductor
@@ -91,8 +132,9 @@ void readTexture(const Context& context, ObjectReader& reader, const std::string
 float dielectricIorForF0(float f0) { return (1.0f + std::sqrt(f0)) / (1.0f - std::sqrt(f0)); }
 float conductorExtinctionForF0(float f0) { return 2.0f * std::sqrt(f0 / (1.0f - f0)); }
 
-ImportedMaterial readMaterial(const Context& context, ObjectReader& reader, const nlohmann::json& root, int index) {
+ImportedMaterial readMaterial(const Context& fileContext, ObjectReader& reader, const nlohmann::json& root, int index) {
     ImportedMaterial imported;
+    const Context context{fileContext.document, imported.warnings, fileContext.folder};  // this material's warnings stay with it
     const std::string name = reader.string("name", "gltf material " + std::to_string(index));
     glm::vec4 baseColor(1.0f);
     float metallic = 1.0f, roughness = 1.0f;
@@ -236,6 +278,7 @@ ImportedMaterial readMaterial(const Context& context, ObjectReader& reader, cons
         setParam(material, "fresnel", 0.0f);       // Schlick, as glTF's reference BRDF
     }
     if (auto problem = findOutOfRange(material)) reader.failHere(*problem);
+    useTextures(context, reader.pointer(), imported, baseColor, metallic);
     return imported;
 }
 
@@ -379,7 +422,8 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
     ImportedFile result;
-    const Context context{*document, result.warnings};
+    // A .glb's JSON chunk is named "FILE (JSON chunk)": its folder is the file's.
+    const Context context{*document, result.warnings, std::filesystem::path(file).parent_path()};
     try {
         ObjectReader root = readRoot(*document, "glTF");
         if (!root.has("asset")) root.failHere("not a glTF file: it has no \"asset\"");
@@ -400,6 +444,11 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
                 result.materials.push_back(readMaterial(context, material, document->root(), index++));
         }
         readLights(context, root, result);
+        const nlohmann::json& meshes = document->root().contains("meshes") ? document->root()["meshes"] : nlohmann::json();
+        for (size_t i = 0; meshes.is_array() && i < meshes.size(); ++i)
+            result.meshNames.push_back(meshes[i].is_object() && meshes[i].contains("name") && meshes[i]["name"].is_string()
+                                           ? meshes[i]["name"].get<std::string>()
+                                           : "mesh " + std::to_string(i));
         if (result.materials.empty() && result.lights.empty())
             root.failHere("the file has no material and no light (KHR_lights_punctual) for Glint to open");
     } catch (const JsonReadError& error) {

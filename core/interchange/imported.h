@@ -12,8 +12,9 @@
 
 namespace glint {
 
-// A texture the source file names. Glint does not render material textures yet, so the path is
-// kept for the user and written back on export, but the material uses its constant values.
+// A texture the source file names, kept for the user and written back on export. Those Glint's
+// material textures carry (a glTF's base colour on a dielectric, its normal map) are also in the
+// material's `textures`; for the rest the material uses its constant values.
 struct TextureReference {
     std::string slot;     // the source's name for it: "map_Kd", "baseColorTexture", ...
     std::string path;     // as written in the file (relative to it)
@@ -23,13 +24,23 @@ struct TextureReference {
 struct ImportedMaterial {
     Material material;
     std::vector<TextureReference> textures;
+    std::vector<Diagnostic> warnings;  // about this material only, located where the source allows
 };
 
 struct ImportedFile {
     std::vector<ImportedMaterial> materials;
     std::vector<Light> lights;
-    std::vector<Diagnostic> warnings;  // located where the source allows
+    std::vector<std::string> meshNames;  // the meshes a glTF holds (read as meshes by geometry/mesh_import.h)
+    std::vector<Diagnostic> warnings;  // about the file and its lights, located where the source allows
 };
+
+// The file's warnings and those of material `index` (the one used), or of every material.
+std::vector<Diagnostic> warningsFor(const ImportedFile& file, size_t index);
+std::vector<Diagnostic> allWarnings(const ImportedFile& file);
+
+// The material `selector` names: its index (0 is the first) or its name; empty is the first.
+// An unknown name or index is an error listing what the file holds.
+Result<size_t> chooseMaterial(const ImportedFile& file, const std::string& selector, const std::string& path);
 
 // Writers return the text and the warnings about what the target format cannot hold.
 struct ExportedText {

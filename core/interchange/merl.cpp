@@ -19,6 +19,13 @@ glm::vec3 MerlTable::at(int thetaHalf, int thetaDifference, int phiDifference) c
 }
 
 Result<MerlTable> parseMerl(std::string_view bytes, const std::string& file) {
+    // A repository that keeps MERL files in Git LFS checks out a small text pointer in their place
+    // when git-lfs is not installed (https://github.com/git-lfs/git-lfs/blob/main/docs/spec.md).
+    if (bytes.substr(0, 24) == "version https://git-lfs.")
+        return makeError("not a MERL BRDF but a Git LFS pointer (" + std::to_string(bytes.size()) +
+                             " bytes of text naming the real file): fetch the real file with `git lfs pull` in its "
+                             "repository (install git-lfs first), or download it from the MERL database",
+                         {file, 1, 1});
     if (bytes.size() < 3 * sizeof(int32_t))
         return makeError("not a MERL BRDF: " + std::to_string(bytes.size()) +
                          " bytes is too short for the header (three int32 dimensions)", {file});

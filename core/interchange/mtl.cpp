@@ -57,6 +57,20 @@ std::vector<std::string> splitWords(const std::string& text) {
     return words;
 }
 
+std::string latin1ToUtf8(const std::string& bytes) {
+    std::string text;
+    for (const char c : bytes) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x80) {
+            text += c;
+        } else {
+            text += static_cast<char>(0xC0 | (byte >> 6));
+            text += static_cast<char>(0x80 | (byte & 0x3F));
+        }
+    }
+    return text;
+}
+
 std::string hexByte(char c) {
     char text[3];
     std::snprintf(text, sizeof text, "%02x", static_cast<unsigned char>(c));
@@ -136,6 +150,7 @@ struct MtlBlock {
     int illum = 2;              // the spec's default when absent is undefined; 2 is what exporters mean
     int dissolveLine = 0;
     std::vector<TextureReference> textures;
+    std::vector<Diagnostic> warnings;  // what its statements held that Glint does not use
 };
 
 glm::vec3 readColor(const Line& line, std::vector<Diagnostic>& warnings, bool* used) {
@@ -176,8 +191,10 @@ void readStatement(const Line& line, MtlBlock& block, std::vector<Diagnostic>& w
         if (block.exponent < 0) line.fail("'Ns' must be at least 0");
     } else if (keyword == "Ni") {
         line.expectWords(1, 1, "one number");
-        block.ior = line.number_(1, "an index of refraction");
-        if (block.ior <= 0) line.fail("'Ni' must be greater than 0");
+        const float ior = line.number_(1, "an index of refraction");
+        if (ior > 0) block.ior = ior;
+        else  // Blender and others write `Ni 0` (or less) for "no index": the default 1 stands
+            warnings.push_back(line.warning("'Ni " + line.words[1] + "' is no index of refraction; read as 1"));
     } else if (keyword == "d" || keyword == "Tr") {
         // "d -halo 0.5" is valid MTL; Glint reads the factor and warns about the halo.
         size_t index = 1;
@@ -199,8 +216,8 @@ void readStatement(const Line& line, MtlBlock& block, std::vector<Diagnostic>& w
         block.textures.push_back(readTexture(line));
     } else if (kUnusedStatements.count(keyword)) {
         warnings.push_back(line.warning("'" + keyword + "' is valid MTL but Glint does not use it; ignored"));
-    } else {
-        line.fail("unknown statement '" + keyword + "'");
+    } else {  // Wavefront readers skip what they do not know (3ds Max's Km, vendors' own)
+        warnings.push_back(line.warning("unknown statement '" + keyword + "'; ignored"));
     }
 }
 
@@ -210,13 +227,14 @@ void readStatement(const Line& line, MtlBlock& block, std::vector<Diagnostic>& w
 // inverts R = κ²/(4 + κ²) (Born & Wolf §14.2 at θ = 0).
 float extinctionForReflectance(float reflectance) { return 2.0f * std::sqrt(reflectance / (1.0f - reflectance)); }
 
-ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file, std::vector<Diagnostic>& warnings) {
+ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file) {
     const SourceLocation where{file, block.line, 0};
-    auto warn = [&](const std::string& message) { warnings.push_back(makeError("warning: " + message, where)); };
     ImportedMaterial imported;
+    imported.warnings = block.warnings;
+    auto warn = [&](const std::string& message) { imported.warnings.push_back(makeError("warning: " + message, where)); };
     imported.textures = block.textures;
     if (!block.textures.empty())
-        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint has no material textures yet)");
+        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint renders a glTF's base colour and normal textures only)");
     const bool reflective = block.illum == 3 || block.illum == 5 || block.illum == 8;
     const bool refractive = block.illum == 4 || block.illum == 6 || block.illum == 7 || block.illum == 9;
     if (block.dissolve < 1.0f && !refractive)
@@ -274,9 +292,6 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
     ImportedFile result;
     std::vector<MtlBlock> blocks;
     try {
-        if (auto where = findInvalidUtf8(text))
-            throw MtlError{makeError("the file is not UTF-8 text (byte " + std::to_string(where->byteOffset) + ")",
-                                     {file, where->line, 0})};
         std::istringstream stream(text);
         int number = 0;
         for (std::string raw; std::getline(stream, raw);) {
@@ -285,6 +300,12 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
                 if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v')
                     throw MtlError{makeError("control character 0x" + hexByte(c) + " in the line: not a text .mtl file",
                                              {file, number, 0})};
+            // Older tools write names and comments in Latin-1 (ISO 8859-1); a line that is not
+            // UTF-8 is read as Latin-1, with a warning, as Wavefront readers take bytes as they come.
+            if (findInvalidUtf8(raw)) {
+                raw = latin1ToUtf8(raw);
+                result.warnings.push_back(makeError("warning: the line is not UTF-8; read as Latin-1 (ISO 8859-1)", {file, number, 0}));
+            }
             const size_t comment = raw.find('#');
             const std::string content = trim(comment == std::string::npos ? raw : raw.substr(0, comment));
             if (content.empty()) continue;
@@ -292,15 +313,19 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
             if (line.words.empty()) continue;
             line.rest = trim(content.substr(line.words[0].size()));
             if (line.words[0] == "newmtl") {
-                if (line.rest.empty()) line.fail("'newmtl' needs a material name");
-                blocks.push_back(MtlBlock{.name = line.rest, .line = number});
+                MtlBlock block{.name = line.rest, .line = number};
+                if (block.name.empty()) {  // Blender writes `newmtl` with no name for a slot without a material
+                    block.name = "unnamed (line " + std::to_string(number) + ")";
+                    block.warnings.push_back(line.warning("'newmtl' without a name; named '" + block.name + "'"));
+                }
+                blocks.push_back(std::move(block));
                 continue;
             }
             if (blocks.empty()) line.fail("'" + line.words[0] + "' before the first 'newmtl'");
-            readStatement(line, blocks.back(), result.warnings);
+            readStatement(line, blocks.back(), blocks.back().warnings);
         }
         if (blocks.empty()) throw MtlError{makeError("no material in the file (no 'newmtl' line)", {file, 0, 0})};
-        for (const MtlBlock& block : blocks) result.materials.push_back(mapBlock(block, file, result.warnings));
+        for (const MtlBlock& block : blocks) result.materials.push_back(mapBlock(block, file));
     } catch (const MtlError& error) {
         return error.diagnostic;
     }

@@ -68,8 +68,9 @@ ObjMaterial readObjMaterial(const std::string& objPath) {
         auto named = std::find_if(loaded->materials.begin(), loaded->materials.end(),
                                   [&](const ImportedMaterial& material) { return material.material.name == firstUsed; });
         if (named == loaded->materials.end()) continue;
+        const std::vector<Diagnostic> warnings = warningsFor(*loaded, static_cast<size_t>(named - loaded->materials.begin()));
+        result.warnings.insert(result.warnings.end(), warnings.begin(), warnings.end());
         result.material = std::move(*named);
-        result.warnings.insert(result.warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
     }
     const SourceLocation used{objPath, statements.firstUsedLine, 0};
     if (!result.material) {

@@ -62,6 +62,7 @@ struct PlaneShape {
 struct CubeShape {
     glm::vec3 center{0.0f};
     float size = 1.5f;
+    glm::vec3 rotationDegrees{0.0f};  // about `center`: x, then y, then z [degrees]
 };
 
 // A torus around the +y axis: a tube of `minorRadius` whose centre line is a circle of
@@ -72,6 +73,7 @@ struct TorusShape {
     float minorRadius = 0.3f;
     int segments = 64;
     int rings = 32;
+    glm::vec3 rotationDegrees{0.0f};  // about `center`: x, then y, then z [degrees]
 };
 
 // A triangle mesh loaded from a file (geometry/mesh_import.h). The importer centres it and
@@ -82,6 +84,8 @@ struct MeshShape {
     glm::vec3 center{0.0f};
     float scale = 1.0f;  // radius of the mesh's bounding sphere [m]
     float smoothingAngleDegrees = 60.0f;  // crease angle for normals the file lacks (mesh_import.h)
+    MeshUpAxis upAxis = MeshUpAxis::Y;    // the file's up axis ("up": "y" | "z")
+    glm::vec3 rotationDegrees{0.0f};      // x, then y, then z [degrees], turned into `mesh` when it is read
     std::shared_ptr<const Mesh> mesh;  // shared between copies of the scene (undo history)
     MeshStatistics statistics;
 };

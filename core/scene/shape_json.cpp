@@ -11,6 +11,9 @@ using nlohmann::json;
 
 json vec3(glm::vec3 v) { return {v.x, v.y, v.z}; }
 
+// "rotation": [x, y, z] in degrees, turned about x, then y, then z, about the shape's centre.
+glm::vec3 readRotation(ObjectReader& reader) { return reader.vec3("rotation", glm::vec3(0.0f), Bounds::between(-3600.0, 3600.0)); }
+
 MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     MeshShape mesh;
     mesh.path = reader.requiredString("path");
@@ -19,9 +22,18 @@ MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     mesh.scale = static_cast<float>(reader.number("scale", mesh.scale, Bounds::positive()));
     mesh.smoothingAngleDegrees = static_cast<float>(
         reader.number("smoothing_angle_degrees", mesh.smoothingAngleDegrees, Bounds::between(0.0, 180.0)));
+    const std::string up = reader.string("up", "y");
+    if (up != "y" && up != "z") reader.fail("up", "expected \"y\" or \"z\" (the file's axis that points up)");
+    mesh.upAxis = up == "z" ? MeshUpAxis::Z : MeshUpAxis::Y;
+    mesh.rotationDegrees = readRotation(reader);
     mesh.resolvedPath = resolveReferencedPath(mesh.path, sceneFile).string();
-    auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees});
+    auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees, mesh.upAxis});
     if (!imported) reader.fail("path", imported.error().format());
+    if (mesh.rotationDegrees != glm::vec3(0.0f)) {  // about the mesh's centre, the origin of its unit sphere
+        Mesh turned = *imported->mesh;
+        rotateMesh(turned, glm::vec3(0.0f), mesh.rotationDegrees);
+        imported->mesh = std::make_shared<const Mesh>(std::move(turned));
+    }
     mesh.mesh = imported->mesh;
     mesh.statistics = imported->statistics;
     return mesh;
@@ -54,6 +66,7 @@ Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string&
         CubeShape cube;
         cube.center = reader.vec3("center", cube.center);
         cube.size = static_cast<float>(reader.number("size", cube.size, Bounds::positive()));
+        cube.rotationDegrees = readRotation(reader);
         return cube;
     }
     if (shapeIndex == 3) {
@@ -63,6 +76,7 @@ Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string&
         torus.minorRadius = static_cast<float>(reader.number("minor_radius", torus.minorRadius, Bounds::positive()));
         torus.segments = reader.integer("segments", torus.segments, 3, 1024);
         torus.rings = reader.integer("rings", torus.rings, 3, 512);
+        torus.rotationDegrees = readRotation(reader);
         return torus;
     }
     return readMeshShape(reader, sceneFile);
@@ -77,14 +91,25 @@ json shapeToJson(const Shape& shape, const std::string& sceneFile) {
         if (plane->edgeFade > 0.0f) out["edge_fade"] = plane->edgeFade;  // absent: a hard edge
         return out;
     }
-    if (const auto* cube = std::get_if<CubeShape>(&shape)) return {{"center", vec3(cube->center)}, {"size", cube->size}};
-    if (const auto* torus = std::get_if<TorusShape>(&shape))
-        return {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
-                {"segments", torus->segments}, {"rings", torus->rings}};
+    json out;
+    if (const auto* cube = std::get_if<CubeShape>(&shape)) {
+        out = {{"center", vec3(cube->center)}, {"size", cube->size}};
+        if (cube->rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3(cube->rotationDegrees);
+        return out;
+    }
+    if (const auto* torus = std::get_if<TorusShape>(&shape)) {
+        out = {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
+               {"segments", torus->segments}, {"rings", torus->rings}};
+        if (torus->rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3(torus->rotationDegrees);
+        return out;
+    }
     const auto& mesh = std::get<MeshShape>(shape);
     const std::string& file = mesh.resolvedPath.empty() ? mesh.path : mesh.resolvedPath;
-    return {{"path", referencedPathFor(file, sceneFile)}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
-            {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
+    out = {{"path", referencedPathFor(file, sceneFile)}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
+           {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
+    if (mesh.upAxis == MeshUpAxis::Z) out["up"] = "z";
+    if (mesh.rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3(mesh.rotationDegrees);
+    return out;
 }
 
 }  // namespace glint

@@ -17,8 +17,11 @@ Result<Scene> loadRenderable(const std::string& path, int width, int height, std
     if (const ImportFormat* format = findImportFormat(path)) {
         auto imported = format->load(path);
         if (!imported) return imported.error();
-        if (warnings) warnings->insert(warnings->end(), imported->warnings.begin(), imported->warnings.end());
         if (imported->materials.empty()) return makeError("the file has no material to render", {path});
+        if (warnings) {
+            const std::vector<Diagnostic> first = warningsFor(*imported, 0);
+            warnings->insert(warnings->end(), first.begin(), first.end());
+        }
         return previewStage(imported->materials.front().material, width > 0 ? width : kDefaultMaterialPreviewSize,
                             height > 0 ? height : kDefaultMaterialPreviewSize);
     }

@@ -62,11 +62,13 @@ bool drawShapeEditor(Shape& shape, std::string& refusal) {
     } else if (auto* cube = std::get_if<CubeShape>(&shape)) {
         changed |= centreField(cube->center);
         changed |= positiveLength("Edge m", cube->size, refusal);
+        changed |= ImGui::DragFloat3("Rotation °", &cube->rotationDegrees.x, 0.5f, -360.0f, 360.0f, "%.1f");
     } else if (auto* torus = std::get_if<TorusShape>(&shape)) {
         changed |= centreField(torus->center);
         changed |= positiveLength("Major radius m", torus->majorRadius, refusal);
         changed |= positiveLength("Tube radius m", torus->minorRadius, refusal);
         changed |= tessellationSliders(torus->segments, torus->rings, 3);
+        changed |= ImGui::DragFloat3("Rotation °", &torus->rotationDegrees.x, 0.5f, -360.0f, 360.0f, "%.1f");
     } else if (auto* mesh = std::get_if<MeshShape>(&shape)) {
         changed |= centreField(mesh->center);
         changed |= positiveLength("Size (radius) m", mesh->scale, refusal);
@@ -124,6 +126,7 @@ void drawMeshStatistics(const MeshShape& mesh) {
     ImGui::Text("%zu vertices, %zu triangles", statistics.vertexCount, statistics.triangleCount);
     ImGui::Text("normals: %s", statistics.hadNormals ? "from the file" : "generated (smooth)");
     ImGui::Text("degenerate faces dropped: %zu", statistics.degenerateTrianglesDropped);
+    if (statistics.pointsAndLinesDropped > 0) ImGui::Text("points and lines dropped: %zu", statistics.pointsAndLinesDropped);
     ImGui::Text("loaded in %.0f ms", statistics.loadSeconds * 1000.0);
 }
 

@@ -1,0 +1,142 @@
+// `glint info` (see info_command.h).
+#include "cli/info_command.h"
+
+#include <cstdio>
+
+#include "brdf/model_registry.h"
+#include "cli/render_input.h"
+#include "geometry/mesh_import.h"
+#include "interchange/bparam_file.h"
+#include "interchange/custom_brdf.h"
+#include "interchange/import_formats.h"
+#include "interchange/obj_material.h"
+#include "light/light_type_name.h"
+#include "scene/scene_json.h"
+#include "util/file_io.h"
+
+namespace glint {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: glint info FILE\n"
+    "  lists what FILE holds, by its type: a .mtl, .gltf or .glb (materials, lights, meshes, by index and\n"
+    "  name: `glint render --material NAME|INDEX` chooses one), a MERL .binary, a mesh .obj|.ply|.stl|.fbx\n"
+    "  (vertices, triangles, what was dropped), a BRDF Explorer .brdf or .bparam (parameters), or a scene\n"
+    "  or material .json; then the warnings opening it gives. Exit 0 when it loads, 2 when not.\n";
+
+void printMaterials(const std::vector<const Material*>& materials) {
+    std::printf("materials (%zu):\n", materials.size());
+    for (size_t i = 0; i < materials.size(); ++i)
+        std::printf("  %zu '%s' (%s)\n", i, materials[i]->name.c_str(),
+                    materials[i]->custom ? materials[i]->custom->displayName.c_str() : modelInfo(materials[i]->model).id);
+}
+
+void printLights(const std::vector<Light>& lights) {
+    if (lights.empty()) return;
+    std::printf("lights (%zu):\n", lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) std::printf("  %zu '%s' (%s)\n", i, lights[i].name.c_str(), lightTypeName(lights[i].type));
+}
+
+void printParams(const std::vector<BrdfFileParam>& params) {
+    std::printf("parameters (%zu):\n", params.size());
+    for (const BrdfFileParam& param : params) {
+        const float* value = param.defaultValue.data();
+        std::printf("  %s\n", formatBrdfParamLine(param, value).c_str());
+    }
+}
+
+void printWarnings(const std::vector<Diagnostic>& warnings) {
+    if (warnings.empty()) return;
+    std::printf("warnings (%zu):\n", warnings.size());
+    for (const Diagnostic& warning : warnings) std::printf("  %s\n", warning.format().c_str());
+}
+
+int fail(const Diagnostic& error) {
+    std::fprintf(stderr, "glint info: %s\n", error.format().c_str());
+    return 2;
+}
+
+}  // namespace
+
+int runInfoCommand(const std::vector<std::string>& arguments) {
+    if (arguments.size() == 1 && (arguments[0] == "-h" || arguments[0] == "--help")) {
+        std::printf("%s", kUsage);
+        return 0;
+    }
+    if (arguments.size() != 1 || arguments[0].empty() || arguments[0][0] == '-') {
+        std::fprintf(stderr, "glint info: expected one FILE\n%s", kUsage);
+        return 2;
+    }
+    const std::string& path = arguments[0];
+    if (isBrdfFilePath(path)) {
+        auto file = loadBrdfFile(path);
+        if (!file) return fail(file.error());
+        std::printf("%s: BRDF Explorer analytic BRDF (GLSL shader at line %d)\n", path.c_str(), file->shaderLine);
+        printParams(file->params);
+        printWarnings(file->warnings);
+        return 0;
+    }
+    if (isBparamFilePath(path)) {
+        auto text = readTextFile(path);
+        auto file = text ? parseBparamFile(*text, path) : Result<BparamFile>(text.error());
+        if (!file) return fail(file.error());
+        auto brdf = findBparamBrdf(*file, path);
+        std::printf("%s: BRDF Explorer parameter values for %s (%s)\n", path.c_str(),
+                    file->brdfPath.empty() ? "(no .brdf named)" : file->brdfPath.c_str(),
+                    brdf ? ("found: " + *brdf).c_str() : "not found");
+        printParams(file->params);
+        printWarnings(file->warnings);
+        return 0;
+    }
+    if (const ImportFormat* format = findImportFormat(path)) {
+        auto file = format->load(path);
+        if (file || !isMeshFile(path)) {  // a glTF of meshes only is listed as a mesh below
+            if (!file) return fail(file.error());
+            std::printf("%s: %s\n", path.c_str(), format->description);
+            std::vector<const Material*> materials;
+            for (const ImportedMaterial& material : file->materials) materials.push_back(&material.material);
+            printMaterials(materials);
+            for (size_t i = 0; i < file->materials.size(); ++i)
+                for (const TextureReference& texture : file->materials[i].textures)
+                    std::printf("  %zu uses texture %s: %s (not rendered)\n", i, texture.slot.c_str(), texture.path.c_str());
+            printLights(file->lights);
+            if (!file->meshNames.empty()) {
+                std::printf("meshes (%zu):\n", file->meshNames.size());
+                for (size_t i = 0; i < file->meshNames.size(); ++i) std::printf("  %zu '%s'\n", i, file->meshNames[i].c_str());
+            }
+            printWarnings(allWarnings(*file));
+            return 0;
+        }
+    }
+    if (isMeshFile(path)) {
+        auto mesh = importMesh(path);
+        if (!mesh) return fail(mesh.error());
+        std::printf("%s: mesh: %s\n", path.c_str(), meshStatisticsText(mesh->statistics).c_str());
+        const ObjMaterial material = readObjMaterial(path);
+        if (material.material) std::printf("material (its first usemtl): '%s'\n", material.material->material.name.c_str());
+        printWarnings(material.warnings);
+        return 0;
+    }
+    auto text = readTextFile(path);
+    if (!text) return fail(text.error());
+    if (text->find("\"glint-material\"") != std::string::npos) {
+        auto material = parseMaterial(*text, path);
+        if (!material) return fail(material.error());
+        std::printf("%s: Glint material\n", path.c_str());
+        printMaterials({&*material});
+        return 0;
+    }
+    auto scene = parseScene(*text, path);
+    if (!scene) return fail(scene.error());
+    std::printf("%s: Glint scene\n", path.c_str());
+    std::vector<const Material*> materials;
+    for (const Material& material : scene->materials) materials.push_back(&material);
+    printMaterials(materials);
+    std::printf("objects (%zu):\n", scene->objects.size());
+    for (size_t i = 0; i < scene->objects.size(); ++i)
+        std::printf("  %zu '%s' (material %d)\n", i, scene->objects[i].name.c_str(), scene->objects[i].materialIndex);
+    printLights(scene->lights);
+    return 0;
+}
+
+}  // namespace glint

@@ -1,0 +1,25 @@
+// Checks on mesh files before assimp reads them, for what assimp 5.2.5 (Debian 12) gets wrong
+// silently or never returns from (PLY triangle strips, which it reads as one polygon, are rewritten
+// as faces instead: ply_strips.h): PLY headers that hang its reader, OBJ files cut short (a face of fewer than three corners, a corner cut in half,
+// indices past the vertices), glTF indices past a primitive's vertices (assimp drops the
+// triangle). Each finding is a Diagnostic naming the file and, where the format has them, the
+// line (OBJ, PLY header) or the JSON key (glTF). Nothing here builds a mesh.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "util/diagnostic.h"
+
+namespace glint {
+
+// `start`: the file's first bytes; `whole`: whether they are all of it.
+std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, const std::string& name);
+std::optional<Diagnostic> checkObjText(std::string_view text, const std::string& name);
+// `bytes`: a .gltf's JSON text or a .glb's bytes (`binary`); `folder` resolves external buffers
+// (empty: they are not checked).
+std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, const std::string& folder,
+                                           const std::string& name);
+
+}  // namespace glint
