@@ -222,7 +222,8 @@ TEST(EnvironmentMap, OrenNayarDirectionalAlbedoMatchesQuadrature) {
 // --- importance sampling of the map ---------------------------------------------------------
 
 TEST(EnvironmentDistribution, ItsDensityIntegratesToOneAndAgreesWithItsSamples) {
-    const EnvironmentDistribution& distribution = makeEnvironmentMap(test::smallLightImage())->distribution;
+    const auto map = makeEnvironmentMap(test::smallLightImage());  // owns the distribution below
+    const EnvironmentDistribution& distribution = map->distribution;
     // ∫ p dω over a fine grid of directions (4× the map's resolution in each direction).
     double integral = 0.0;
     const int width = 1024, height = 512;

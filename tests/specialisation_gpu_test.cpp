@@ -16,10 +16,18 @@
 namespace glint {
 namespace {
 
-// The default stage (sphere on a floor) lit by one light of each kind, the key light shadowed.
+// The default stage (sphere on a floor) without its environment and MSAA, lit by one light of
+// each kind, the key light shadowed.
 Scene everyLightKind() {
     Scene scene = defaultScene();
+    scene.environment = Environment{};
+    scene.msaaSamples = 1;
+    scene.lights.resize(1);
     scene.lights[0].castsShadows = true;
+    Light fill;
+    fill.name = "fill";
+    fill.type = LightType::Point;
+    fill.position = {-2.0f, 1.5f, 2.0f};
     Light spot;
     spot.name = "spot";
     spot.type = LightType::Spot;
@@ -32,6 +40,7 @@ Scene everyLightKind() {
     classic.position = {0.0f, 1.0f, 3.0f};
     classic.attenuation.enabled = true;
     classic.attenuation.coefficients = {1.0f, 0.2f, 0.05f};
+    scene.lights.push_back(fill);
     scene.lights.push_back(spot);
     scene.lights.push_back(classic);
     return scene;

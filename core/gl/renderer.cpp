@@ -119,11 +119,30 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram(const std::string& prelud
     return program;
 }
 
+namespace {
+
+// Erases the least recently used entries (by their lastUsed) until the cache has room for one more.
+template <class Cache>
+void makeRoom(Cache& cache, size_t capacity) {
+    while (!cache.empty() && cache.size() >= capacity)
+        cache.erase(std::min_element(cache.begin(), cache.end(), [](const auto& a, const auto& b) {
+            return a.second.lastUsed < b.second.lastUsed;
+        }));
+}
+
+}  // namespace
+
 Result<const ShaderProgram*> Renderer::backgroundProgram(const std::string& prelude) {
-    if (auto found = backgroundPrograms_.find(prelude); found != backgroundPrograms_.end()) return &found->second;
+    ++programUses_;
+    if (auto found = backgroundPrograms_.find(prelude); found != backgroundPrograms_.end()) {
+        found->second.lastUsed = programUses_;
+        return &found->second.program;
+    }
     auto built = buildBackgroundProgram(prelude);
     if (!built) return built.error();
-    return &backgroundPrograms_.insert_or_assign(prelude, std::move(*built)).first->second;
+    makeRoom(backgroundPrograms_, kBackgroundProgramCapacity);
+    BackgroundProgram entry{std::move(*built), programUses_};
+    return &backgroundPrograms_.insert_or_assign(prelude, std::move(entry)).first->second.program;
 }
 
 Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, SurfaceVariant variant,
@@ -147,10 +166,15 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
 
 Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) {
     const auto key = std::make_tuple(model, variant, textured.mask);
-    if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end())
+    ++programUses_;
+    if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end()) {
+        found->second.lastUsed = programUses_;
         return &found->second.program;
+    }
     auto built = buildSurfaceProgram(model, variant, textured);
     if (!built) return built.error();
+    makeRoom(surfacePrograms_, kSurfaceProgramCapacity);
+    built->lastUsed = programUses_;
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
 
@@ -176,7 +200,10 @@ bool Renderer::reloadChangedShaders() {
         changed = true;
         entry.builtAt = newest;
         const auto& [model, variant, textured] = key;
-        if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) entry = std::move(*rebuilt);
+        if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) {
+            rebuilt->lastUsed = entry.lastUsed;
+            entry = std::move(*rebuilt);
+        }
         else error = rebuilt.error().format();
     }
     const long long newestDisplay = newestModification(displayFiles_);
@@ -193,8 +220,8 @@ bool Renderer::reloadChangedShaders() {
     if (newestBackground > backgroundBuiltAt_) {
         changed = true;
         backgroundBuiltAt_ = newestBackground;
-        for (auto& [prelude, program] : backgroundPrograms_) {
-            if (auto rebuilt = buildBackgroundProgram(prelude)) program = std::move(*rebuilt);
+        for (auto& [prelude, entry] : backgroundPrograms_) {
+            if (auto rebuilt = buildBackgroundProgram(prelude)) entry.program = std::move(*rebuilt);
             else error = rebuilt.error().format();
         }
     }
@@ -282,9 +309,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         const GLfloat radiance[4] = {scene.background.color.r, scene.background.color.g, scene.background.color.b, 1.0f};
         glClearBufferfv(GL_COLOR, 0, radiance);
         if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
-            GLfloat encoded[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-            for (int c = 0; c < 3; ++c) encoded[c] = displayValue8(scene.background.color[c], *fusedDisplay_, 0, 0) / 255.0f;
-            glClearBufferfv(GL_COLOR, 1, encoded);
+            const glm::vec3 encoded = encodeForDisplay(scene.background.color, *fusedDisplay_);
+            GLfloat stored[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            for (int c = 0; c < 3; ++c) stored[c] = displayValue8(encoded[c], *fusedDisplay_, 0, 0) / 255.0f;
+            glClearBufferfv(GL_COLOR, 1, stored);
         }
     }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -106,7 +107,16 @@ private:
         ShaderProgram program;
         std::vector<std::string> files;
         long long builtAt = 0;  // newest modification time of its files when built
+        std::uint64_t lastUsed = 0;  // programUses_ at its last look-up
     };
+    struct BackgroundProgram {
+        ShaderProgram program;
+        std::uint64_t lastUsed = 0;
+    };
+    // Specialised programs multiply with the scene's choices (lights, enums, display), so the
+    // caches are bounded: the least recently used program goes when a new one needs room.
+    static constexpr size_t kSurfaceProgramCapacity = 64;
+    static constexpr size_t kBackgroundProgramCapacity = 16;
 
     Renderer(GlPlatform& platform, ShaderSources sources);
     Result<ShaderProgram> buildBackgroundProgram(const std::string& prelude) const;
@@ -131,7 +141,8 @@ private:
     std::map<std::string, ShaderProgram> displayPrograms_;  // by specialisation prelude
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
-    std::map<std::string, ShaderProgram> backgroundPrograms_;  // by specialisation prelude
+    std::map<std::string, BackgroundProgram> backgroundPrograms_;  // by specialisation prelude
+    std::uint64_t programUses_ = 0;  // look-ups of surface and background programs so far
     std::vector<std::string> backgroundFiles_;
     long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
