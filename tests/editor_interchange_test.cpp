@@ -1,5 +1,6 @@
 // Interchange files in the editor without a window: a dropped (or File ▸ Open'ed) .mtl puts its
-// material on the selected object and a .gltf also adds its lights, each as one undo step; a
+// material on the selected object and a .gltf also adds its lights, each as one undo step (a file
+// with several materials asks which one first); a
 // malformed file shows file:line and leaves the scene and its history as they were. A MERL
 // .binary becomes a measured material that the scene saves by its path. File ▸ Export material…
 // writes .gltf or .mtl with the format's warnings. `glint FILE` opens every type as File ▸ Open.
@@ -10,12 +11,14 @@
 #include <filesystem>
 #include <functional>
 #include <thread>
+#include <tuple>
 
 #include "cli/brdf_probe.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/mesh_loading.h"
 #include "editor/interchange_export.h"
+#include "editor/interchange_open.h"
 #include "interchange/gltf.h"
 #include "interchange/mtl.h"
 #include "interchange/measured_brdf.h"
@@ -58,6 +61,57 @@ TEST_F(EditorInterchange, DroppedGltfBringsItsMaterialAndLights) {
     EXPECT_EQ(scene.lights.back().position, glm::vec3(0, 3, 0));
     EXPECT_TRUE(state.session.undo());
     EXPECT_EQ(state.session.scene().lights.size(), lightsBefore);
+}
+
+// A file with several materials asks which one: offered by index and name, the first preselected.
+TEST_F(EditorInterchange, AFileWithSeveralMaterialsAsksWhichOneAndAppliesTheChoice) {
+    const std::string gltf = write("pair.gltf", R"({"asset": {"version": "2.0"},
+        "materials": [{"name": "brass", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.7, 0.3, 1]}},
+                      {"name": "glow", "emissiveFactor": [1, 1, 1]}],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 50}]}},
+        "nodes": [{"translation": [0, 3, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}}]})");
+    const std::string mtl = write("pair.mtl", "newmtl paint\nKd 0.8 0.1 0.1\nillum 1\n\nnewmtl shiny\nKd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nNs 80\nillum 2\n");
+    for (const auto& [path, first, second] : {std::tuple{gltf, "brass", "glow"}, std::tuple{mtl, "paint", "shiny"}}) {
+        SCOPED_TRACE(path);
+        EditorState state;
+        const Scene before = state.session.scene();
+        const int materialIndex = before.objects[0].materialIndex;
+        openDroppedFile(state, path);
+        EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
+        ASSERT_TRUE(state.materialChoice.has_value());
+        ASSERT_EQ(state.materialChoice->file.materials.size(), 2u);
+        EXPECT_EQ(state.materialChoice->file.materials[0].material.name, first);
+        EXPECT_EQ(state.materialChoice->file.materials[1].material.name, second);
+        EXPECT_EQ(state.materialChoice->selected, 0);
+        // Nothing changes while the question is open.
+        EXPECT_EQ(state.session.scene().materials[materialIndex].name, before.materials[materialIndex].name);
+        EXPECT_EQ(state.session.scene().lights.size(), before.lights.size());
+
+        takeMaterialChoice(state, 1);
+        EXPECT_FALSE(state.materialChoice.has_value());
+        const Scene& scene = state.session.scene();
+        EXPECT_EQ(scene.materials[materialIndex].name, second);
+        EXPECT_NE(state.statusMessage.text().find(std::string("material '") + second + "' (2 of 2)"), std::string::npos)
+            << state.statusMessage.text();
+        const bool isGltf = path == gltf;
+        EXPECT_EQ(scene.lights.size(), before.lights.size() + (isGltf ? 1 : 0));
+        // The chosen material's warnings only: the glTF's second one glows, its first does not.
+        EXPECT_EQ(state.errorMessage.find("emission") != std::string::npos, isGltf) << state.errorMessage;
+        EXPECT_TRUE(state.session.undo());  // one step
+        EXPECT_EQ(state.session.scene().materials[materialIndex].name, before.materials[materialIndex].name);
+        EXPECT_EQ(state.session.scene().lights.size(), before.lights.size());
+        EXPECT_FALSE(state.session.undo());
+
+        // Cancelling changes nothing and records no step.
+        EditorState cancelled;
+        openDroppedFile(cancelled, path);
+        ASSERT_TRUE(cancelled.materialChoice.has_value());
+        cancelMaterialChoice(cancelled);
+        EXPECT_FALSE(cancelled.materialChoice.has_value());
+        EXPECT_EQ(cancelled.session.scene().materials[materialIndex].name, before.materials[materialIndex].name);
+        EXPECT_EQ(cancelled.session.scene().lights.size(), before.lights.size());
+        EXPECT_FALSE(cancelled.session.undo());
+    }
 }
 
 TEST_F(EditorInterchange, WarningsAreShownAfterOpening) {

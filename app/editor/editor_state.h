@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,19 @@
 #include "editor/panels/plots_window.h"
 #include "editor/preset_swatches.h"
 #include "editor/settings.h"
+#include "interchange/imported.h"
 
 namespace glint {
 
 class MeshLoadJob;  // editor/mesh_loading.h
+
+// An interchange file that holds several materials, read and waiting while a modal asks which
+// one to use (editor/interchange_open.h).
+struct MaterialChoice {
+    std::string path;
+    ImportedFile file;
+    int selected = 0;  // the row the modal highlights
+};
 
 struct EditorState {
     EditSession session;
@@ -68,6 +78,7 @@ struct EditorState {
     bool screenshotRequested = false;
     std::string screenshotPath;
     bool quitNow = false;
+    std::optional<MaterialChoice> materialChoice;  // a file asking which of its materials to use
     std::shared_ptr<MeshLoadJob> meshLoad;  // the mesh file loading on a worker thread, if any
 
     // Autosave: the recovery file and the crash copy follow session.settledRevision().

@@ -1,10 +1,12 @@
 // Modal dialogs: "unsaved changes" (Save / Don't save / Cancel), errors (file:line from the
-// Diagnostic), the recovery offer at start, the file browser's result, and the help window (F1)
+// Diagnostic), the recovery offer at start, which material of a file to use, the file browser's result, and the help window (F1)
 // listing every shortcut.
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 #include <imgui.h>
@@ -13,6 +15,7 @@
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/interchange_export.h"
+#include "editor/interchange_open.h"
 #include "editor/mesh_loading.h"
 #include "editor/key_events.h"
 #include "editor/panels/panels.h"
@@ -117,6 +120,38 @@ void drawRecoveryOffer(EditorState& state) {
     ImGui::EndPopup();
 }
 
+// A file with several materials: pick one by index and name (Enter or double-click), Esc cancels.
+void drawMaterialChoice(EditorState& state) {
+    if (!state.materialChoice) return;
+    if (!ImGui::IsPopupOpen("Choose a material")) ImGui::OpenPopup("Choose a material");
+    centreNextWindow();
+    if (!ImGui::BeginPopupModal("Choose a material", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    MaterialChoice& choice = *state.materialChoice;
+    const int count = static_cast<int>(choice.file.materials.size());
+    ImGui::Text("%s holds %d materials. Which one goes on the selected object?", choice.path.c_str(), count);
+    if (takeKeyPress(GLFW_KEY_DOWN)) choice.selected = std::min(choice.selected + 1, count - 1);
+    if (takeKeyPress(GLFW_KEY_UP)) choice.selected = std::max(choice.selected - 1, 0);
+    int taken = -1;
+    const float rows = static_cast<float>(std::min(count, 12));
+    if (ImGui::BeginListBox("##materials", ImVec2(ImGui::GetFontSize() * 30.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f))) {
+        for (int i = 0; i < count; ++i) {
+            const std::string label = std::to_string(i) + "  " + choice.file.materials[i].material.name + "##" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str(), i == choice.selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+                choice.selected = i;
+                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) taken = i;
+            }
+        }
+        ImGui::EndListBox();
+    }
+    if (ImGui::Button("Open (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) taken = choice.selected;
+    ImGui::SameLine();
+    const bool cancelled = ImGui::Button("Cancel (Esc)") || takeKeyPress(GLFW_KEY_ESCAPE);
+    if (taken >= 0 || cancelled) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    if (taken >= 0) takeMaterialChoice(state, static_cast<size_t>(taken));
+    else if (cancelled) cancelMaterialChoice(state);
+}
+
 void handleFileBrowser(EditorState& state) {
     const auto chosen = drawFileBrowser(state.fileBrowser);
     if (!chosen) {
@@ -170,6 +205,7 @@ void drawDialogs(EditorState& state) {
     drawRecoveryOffer(state);
     drawUnsavedPrompt(state);
     handleFileBrowser(state);
+    drawMaterialChoice(state);
     drawErrorModal(state);
     drawHelpWindow(state);
 }
