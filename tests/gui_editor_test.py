@@ -25,6 +25,8 @@ screenshots. One scenario per ctest entry:
   texture      the texture menu beside the diffuse albedo: a checker draws squares on the sphere
                (Ctrl+Z removes it); an image file chosen in the file browser colours the sphere; a
                corrupt image is refused with a message naming it and changes nothing
+  material_choice File ▸ Open of a .mtl with two materials asks which one: Down and Enter put the
+               second (blue) on the sphere, Ctrl+Z takes it off; Esc in the same question changes nothing
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
 import json
 import os
@@ -594,6 +596,42 @@ def scenario_texture(x, glint, output, state):
         assert "corrupt.png" in editor.log, "the refusal should name the file:\n" + editor.log
         print(f"ok: checker drew {edges_across_sphere(checker)} edges across the sphere, undone; "
               f"the image tinted it {pixel(tinted, *SPHERE_CENTRE)}; the corrupt image was refused")
+    finally:
+        editor.kill()
+
+
+def blue_sphere(shot):
+    colour = pixel(shot, *SPHERE_CENTRE)
+    return colour[2] > 60 and colour[2] > colour[0] + 30 and colour[2] > colour[1] + 30
+
+
+def scenario_material_choice(x, glint, output, state):
+    library = os.path.join(output, "two_paints.mtl")
+    with open(library, "w") as out:
+        out.write("newmtl green\nKd 0.1 0.8 0.1\nillum 1\n\nnewmtl blue\nKd 0.1 0.1 0.8\nillum 1\n")
+    editor = Editor(x, glint, output, state)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        base = x.wait_stable(VIEWPORT)
+        x.key("ctrl+o")
+        type_path(x, library)
+        asked = x.wait_for(modal_shown(base), "the material question")
+        save(asked, output, "material_choice_1_asked")
+        time.sleep(0.3)
+        x.key("Down")
+        time.sleep(0.3)
+        x.key("Return")
+        chosen = x.wait_for(blue_sphere, "the second (blue) material on the sphere")
+        save(chosen, output, "material_choice_2_blue")
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "Ctrl+Z to take the material off again")
+        x.key("ctrl+o")
+        type_path(x, library)
+        x.wait_for(modal_shown(base), "the material question again")
+        time.sleep(0.3)
+        x.key("Escape")
+        x.wait_for(matches(base), "Esc to change nothing")
+        print("ok: two materials offered, the second applied and undone, Esc changed nothing")
     finally:
         editor.kill()
 
