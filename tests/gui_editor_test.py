@@ -611,8 +611,8 @@ def scenario_material_choice(x, glint, output, state):
         out.write("newmtl green\nKd 0.1 0.8 0.1\nillum 1\n\nnewmtl blue\nKd 0.1 0.1 0.8\nillum 1\n")
     editor = Editor(x, glint, output, state)
     try:
-        base = x.wait_for(lit_sphere, "the lit sphere")
-        base = x.wait_stable(VIEWPORT)
+        x.wait_for(lit_sphere, "the lit sphere (red plastic)")
+        base = x.wait_stable(VIEWPORT)  # before the modal dims it
         x.key("ctrl+o")
         type_path(x, library)
         asked = x.wait_for(modal_shown(base), "the material question")
