@@ -122,7 +122,8 @@ void drawRecoveryOffer(EditorState& state) {
 
 // A file with several materials: pick one by index and name (Enter or double-click), Esc cancels.
 void drawMaterialChoice(EditorState& state) {
-    if (!state.materialChoice) return;
+    // One modal at a time: the recovery offer at start (with `glint FILE`) is answered first.
+    if (!state.materialChoice || !state.recoveryOffer.empty()) return;
     if (!ImGui::IsPopupOpen("Choose a material")) ImGui::OpenPopup("Choose a material");
     centreNextWindow();
     if (!ImGui::BeginPopupModal("Choose a material", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
