@@ -1,5 +1,5 @@
 // Golden-image checks shared by the GPU test files: a display image compared with
-// tests/goldens/NAME.png under DESIGN.md's tolerance; on failure the actual, expected and ×16
+// tests/goldens/NAME.png under docs/architecture.md's tolerance; on failure the actual, expected and ×16
 // difference images are written to the test output directory. Goldens change only with
 // GLINT_UPDATE_GOLDENS=1.
 #pragma once

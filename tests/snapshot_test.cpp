@@ -1,5 +1,5 @@
 // Snapshot tests: headless renders compared with golden PNGs through OpenImageIO, with the
-// tolerance of DESIGN.md. On failure the actual, expected and ×16 difference images are written
+// tolerance of docs/architecture.md. On failure the actual, expected and ×16 difference images are written
 // beside the test's output. Goldens change only with GLINT_UPDATE_GOLDENS=1.
 #include <gtest/gtest.h>
 

@@ -189,7 +189,7 @@ struct Merger {
         const aiVector3D* uvs = source.mTextureCoords[0];
         statistics.hadNormals = statistics.hadNormals || normals;
         statistics.hadUvs = statistics.hadUvs || uvs;
-        // Normals transform with the inverse transpose (DESIGN.md), tangents (along the surface) as positions do.
+        // Normals transform with the inverse transpose (docs/architecture.md), tangents (along the surface) as positions do.
         aiMatrix3x3 normalMatrix(transform);
         normalMatrix.Inverse().Transpose();
         const aiMatrix3x3 tangentMatrix(transform);

@@ -1,4 +1,4 @@
-// Golden-image comparison with the tolerance of DESIGN.md (after Filament's renderdiff and
+// Golden-image comparison with the tolerance of docs/architecture.md (after Filament's renderdiff and
 // Blender's render tests): a pixel fails when any channel differs by more than
 // `channelTolerance` (default 5/255); the comparison fails when more than `failingFraction`
 // (default 0.1%) of pixels fail. Optionally a pixel may match any golden pixel in its 3×3

@@ -1,4 +1,4 @@
-// Light sources in radiometric units (DESIGN.md): a directional light gives irradiance M
+// Light sources in radiometric units (docs/architecture.md): a directional light gives irradiance M
 // [W/m²] on a surface perpendicular to it; a point light emits radiant power Φ [W]
 // uniformly, giving E = Φ/(4πd²)·cos θ; a spot light is the same point light limited to a cone
 // (Hearn-Baker falloff cos^a α, smooth edge); an ambient light is a uniform radiance L_a

@@ -1,5 +1,5 @@
 // Photometric equivalents of the radiometric light quantities, for display beside them
-// (DESIGN.md: never instead of them): lm for Φ, lx for irradiance, cd for intensity, nit for
+// (docs/architecture.md: never instead of them): lm for Φ, lx for irradiance, cd for intensity, nit for
 // radiance. It does not change how anything is rendered.
 #pragma once
 

@@ -16,7 +16,7 @@ inline constexpr const char* kSnapshotManifestName = "snapshot.json";
 struct SnapshotCase {
     std::string name;              // file stem unless the manifest names it; the golden is goldens/NAME.png
     std::string file;              // the scene or material file
-    CompareTolerance tolerance;    // DESIGN.md's defaults, then the suite's, then the case's overrides
+    CompareTolerance tolerance;    // docs/architecture.md's defaults, then the suite's, then the case's overrides
     int width = 0, height = 0;     // 0: the scene's own size (materials: 256×256)
 };
 

@@ -16,7 +16,7 @@ layout(std140) uniform FrameBlock {
     ivec4 backgroundKind;  // x: 0 constant, 1 sky gradient
 };
 
-// A light in homogeneous form (DESIGN.md): position.w = 1 for a point or spot light at
+// A light in homogeneous form (docs/architecture.md): position.w = 1 for a point or spot light at
 // position.xyz, 0 for a directional light whose position.xyz points towards the light.
 struct GpuLight {
     vec4 position;
