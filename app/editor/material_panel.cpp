@@ -53,10 +53,8 @@ void fitSliderWidth(const ParamSpec& spec, const std::vector<const char*>& butto
     ImGui::SetNextItemWidth(std::max(4.0f * ImGui::GetFontSize(), std::min(ImGui::CalcItemWidth(), fitted)));
 }
 
-// Room a combo needs to show an option `textWidth` wide, and its arrow [px].
-float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
-
-float comboWidth(const ParamSpec& spec) {
+// Room the combo of an enum parameter needs to show its widest option [px].
+float optionsComboWidth(const ParamSpec& spec) {
     float widest = 0.0f;
     for (const auto& option : spec.options) widest = std::max(widest, ImGui::CalcTextSize(option.label).x);
     return comboWidth(widest);
@@ -69,7 +67,7 @@ std::string placeParamLabel(const ParamSpec& spec, const std::vector<const char*
     switch (spec.kind) {
         case ParamKind::PerChannel: return placeLabel(spec.label, threeNumbersWidth(false), trailing);
         case ParamKind::Color: return placeLabel(spec.label, threeNumbersWidth(true), trailing);
-        case ParamKind::Enum: return placeLabel(spec.label, comboWidth(spec), trailing);
+        case ParamKind::Enum: return placeLabel(spec.label, optionsComboWidth(spec), trailing);
         case ParamKind::Scalar: fitSliderWidth(spec, buttonsAfter); break;
         case ParamKind::Bool: break;
     }

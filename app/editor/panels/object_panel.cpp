@@ -5,6 +5,7 @@
 // a loaded mesh's statistics).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -151,7 +152,10 @@ void drawObjectSection(EditorState& state) {
         return;
     }
     state.selectedObject = std::clamp(state.selectedObject, 0, static_cast<int>(scene.objects.size()) - 1);
-    if (ImGui::BeginCombo("Object", scene.objects[state.selectedObject].name.c_str())) {
+    float widestName = 0.0f;
+    for (const SceneObject& object : scene.objects) widestName = std::max(widestName, ImGui::CalcTextSize(object.name.c_str()).x);
+    const std::string objectLabel = placeLabel("Object", comboWidth(widestName));
+    if (ImGui::BeginCombo(objectLabel.c_str(), scene.objects[state.selectedObject].name.c_str())) {
         for (size_t i = 0; i < scene.objects.size(); ++i)
             if (ImGui::Selectable(scene.objects[i].name.c_str(), state.selectedObject == static_cast<int>(i)))
                 state.selectedObject = static_cast<int>(i);
@@ -185,9 +189,9 @@ void drawObjectSection(EditorState& state) {
     drawPresetBrowser(state, materialIndex);
     if (!ImGui::CollapsingHeader("Objects and shape", ImGuiTreeNodeFlags_DefaultOpen)) return;
     drawAddMenu(state);
-    ImGui::SameLine();
+    sameLineIfFits("Duplicate");
     if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
-    ImGui::SameLine();
+    sameLineIfFits("Remove");
     if (ImGui::Button("Remove")) {
         removeObject(state, state.selectedObject);
         return;

@@ -19,6 +19,15 @@ float threeNumbersWidth(bool swatch) {
     return 3.0f * number + 2.0f * style.ItemInnerSpacing.x + (swatch ? style.ItemInnerSpacing.x + ImGui::GetFrameHeight() : 0.0f);
 }
 
+float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
+
+void sameLineIfFits(const char* label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float buttonWidth = ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * style.FramePadding.x;
+    const float columnRight = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + buttonWidth <= columnRight) ImGui::SameLine();
+}
+
 std::string placeLabel(const char* label, float contentWidth, float trailing) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const char* labelEnd = ImGui::FindRenderedTextEnd(label);
@@ -50,7 +59,11 @@ bool boundedDrag(const char* label, float& value, float minimum, float maximum, 
     float typed = value;
     bool changed = false;
     const float speed = std::max(std::abs(value) * 0.01f, 0.01f);
-    if (editNumbers(label, &typed, 1, [&](float* edited) { return ImGui::DragFloat(label, edited, speed, 0.0f, 0.0f, format); })) {
+    char shownValue[64];
+    std::snprintf(shownValue, sizeof shownValue, format, value);
+    const float valueWidth = ImGui::CalcTextSize(shownValue).x + 2.0f * ImGui::GetStyle().FramePadding.x + 2.0f;
+    const std::string shown = placeLabel(label, valueWidth);
+    if (editNumbers(label, &typed, 1, [&](float* edited) { return ImGui::DragFloat(shown.c_str(), edited, speed, 0.0f, 0.0f, format); })) {
         if (std::isfinite(typed) && typed >= minimum && typed <= maximum) {
             value = typed;
             changed = true;
