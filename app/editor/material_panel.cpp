@@ -32,13 +32,11 @@ std::string formatRange(const ParamSpec& spec) {
 // A positive channel below this reads "≈ 0" (dragChannels).
 constexpr float kShownAsZero = 1e-4f;
 
-float smallButtonWidth(const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
-
 // Room the buttons after a widget take on its line (R, then Presets beside an index or the
 // texture button) [px].
 float buttonsWidth(const std::vector<const char*>& buttonsAfter) {
     float width = 0.0f;
-    for (const char* button : buttonsAfter) width += ImGui::GetStyle().ItemSpacing.x + smallButtonWidth(button);
+    for (const char* button : buttonsAfter) width += ImGui::GetStyle().ItemSpacing.x + buttonWidth(button);
     return width;
 }
 
@@ -263,7 +261,7 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
         // The texture button, where its label ("Checker", "Image", …) no longer fits beside a long
         // parameter label, opens the next line, above the texture's settings.
         ImGui::SameLine();
-        const bool wraps = ImGui::GetContentRegionAvail().x < smallButtonWidth(textureButtonLabel(material, table[i].name));
+        const bool wraps = ImGui::GetContentRegionAvail().x < buttonWidth(textureButtonLabel(material, table[i].name));
         if (wraps) ImGui::NewLine(), ImGui::Indent();
         changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
         if (wraps) ImGui::Unindent();

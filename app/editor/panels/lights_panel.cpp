@@ -61,12 +61,12 @@ void drawLightButtons(EditorState& state) {
     const bool selected = state.selectedLight < static_cast<int>(scene.lights.size());
     ImGui::BeginDisabled(!room);
     if (ImGui::Button("+ Directional")) addLight(state, newLight(LightType::Directional, scene), "Add light");
-    sameLineIfFits("+ Point");
+    sameLineIfFits(buttonWidth("+ Point"));
     if (ImGui::Button("+ Point")) addLight(state, newLight(LightType::Point, scene), "Add light");
-    sameLineIfFits("+ Spot");
+    sameLineIfFits(buttonWidth("+ Spot"));
     if (ImGui::Button("+ Spot")) addLight(state, newLight(LightType::Spot, scene), "Add light");
     if (ImGui::Button("+ Ambient")) addLight(state, newLight(LightType::Ambient, scene), "Add light");
-    sameLineIfFits("Duplicate");
+    sameLineIfFits(buttonWidth("Duplicate"));
     if (ImGui::Button("Duplicate") && selected) {
         Light copy = scene.lights[state.selectedLight];
         copy.name += " copy";
@@ -77,7 +77,7 @@ void drawLightButtons(EditorState& state) {
     if (!room && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("At most %d lights", kMaxLights);
     ImGui::BeginDisabled(!selected);
-    sameLineIfFits("Remove");
+    sameLineIfFits(buttonWidth("Remove"));
     if (ImGui::Button("Remove")) {
         auto& lights = state.session.change("Remove light").lights;
         lights.erase(lights.begin() + state.selectedLight);
@@ -88,7 +88,7 @@ void drawLightButtons(EditorState& state) {
         for (size_t i = 0; i < lights.size(); ++i) lights[i].enabled = static_cast<int>(i) == state.selectedLight;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Enable only the selected light");
-    sameLineIfFits("All on");
+    sameLineIfFits(buttonWidth("All on"));
     if (ImGui::Button("All on")) {
         auto& lights = state.session.change("Enable all lights").lights;
         for (Light& light : lights) light.enabled = true;

@@ -107,7 +107,10 @@ void drawInterpolationCombo(EditorState& state) {
     const SceneObject& object = state.session.scene().objects[state.selectedObject];
     const bool exactAllowed = !std::holds_alternative<TorusShape>(object.shape) && !std::holds_alternative<MeshShape>(object.shape);
     int selected = static_cast<int>(object.interpolation);
-    if (ImGui::BeginCombo("Shading", kLabels[selected])) {
+    float widest = 0.0f;
+    for (const char* label : kLabels) widest = std::max(widest, ImGui::CalcTextSize(label).x);
+    const std::string shadingLabel = placeLabel("Shading", comboWidth(widest));
+    if (ImGui::BeginCombo(shadingLabel.c_str(), kLabels[selected])) {
         for (int i = exactAllowed ? 0 : 1; i < 4; ++i)
             if (ImGui::Selectable(kLabels[i], i == selected) && i != selected)
                 state.session.change("Shading mode").objects[state.selectedObject].interpolation =
@@ -134,7 +137,7 @@ void drawMeshStatistics(const MeshShape& mesh) {
 void drawOverlayToggles(EditorState& state) {
     OverlaySettings overlays = state.session.scene().display.overlays;
     if (ImGui::Checkbox("Wireframe (W)", &overlays.wireframe)) toggleWireframe(state);
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("Normals (N)"));
     if (ImGui::Checkbox("Normals (N)", &overlays.normals)) toggleNormals(state);
     if (overlays.normals) {
         if (positiveLength("Normal length m", overlays.normalLength, state.materialPanelMessage.text()))
@@ -189,9 +192,9 @@ void drawObjectSection(EditorState& state) {
     drawPresetBrowser(state, materialIndex);
     if (!ImGui::CollapsingHeader("Objects and shape", ImGuiTreeNodeFlags_DefaultOpen)) return;
     drawAddMenu(state);
-    sameLineIfFits("Duplicate");
+    sameLineIfFits(buttonWidth("Duplicate"));
     if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
-    sameLineIfFits("Remove");
+    sameLineIfFits(buttonWidth("Remove"));
     if (ImGui::Button("Remove")) {
         removeObject(state, state.selectedObject);
         return;

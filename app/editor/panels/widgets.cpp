@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -21,11 +22,23 @@ float threeNumbersWidth(bool swatch) {
 
 float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
 
-void sameLineIfFits(const char* label) {
-    const ImGuiStyle& style = ImGui::GetStyle();
-    const float buttonWidth = ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * style.FramePadding.x;
+float buttonWidth(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
+
+float checkboxWidth(const char* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+void sameLineIfFits(float itemWidth) {
     const float columnRight = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + buttonWidth <= columnRight) ImGui::SameLine();
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + itemWidth <= columnRight) ImGui::SameLine();
+}
+
+bool comboBox(const char* label, int* current, const char* zeroSeparatedItems) {
+    float widest = 0.0f;
+    for (const char* item = zeroSeparatedItems; *item; item += std::strlen(item) + 1)
+        widest = std::max(widest, ImGui::CalcTextSize(item).x);
+    const std::string shown = placeLabel(label, comboWidth(widest));
+    return ImGui::Combo(shown.c_str(), current, zeroSeparatedItems);
 }
 
 std::string placeLabel(const char* label, float contentWidth, float trailing) {

@@ -13,9 +13,14 @@ namespace glint {
 float threeNumbersWidth(bool swatch);
 // Room a combo needs to show an option `textWidth` wide, and its arrow [px].
 float comboWidth(float textWidth);
-// Before a button on a row of buttons: stays on the line when the button `label` fits in what is
-// left of the column, else the button starts the next line (nothing cut at the column's edge).
-void sameLineIfFits(const char* label);
+// Width of a button (or small button) showing `label`, and of a checkbox with its label [px].
+float buttonWidth(const char* label);
+float checkboxWidth(const char* label);
+// Before an item on a row (buttons, checkboxes): stays on the line when an item `itemWidth` wide
+// fits in what is left of the column, else the item starts the next line (nothing cut at the edge).
+void sameLineIfFits(float itemWidth);
+// ImGui::Combo over "a\0b\0" items, wide enough for the widest of them or with its label above.
+bool comboBox(const char* label, int* current, const char* zeroSeparatedItems);
 // A widget whose content needs `contentWidth` [px] (three numbers, a combo's longest option) and
 // that leaves `trailing` [px] after it on its line for buttons: when the column leaves it less room
 // beside its label, the label goes on its own line above and the widget takes the line's width.
