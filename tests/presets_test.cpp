@@ -1,11 +1,14 @@
 // Material presets: every preset is a valid material that survives a file round trip, names a
-// source, and the metals' complex indices give the published normal-incidence reflectance F0.
+// source, the metals' complex indices give the published normal-incidence reflectance F0, and the
+// clear dielectrics refract.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <set>
 
 #include "brdf/cook_torrance.h"
+#include "brdf/fresnel.h"
+#include "brdf/glass.h"
 #include "brdf/presets.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
@@ -76,13 +79,30 @@ TEST(Presets, MetalF0MatchesPublishedValues) {
     EXPECT_GT(gold.g, gold.b);
 }
 
-TEST(Presets, DielectricsAreWhiteWithTheirIndex) {
+TEST(Presets, ClearDielectricsRefractWithTheirIndex) {
+    // Glass, water, diamond and ice are the refracting `glass` model (clear: no absorption, exact
+    // Fresnel), so they read as transparent on the preview stage; F0 follows from n alone.
     for (const auto& [name, ior] : {std::pair{"glass", 1.5f}, {"water", 1.333f}, {"diamond", 2.42f}, {"ice", 1.31f}}) {
+        const Preset* preset = findPreset(name);
+        ASSERT_NE(preset, nullptr) << name;
+        EXPECT_EQ(preset->model, BrdfModel::Glass) << name;
+        const GlassParams params = unpackGlass(preset->material().values.data());
+        EXPECT_EQ(params.ior, ior) << name;
+        EXPECT_EQ(params.absorption, glm::vec3(0.0f)) << name << " is clear";
+        EXPECT_EQ(params.transparency, GlassTransparency::Fresnel) << name << " uses the exact Fresnel equations";
+        const glm::vec3 f0 = fresnelF0(glm::vec3(params.ior), glm::vec3(0.0f));
+        EXPECT_NEAR(f0.r, (ior - 1) * (ior - 1) / ((ior + 1) * (ior + 1)), 1e-6f) << name;
+    }
+    const float glassIor = unpackGlass(findPreset("glass")->material().values.data()).ior;
+    EXPECT_NEAR(fresnelF0(glm::vec3(glassIor), glm::vec3(0.0f)).r, 0.04f, 1e-6f);
+}
+
+TEST(Presets, PlasticsHaveAWhiteSpecularWithTheirIndex) {
+    for (const auto& [name, ior] : {std::pair{"red_acrylic", 1.49f}, {"white_polystyrene", 1.59f}}) {
         const glm::vec3 f0 = presetF0(name);
         EXPECT_NEAR(f0.r, (ior - 1) * (ior - 1) / ((ior + 1) * (ior + 1)), 1e-6f) << name;
         EXPECT_EQ(f0.r, f0.b) << name << " has a white specular";
     }
-    EXPECT_NEAR(presetF0("glass").r, 0.04f, 1e-6f);
 }
 
 }  // namespace

@@ -32,13 +32,11 @@ std::string formatRange(const ParamSpec& spec) {
 // A positive channel below this reads "≈ 0" (dragChannels).
 constexpr float kShownAsZero = 1e-4f;
 
-float smallButtonWidth(const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
-
 // Room the buttons after a widget take on its line (R, then Presets beside an index or the
 // texture button) [px].
 float buttonsWidth(const std::vector<const char*>& buttonsAfter) {
     float width = 0.0f;
-    for (const char* button : buttonsAfter) width += ImGui::GetStyle().ItemSpacing.x + smallButtonWidth(button);
+    for (const char* button : buttonsAfter) width += ImGui::GetStyle().ItemSpacing.x + buttonWidth(button);
     return width;
 }
 
@@ -53,10 +51,8 @@ void fitSliderWidth(const ParamSpec& spec, const std::vector<const char*>& butto
     ImGui::SetNextItemWidth(std::max(4.0f * ImGui::GetFontSize(), std::min(ImGui::CalcItemWidth(), fitted)));
 }
 
-// Room a combo needs to show an option `textWidth` wide, and its arrow [px].
-float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
-
-float comboWidth(const ParamSpec& spec) {
+// Room the combo of an enum parameter needs to show its widest option [px].
+float optionsComboWidth(const ParamSpec& spec) {
     float widest = 0.0f;
     for (const auto& option : spec.options) widest = std::max(widest, ImGui::CalcTextSize(option.label).x);
     return comboWidth(widest);
@@ -69,7 +65,7 @@ std::string placeParamLabel(const ParamSpec& spec, const std::vector<const char*
     switch (spec.kind) {
         case ParamKind::PerChannel: return placeLabel(spec.label, threeNumbersWidth(false), trailing);
         case ParamKind::Color: return placeLabel(spec.label, threeNumbersWidth(true), trailing);
-        case ParamKind::Enum: return placeLabel(spec.label, comboWidth(spec), trailing);
+        case ParamKind::Enum: return placeLabel(spec.label, optionsComboWidth(spec), trailing);
         case ParamKind::Scalar: fitSliderWidth(spec, buttonsAfter); break;
         case ParamKind::Bool: break;
     }
@@ -265,7 +261,7 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
         // The texture button, where its label ("Checker", "Image", …) no longer fits beside a long
         // parameter label, opens the next line, above the texture's settings.
         ImGui::SameLine();
-        const bool wraps = ImGui::GetContentRegionAvail().x < smallButtonWidth(textureButtonLabel(material, table[i].name));
+        const bool wraps = ImGui::GetContentRegionAvail().x < buttonWidth(textureButtonLabel(material, table[i].name));
         if (wraps) ImGui::NewLine(), ImGui::Indent();
         changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
         if (wraps) ImGui::Unindent();

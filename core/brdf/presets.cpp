@@ -1,6 +1,7 @@
 // The preset table (see presets.h). Metals: per-channel n + iκ fitted to measured spectra
 // (colour/metal_index_fit.h; tests/metal_spectra_test.cpp recomputes them); dielectrics: κ = 0
-// and n at 589 nm; natural surfaces: broadband albedo as Lambert.
+// and n at 589 nm (the clear ones refract: the `glass` model); natural surfaces: broadband
+// albedo as Lambert.
 #include "brdf/presets.h"
 
 #include "brdf/cook_torrance.h"
@@ -21,10 +22,15 @@ constexpr Preset metal(const char* name, glm::vec3 ior, glm::vec3 extinction, co
             source};
 }
 
-// A smooth dielectric reflector (the rasterizer shows no transmission): white specular, κ = 0.
-constexpr Preset dielectric(const char* name, float ior, glm::vec3 diffuse, float roughness, const char* category,
-                            const char* source) {
-    return {name, category, BrdfModel::CookTorrance,
+// A clear transparent dielectric: the refracting `glass` model (smooth, exact Fresnel, no
+// absorption) with index n, so it reads as glass, water or diamond and not as a dark reflector.
+constexpr Preset transparent(const char* name, float ior, const char* source) {
+    return {name, "dielectric", BrdfModel::Glass, {{"ior", glm::vec3(ior)}}, source};
+}
+
+// A plastic: an opaque diffuse body under a white dielectric specular, κ = 0.
+constexpr Preset plastic(const char* name, float ior, glm::vec3 diffuse, float roughness, const char* source) {
+    return {name, "plastic", BrdfModel::CookTorrance,
             {{"ior", glm::vec3(ior)}, {"extinction", glm::vec3(0.0f)}, {"diffuse_albedo", diffuse},
              {"roughness", glm::vec3(roughness)}, {"distribution", glm::vec3(kGgx)}, {"fresnel", glm::vec3(kExact)}},
             source};
@@ -55,14 +61,14 @@ constexpr Preset kPresets[] = {
           GLINT_FITTED_TO "M. R. Querry, Optical constants, CRDC-CR-85034 (1985) (refractiveindex.info)"),
     metal("chromium", {3.24471188f, 3.1157949f, 2.28574586f}, {3.28565097f, 3.33660555f, 3.11692643f},
           GLINT_FITTED_TO "P. B. Johnson, R. W. Christy, Phys. Rev. B 9, 5056 (1974) (refractiveindex.info)"),
-    dielectric("glass", 1.5f, glm::vec3(0.0f), 0.01f, "dielectric", "Crown glass, n ≈ 1.52 (Hecht, Optics, Table 4.1), rounded to 1.5"),
-    dielectric("water", 1.333f, glm::vec3(0.0f), 0.01f, "dielectric", kHechtIndex),
-    dielectric("diamond", 2.42f, glm::vec3(0.0f), 0.005f, "dielectric", kHechtIndex),
-    dielectric("ice", 1.31f, glm::vec3(0.0f), 0.05f, "dielectric", kHechtIndex),
-    dielectric("red_acrylic", 1.49f, {0.6f, 0.05f, 0.04f}, 0.1f, "plastic",
-               "PMMA n = 1.49 at 589 nm (Hecht, Optics, Table 4.1); diffuse colour illustrative"),
-    dielectric("white_polystyrene", 1.59f, glm::vec3(0.8f), 0.2f, "plastic",
-               "polystyrene n = 1.59 at 589 nm (Hecht, Optics, Table 4.1); diffuse colour illustrative"),
+    transparent("glass", 1.5f, "Crown glass, n ≈ 1.52 (Hecht, Optics, Table 4.1), rounded to 1.5"),
+    transparent("water", 1.333f, kHechtIndex),
+    transparent("diamond", 2.42f, kHechtIndex),
+    transparent("ice", 1.31f, kHechtIndex),
+    plastic("red_acrylic", 1.49f, {0.6f, 0.05f, 0.04f}, 0.1f,
+            "PMMA n = 1.49 at 589 nm (Hecht, Optics, Table 4.1); diffuse colour illustrative"),
+    plastic("white_polystyrene", 1.59f, glm::vec3(0.8f), 0.2f,
+            "polystyrene n = 1.59 at 589 nm (Hecht, Optics, Table 4.1); diffuse colour illustrative"),
     lambertian("chalk", 0.85f, "white chalk/limestone, broadband reflectance ≈ 0.85 (approximate, no single measurement)"),
     lambertian("fresh_snow", 0.8f, kOkeAlbedo),
     lambertian("old_snow", 0.4f, kOkeAlbedo),

@@ -7,6 +7,7 @@
 #include "editor/camera_actions.h"
 #include "editor/panels/panels.h"
 #include "editor/panels/typed_numbers.h"
+#include "editor/panels/widgets.h"
 
 namespace glint {
 
@@ -14,7 +15,7 @@ void drawCameraSection(EditorState& state) {
     Camera camera = state.session.scene().camera;
     bool changed = false;
     int projection = camera.projection == Projection::Perspective ? 0 : 1;
-    if (ImGui::Combo("Projection", &projection, "perspective\0orthographic\0")) {
+    if (comboBox("Projection", &projection, "perspective\0orthographic\0")) {
         toggleProjection(state);
         return;
     }
@@ -33,7 +34,7 @@ void drawCameraSection(EditorState& state) {
     }
     if (changed) state.session.change("Edit camera").camera = camera;
     if (ImGui::Button("Frame selected (F)")) frameSelected(state);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Reset view (Home)"));
     if (ImGui::Button("Reset view (Home)")) resetView(state);
 }
 

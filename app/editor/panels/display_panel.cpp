@@ -24,7 +24,7 @@ bool drawQuantisationWidgets(DisplaySettings& display, std::string& refusal) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Intensity levels per channel after encoding (256: ordinary 8-bit output)");
     int dither = static_cast<int>(display.dither);
-    if (ImGui::Combo("Dither", &dither, "none\0Bayer 2x2\0Bayer 4x4\0halftone (clustered dot)\0")) {
+    if (comboBox("Dither", &dither, "none\0Bayer 2x2\0Bayer 4x4\0halftone (clustered dot)\0")) {
         display.dither = static_cast<Dither>(dither);
         changed = true;
     }
@@ -43,7 +43,7 @@ void drawDisplaySection(EditorState& state) {
     changed |= editNumbers("Exposure", &display.exposureStops, 1, [](float* typed) { return ImGui::SliderFloat("Exposure", typed, -10.0f, 10.0f, "%+.2f EV"); });
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Radiance is multiplied by 2^EV before encoding");
     int toneMap = static_cast<int>(display.toneMap);
-    if (ImGui::Combo("Tone map", &toneMap, "none (clip)\0Reinhard\0ACES filmic\0PBR Neutral\0")) {
+    if (comboBox("Tone map", &toneMap, "none (clip)\0Reinhard\0ACES filmic\0PBR Neutral\0")) {
         display.toneMap = static_cast<ToneMap>(toneMap);
         changed = true;
     }
@@ -51,7 +51,7 @@ void drawDisplaySection(EditorState& state) {
         ImGui::SetTooltip("none: values above 1 clip · Reinhard: x/(1+x) · ACES filmic: Narkowicz's 2015 fit · "
                           "PBR Neutral: Khronos, keeps hue and saturation");
     int transfer = static_cast<int>(display.transfer);
-    if (ImGui::Combo("Encoding", &transfer, "sRGB\0gamma\0linear (gamma off)\0")) {
+    if (comboBox("Encoding", &transfer, "sRGB\0gamma\0linear (gamma off)\0")) {
         display.transfer = static_cast<Transfer>(transfer);
         changed = true;
     }
@@ -65,7 +65,7 @@ void drawDisplaySection(EditorState& state) {
     Background background = scene.background;
     bool backgroundChanged = false;
     int kind = background.kind == BackgroundKind::Constant ? 0 : 1;
-    if (ImGui::Combo("Background", &kind, "constant\0sky gradient\0")) {
+    if (comboBox("Background", &kind, "constant\0sky gradient\0")) {
         background.kind = kind == 0 ? BackgroundKind::Constant : BackgroundKind::Sky;
         backgroundChanged = true;
     }
@@ -82,7 +82,7 @@ void drawDisplaySection(EditorState& state) {
     static constexpr int kSampleCounts[] = {1, 2, 4, 8, 16};
     int sampleChoice = 0;
     while (sampleChoice < 4 && kSampleCounts[sampleChoice] < scene.msaaSamples) ++sampleChoice;
-    if (ImGui::Combo("Anti-aliasing", &sampleChoice, "off\0MSAA 2x\0MSAA 4x\0MSAA 8x\0MSAA 16x\0"))
+    if (comboBox("Anti-aliasing", &sampleChoice, "off\0MSAA 2x\0MSAA 4x\0MSAA 8x\0MSAA 16x\0"))
         state.session.change("Edit anti-aliasing").msaaSamples = kSampleCounts[sampleChoice];
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Multisample anti-aliasing; the exact sphere's edge is covered analytically per sample");
     if (!state.samplesNote.empty()) ImGui::TextDisabled("%s", state.samplesNote.c_str());

@@ -31,7 +31,7 @@ void drawEnvironmentSection(EditorState& state) {
     ImGui::Separator();
     ImGui::TextUnformatted("Environment");
     int kind = static_cast<int>(current.kind);
-    if (ImGui::Combo("Environment", &kind, "none\0HDR file…\0studio\0sky\0uniform white\0")) {
+    if (comboBox("Environment", &kind, "none\0HDR file…\0studio\0sky\0uniform white\0")) {
         if (kind == static_cast<int>(EnvironmentKind::File)) {
             requestFileBrowser(state.fileBrowser, FilePurpose::OpenEnvironment, current.file);
         } else if (kind != static_cast<int>(current.kind)) {

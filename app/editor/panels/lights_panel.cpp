@@ -61,12 +61,12 @@ void drawLightButtons(EditorState& state) {
     const bool selected = state.selectedLight < static_cast<int>(scene.lights.size());
     ImGui::BeginDisabled(!room);
     if (ImGui::Button("+ Directional")) addLight(state, newLight(LightType::Directional, scene), "Add light");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("+ Point"));
     if (ImGui::Button("+ Point")) addLight(state, newLight(LightType::Point, scene), "Add light");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("+ Spot"));
     if (ImGui::Button("+ Spot")) addLight(state, newLight(LightType::Spot, scene), "Add light");
     if (ImGui::Button("+ Ambient")) addLight(state, newLight(LightType::Ambient, scene), "Add light");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Duplicate"));
     if (ImGui::Button("Duplicate") && selected) {
         Light copy = scene.lights[state.selectedLight];
         copy.name += " copy";
@@ -77,7 +77,7 @@ void drawLightButtons(EditorState& state) {
     if (!room && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("At most %d lights", kMaxLights);
     ImGui::BeginDisabled(!selected);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Remove"));
     if (ImGui::Button("Remove")) {
         auto& lights = state.session.change("Remove light").lights;
         lights.erase(lights.begin() + state.selectedLight);
@@ -88,7 +88,7 @@ void drawLightButtons(EditorState& state) {
         for (size_t i = 0; i < lights.size(); ++i) lights[i].enabled = static_cast<int>(i) == state.selectedLight;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Enable only the selected light");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("All on"));
     if (ImGui::Button("All on")) {
         auto& lights = state.session.change("Enable all lights").lights;
         for (Light& light : lights) light.enabled = true;
@@ -102,7 +102,8 @@ bool drawLightEditor(Light& light, std::string& refusal) {
     ImGui::InputText("Name", &light.name);
     changed |= ImGui::IsItemDeactivatedAfterEdit();
     int type = static_cast<int>(light.type);
-    if (ImGui::Combo("Type", &type, "directional\0point\0spot\0ambient\0")) {
+    const std::string typeLabel = placeLabel("Type", comboWidth(ImGui::CalcTextSize("directional").x));
+    if (ImGui::Combo(typeLabel.c_str(), &type, "directional\0point\0spot\0ambient\0")) {
         light.type = static_cast<LightType>(type);
         changed = true;
     }

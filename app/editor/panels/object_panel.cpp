@@ -5,6 +5,7 @@
 // a loaded mesh's statistics).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -106,7 +107,10 @@ void drawInterpolationCombo(EditorState& state) {
     const SceneObject& object = state.session.scene().objects[state.selectedObject];
     const bool exactAllowed = !std::holds_alternative<TorusShape>(object.shape) && !std::holds_alternative<MeshShape>(object.shape);
     int selected = static_cast<int>(object.interpolation);
-    if (ImGui::BeginCombo("Shading", kLabels[selected])) {
+    float widest = 0.0f;
+    for (const char* label : kLabels) widest = std::max(widest, ImGui::CalcTextSize(label).x);
+    const std::string shadingLabel = placeLabel("Shading", comboWidth(widest));
+    if (ImGui::BeginCombo(shadingLabel.c_str(), kLabels[selected])) {
         for (int i = exactAllowed ? 0 : 1; i < 4; ++i)
             if (ImGui::Selectable(kLabels[i], i == selected) && i != selected)
                 state.session.change("Shading mode").objects[state.selectedObject].interpolation =
@@ -133,7 +137,7 @@ void drawMeshStatistics(const MeshShape& mesh) {
 void drawOverlayToggles(EditorState& state) {
     OverlaySettings overlays = state.session.scene().display.overlays;
     if (ImGui::Checkbox("Wireframe (W)", &overlays.wireframe)) toggleWireframe(state);
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("Normals (N)"));
     if (ImGui::Checkbox("Normals (N)", &overlays.normals)) toggleNormals(state);
     if (overlays.normals) {
         if (positiveLength("Normal length m", overlays.normalLength, state.materialPanelMessage.text()))
@@ -151,7 +155,10 @@ void drawObjectSection(EditorState& state) {
         return;
     }
     state.selectedObject = std::clamp(state.selectedObject, 0, static_cast<int>(scene.objects.size()) - 1);
-    if (ImGui::BeginCombo("Object", scene.objects[state.selectedObject].name.c_str())) {
+    float widestName = 0.0f;
+    for (const SceneObject& object : scene.objects) widestName = std::max(widestName, ImGui::CalcTextSize(object.name.c_str()).x);
+    const std::string objectLabel = placeLabel("Object", comboWidth(widestName));
+    if (ImGui::BeginCombo(objectLabel.c_str(), scene.objects[state.selectedObject].name.c_str())) {
         for (size_t i = 0; i < scene.objects.size(); ++i)
             if (ImGui::Selectable(scene.objects[i].name.c_str(), state.selectedObject == static_cast<int>(i)))
                 state.selectedObject = static_cast<int>(i);
@@ -185,9 +192,9 @@ void drawObjectSection(EditorState& state) {
     drawPresetBrowser(state, materialIndex);
     if (!ImGui::CollapsingHeader("Objects and shape", ImGuiTreeNodeFlags_DefaultOpen)) return;
     drawAddMenu(state);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Duplicate"));
     if (ImGui::Button("Duplicate")) duplicateObject(state, state.selectedObject);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Remove"));
     if (ImGui::Button("Remove")) {
         removeObject(state, state.selectedObject);
         return;

@@ -29,7 +29,8 @@ bool drawShadowSettings(Light& light, int otherShadowedLights, std::string& refu
     ImGui::Indent();
     static constexpr int kResolutions[] = {256, 512, 1024, 2048, 4096};
     const std::string current = std::to_string(light.shadow.mapResolution) + "²";
-    if (ImGui::BeginCombo("Map resolution", current.c_str())) {
+    const std::string resolutionLabel = placeLabel("Map resolution", comboWidth(ImGui::CalcTextSize("4096²").x));
+    if (ImGui::BeginCombo(resolutionLabel.c_str(), current.c_str())) {
         for (int resolution : kResolutions) {
             const std::string label = std::to_string(resolution) + "²";
             if (ImGui::Selectable(label.c_str(), resolution == light.shadow.mapResolution) &&

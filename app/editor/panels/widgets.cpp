@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -17,6 +18,27 @@ float threeNumbersWidth(bool swatch) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float number = ImGui::CalcTextSize("0.000").x + 2.0f * style.FramePadding.x + 2.0f;
     return 3.0f * number + 2.0f * style.ItemInnerSpacing.x + (swatch ? style.ItemInnerSpacing.x + ImGui::GetFrameHeight() : 0.0f);
+}
+
+float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
+
+float buttonWidth(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
+
+float checkboxWidth(const char* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+void sameLineIfFits(float itemWidth) {
+    const float columnRight = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + itemWidth <= columnRight) ImGui::SameLine();
+}
+
+bool comboBox(const char* label, int* current, const char* zeroSeparatedItems) {
+    float widest = 0.0f;
+    for (const char* item = zeroSeparatedItems; *item; item += std::strlen(item) + 1)
+        widest = std::max(widest, ImGui::CalcTextSize(item).x);
+    const std::string shown = placeLabel(label, comboWidth(widest));
+    return ImGui::Combo(shown.c_str(), current, zeroSeparatedItems);
 }
 
 std::string placeLabel(const char* label, float contentWidth, float trailing) {
@@ -50,7 +72,11 @@ bool boundedDrag(const char* label, float& value, float minimum, float maximum, 
     float typed = value;
     bool changed = false;
     const float speed = std::max(std::abs(value) * 0.01f, 0.01f);
-    if (editNumbers(label, &typed, 1, [&](float* edited) { return ImGui::DragFloat(label, edited, speed, 0.0f, 0.0f, format); })) {
+    char shownValue[64];
+    std::snprintf(shownValue, sizeof shownValue, format, value);
+    const float valueWidth = ImGui::CalcTextSize(shownValue).x + 2.0f * ImGui::GetStyle().FramePadding.x + 2.0f;
+    const std::string shown = placeLabel(label, valueWidth);
+    if (editNumbers(label, &typed, 1, [&](float* edited) { return ImGui::DragFloat(shown.c_str(), edited, speed, 0.0f, 0.0f, format); })) {
         if (std::isfinite(typed) && typed >= minimum && typed <= maximum) {
             value = typed;
             changed = true;
