@@ -1,5 +1,5 @@
 // Small widgets shared by the panels: a colour picker that shows sRGB-encoded values while the
-// scene stores linear RGB (DESIGN.md), a non-negative number field that refuses (with a
+// scene stores linear RGB (docs/architecture.md), a non-negative number field that refuses (with a
 // message) what the scene would refuse, and where a wide widget's label goes. No panel layout here.
 #pragma once
 
