@@ -121,27 +121,30 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram(const std::string& prelud
 
 namespace {
 
-// Erases the least recently used entries (by their lastUsed) until the cache has room for one more.
+// Erases the least recently used entries (by their lastUsed frame) until the cache has room for one
+// more, sparing those the current frame has used.
 template <class Cache>
-void makeRoom(Cache& cache, size_t capacity) {
-    while (!cache.empty() && cache.size() >= capacity)
-        cache.erase(std::min_element(cache.begin(), cache.end(), [](const auto& a, const auto& b) {
+void makeRoom(Cache& cache, size_t capacity, std::uint64_t currentFrame) {
+    while (cache.size() >= capacity) {
+        const auto oldest = std::min_element(cache.begin(), cache.end(), [](const auto& a, const auto& b) {
             return a.second.lastUsed < b.second.lastUsed;
-        }));
+        });
+        if (oldest == cache.end() || oldest->second.lastUsed >= currentFrame) return;
+        cache.erase(oldest);
+    }
 }
 
 }  // namespace
 
 Result<const ShaderProgram*> Renderer::backgroundProgram(const std::string& prelude) {
-    ++programUses_;
     if (auto found = backgroundPrograms_.find(prelude); found != backgroundPrograms_.end()) {
-        found->second.lastUsed = programUses_;
+        found->second.lastUsed = framesRendered_;
         return &found->second.program;
     }
     auto built = buildBackgroundProgram(prelude);
     if (!built) return built.error();
-    makeRoom(backgroundPrograms_, kBackgroundProgramCapacity);
-    BackgroundProgram entry{std::move(*built), programUses_};
+    makeRoom(backgroundPrograms_, kBackgroundProgramCapacity, framesRendered_);
+    BackgroundProgram entry{std::move(*built), framesRendered_};
     return &backgroundPrograms_.insert_or_assign(prelude, std::move(entry)).first->second.program;
 }
 
@@ -166,15 +169,14 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
 
 Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) {
     const auto key = std::make_tuple(model, variant, textured.mask);
-    ++programUses_;
     if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end()) {
-        found->second.lastUsed = programUses_;
+        found->second.lastUsed = framesRendered_;
         return &found->second.program;
     }
     auto built = buildSurfaceProgram(model, variant, textured);
     if (!built) return built.error();
-    makeRoom(surfacePrograms_, kSurfaceProgramCapacity);
-    built->lastUsed = programUses_;
+    makeRoom(surfacePrograms_, kSurfaceProgramCapacity, framesRendered_);
+    built->lastUsed = framesRendered_;
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
 }
 
@@ -259,6 +261,7 @@ FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
 
 Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail) {
     platform_.makeCurrent();
+    ++framesRendered_;  // programs looked up from here on belong to this frame (makeRoom spares them)
     GLINT_CHECK(width > 0 && height > 0);
     // Drag frames draw the shadow maps (when they must be drawn at all) from the finest stand-ins,
     // with about two texels a side per pixel of the frame's larger side.

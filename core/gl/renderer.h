@@ -107,14 +107,15 @@ private:
         ShaderProgram program;
         std::vector<std::string> files;
         long long builtAt = 0;  // newest modification time of its files when built
-        std::uint64_t lastUsed = 0;  // programUses_ at its last look-up
+        std::uint64_t lastUsed = 0;  // the radiance frame (framesRendered_) that last drew with it
     };
     struct BackgroundProgram {
         ShaderProgram program;
         std::uint64_t lastUsed = 0;
     };
     // Specialised programs multiply with the scene's choices (lights, enums, display), so the
-    // caches are bounded: the least recently used program goes when a new one needs room.
+    // caches are bounded: the least recently used program goes when a new one needs room, but
+    // never one the frame being drawn has used (a frame that needs more grows the cache).
     static constexpr size_t kSurfaceProgramCapacity = 64;
     static constexpr size_t kBackgroundProgramCapacity = 16;
 
@@ -142,7 +143,7 @@ private:
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
     std::map<std::string, BackgroundProgram> backgroundPrograms_;  // by specialisation prelude
-    std::uint64_t programUses_ = 0;  // look-ups of surface and background programs so far
+    std::uint64_t framesRendered_ = 0;  // radiance frames begun
     std::vector<std::string> backgroundFiles_;
     long long backgroundBuiltAt_ = 0;
     GLuint uniformBuffers_[3] = {0, 0, 0};
