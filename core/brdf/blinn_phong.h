@@ -75,12 +75,9 @@ inline glm::vec3 ambientReflectanceBlinnPhong(const BlinnPhongParams& p, glm::ve
     return p.diffuseAlbedo;
 }
 
-// The model (brdf/model.h).
 struct BlinnPhong {
-    static constexpr const char* id = "blinn_phong";
-    static constexpr const char* label = "Blinn-Phong";
-    static constexpr const char* citation =
-        "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977";
+    static constexpr const char *id = "blinn_phong", *label = "Blinn-Phong";
+    static constexpr const char* citation = "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977";
     static constexpr bool reciprocal = true, energyConserving = false;
     static constexpr const auto& params = kBlinnPhongTable;
     using Params = BlinnPhongParams;

@@ -91,10 +91,8 @@ inline glm::vec3 ambientReflectanceCookTorrance(const CookTorranceParams& p, glm
     return p.diffuseAlbedo;
 }
 
-// The model (brdf/model.h).
 struct CookTorrance {
-    static constexpr const char* id = "cook_torrance";
-    static constexpr const char* label = "Cook-Torrance (microfacet)";
+    static constexpr const char *id = "cook_torrance", *label = "Cook-Torrance (microfacet)";
     static constexpr const char* citation =
         "R. L. Cook, K. E. Torrance, A Reflectance Model for Computer Graphics, ACM TOG 1(1), 1982; "
         "B. Walter et al., Microfacet Models for Refraction through Rough Surfaces, EGSR 2007; "

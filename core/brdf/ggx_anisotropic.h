@@ -70,10 +70,8 @@ inline glm::vec3 ambientReflectanceGgxAnisotropic(const GgxAnisotropicParams& p,
     return p.diffuseAlbedo;
 }
 
-// The model (brdf/model.h).
 struct GgxAnisotropic {
-    static constexpr const char* id = "ggx_anisotropic";
-    static constexpr const char* label = "GGX anisotropic";
+    static constexpr const char *id = "ggx_anisotropic", *label = "GGX anisotropic";
     static constexpr const char* citation =
         "B. Walter et al., EGSR 2007; E. Heitz, Understanding the Masking-Shadowing Function in "
         "Microfacet-Based BRDFs, JCGT 3(2), 2014 (anisotropic GGX, height-correlated Smith)";

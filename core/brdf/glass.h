@@ -48,12 +48,9 @@ inline glm::vec3 evalGlass(const GlassParams& /*p*/, glm::vec3 /*wi*/, glm::vec3
     return glm::vec3(0.0f);
 }
 
-// The model (brdf/model.h).
 struct Glass {
-    static constexpr const char* id = "glass";
-    static constexpr const char* label = "Glass (dielectric)";
-    static constexpr const char* citation =
-        "Snell's law and Fresnel (1823); transparency after Hearn & Baker, Computer Graphics, §14.5";
+    static constexpr const char *id = "glass", *label = "Glass (dielectric)";
+    static constexpr const char* citation = "Snell's law and Fresnel (1823); transparency after Hearn & Baker, Computer Graphics, §14.5";
     static constexpr bool reciprocal = true, energyConserving = true;
     static constexpr const auto& params = kGlassTable;
     using Params = GlassParams;

@@ -32,12 +32,9 @@ inline glm::vec3 ambientReflectanceLambert(const LambertParams& p, glm::vec3 /*w
     return p.albedo;
 }
 
-// The model (brdf/model.h).
 struct Lambert {
-    static constexpr const char* id = "lambert";
-    static constexpr const char* label = "Lambert";
-    static constexpr const char* citation =
-        "J. H. Lambert, Photometria, 1760";
+    static constexpr const char *id = "lambert", *label = "Lambert";
+    static constexpr const char* citation = "J. H. Lambert, Photometria, 1760";
     static constexpr bool reciprocal = true, energyConserving = true;
     static constexpr const auto& params = kLambertTable;
     using Params = LambertParams;

@@ -42,12 +42,9 @@ inline glm::vec3 ambientReflectanceMirror(const MirrorParams& p, glm::vec3 /*wo*
     return p.diffuseAlbedo;
 }
 
-// The model (brdf/model.h).
 struct Mirror {
-    static constexpr const char* id = "mirror";
-    static constexpr const char* label = "Mirror (conductor Fresnel)";
-    static constexpr const char* citation =
-        "A. Fresnel (1823); complex index after Born & Wolf, Principles of Optics, §14.2";
+    static constexpr const char *id = "mirror", *label = "Mirror (conductor Fresnel)";
+    static constexpr const char* citation = "A. Fresnel (1823); complex index after Born & Wolf, Principles of Optics, §14.2";
     static constexpr bool reciprocal = true, energyConserving = false;
     static constexpr const auto& params = kMirrorTable;
     using Params = MirrorParams;

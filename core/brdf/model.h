@@ -35,9 +35,7 @@
 namespace glint {
 
 template <class... Models>
-struct ModelList {
-    static constexpr int size = sizeof...(Models);
-};
+struct ModelList { static constexpr int size = sizeof...(Models); };
 
 template <class M>
 concept BrdfModelType = requires(const typename M::Params& p, glm::vec3 w, const ShadingFrame& frame) {
@@ -70,33 +68,15 @@ namespace unpacking {
 template <ParamKind Kind>
 struct Field {
     const float* v;
-    operator glm::vec3() const
-        requires(Kind == ParamKind::Color || Kind == ParamKind::PerChannel)
-    {
-        return {v[0], v[1], v[2]};
-    }
-    operator float() const
-        requires(Kind == ParamKind::Scalar)
-    {
-        return v[0];
-    }
-    operator bool() const
-        requires(Kind == ParamKind::Bool)
-    {
-        return v[0] > 0.5f;
-    }
-    template <class E>
-        requires(Kind == ParamKind::Enum && std::is_enum_v<E>)
-    operator E() const {
-        return static_cast<E>(static_cast<int>(v[0]));
-    }
+    operator glm::vec3() const requires(componentCount(Kind) == 3) { return {v[0], v[1], v[2]}; }
+    operator float() const requires(Kind == ParamKind::Scalar) { return v[0]; }
+    operator bool() const requires(Kind == ParamKind::Bool) { return v[0] > 0.5f; }
+    template <class E> requires(Kind == ParamKind::Enum && std::is_enum_v<E>)
+    operator E() const { return static_cast<E>(static_cast<int>(v[0])); }
 };
 
 // Converts to anything: counts an aggregate's fields.
-struct Any {
-    template <class T>
-    operator T() const;
-};
+struct Any { template <class T> operator T() const; };
 
 template <class M>
 constexpr int packedOffset(std::size_t index) {

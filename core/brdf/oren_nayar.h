@@ -63,12 +63,9 @@ inline glm::vec3 ambientReflectanceOrenNayar(const OrenNayarParams& p, glm::vec3
     return p.albedo;
 }
 
-// The model (brdf/model.h).
 struct OrenNayar {
-    static constexpr const char* id = "oren_nayar";
-    static constexpr const char* label = "Oren-Nayar";
-    static constexpr const char* citation =
-        "M. Oren, S. K. Nayar, Generalization of Lambert's Reflectance Model, SIGGRAPH 1994 (qualitative model, eq. 30)";
+    static constexpr const char *id = "oren_nayar", *label = "Oren-Nayar";
+    static constexpr const char* citation = "M. Oren, S. K. Nayar, Generalization of Lambert's Reflectance Model, SIGGRAPH 1994 (qualitative model, eq. 30)";
     // Qualitative model: its albedo reaches about 1.015 ρ at grazing view for σ ≈ 12° (brdf_test).
     static constexpr bool reciprocal = true, energyConserving = false;
     static constexpr const auto& params = kOrenNayarTable;

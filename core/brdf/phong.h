@@ -78,10 +78,8 @@ inline glm::vec3 ambientReflectancePhong(const PhongParams& p, glm::vec3 /*wo*/,
     return p.diffuseAlbedo;
 }
 
-// The model (brdf/model.h).
 struct Phong {
-    static constexpr const char* id = "phong";
-    static constexpr const char* label = "Phong";
+    static constexpr const char *id = "phong", *label = "Phong";
     static constexpr const char* citation =
         "B. T. Phong, Illumination for Computer Generated Pictures, CACM 18(6), 1975; "
         "normalisation: R. R. Lewis, Making Shaders More Physically Plausible, 1994";

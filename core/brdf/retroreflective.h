@@ -77,10 +77,8 @@ inline glm::vec3 ambientReflectanceRetroreflective(const RetroreflectiveParams& 
     return p.albedo * (0.5f * (1.0f - cosOut * std::log(1.0f + 1.0f / cosOut)));
 }
 
-// The model (brdf/model.h).
 struct Retroreflective {
-    static constexpr const char* id = "retroreflective";
-    static constexpr const char* label = "Moon / retroreflective";
+    static constexpr const char *id = "retroreflective", *label = "Moon / retroreflective";
     static constexpr const char* citation =
         "M. Minnaert, The Reciprocity Principle in Lunar Photometry, ApJ 93, 1941; "
         "B. Hapke, Bidirectional Reflectance Spectroscopy 1, JGR 86, 1981 (Lommel-Seeliger)";
