@@ -180,7 +180,7 @@ TEST(OpenPbrParameters, NamesAndDefaultsFollowTheSpecification) {
     const auto values = openPbrValues({{"geometry_tangent_rotation", glm::vec3(33)}, {"emission_color", {0.1f, 0.2f, 0.3f}},
                                        {"geometry_thin_walled", glm::vec3(1)}, {"coat_darkening", glm::vec3(0.25f)}});
     ASSERT_EQ(static_cast<int>(values.size()), packedSize(kOpenPbrTable));
-    const OpenPbrParams p = unpackOpenPbr(values.data());
+    const OpenPbrParams p = unpack<OpenPbr>(values.data());
     EXPECT_EQ(p.tangentRotation, 33.0f);
     EXPECT_EQ(p.emissionColor, glm::vec3(0.1f, 0.2f, 0.3f));
     EXPECT_TRUE(p.thinWalled);

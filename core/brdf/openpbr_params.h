@@ -1,6 +1,7 @@
 // The parameters of OpenPBR Surface 1.1 (ASWF / MaterialX `open_pbr_surface`): names, defaults
 // and ranges as the specification's node definition, so that a file from another tool means the
-// same here. Only the table and its unpacking; the model is core/brdf/openpbr.h.
+// same here. Only the table and the struct it unpacks to (in table order); the model is
+// core/brdf/openpbr.h.
 // Left out (Glint has no subsurface or volume scattering, dispersion or cut-outs): subsurface_*,
 // transmission_scatter*, transmission_dispersion_*, geometry_opacity, and the normal/tangent
 // inputs (Glint's shading frame and normal maps give them). Added: geometry_tangent_rotation, the
@@ -138,38 +139,5 @@ inline constexpr ParamSpec kOpenPbrTable[] = {
      .sliderMin = 0, .sliderMax = 360, .validMin = -kUnbounded, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
      .help = "Turns the anisotropy direction from the tangent towards the bitangent (Glint addition; glTF's anisotropyRotation)"},
 };
-
-inline OpenPbrParams unpackOpenPbr(const float* v) {
-    OpenPbrParams p;
-    p.baseWeight = v[0];
-    p.baseColor = {v[1], v[2], v[3]};
-    p.baseMetalness = v[4];
-    p.baseDiffuseRoughness = v[5];
-    p.specularWeight = v[6];
-    p.specularColor = {v[7], v[8], v[9]};
-    p.specularRoughness = v[10];
-    p.specularAnisotropy = v[11];
-    p.specularIor = v[12];
-    p.transmissionWeight = v[13];
-    p.transmissionColor = {v[14], v[15], v[16]};
-    p.transmissionDepth = v[17];
-    p.fuzzWeight = v[18];
-    p.fuzzColor = {v[19], v[20], v[21]};
-    p.fuzzRoughness = v[22];
-    p.coatWeight = v[23];
-    p.coatColor = {v[24], v[25], v[26]};
-    p.coatRoughness = v[27];
-    p.coatAnisotropy = v[28];
-    p.coatIor = v[29];
-    p.coatDarkening = v[30];
-    p.thinFilmWeight = v[31];
-    p.thinFilmThickness = v[32];
-    p.thinFilmIor = v[33];
-    p.emissionLuminance = v[34];
-    p.emissionColor = {v[35], v[36], v[37]};
-    p.thinWalled = v[38] > 0.5f;
-    p.tangentRotation = v[39];
-    return p;
-}
 
 }  // namespace glint

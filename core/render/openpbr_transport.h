@@ -4,7 +4,7 @@
 // a thin-walled surface, a plane or a mesh lets it pass straight on, tinted by
 // transmission_color; a volume sphere refracts it in and out (Snell) and absorbs it on the chord
 // by Beer-Lambert, transmission_color being the transmittance after transmission_depth. No
-// internal reflections. GLSL twin: transportOpenPbr in shaders/brdf/openpbr.glsl.
+// internal reflections. GLSL twin: transportOpenpbr in shaders/brdf/openpbr.glsl.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -22,7 +22,7 @@ inline glm::vec3 openPbrVolumeTransmittance(const OpenPbrParams& p, float distan
     return glm::pow(glm::max(p.transmissionColor, glm::vec3(0.0f)), glm::vec3(distance / p.transmissionDepth));
 }
 
-inline glm::vec3 transportOpenPbr(const OpenPbrParams& p, const MissRadiance& miss, const SphereGeometry* sphere,
+inline glm::vec3 transportOpenpbr(const OpenPbrParams& p, const MissRadiance& miss, const SphereGeometry* sphere,
                                   glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer) {
     const OpenPbrView view = openPbrView(p, glm::dot(normal, towardsViewer));
     const glm::vec3 emission = emissionOpenPbr(p, view);

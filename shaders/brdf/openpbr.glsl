@@ -93,7 +93,7 @@ vec3 openPbrLocal(MaterialParams p, ShadingFrame frame, vec3 world) {
     return vec3(c * local.x + s * local.y, -s * local.x + c * local.y, local.z);
 }
 
-vec3 evalOpenPbr(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
+vec3 evalOpenpbr(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     vec3 inLocal = openPbrLocal(p, frame, wi), outLocal = openPbrLocal(p, frame, wo);
     if (inLocal.z <= 0.0 || outLocal.z <= 0.0) return vec3(0.0);
     OpenPbrView v = openPbrView(p, outLocal.z);
@@ -130,7 +130,7 @@ OpenPbrResponse openPbrResponse(MaterialParams p, OpenPbrView v) {
     return r;
 }
 
-vec3 ambientReflectanceOpenPbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
+vec3 ambientReflectanceOpenpbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
     OpenPbrResponse r = openPbrResponse(p, openPbrView(p, cosTheta(frame, wo)));
     return r.diffuse + r.coat + r.specular;
 }
@@ -142,8 +142,8 @@ vec3 emissionOpenPbr(MaterialParams p, OpenPbrView v) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
-// Environment hook: twin of environmentLightingOpenPbr in core/environment/environment_lighting.cpp.
-vec3 environmentLightingOpenPbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
+// Environment hook: twin of lightingOf(OpenPbrParams) in core/environment/environment_lighting.cpp.
+vec3 environmentLightingOpenpbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
     OpenPbrView v = openPbrView(p, cosTheta(frame, wo));
     OpenPbrResponse r = openPbrResponse(p, v);
     float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
@@ -159,8 +159,8 @@ vec3 openPbrVolumeTransmittance(MaterialParams p, float distance) {
     return pow(max(p.transmission_color, vec3(0.0)), vec3(distance / p.transmission_depth));
 }
 
-// Transport hook: emission and transmission (twin of transportOpenPbr in render/openpbr_transport.h).
-vec3 transportOpenPbr(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
+// Transport hook: emission and transmission (twin of transportOpenpbr in render/openpbr_transport.h).
+vec3 transportOpenpbr(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     vec3 normal = frame.normal;
     OpenPbrView v = openPbrView(p, dot(normal, towardsViewer));
     vec3 emission = emissionOpenPbr(p, v);

@@ -1,4 +1,5 @@
 // The OpenPBR model's lobes: GLSL twin of core/brdf/openpbr_lobes.h (see there for the papers).
+#include "brdf/fresnel.glsl"
 #include "brdf/microfacet.glsl"
 
 const float OPENPBR_MIN_ALPHA = 1e-3;            // kOpenPbrMinAlpha
