@@ -49,6 +49,7 @@ std::string mistake(CLI::App& command, const CLI::ParseError& error) {
 
 CLI::App* addCommand(CLI::App& glint, const std::string& name, const std::string& summary, std::function<int()> run) {
     CLI::App* command = glint.add_subcommand(name, summary);
+    command->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // `-o a -o b`: b, as before
     command->callback([run = std::move(run)] { throw CLI::RuntimeError(run()); });
     return command;
 }

@@ -222,7 +222,9 @@ void addRenderCommand(CLI::App& glint) {
             },
             "draw a classroom overlay over the PNG (repeatable; one plot per image): " + overlayNames)
         ->allow_extra_args(false)  // one name per --overlay
-        ->check(needs("the name of an overlay", [](const std::string& value) { return findRenderOverlay(value) != nullptr; }))
+        ->each([](const std::string& value) {
+            if (!findRenderOverlay(value)) refuse("unknown overlay '" + value + "'");
+        })
         ->type_name("NAME");
     addPlotOverlayOptions(*command, options->plots);
     options->classroom.addTo(*command);
