@@ -1,4 +1,4 @@
-"""Editor figures under Xvfb (not a test; numbers for the README and reports):
+"""Editor figures under Xvfb (not a test; numbers for docs/performance.md and reports):
   1. idle CPU: utime+stime of the editor process over 10 s with nothing happening;
   2. edit-to-frame while dragging a material slider with 4 lights (1280×800 window), from the
      editor's GLINT_LOG_FRAMES log: time from the frame's input arriving to the frame presented,

@@ -1,5 +1,5 @@
 // Headless rendering through OSMesa (see headless.h).
-#include "cli/headless.h"
+#include "runtime/headless.h"
 
 #include "image/image_io.h"
 
