@@ -60,5 +60,27 @@ TEST(FusedDisplay, MsaaRendersKeepTheDisplayPass) {
     EXPECT_EQ(fused->display.pixels, throughDisplayPass(scene, 64, 64).pixels);
 }
 
+// Renderer::setRadianceKept(false) (PNG renders, `glint bench`): the fused render writes the 8-bit
+// image alone, the same bytes, with objects, a sky, or nothing but the background (whose frame then
+// clears no depth either: the frame after it, with objects, is whole again).
+TEST(FusedDisplay, WithoutTheFloatImageTheDisplayIsTheSame) {
+    Scene empty = defaultScene();
+    empty.objects.clear();
+    for (const Scene& scene : {defaultScene(), skyScene(), empty, defaultScene()}) {
+        auto kept = test::sharedHeadless().render(scene, 96, 64, true);
+        auto alone = test::sharedHeadless().render(scene, 96, 64, false);
+        ASSERT_TRUE(kept.ok() && alone.ok());
+        EXPECT_TRUE(alone->radiance.pixels.empty());
+        EXPECT_EQ(alone->display.pixels, kept->display.pixels);
+    }
+    // Unfused (MSAA) renders write the float image all the same: the display pass reads it.
+    Scene msaa = skyScene();
+    msaa.msaaSamples = 4;
+    auto alone = test::sharedHeadless().render(msaa, 64, 64, false);
+    ASSERT_TRUE(alone.ok());
+    EXPECT_EQ(alone->display.pixels, throughDisplayPass(msaa, 64, 64).pixels);
+    test::sharedHeadless().renderer().setRadianceKept(true);  // as the other tests expect
+}
+
 }  // namespace
 }  // namespace glint

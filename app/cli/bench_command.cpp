@@ -43,7 +43,7 @@ using nlohmann::json;
 
 constexpr const char* kUsage =
     "usage: glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]... [--scene-file FILE]... [--size WxH]\n"
-    "                   [--generic]\n"
+    "                   [--generic] [--radiance]\n"
     "  --frames N        frames timed per scene, interleaved with the floor pass (default 11; --quick: 1)\n"
     "  --quick           fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy\n"
     "  --json FILE       also write the figures as JSON (\"format\": \"glint-bench\")\n"
@@ -51,12 +51,15 @@ constexpr const char* kUsage =
     "                    `--scene list` lists them)\n"
     "  --scene-file FILE time this scene file (repeatable), no program figures\n"
     "  --size WxH        frame size (default 1280x720)\n"
-    "  --generic         draw with the generic programs, not the specialised ones (for comparison)\n";
+    "  --generic         draw with the generic programs, not the specialised ones (for comparison)\n"
+    "  --radiance        also write the float radiance image, as an EXR render does (default: a PNG\n"
+    "                    render's frame, the 8-bit picture only)\n";
 
 struct BenchOptions {
     int frames = 0;  // 0: the default for the mode
     bool quick = false;
     bool generic = false;  // Renderer::setSpecialisedPrograms(false)
+    bool radiance = false;  // Renderer::setRadianceKept(true)
     int width = 1280, height = 720;
     std::string jsonPath;
     std::vector<std::string> sceneNames;  // empty: every standard scene
@@ -317,9 +320,9 @@ Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::pat
 
 void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& program, const BenchOptions& options,
                 const std::string& rendererDescription) {
-    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs (%s)\n",
+    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs, %s (%s)\n",
                 options.width, options.height, options.framesPerScene(), options.generic ? "generic" : "specialised",
-                rendererDescription.c_str());
+                options.radiance ? "8-bit and float images" : "8-bit image only", rendererDescription.c_str());
     std::printf("%-27s %-15s %9s %9s %9s %9s %9s %-9s %7s %9s %9s %9s %10s %5s\n", "scene", "family", "frame ms", "IQR ms",
                 "radiance", "display", "floor ms", "floor", "ratio", "rad.ratio", "readback", "first ms", "triangles", "maps");
     for (const SceneResult& scene : scenes)
@@ -353,7 +356,7 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
                              {"triangles", scene.triangles}, {"shadow_maps_per_frame", scene.shadowMapsPerFrame}});
     json figures = {{"format", "glint-bench"}, {"version", 1}, {"renderer", rendererDescription},
                     {"width", options.width}, {"height", options.height}, {"frames", options.framesPerScene()},
-                    {"quick", options.quick}, {"generic_programs", options.generic},
+                    {"quick", options.quick}, {"generic_programs", options.generic}, {"float_radiance", options.radiance},
                     {"scenes", sceneRows}};
     if (options.scenesOnly()) return figures;  // --scene, --scene-file: the scenes only
     figures.update(json{{"cold_start_ms", toJson(program.coldStart)}, {"cold_start_runs", options.coldStarts()},
@@ -403,6 +406,7 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
         {{"--size"}, "WIDTHxHEIGHT",
          pixelSizeOption(options.width, options.height, 1, 8192, "--size needs WIDTHxHEIGHT from 1x1 to 8192x8192, e.g. 1280x720")},
         {{"--generic"}, "", [&](const std::string&) { options.generic = true; return std::string(); }},
+        {{"--radiance"}, "", [&](const std::string&) { options.radiance = true; return std::string(); }},
     };
     auto parsed = parseCommandOptions(arguments, known, "argument");
     if (!parsed) return usageError(parsed.error().message);
@@ -422,6 +426,7 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     (*headless)->renderer().setSpecialisedPrograms(!options.generic);
+    (*headless)->renderer().setRadianceKept(options.radiance);
     std::vector<const BenchScene*> timed;
     for (const BenchScene& benchScene : benchScenes()) {
         const auto& only = options.sceneNames;

@@ -239,7 +239,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
-                                              : headless->render(*scene, width, height);
+                                              : headless->render(*scene, width, height, isFloatImagePath(options.outputPath));
         if (!rendered) {
             std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
             return 2;

@@ -37,6 +37,7 @@
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
 #include "gl/renderer.h"
+#include "image/image_io.h"
 
 namespace glint {
 namespace {
@@ -98,9 +99,19 @@ void loadFont(float pixelSize) {
 
 // --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
 
-void saveScreenshot(EditorState& state, Renderer& renderer) {
-    renderer.displayOffscreen(state.session.scene().display);
-    const RenderedImages images{renderer.readRadiance(), renderer.readDisplay()};
+// Rendered afresh at the viewport's full size and detail; with the float image only for an EXR.
+void saveScreenshot(EditorState& state, Renderer& renderer, glm::ivec2 size) {
+    const Scene& scene = state.session.scene();
+    const bool floatImage = isFloatImagePath(state.screenshotPath);
+    renderer.setRadianceKept(floatImage);
+    const Status rendered = renderer.renderRadiance(scene, size.x, size.y);
+    renderer.setRadianceKept(false);
+    if (!rendered) {
+        state.errorMessage = "Could not render the screenshot.\n\n" + rendered.error().format();
+        return;
+    }
+    renderer.displayOffscreen(scene.display);
+    const RenderedImages images{floatImage ? renderer.readRadiance() : RadianceImage(), renderer.readDisplay()};
     if (Status written = writeRenderedImage(images, state.screenshotPath); !written)
         state.errorMessage = "Could not save the screenshot.\n\n" + written.error().format();
     else state.statusMessage = "Screenshot " + state.screenshotPath;
@@ -134,8 +145,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     }
     Renderer& renderer = **created;
     // The radiance pass also writes the displayed image, so that putting it on screen is a scaled
-    // copy rather than a display pass over every screen pixel (renderer.h).
+    // copy rather than a display pass over every screen pixel (renderer.h); the float image is not
+    // written (the screenshot renders its own when it saves an EXR).
     renderer.setFusedDisplay(true);
+    renderer.setRadianceKept(false);
     GLFWwindow* window = platform->window();
 
     BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
@@ -257,6 +270,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedSize = {0, 0};
             framesToDraw = std::max(framesToDraw, 2);
         }
+        if (state.screenshotRequested) {  // uses the renderer: the viewport is drawn afresh below
+            state.screenshotRequested = false;
+            saveScreenshot(state, renderer, viewportPixels);
+            renderedSize = {0, 0};
+        }
         const bool changed = state.session.revision() != renderedRevision;
         const RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
                                                state.settings.simplifyMeshesWhileDragging});
@@ -291,10 +309,6 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedRevision = state.session.revision();
             renderedScale = plan.pixelScale;
             framesToDraw = std::max(framesToDraw, 2);
-        }
-        if (state.screenshotRequested) {
-            state.screenshotRequested = false;
-            saveScreenshot(state, renderer);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, framebuffer.x, framebuffer.y);

@@ -283,10 +283,12 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         displayTarget_.ensure(width, height, 1);
         fusedDisplay_ = scene.display;
     }
+    // The float image is written unless the render is fused and nobody reads it (setRadianceKept).
+    radianceWritten_ = keepRadiance_ || !fusedDisplay_;
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
-    const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    const GLenum drawBuffers[2] = {radianceWritten_ ? GL_COLOR_ATTACHMENT0 : GL_NONE, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(fusedDisplay_ ? 2 : 1, drawBuffers);
 
     glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
@@ -298,7 +300,13 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     if (samples > 1) glEnable(GL_MULTISAMPLE);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    // Depth is cleared before the first draw that tests it, not when nothing is drawn (an empty
+    // frame is then one clear of the 8-bit image); only what was drawn reads it (the overlays).
+    bool depthCleared = false;
+    const auto clearDepthOnce = [&depthCleared] {
+        if (!depthCleared) glClear(GL_DEPTH_BUFFER_BIT);
+        depthCleared = true;
+    };
     const FrameUniforms packed = uploadFrame(scene, width, height);
     environment_->prepare(scene.environment);  // uploads only when the map changed
     const std::string frameDefines =
@@ -310,7 +318,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
                                    (!fusedDisplay_ || fusedDisplay_->dither == Dither::None);
     if (uniformBackground) {
         const GLfloat radiance[4] = {scene.background.color.r, scene.background.color.g, scene.background.color.b, 1.0f};
-        glClearBufferfv(GL_COLOR, 0, radiance);
+        if (radianceWritten_) glClearBufferfv(GL_COLOR, 0, radiance);
         if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
             const glm::vec3 encoded = encodeForDisplay(scene.background.color, *fusedDisplay_);
             GLfloat stored[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -387,6 +395,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         setFaceCulling(culledFaces(mesh.closure, beyondNearPlane(scene.camera, bounds)));
         if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
         glBindVertexArray(mesh.vertexArray);
+        clearDepthOnce();
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;
         if (mesh.simplified) ++simplifiedMeshesDrawn_;
@@ -399,7 +408,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and MSAA samples) an
     // object covers are rejected before the background shader runs.
     Result<const ShaderProgram*> background = static_cast<const ShaderProgram*>(nullptr);
-    if (!uniformBackground) background = backgroundProgram(frameDefines);
+    if (!uniformBackground)
+        background = backgroundProgram(specialise_ ? backgroundSpecialisation(packed, scene.environment, fusedDisplay_) : "");
     if (!background) {
         shaderError_ = background.error().format();
         result = background.error();
@@ -407,6 +417,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         glDepthRange(1.0, 1.0);
+        clearDepthOnce();
         glUseProgram((*background)->id());
         setFusedDisplayUniforms(**background, fusedDisplay_);
         glBindVertexArray(emptyVertexArray_);
@@ -423,7 +434,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     if (result) shaderError_.clear();
-    else fusedDisplay_.reset();  // an object was left out: the display pass runs again
+    // An object was left out: the display pass runs again, from the float image where there is one.
+    else if (radianceWritten_) fusedDisplay_.reset();
     if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
     return result;
 }
@@ -457,8 +469,10 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
     // Skipped when the radiance pass already wrote the encoded image with these settings (fused).
-    if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display))
+    if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display)) {
+        GLINT_CHECK(radianceWritten_);  // a render that kept no float image: its display settings only
         runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
+    }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
     fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
 }
@@ -476,6 +490,7 @@ void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerL
                           lowerLeft.y + height * pixelScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     } else {
+        GLINT_CHECK(radianceWritten_);
         runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
     }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), lowerLeft, pixelScale);
@@ -502,6 +517,7 @@ void readFlipped(GLuint framebuffer, int width, int height, GLenum type, std::ve
 
 RadianceImage Renderer::readRadiance() const {
     platform_.makeCurrent();
+    GLINT_CHECK(radianceWritten_);  // setRadianceKept(false) renders have no float image
     RadianceImage image(radianceTarget_.width(), radianceTarget_.height());
     readFlipped(radianceTarget_.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
     return image;

@@ -64,6 +64,13 @@ public:
     // settings has nothing left to do but the overlays, and displayToScreen() copies it. The float
     // image is written all the same.
     void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
+    // Whether fused renders also write the float radiance image (on by default). Off for a render
+    // whose float image nobody reads (a PNG render, `glint bench`): a fused render then writes only
+    // the 8-bit image, 4 bytes a pixel instead of 20, and readRadiance() and a display pass with
+    // other settings are refused until a render that kept it. Unfused renders (MSAA, the levels
+    // ramp) always write it.
+    void setRadianceKept(bool kept) { keepRadiance_ = kept; }
+    bool radianceKept() const { return keepRadiance_; }
     // Specialised programs (on by default; gl/shader_specialisation.h): what a frame and a material
     // keep fixed is compiled in as constants, one program per combination, built when first drawn.
     // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
@@ -159,6 +166,8 @@ private:
     int maxSamples_ = 1;
     bool fuseDisplay_ = false;
     bool specialise_ = true;
+    bool keepRadiance_ = true;
+    bool radianceWritten_ = true;  // by the last renderRadiance
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};
     RenderTarget radianceTarget_{kRadianceFormat, true};
