@@ -33,6 +33,7 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
+#include "editor/ui_layer_cache.h"
 #include "editor/viewport_refresh.h"
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
@@ -187,6 +188,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     int renderedScale = 1;
     std::string shownTitle;
     ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
+    UiLayerCache uiLayers;  // unchanged windows copied, not drawn again (ui_layer_cache.h)
+    const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
@@ -312,14 +315,14 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, framebuffer.x, framebuffer.y);
-        glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+        glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
         glClear(GL_COLOR_BUFFER_BIT);
         const auto composeStart = std::chrono::steady_clock::now();
         renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
         if (logFrames) glFinish();  // so that the log can tell the phases apart
         const auto displayed = std::chrono::steady_clock::now();
         glViewport(0, 0, framebuffer.x, framebuffer.y);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        uiLayers.draw(ImGui::GetDrawData(), ImVec4(viewport.x, viewport.y, viewport.width, viewport.height), kWindowClearColor);
         if (logFrames) glFinish();
         const auto composed = std::chrono::steady_clock::now();
         platform->present();
@@ -330,10 +333,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, %lld triangles\n",
+                         "presented %.1f ms, ui windows %d redrawn %d copied, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
-                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), state.triangleCount);
+                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
+                         uiLayers.listsCopied(), state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         // Refusals and status lines written before the scene's last change no longer hold.
