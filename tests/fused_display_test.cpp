@@ -4,6 +4,8 @@
 // settings than the fused ones still runs the pass. Not the CPU twin (gpu_reference_test.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "gpu_test_support.h"
 
 namespace glint {
@@ -80,6 +82,37 @@ TEST(FusedDisplay, WithoutTheFloatImageTheDisplayIsTheSame) {
     ASSERT_TRUE(alone.ok());
     EXPECT_EQ(alone->display.pixels, throughDisplayPass(msaa, 64, 64).pixels);
     test::sharedHeadless().renderer().setRadianceKept(true);  // as the other tests expect
+}
+
+// The editor refines a slow full frame in bands of rows (Renderer::renderRadiance's RowBand): the
+// bands together are the whole frame, float and 8-bit, fused or through MSAA and the display pass.
+TEST(FusedDisplay, AFrameDrawnInBandsIsTheWholeFrame) {
+    Renderer& renderer = test::sharedHeadless().renderer();
+    for (int samples : {1, 4}) {
+        Scene scene = skyScene();
+        scene.msaaSamples = samples;
+        ASSERT_TRUE(renderer.renderRadiance(scene, 96, 64).ok());
+        renderer.displayOffscreen(scene.display);
+        const RadianceImage wholeRadiance = renderer.readRadiance();
+        const DisplayImage wholeDisplay = renderer.readDisplay();
+        Scene other = scene;  // other pixels in the targets: a red background, no object
+        other.objects.clear();
+        other.background.kind = BackgroundKind::Constant;
+        other.background.color = {1.0f, 0.0f, 0.0f};
+        ASSERT_TRUE(renderer.renderRadiance(other, 96, 64).ok());
+        for (const RowBand rows : {RowBand{40, 24}, RowBand{13, 27}})
+            ASSERT_TRUE(renderer.renderRadiance(scene, 96, 64, MeshDetail::Full, rows).ok());
+        // Two bands: the bottom 13 rows (last in the top-first readback) still hold the other scene.
+        renderer.displayOffscreen(scene.display);
+        const DisplayImage partial = renderer.readDisplay();
+        const size_t bandStart = static_cast<size_t>(64 - 13) * 96 * 3;
+        EXPECT_TRUE(std::equal(partial.pixels.begin(), partial.pixels.begin() + bandStart, wholeDisplay.pixels.begin()));
+        EXPECT_FALSE(std::equal(partial.pixels.begin() + bandStart, partial.pixels.end(), wholeDisplay.pixels.begin() + bandStart));
+        ASSERT_TRUE(renderer.renderRadiance(scene, 96, 64, MeshDetail::Full, RowBand{0, 13}).ok());
+        renderer.displayOffscreen(scene.display);
+        EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples";
+        EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples";
+    }
 }
 
 }  // namespace

@@ -37,6 +37,7 @@
 #include "editor/viewport_refresh.h"
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
+#include "gl/render_target.h"
 #include "gl/renderer.h"
 #include "image/image_io.h"
 
@@ -189,6 +190,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     std::string shownTitle;
     ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
     UiLayerCache uiLayers;  // unchanged windows copied, not drawn again (ui_layer_cache.h)
+    RenderTarget reducedFrame{GL_RGBA8, false};  // on screen while the full frame is refined in bands
+    int refinedRows = 0;  // the full frame's rows drawn so far, from the top
     const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
@@ -294,7 +297,19 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                 preview.msaaSamples = 1;
                 drawn = &preview;
             }
-            if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail); !status)
+            // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
+            RowBand rows;
+            if (plan.bands > 1) {
+                if (plan.band == 0) {
+                    reducedFrame.ensure(viewportPixels.x, viewportPixels.y, 1);
+                    renderer.displayToScreen(drawn->display, {0, 0}, renderedScale, reducedFrame.framebuffer());
+                }
+                const int top = renderPixels.y - renderPixels.y * plan.band / plan.bands;
+                rows.first = renderPixels.y - renderPixels.y * (plan.band + 1) / plan.bands;
+                rows.count = top - rows.first;
+                refinedRows = renderPixels.y - rows.first;
+            }
+            if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
             state.lastRenderMilliseconds =
@@ -318,7 +333,17 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
         glClear(GL_COLOR_BUFFER_BIT);
         const auto composeStart = std::chrono::steady_clock::now();
+        if (refresh.refining()) {  // the full frame's bands so far, over the reduced frame
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
+            glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
+                              viewportLowerLeft.x + reducedFrame.width(), viewportLowerLeft.y + reducedFrame.height(),
+                              GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows, renderedSize.x, refinedRows);
+        }
         renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
+        glDisable(GL_SCISSOR_TEST);
         if (logFrames) glFinish();  // so that the log can tell the phases apart
         const auto displayed = std::chrono::steady_clock::now();
         glViewport(0, 0, framebuffer.x, framebuffer.y);
@@ -333,11 +358,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, ui windows %d redrawn %d copied, %lld triangles\n",
+                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
                          ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
-                         uiLayers.listsCopied(), state.triangleCount);
+                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         // Refusals and status lines written before the scene's last change no longer hold.

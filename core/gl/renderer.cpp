@@ -259,7 +259,7 @@ FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
 
 // --- drawing --------------------------------------------------------------------------------
 
-Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail) {
+Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail, RowBand rows) {
     platform_.makeCurrent();
     ++framesRendered_;  // programs looked up from here on belong to this frame (makeRoom spares them)
     GLINT_CHECK(width > 0 && height > 0);
@@ -295,7 +295,13 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     glViewport(0, 0, width, height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
+    // Clears, draws and the MSAA resolve keep to the band.
+    if (rows.count > 0) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, rows.first, width, rows.count);
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -433,6 +439,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         // Depth too: the overlay pass hides lines behind the surface with it.
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
+    glDisable(GL_SCISSOR_TEST);
     if (result) shaderError_.clear();
     // An object was left out: the display pass runs again, from the float image where there is one.
     else if (radianceWritten_) fusedDisplay_.reset();
@@ -477,9 +484,9 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
 }
 
-void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
+void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale, GLuint framebuffer) {
     platform_.makeCurrent();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     const int width = radianceTarget_.width(), height = radianceTarget_.height();
     glViewport(lowerLeft.x, lowerLeft.y, width * pixelScale, height * pixelScale);
     if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) {
@@ -488,7 +495,7 @@ void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerL
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glBlitFramebuffer(0, 0, width, height, lowerLeft.x, lowerLeft.y, lowerLeft.x + width * pixelScale,
                           lowerLeft.y + height * pixelScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     } else {
         GLINT_CHECK(radianceWritten_);
         runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);

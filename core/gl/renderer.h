@@ -30,6 +30,12 @@
 
 namespace glint {
 
+// Rows [first, first + count) of a frame, counted from its bottom row; count 0: every row.
+struct RowBand {
+    int first = 0;
+    int count = 0;
+};
+
 class Renderer {
 public:
     // The radiance targets' format (the bare shading pass of `glint bench` writes the same).
@@ -47,7 +53,10 @@ public:
     // MeshDetail::Simplified draws large meshes by simplified stand-ins where they are ready, each
     // with about as many triangles as pixels it may cover (the editor, while the user drags;
     // gl/gpu_mesh_cache.h); headless renders draw every triangle.
-    Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full);
+    // `rows`: only those rows of the width×height frame are drawn (the editor refines a slow full
+    // frame band by band); the others keep what the targets held.
+    Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full,
+                          RowBand rows = {});
     // Starts making the simplified stand-ins of the scene's large meshes on worker threads (the
     // editor, once a full frame proved slow), so that the next drag finds them ready; without it
     // Simplified frames draw the full meshes.
@@ -79,7 +88,9 @@ public:
     // the fused image when the last radiance render fused these settings (the editor fuses).
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
     // reduced-resolution preview while dragging).
-    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1);
+    // `framebuffer`: another target than the screen (the editor keeps the reduced frame while it
+    // refines the full one).
+    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1, GLuint framebuffer = 0);
 
     RadianceImage readRadiance() const;  // top row first
     DisplayImage readDisplay() const;    // top row first
