@@ -45,6 +45,7 @@ struct BenchOptions {
     int frames = 0;  // 0: the default for the mode
     bool quick = false;
     bool generic = false;  // Renderer::setSpecialisedPrograms(false)
+    bool radiance = false;  // Renderer::setRadianceKept(true)
     int width = 1280, height = 720;
     std::string jsonPath;
     std::vector<std::string> sceneNames;  // empty: every standard scene
@@ -301,9 +302,9 @@ Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::pat
 
 void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& program, const BenchOptions& options,
                 const std::string& rendererDescription) {
-    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs (%s)\n",
+    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs, %s (%s)\n",
                 options.width, options.height, options.framesPerScene(), options.generic ? "generic" : "specialised",
-                rendererDescription.c_str());
+                options.radiance ? "8-bit and float images" : "8-bit image only", rendererDescription.c_str());
     std::printf("%-27s %-15s %9s %9s %9s %9s %9s %-9s %7s %9s %9s %9s %10s %5s\n", "scene", "family", "frame ms", "IQR ms",
                 "radiance", "display", "floor ms", "floor", "ratio", "rad.ratio", "readback", "first ms", "triangles", "maps");
     for (const SceneResult& scene : scenes)
@@ -337,7 +338,7 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
                              {"triangles", scene.triangles}, {"shadow_maps_per_frame", scene.shadowMapsPerFrame}});
     json figures = {{"format", "glint-bench"}, {"version", 1}, {"renderer", rendererDescription},
                     {"width", options.width}, {"height", options.height}, {"frames", options.framesPerScene()},
-                    {"quick", options.quick}, {"generic_programs", options.generic},
+                    {"quick", options.quick}, {"generic_programs", options.generic}, {"float_radiance", options.radiance},
                     {"scenes", sceneRows}};
     if (options.scenesOnly()) return figures;  // --scene, --scene-file: the scenes only
     figures.update(json{{"cold_start_ms", toJson(program.coldStart)}, {"cold_start_runs", options.coldStarts()},
@@ -364,6 +365,7 @@ int runBench(const BenchOptions& options) {
         return 2;
     }
     (*headless)->renderer().setSpecialisedPrograms(!options.generic);
+    (*headless)->renderer().setRadianceKept(options.radiance);
     std::vector<const BenchScene*> timed;
     for (const BenchScene& benchScene : benchScenes()) {
         const auto& only = options.sceneNames;
@@ -450,6 +452,8 @@ void addBenchCommand(CLI::App& glint) {
         ->type_name("FILE");
     addPixelSize(*command, options->width, options->height, 1, 8192, "frame size (default 1280x720)");
     command->add_flag("--generic", options->generic, "draw with the generic programs, not the specialised ones (for comparison)");
+    command->add_flag("--radiance", options->radiance,
+                      "also write the float radiance image, as an EXR render does (default: the 8-bit picture only)");
 }
 
 }  // namespace glint

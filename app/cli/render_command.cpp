@@ -126,7 +126,7 @@ int render(RenderOptions& options) {
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
-                                              : headless->render(*scene, width, height);
+                                              : headless->render(*scene, width, height, isFloatImagePath(options.outputPath));
         if (!rendered) {
             std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
             return 2;
