@@ -13,7 +13,7 @@
 #include <thread>
 #include <tuple>
 
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/mesh_loading.h"

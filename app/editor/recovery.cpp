@@ -1,5 +1,5 @@
 // The recovery file's location, writer and reader (see recovery.h).
-#include "edit/recovery.h"
+#include "editor/recovery.h"
 
 #include <cstdlib>
 #include <filesystem>

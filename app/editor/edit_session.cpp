@@ -1,6 +1,6 @@
 // EditSession's steps, undo and redo (see edit_session.h). Whether a step changed anything is
 // decided on the scenes' JSON form, so a new scene field needs no change here.
-#include "edit/edit_session.h"
+#include "editor/edit_session.h"
 
 #include "scene/scene_json.h"
 

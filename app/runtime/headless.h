@@ -18,7 +18,9 @@ struct RenderedImages {
 class HeadlessRenderer {
 public:
     static Result<std::unique_ptr<HeadlessRenderer>> create();
-    Result<RenderedImages> render(const Scene& scene, int width, int height);
+    // withRadiance = false: only the display image (a PNG render), its radiance left empty; the
+    // float image is then not even drawn (Renderer::setRadianceKept).
+    Result<RenderedImages> render(const Scene& scene, int width, int height, bool withRadiance = true);
     Renderer& renderer() { return *renderer_; }
 
 private:

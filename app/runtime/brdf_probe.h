@@ -26,8 +26,8 @@ Status probeCustomBrdf(const CustomBrdf& brdf, const std::vector<float>& values,
 // Every custom BRDF of a scene, each probed with its material's values.
 Status probeSceneBrdfs(const Scene& scene, double timeoutSeconds);
 
-// The child's side: `glint probe-brdf NAME --values V,V,…` with the .brdf text on stdin.
+// The child's side: `glint probe-brdf NAME --values=V,V,…` (or none) with the .brdf text on stdin.
 // Exit 0 when it drew, 1 with the error on stderr otherwise.
-int runProbeBrdfCommand(const std::vector<std::string>& arguments);
+int runProbeBrdfCommand(const std::string& name, const std::string& valueList);
 
 }  // namespace glint

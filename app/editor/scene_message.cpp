@@ -1,5 +1,5 @@
 // Messages that the next change of the scene drops (see scene_message.h).
-#include "edit/scene_message.h"
+#include "editor/scene_message.h"
 
 namespace glint {
 

@@ -2,7 +2,7 @@
 // its pointer is stored atomically; the buffer it replaced is freed only at the next
 // publication, so a handler that loaded the old pointer an instant earlier still reads valid
 // memory (the handler never runs longer than the time between two edits).
-#include "edit/crash_guard.h"
+#include "editor/crash_guard.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,5 +1,5 @@
 // Headless rendering through OSMesa (see headless.h).
-#include "cli/headless.h"
+#include "runtime/headless.h"
 
 #include "image/image_io.h"
 
@@ -17,10 +17,11 @@ Result<std::unique_ptr<HeadlessRenderer>> HeadlessRenderer::create() {
     return headless;
 }
 
-Result<RenderedImages> HeadlessRenderer::render(const Scene& scene, int width, int height) {
+Result<RenderedImages> HeadlessRenderer::render(const Scene& scene, int width, int height, bool withRadiance) {
+    renderer_->setRadianceKept(withRadiance);
     if (Status status = renderer_->renderRadiance(scene, width, height); !status) return status.error();
     renderer_->displayOffscreen(scene.display);
-    return RenderedImages{renderer_->readRadiance(), renderer_->readDisplay()};
+    return RenderedImages{withRadiance ? renderer_->readRadiance() : RadianceImage(), renderer_->readDisplay()};
 }
 
 Status writeRenderedImage(const RenderedImages& images, const std::string& path) {

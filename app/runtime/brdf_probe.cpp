@@ -1,6 +1,6 @@
 // Child-process probe of custom BRDF shaders (see brdf_probe.h).
 // Sections: the parent (spawn, feed, wait, kill) · the child (probe-brdf).
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -16,7 +16,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "cli/headless.h"
+#include "runtime/headless.h"
 #include "scene/preview_stage.h"
 
 namespace glint {
@@ -67,7 +67,7 @@ Status probeCustomBrdf(const CustomBrdf& brdf, const std::vector<float>& values,
         close(toChild[0]), close(toChild[1]);
         return makeError("cannot start the shader probe (pipe failed)");
     }
-    const std::string valueList = joinValues(values);
+    const std::string valueOption = "--values=" + joinValues(values);  // "=": a value may start with "-"
     const pid_t child = fork();
     if (child < 0) {
         close(toChild[0]), close(toChild[1]), close(fromChild[0]), close(fromChild[1]);
@@ -78,8 +78,8 @@ Status probeCustomBrdf(const CustomBrdf& brdf, const std::vector<float>& values,
         dup2(fromChild[1], STDOUT_FILENO);
         dup2(fromChild[1], STDERR_FILENO);
         close(toChild[0]), close(toChild[1]), close(fromChild[0]), close(fromChild[1]);
-        execl(executable.c_str(), executable.c_str(), "probe-brdf", brdf.file.path.c_str(), "--values",
-              valueList.c_str(), static_cast<char*>(nullptr));
+        execl(executable.c_str(), executable.c_str(), "probe-brdf", brdf.file.path.c_str(), valueOption.c_str(),
+              static_cast<char*>(nullptr));
         _exit(127);
     }
     close(toChild[0]);
@@ -149,13 +149,9 @@ Status probeSceneBrdfs(const Scene& scene, double timeoutSeconds) {
 
 // --- the child ------------------------------------------------------------------------------
 
-int runProbeBrdfCommand(const std::vector<std::string>& arguments) {
-    if (arguments.size() != 3 || arguments[1] != "--values") {
-        std::fprintf(stderr, "glint probe-brdf: internal command (usage: probe-brdf NAME --values V,V,… < FILE)\n");
-        return 2;
-    }
+int runProbeBrdfCommand(const std::string& name, const std::string& valueList) {
     const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
-    auto file = parseBrdfFile(text, arguments[0]);
+    auto file = parseBrdfFile(text, name);
     if (!file) {
         std::fprintf(stderr, "%s\n", file.error().format().c_str());
         return 1;
@@ -164,9 +160,9 @@ int runProbeBrdfCommand(const std::vector<std::string>& arguments) {
     material.name = "probe";
     material.custom = makeCustomBrdf(std::move(*file));
     material.values = defaultValues(material.custom->table);
-    if (arguments[2] != "none") {
+    if (valueList != "none") {
         std::vector<float> values;
-        std::stringstream list(arguments[2]);
+        std::stringstream list(valueList);
         for (std::string item; std::getline(list, item, ',');) values.push_back(std::strtof(item.c_str(), nullptr));
         if (values.size() == material.values.size()) material.values = values;
     }

@@ -1,4 +1,4 @@
-// Snapshot suites and their manifest (see snapshot_suite.h; format in README "Snapshot testing").
+// Snapshot suites and their manifest (see snapshot_suite.h; format in docs/snapshot-testing.md).
 // Sections: manifest reading · suite loading · sharding.
 #include "snapshot/snapshot_suite.h"
 
