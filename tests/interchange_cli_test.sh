@@ -128,7 +128,7 @@ expect_error render_gltf_unknown_material "no material 'nope' in the file; it ho
   render "$files/gltf/DirectionalLight.gltf" --material nope -o "$out/x.png"
 expect_error render_lfs_pointer "lfs_pointer.binary:1:1: not a MERL BRDF but a Git LFS pointer" render "$files/merl/lfs_pointer.binary" -o "$out/x.png"
 check export_chosen bash -c "'$glint' export '$files/gltf/DirectionalLight.gltf' -o '$out/chosen.mtl' --material 2 && grep -q 'newmtl mat_2.001' '$out/chosen.mtl' && ! grep -q 'newmtl mat_0.001' '$out/chosen.mtl'"
-expect_output info_gltf "1 'mat_1.001' \\(cook_torrance\\)" info "$files/gltf/DirectionalLight.gltf"
+expect_output info_gltf "1 'mat_1.001' \\(openpbr\\)" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_gltf_lights "0 'Sun' \\(directional\\)" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_gltf_meshes "2 'Sphere.100'" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_mesh "mesh: 24 vertices, 12 triangles" info "$files/obj/cube.obj"
