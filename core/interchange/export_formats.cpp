@@ -29,7 +29,7 @@ Result<ExportedText> exportMaterials(std::span<const ImportedMaterial> materials
                                      const std::string& outputPath) {
     if (!isExportPath(outputPath)) return makeError("the output must end in .mtl or .gltf (got '" + outputPath + "')");
     if (materials.empty()) return makeError("no material to export");
-    return lowerCaseExtension(outputPath) == ".mtl" ? writeMtl(materials) : writeGltf(materials.front(), lights);
+    return lowerCaseExtension(outputPath) == ".mtl" ? writeMtl(materials) : writeGltf(materials.front(), lights, outputPath);
 }
 
 }  // namespace glint
