@@ -12,11 +12,12 @@ namespace glint {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: glint export IN -o OUT.mtl|OUT.gltf [--material NAME|INDEX]\n"
+    "usage: glint export IN -o OUT.mtl|OUT.gltf|OUT.mtlx [--material NAME|INDEX]\n"
     "  IN     a material file, a scene (its materials; for glTF the first object's material and\n"
     "         the scene's lights), or a .mtl / .gltf file\n"
     "  OUT    .mtl: every material as a Wavefront library; .gltf: a UV sphere carrying the\n"
-    "         material, the lights as KHR_lights_punctual, the buffer embedded (base64)\n"
+    "         material, the lights as KHR_lights_punctual, the buffer embedded (base64);\n"
+    "         .mtlx: every material as a MaterialX 1.39 open_pbr_surface\n"
     "  --material NAME|INDEX  only that material of IN (`glint info IN` lists them), with its warnings\n";
 
 int fail(const std::string& message) {
@@ -56,12 +57,12 @@ int runExportCommand(const std::vector<std::string>& arguments) {
     }
     const bool chooses = arguments.size() == 5 && arguments[3] == "--material";
     if ((arguments.size() != 3 && !chooses) || (arguments[1] != "-o" && arguments[1] != "--output")) {
-        std::fprintf(stderr, "glint export: expected IN -o OUT.mtl|OUT.gltf [--material NAME|INDEX]\n%s", kUsage);
+        std::fprintf(stderr, "glint export: expected IN -o OUT.mtl|OUT.gltf|OUT.mtlx [--material NAME|INDEX]\n%s", kUsage);
         return 2;
     }
     const std::string& input = arguments[0];
     const std::string& output = arguments[2];
-    if (!isExportPath(output)) return fail("the output must end in .mtl or .gltf (got '" + output + "')");
+    if (!isExportPath(output)) return fail("the output must end in .mtl, .gltf or .mtlx (got '" + output + "')");
     auto file = readInput(input);
     if (!file) return fail(file.error().format());
     if (chooses) {
