@@ -7,6 +7,7 @@
 #include "brdf/glass.h"
 #include "brdf/lambert.h"
 #include "brdf/mirror.h"
+#include "brdf/openpbr.h"
 #include "brdf/oren_nayar.h"
 #include "brdf/phong.h"
 #include "brdf/retroreflective.h"
@@ -72,6 +73,16 @@ constexpr ModelInfo kModels[] = {
     {BrdfModel::Glass, "glass", "Glass (dielectric)", "brdf/glass.glsl", "evalGlass", kGlassTable, true, true,
      "Snell's law and Fresnel (1823); transparency after Hearn & Baker, Computer Graphics, §14.5", nullptr,
      "transportGlass", nullptr, "refracts and reflects the map through its traced delta lobes"},
+    // Albedo-scaled layering conserves energy but is not reciprocal (OpenPBR §layering).
+    {BrdfModel::OpenPbr, "openpbr", "OpenPBR Surface", "brdf/openpbr.glsl", "evalOpenPbr", kOpenPbrTable, false, true,
+     "OpenPBR Surface 1.1, Academy Software Foundation, 2024 (layering by albedo scaling); "
+     "E. Turquin, Practical multiple scattering compensation for microfacet models, 2019; J. Portsmouth et al., EON, "
+     "JCGT 14(1), 2025; A. Estevez, C. Kulla, Charlie sheen, 2017; L. Belcour, P. Barla, thin-film iridescence, "
+     "SIGGRAPH 2017; N. Hoffman, F82 tint, 2023",
+     "ambientReflectanceOpenPbr", "transportOpenPbr", "environmentLightingOpenPbr",
+     "fuzz and diffuse: E(n)/π × their albedo; coat and specular: prefiltered radiance along the dominant "
+     "direction × their compensated albedo; transmission: prefiltered radiance through the surface",
+     openPbrAlbedoGlsl},
 };
 
 }  // namespace
@@ -106,6 +117,7 @@ glm::vec3 evalBrdf(BrdfModel model, std::span<const float> values, glm::vec3 wi,
             return evalRetroreflective(unpackRetroreflective(values.data()), wi, wo, frame);
         case BrdfModel::Mirror: return evalMirror(unpackMirror(values.data()), wi, wo, frame);
         case BrdfModel::Glass: return evalGlass(unpackGlass(values.data()), wi, wo, frame);
+        case BrdfModel::OpenPbr: return evalOpenPbr(unpackOpenPbr(values.data()), wi, wo, frame);
     }
     return glm::vec3(0.0f);
 }
@@ -125,6 +137,7 @@ glm::vec3 ambientReflectance(BrdfModel model, std::span<const float> values, glm
         case BrdfModel::Retroreflective:
             return ambientReflectanceRetroreflective(unpackRetroreflective(values.data()), wo, frame);
         case BrdfModel::Mirror: return ambientReflectanceMirror(unpackMirror(values.data()), wo, frame);
+        case BrdfModel::OpenPbr: return ambientReflectanceOpenPbr(unpackOpenPbr(values.data()), wo, frame);
         case BrdfModel::Glass: break;  // no ambient hook (ModelInfo::glslAmbient == nullptr)
     }
     return glm::vec3(0.0f);

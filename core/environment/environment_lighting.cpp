@@ -11,6 +11,7 @@
 #include "brdf/ggx_anisotropic.h"
 #include "brdf/lambert.h"
 #include "brdf/mirror.h"
+#include "brdf/openpbr.h"
 #include "brdf/oren_nayar.h"
 #include "brdf/phong.h"
 #include "brdf/retroreflective.h"
@@ -139,6 +140,18 @@ glm::vec3 environmentLightingGgxAnisotropic(const GgxAnisotropicParams& p, glm::
            splitSumSpecular(p.ior, p.extinction, std::sqrt(p.roughnessX * p.roughnessY), wo, frame, e);
 }
 
+// Fuzz and diffuse under the irradiance map, coat and specular each prefiltered at its own
+// roughness along its dominant direction, weighted by the albedos of openPbrResponse (which sum
+// to the directional albedo: exact under a uniform map). Transmission: render/openpbr_transport.h.
+glm::vec3 environmentLightingOpenPbr(const OpenPbrParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const OpenPbrView v = openPbrView(p, frame.cosTheta(wo));
+    const OpenPbrResponse r = openPbrResponse(p, v);
+    const float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
+    return r.diffuse * environmentDiffuseRadiance(e, frame.normal) +
+           r.coat * environmentSpecularRadiance(e, dominantDirection(wo, frame, coatAlpha), v.coatRoughness) +
+           r.specular * environmentSpecularRadiance(e, dominantDirection(wo, frame, specularAlpha), v.specularRoughness);
+}
+
 }  // namespace
 
 float environmentRoughness(BrdfModel model, std::span<const float> values) {
@@ -154,6 +167,11 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
             const GgxAnisotropicParams p = unpackGgxAnisotropic(values.data());
             return std::sqrt(p.roughnessX * p.roughnessY);
         }
+        case BrdfModel::OpenPbr: {
+            const OpenPbrParams p = unpackOpenPbr(values.data());
+            const float roughness = openPbrEquivalentRoughness(openPbrAlphas(p.specularRoughness, p.specularAnisotropy));
+            return roughness * roughness;
+        }
         default: return 0.0f;
     }
 }
@@ -166,6 +184,8 @@ const char* environmentApproximation(BrdfModel model) {
         case BrdfModel::Phong:
         case BrdfModel::Ward: return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R";
         case BrdfModel::Glass: return "none (traced)";
+        case BrdfModel::OpenPbr:
+            return "irradiance map + compensated split sum per layer (coat, specular); transmission traced";
         default: return "irradiance map";
     }
 }
@@ -186,6 +206,7 @@ glm::vec3 environmentLighting(BrdfModel model, std::span<const float> values, gl
         case BrdfModel::Ward: return environmentLightingWard(unpackWard(v), wo, frame, e);
         case BrdfModel::Retroreflective: return environmentLightingRetroreflective(unpackRetroreflective(v), wo, frame, e);
         case BrdfModel::Mirror: return environmentLightingMirror(unpackMirror(v), wo, frame, e);
+        case BrdfModel::OpenPbr: return environmentLightingOpenPbr(unpackOpenPbr(v), wo, frame, e);
         case BrdfModel::Glass: break;  // delta lobes only: traced (specular_transport.h)
     }
     return glm::vec3(0.0f);

@@ -155,6 +155,15 @@ json materialJson(const Material& material, std::set<std::string>& extensionsUse
             lost("written as a GGX dielectric (ior 1.5, α = √(2/(n + 2))); k_s is not kept");
             break;
         }
+        case BrdfModel::OpenPbr: {  // the base layer; its other layers map to KHR_materials_* extensions
+            const glm::vec3 base = paramScalar(material, "base_weight") * paramValue(material, "base_color");
+            pbr = {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", paramScalar(material, "base_metalness")},
+                   {"roughnessFactor", paramScalar(material, "specular_roughness")}};
+            setIor(paramScalar(material, "specular_ior"));
+            for (const char* weight : {"coat_weight", "fuzz_weight", "transmission_weight", "thin_film_weight", "emission_luminance"})
+                if (paramScalar(material, weight) != 0.0f) lost(std::string(weight) + " is not written: only the base layer is");
+            break;
+        }
     }
     out["pbrMetallicRoughness"] = pbr;
     if (!extensions.empty()) out["extensions"] = extensions;

@@ -4,6 +4,7 @@
 
 #include "brdf/glass.h"
 #include "brdf/mirror.h"
+#include "render/openpbr_transport.h"
 
 namespace glint {
 
@@ -21,6 +22,8 @@ glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const Mi
             return traceGlass(glassInterface, glass.absorption, miss, sphere, position, normal, towardsViewer,
                               viewerDistance);
         }
+        case BrdfModel::OpenPbr:
+            return transportOpenPbr(unpackOpenPbr(values.data()), miss, sphere, position, normal, towardsViewer);
         default: return glm::vec3(0.0f);  // no delta lobes (ModelInfo::glslTransport == nullptr)
     }
 }
