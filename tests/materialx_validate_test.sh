@@ -74,6 +74,9 @@ for example in "$here"/files/materialx/*.mtlx; do
   "$glint" export "$example" -o "$out/$name" 2>/dev/null
   written+=("$out/$name")
 done
+# Glint renders what it reads (File ▸ Open and glint render share the loader).
+"$glint" render "$here/files/materialx/standard_surface_carpaint.mtlx" -o "$out/carpaint.png" >/dev/null
+[[ -s $out/carpaint.png ]]
 # A document MaterialX must refuse (an input open_pbr_surface does not have): the check can fail.
 sed 's/name="coat_weight"/name="coat_wieght"/' "$out/open_pbr_carpaint.mtlx" > "$out/misspelt.mtlx"
 start=$(date +%s%N)
