@@ -63,6 +63,7 @@ TEST(MaterialX, StandardSurfaceGoldThroughTheTranslationGraph) {
     <input name="metalness" type="float" value="1" />
     <input name="sheen_roughness" type="float" value="0.5" />
     <input name="thin_film_thickness" type="float" value="250" />
+    <input name="emission" type="float" value="0.5" />
   </standard_surface>
   <surfacematerial name="Gold" type="material">
     <input name="surfaceshader" type="surfaceshader" nodename="SR_gold" />
@@ -80,6 +81,7 @@ TEST(MaterialX, StandardSurfaceGoldThroughTheTranslationGraph) {
     EXPECT_NEAR(paramScalar(m, "thin_film_thickness"), 0.25f, 1e-6f);  // nm → µm
     EXPECT_EQ(paramScalar(m, "coat_ior"), 1.5f);  // Standard Surface's default, not OpenPBR's 1.6
     EXPECT_EQ(paramScalar(m, "coat_roughness"), 0.1f);
+    EXPECT_EQ(paramScalar(m, "emission_luminance"), 0.5f * 683.0f);
 }
 
 TEST(MaterialX, StandardSurfaceCoatOnMetalTintsTheBase) {
@@ -111,6 +113,8 @@ TEST(MaterialX, GltfPbrMapsOneToOneWithUnitsConverted) {
     <input name="iridescence_thickness" type="float" value="400" />
     <input name="sheen_color" type="color3" value="0.2, 0.2, 0.3" />
     <input name="anisotropy_rotation" type="float" value="1.5707964" />
+    <input name="emissive" type="color3" value="1, 0.5, 0" />
+    <input name="emissive_strength" type="float" value="2" />
   </gltf_pbr>
 )"));
     ASSERT_EQ(file.materials.size(), 1u);
@@ -128,6 +132,8 @@ TEST(MaterialX, GltfPbrMapsOneToOneWithUnitsConverted) {
     expectNear(paramValue(m, "fuzz_color"), {0.2f, 0.2f, 0.3f});
     EXPECT_EQ(paramScalar(m, "fuzz_roughness"), 0.0f);
     EXPECT_NEAR(paramScalar(m, "geometry_tangent_rotation"), 90.0f, 1e-4f);
+    expectNear(paramValue(m, "emission_color"), {1.0f, 0.5f, 0.0f});
+    EXPECT_EQ(paramScalar(m, "emission_luminance"), 2.0f * 683.0f);  // 1 W/(sr·m²) = 683 nit, as Glint's glTF reader
 }
 
 TEST(MaterialX, ColourSpacesNodeGraphConstantsAndDotsResolve) {

@@ -170,7 +170,10 @@ MaterialXInputs fromStandardSurface(const MaterialXInputs& inputs, std::vector<D
     m.compute("thin_film_weight", glm::vec3(thickness > 0.0f ? 1.0f : 0.0f), {"thin_film_thickness"});
     m.compute("thin_film_thickness", glm::vec3(thickness), {"thin_film_thickness"});
     m.copy("thin_film_IOR", "thin_film_ior");
-    m.copy("emission", "emission_luminance");
+    // Standard Surface's emission scales radiance in the renderer's unit, as glTF's emissive does:
+    // 1 is 1 W/(sr·m²) = 683 nit here, as in Glint's glTF reader (the translation graph copies the
+    // number, its renderers having no photometric unit).
+    m.compute("emission_luminance", glm::vec3(m.scalar("emission") * kLumensPerWatt), {"emission"});
     m.copy("emission_color", "emission_color");
     m.compute("geometry_opacity", glm::vec3(m.value("opacity").r), {"opacity"});
     m.copy("thin_walled", "geometry_thin_walled");
@@ -209,9 +212,10 @@ MaterialXInputs fromGltfPbr(const MaterialXInputs& inputs, std::vector<Diagnosti
     m.copy("iridescence", "thin_film_weight");
     m.compute("thin_film_thickness", glm::vec3(m.scalar("iridescence_thickness") * 0.001f), {"iridescence_thickness"});  // nm → µm
     m.copy("iridescence_ior", "thin_film_ior");
-    // Emission: the colour times emissive_strength (KHR_materials_emissive_strength), in nits.
+    // Emission: the colour times emissive_strength (KHR_materials_emissive_strength), a radiance
+    // of 1 W/(sr·m²) = 683 nit for white at strength 1, as in Glint's glTF reader.
     m.copy("emissive", "emission_color");
-    m.copy("emissive_strength", "emission_luminance");
+    m.compute("emission_luminance", glm::vec3(m.scalar("emissive_strength") * kLumensPerWatt), {"emissive_strength"});
     m.copy("anisotropy_strength", "specular_roughness_anisotropy");
     m.compute("geometry_tangent_rotation", glm::vec3(m.scalar("anisotropy_rotation") * 180.0f / kPi), {"anisotropy_rotation"});
     m.copy("alpha", "geometry_opacity");
