@@ -58,7 +58,7 @@ printf '{"asset": {"version": "2.0"},\n "materials": [{"pbrMetallicRoughness": {
 expect_error bad_gltf "bad.gltf:2:[0-9]+: .*'roughnessFactor'" render "$out/bad.gltf" -o "$out/x.png"
 printf '{"asset": {"version": "2.0"}, "materials": [{}]' >"$out/truncated.gltf"
 expect_error truncated_gltf "truncated.gltf:1:" render "$out/truncated.gltf" -o "$out/x.png"
-expect_error export_extension "must end in .mtl or .gltf" export "$out/plastic.json" -o "$out/x.obj"
+expect_error export_extension "must end in .mtl, .gltf or .mtlx" export "$out/plastic.json" -o "$out/x.obj"
 
 # A MERL measured BRDF (a constant table, made here) renders on the GPU and on the CPU reference,
 # and exports as its Lambert stand-in with a warning; a .glb carries the .gltf's JSON chunk.

@@ -49,7 +49,7 @@ struct ExportOptions {
 int runExport(const ExportOptions& options) {
     const std::string& input = options.input;
     const std::string& output = options.output;
-    if (!isExportPath(output)) return fail("the output must end in .mtl or .gltf (got '" + output + "')");
+    if (!isExportPath(output)) return fail("the output must end in .mtl, .gltf or .mtlx (got '" + output + "')");
     auto file = readInput(input);
     if (!file) return fail(file.error().format());
     if (!options.material.empty()) {
@@ -73,17 +73,18 @@ int runExport(const ExportOptions& options) {
 
 void addExportCommand(CLI::App& glint) {
     auto options = std::make_shared<ExportOptions>();
-    CLI::App* command = addCommand(glint, "export", "write a material (file, scene, .mtl or .gltf) as .mtl or glTF",
+    CLI::App* command = addCommand(glint, "export", "write a material (file, scene, .mtl, .gltf or .mtlx) as .mtl, glTF or MaterialX",
                                    [options] { return runExport(*options); });
     command->add_option("IN", options->input,
                         "a material file, a scene (its materials; for glTF the first object's material and the scene's "
-                        "lights), or a .mtl / .gltf file")
+                        "lights), or a .mtl / .gltf / .mtlx file")
         ->required();
     command->add_option("-o,--output", options->output,
                         ".mtl: every material as a Wavefront library; .gltf: a UV sphere carrying the material, the "
-                        "lights as KHR_lights_punctual, the buffer embedded (base64)")
+                        "lights as KHR_lights_punctual, the buffer embedded (base64); .mtlx: every material as a MaterialX 1.39 "
+                        "open_pbr_surface")
         ->required()
-        ->type_name("OUT.mtl|OUT.gltf");
+        ->type_name("OUT.mtl|OUT.gltf|OUT.mtlx");
     command->add_option("--material", options->material, "only that material of IN (`glint info IN` lists them), with its warnings")
         ->type_name("NAME|INDEX");
 }
