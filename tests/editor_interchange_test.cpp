@@ -172,7 +172,7 @@ TEST_F(EditorInterchange, ExportMaterialWritesGltfOrMtlAndShowsWhatTheFormatLose
     EXPECT_EQ(mtl->materials.size(), 1u);
     EXPECT_NE(state.statusMessage.text().find("Exported material"), std::string::npos);
     EXPECT_FALSE(exportMaterialTo(state, write("ball.txt", "")));
-    EXPECT_NE(state.errorMessage.find("must end in .mtl or .gltf"), std::string::npos) << state.errorMessage;
+    EXPECT_NE(state.errorMessage.find("must end in .mtl, .gltf or .mtlx"), std::string::npos) << state.errorMessage;
     EXPECT_FALSE(state.session.dirty());  // exporting changes nothing
 }
 

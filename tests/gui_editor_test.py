@@ -181,7 +181,9 @@ def scenario_save_reopen(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
+        dragged = x.wait_stable(VIEWPORT)
         x.click(*ADD_POINT_LIGHT)
+        x.wait_for(differs(dragged), "the added light to show")  # a slow frame: not the picture before the click
         before_save = x.wait_stable(VIEWPORT)
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name

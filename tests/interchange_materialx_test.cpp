@@ -13,7 +13,7 @@
 namespace glint {
 namespace {
 
-ImportedFile parseOk(const std::string& text, const std::string& file = "test.mtlx") {
+ImportedFile parseMaterialXOk(const std::string& text, const std::string& file = "test.mtlx") {
     auto parsed = parseMaterialX(text, file);
     EXPECT_TRUE(parsed.ok()) << (parsed ? "" : parsed.error().format());
     return parsed ? *parsed : ImportedFile{};
@@ -54,7 +54,7 @@ TEST(MaterialX, OpenPbrCarPaintFromTheMaterialXExamples) {
 }
 
 TEST(MaterialX, StandardSurfaceGoldThroughTheTranslationGraph) {
-    const ImportedFile file = parseOk(document(R"(
+    const ImportedFile file = parseMaterialXOk(document(R"(
   <standard_surface name="SR_gold" type="surfaceshader">
     <input name="base" type="float" value="1" />
     <input name="base_color" type="color3" value="0.944, 0.776, 0.373" />
@@ -85,7 +85,7 @@ TEST(MaterialX, StandardSurfaceGoldThroughTheTranslationGraph) {
 }
 
 TEST(MaterialX, StandardSurfaceCoatOnMetalTintsTheBase) {
-    const ImportedFile file = parseOk(document(R"(
+    const ImportedFile file = parseMaterialXOk(document(R"(
   <standard_surface name="copper" type="surfaceshader">
     <input name="metalness" type="float" value="1" />
     <input name="base_color" type="color3" value="0.5, 0.5, 0.5" />
@@ -99,7 +99,7 @@ TEST(MaterialX, StandardSurfaceCoatOnMetalTintsTheBase) {
 }
 
 TEST(MaterialX, GltfPbrMapsOneToOneWithUnitsConverted) {
-    const ImportedFile file = parseOk(document(R"(
+    const ImportedFile file = parseMaterialXOk(document(R"(
   <gltf_pbr name="SR_glass" type="surfaceshader">
     <input name="base_color" type="color3" value="1, 1, 1" />
     <input name="metallic" type="float" value="0" />
@@ -137,7 +137,7 @@ TEST(MaterialX, GltfPbrMapsOneToOneWithUnitsConverted) {
 }
 
 TEST(MaterialX, ColourSpacesNodeGraphConstantsAndDotsResolve) {
-    const ImportedFile file = parseOk(R"(<?xml version="1.0"?>
+    const ImportedFile file = parseMaterialXOk(R"(<?xml version="1.0"?>
 <materialx version="1.39" colorspace="srgb_texture">
   <nodegraph name="NG_constants">
     <constant name="tint" type="color3">
@@ -233,7 +233,7 @@ TEST(MaterialX, GlintMaterialsRoundTripThroughOpenPbrSurface) {
     EXPECT_NE(written.text.find("<surfacematerial name=\"car_paint_2\" type=\"material\">"), std::string::npos) << written.text;
     EXPECT_NE(written.text.find("<input name=\"geometry_thin_walled\" type=\"boolean\" value=\"true\" />"), std::string::npos);
     ASSERT_EQ(written.warnings.size(), 0u) << written.warnings[0].format();  // Lambert → OpenPBR drops nothing
-    const ImportedFile back = parseOk(written.text);
+    const ImportedFile back = parseMaterialXOk(written.text);
     ASSERT_EQ(back.materials.size(), 2u);
     EXPECT_EQ(back.materials[0].material.values, openPbr.values);
     expectNear(paramValue(back.materials[1].material, "base_color"), {0.7f, 0.2f, 0.1f}, 0.0f);
@@ -290,7 +290,7 @@ TEST(MaterialX, ValuesOutsideGlintsRangesAreReadAsTheNearestWithAWarning) {
 }
 
 TEST(MaterialX, UnknownInputsAndDroppedLobesAreLocatedWarnings) {
-    const ImportedFile file = parseOk(document(R"(  <open_pbr_surface name="a" type="surfaceshader">
+    const ImportedFile file = parseMaterialXOk(document(R"(  <open_pbr_surface name="a" type="surfaceshader">
     <input name="subsurface_weight" type="float" value="0.5" />
     <input name="base_colour" type="color3" value="1, 0, 0" />
   </open_pbr_surface>

@@ -2,6 +2,8 @@
 // Sections: escaping · HTML · JUnit.
 #include "snapshot/snapshot_report.h"
 
+#include "util/text.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -32,24 +34,6 @@ std::vector<const CaseResult*> reportOrder(const SnapshotReport& report) {
 }  // namespace
 
 // --- escaping -------------------------------------------------------------------------------
-
-std::string escapeMarkup(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') break;
-                out += c;
-        }
-    }
-    return out;
-}
 
 // --- HTML -----------------------------------------------------------------------------------
 

@@ -12,8 +12,4 @@ namespace glint {
 std::string htmlReport(const SnapshotReport& report);
 std::string junitReport(const SnapshotReport& report);
 
-// Escapes &, <, >, " and ' for HTML and XML text and attributes; drops control characters
-// that XML 1.0 cannot carry.
-std::string escapeMarkup(const std::string& text);
-
 }  // namespace glint

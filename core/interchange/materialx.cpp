@@ -14,9 +14,9 @@
 #include "interchange/materialx_graph.h"
 #include "interchange/materialx_shaders.h"
 #include "interchange/xml_document.h"
-#include "snapshot/snapshot_report.h"  // escapeMarkup
 #include "texture/texture_image.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -24,7 +24,7 @@ namespace {
 // --- reading --------------------------------------------------------------------------------
 
 // The shortest decimal that reads back as the same float.
-std::string number(float value) {
+std::string shortestDecimal(float value) {
     char buffer[32];
     const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
     return std::string(buffer, end);
@@ -75,8 +75,8 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
         // MaterialX bounds few inputs (an index of 0 is valid there and harmless under a zero weight).
         const glm::vec3 kept = glm::clamp(input.value, glm::vec3(spec.validMin), glm::vec3(spec.validMax));
         if (kept != input.value)
-            imported.warnings.push_back(makeError("warning: '" + parameter + "' is outside Glint's range [" + number(spec.validMin) + ", " +
-                                                      number(spec.validMax) + "]; read as the nearest value in it", input.where));
+            imported.warnings.push_back(makeError("warning: '" + parameter + "' is outside Glint's range [" + shortestDecimal(spec.validMin) + ", " +
+                                                      shortestDecimal(spec.validMax) + "]; read as the nearest value in it", input.where));
         setParam(imported.material, parameter, kept);
         if (input.image) addTexture(parameter, input, folder, &spec, imported);
     }
@@ -137,8 +137,8 @@ void writeTextures(const Material& material, const std::string& graphName, const
         graph << "    <tiledimage name=\"" << image << "\" type=\"" << type << "\">\n"
               << "      <input name=\"file\" type=\"filename\" value=\"" << escapeMarkup(relativePath(texture.file, folder)) << "\""
               << (texture.colorSpace == TextureColorSpace::Srgb ? " colorspace=\"srgb_texture\"" : "") << " />\n"
-              << "      <input name=\"uvtiling\" type=\"vector2\" value=\"" << number(texture.tiling.x) << ", "
-              << number(texture.tiling.y) << "\" />\n"
+              << "      <input name=\"uvtiling\" type=\"vector2\" value=\"" << shortestDecimal(texture.tiling.x) << ", "
+              << shortestDecimal(texture.tiling.y) << "\" />\n"
               << "    </tiledimage>\n";
         std::string last = image;
         std::string outputType = normal ? "vector3" : scalar ? "float" : "color3";
@@ -157,8 +157,8 @@ void writeTextures(const Material& material, const std::string& graphName, const
                 const std::string range = texture.parameter + "_range";
                 graph << "    <remap name=\"" << range << "\" type=\"float\">\n"
                       << "      <input name=\"in\" type=\"float\" nodename=\"" << channel << "\" />\n"
-                      << "      <input name=\"outlow\" type=\"float\" value=\"" << number(texture.range.x) << "\" />\n"
-                      << "      <input name=\"outhigh\" type=\"float\" value=\"" << number(texture.range.y) << "\" />\n"
+                      << "      <input name=\"outlow\" type=\"float\" value=\"" << shortestDecimal(texture.range.x) << "\" />\n"
+                      << "      <input name=\"outhigh\" type=\"float\" value=\"" << shortestDecimal(texture.range.y) << "\" />\n"
                       << "    </remap>\n";
                 last = range;
             }
@@ -275,7 +275,7 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
             if (std::string_view(spec.name) == "geometry_tangent_rotation") {
                 if (value.x != 0.0f)
                     out.warnings.push_back(makeError("warning: material '" + material.name + "': geometry_tangent_rotation (" +
-                                                     number(value.x) + "°) is Glint's own; open_pbr_surface turns the tangent "
+                                                     shortestDecimal(value.x) + "°) is Glint's own; open_pbr_surface turns the tangent "
                                                      "through geometry_tangent, which is not written"));
                 continue;
             }
@@ -286,9 +286,9 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
             else if (spec.kind == ParamKind::Bool)
                 text << "value=\"" << (value.x > 0.5f ? "true" : "false") << "\"";
             else if (componentCount(spec.kind) == 3)
-                text << "value=\"" << number(value.r) << ", " << number(value.g) << ", " << number(value.b) << "\"";
+                text << "value=\"" << shortestDecimal(value.r) << ", " << shortestDecimal(value.g) << ", " << shortestDecimal(value.b) << "\"";
             else
-                text << "value=\"" << number(value.x) << "\"";
+                text << "value=\"" << shortestDecimal(value.x) << "\"";
             text << " />\n";
         }
         if (const auto normal = connections.find("geometry_normal"); normal != connections.end())

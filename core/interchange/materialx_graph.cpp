@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "display/display_chain.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -19,12 +20,6 @@ struct Resolved {
     std::optional<MaterialXImage> image;
     std::string unfollowed;           // why neither: "a 'multiply' node", ...
 };
-
-std::string trimmed(const std::string& text) {
-    const size_t first = text.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos) return {};
-    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
-}
 
 // The nearest of `chain` (innermost first) that has the attribute, as MaterialX inherits
 // colorspace and fileprefix from an element's ancestors.
@@ -160,7 +155,7 @@ private:
         const std::string* file = fileInput ? fileInput->attribute("value") : nullptr;
         if (!file || trimmed(*file).empty()) return makeError("image node '" + name(node) + "' names no file", document_.at(node));
         MaterialXImage image;
-        image.file = inherited("fileprefix", {fileInput, &node, graph, document_.root}) + trimmed(*file);
+        image.file = inherited("fileprefix", {fileInput, &node, graph, document_.root}) + std::string(trimmed(*file));
         const std::string space = inherited("colorspace", {fileInput, &node, graph, document_.root});
         if (space == "srgb_texture") {
             image.colorSpace = TextureColorSpace::Srgb;
@@ -192,7 +187,7 @@ private:
 
 Result<glm::vec3> parseMaterialXValue(const std::string& text, const std::string& type, SourceLocation where) {
     if (type == "boolean") {
-        const std::string word = trimmed(text);
+        const std::string word(trimmed(text));
         if (word == "true") return glm::vec3(1.0f);
         if (word == "false") return glm::vec3(0.0f);
         return makeError("'" + text + "' is no boolean (true or false)", where);
@@ -205,7 +200,7 @@ Result<glm::vec3> parseMaterialXValue(const std::string& text, const std::string
     std::string part;
     int read = 0;
     while (std::getline(parts, part, ',')) {
-        const std::string number = trimmed(part);
+        const std::string number(trimmed(part));
         float value = 0.0f;
         const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
         if (number.empty() || error != std::errc() || end != number.data() + number.size() || !std::isfinite(value))
