@@ -288,7 +288,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
-    const GLenum drawBuffers[2] = {radianceWritten_ ? GL_COLOR_ATTACHMENT0 : GL_NONE, GL_COLOR_ATTACHMENT1};
+    const GLenum drawBuffers[2] = {radianceWritten_ ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE}, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(fusedDisplay_ ? 2 : 1, drawBuffers);
 
     glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());

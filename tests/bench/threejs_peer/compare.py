@@ -7,13 +7,12 @@ import argparse
 import base64
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from peer import CHROMIUM_FLAGS, Results, serve  # noqa: E402
+from peer import Results, open_page, serve  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PEER_SCENE = os.path.join(HERE, "..", "scenes", "peer_ggx.json")
@@ -37,22 +36,9 @@ DEFAULTS = {"base_weight": 1, "base_color": [0.8, 0.8, 0.8], "base_metalness": 0
             "geometry_thin_walled": False}
 
 
-def run_three(chromium, port, results, material, width, height, timeout=300):
-    profile = tempfile.mkdtemp(prefix="glint-compare-chromium-")
+def run_three(chromium, port, results, material, width, height):
     url = f"http://127.0.0.1:{port}/compare.html?width={width}&height={height}&material={json.dumps(material)}"
-    with results.condition:
-        results.latest = None
-    browser = subprocess.Popen([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", f"--window-size={width},{height}", url],
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        with results.condition:
-            if not results.condition.wait_for(lambda: results.latest is not None, timeout):
-                sys.exit(f"threejs_compare: no picture from Chromium within {timeout} s")
-            return results.latest
-    finally:
-        browser.kill()
-        browser.wait()
-        shutil.rmtree(profile, ignore_errors=True)
+    return open_page(chromium, url, results, width, height, "threejs_compare: no picture from Chromium")
 
 
 def glint_scene(material, width, height):
