@@ -44,18 +44,14 @@ run_suite gui "$build" -L gui
 # One clang-14 build runs the headless suite under AddressSanitizer + UndefinedBehaviorSanitizer and
 # holds the libFuzzer targets (core instrumented for them), which run on their corpus in the same
 # ctest. -O1, as AddressSanitizer's own documentation advises: the numerical property tests run
-# several times faster than at -O0, and every report keeps its file and line. It compiles every
-# file on its own (no unity batches): the proof that each file includes what it uses, which the
-# batches of the first build would hide (about +65 % compile time for this build, the cheapest such
-# proof measured: docs/testing.md). A folder configured by an older test command with another
-# compiler or with unity batches is configured afresh.
+# several times faster than at -O0, and every report keeps its file and line. A folder configured
+# by an older test command with another compiler is configured afresh.
 sanitize="$root/build-sanitize"
-if [[ -f "$sanitize/CMakeCache.txt" ]] && { ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$sanitize/CMakeCache.txt" ||
-                                            grep -q '^GLINT_UNITY_BUILD:BOOL=ON$' "$sanitize/CMakeCache.txt"; }; then
+if [[ -f "$sanitize/CMakeCache.txt" ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$sanitize/CMakeCache.txt"; then
   rm -rf "$sanitize"
 fi
 CC=clang-14 CXX=clang++-14 configure_and_build "$sanitize" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" \
-  -DGLINT_SANITIZE=ON -DGLINT_FUZZ=ON -DGLINT_UNITY_BUILD=OFF
+  -DGLINT_SANITIZE=ON -DGLINT_FUZZ=ON -DGLINT_UNITY_BUILD=ON
 # GUI tests need a window manager's timing, and the benchmark's timings mean nothing under ASan
 # (its code paths are the renderer's, which the GPU tests cover there).
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$root/tests/sanitizer/lsan.supp" \
