@@ -11,11 +11,12 @@ mode=${1:-}
 [[ $mode == run || $mode == test ]] || { echo "usage: $0 run [glint arguments…] | test" >&2; exit 2; }
 shift
 
-# configure_and_build DIR [CMAKE ARGS…]: configures once, then builds incrementally.
+# configure_and_build DIR [CMAKE ARGS…]: configures (under a second when nothing changed, and an
+# older folder gets any option added since), then builds incrementally.
 configure_and_build() {
   local dir=$1
   shift
-  [[ -f "$dir/build.ninja" ]] || cmake -S "$root" -B "$dir" -G Ninja "$@"
+  cmake -S "$root" -B "$dir" -G Ninja "$@"
   cmake --build "$dir"
 }
 
@@ -43,15 +44,16 @@ run_suite gui "$build" -L gui
 
 # One clang-14 build runs the headless suite under AddressSanitizer + UndefinedBehaviorSanitizer and
 # holds the libFuzzer targets (core instrumented for them), which run on their corpus in the same
-# ctest. -O1, as AddressSanitizer's own documentation advises: the numerical property tests run
-# several times faster than at -O0, and every report keeps its file and line. A folder configured
+# ctest, and the test that compiles each source of its unity batches on its own (`includes`). -O1,
+# as AddressSanitizer's own documentation advises: the numerical property tests run several times
+# faster than at -O0, and every report keeps its file and line. A folder configured
 # by an older test command with another compiler is configured afresh.
 sanitize="$root/build-sanitize"
 if [[ -f "$sanitize/CMakeCache.txt" ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$sanitize/CMakeCache.txt"; then
   rm -rf "$sanitize"
 fi
 CC=clang-14 CXX=clang++-14 configure_and_build "$sanitize" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" \
-  -DGLINT_SANITIZE=ON -DGLINT_FUZZ=ON -DGLINT_UNITY_BUILD=ON
+  -DGLINT_SANITIZE=ON -DGLINT_FUZZ=ON -DGLINT_UNITY_BUILD=ON -DGLINT_CHECK_INCLUDES=ON
 # GUI tests need a window manager's timing, and the benchmark's timings mean nothing under ASan
 # (its code paths are the renderer's, which the GPU tests cover there).
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$root/tests/sanitizer/lsan.supp" \
