@@ -281,14 +281,16 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // sample positions follow what it allocated.
     const int samples = requested > 1 ? multisampleTarget_.allocatedSamples() : 1;
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
-    // Transmissive objects are drawn last, after the backdrop of what lies behind them is captured:
+    // Transmissive objects are drawn last, after the backdrop of the opaque ones is captured:
     // by this frame (a whole frame, or the band with the top row, whose opaque pass then covers the
     // whole frame) or by the band above.
     std::vector<size_t> drawOrder(scene.objects.size());
     for (size_t i = 0; i < drawOrder.size(); ++i) drawOrder[i] = i;
     const auto transmissive = [&](size_t i) { return transmitsLight(scene.materials.at(scene.objects[i].materialIndex)); };
     const auto firstTransmissive = std::stable_partition(drawOrder.begin(), drawOrder.end(), [&](size_t i) { return !transmissive(i); });
-    const bool backdropNeeded = firstTransmissive != drawOrder.end();
+    // With no opaque object the backdrop would hold nothing: transmissive surfaces see the
+    // environment or background directly, and the frame costs no more than before.
+    const bool backdropNeeded = firstTransmissive != drawOrder.end() && firstTransmissive != drawOrder.begin();
     const bool capturesBackdrop = backdropNeeded && (rows.count == 0 || rows.first + rows.count >= height);
     if (!backdropNeeded || (!capturesBackdrop && !transmission_->holds(width, height))) transmission_->forget();
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.

@@ -78,9 +78,10 @@ inline float glassReflectance(const GlassInterface& glass, float cosIncident, fl
 
 // A ray inside a glass sphere arriving at the wall point `origin` with direction `direction`
 // and throughput `throughput` (absorption so far included): at each wall it splits into the part
-// that leaves (Fresnel 1 − F, radiance scaled by 1/η², seeing what lies beyond that wall point)
-// and the part reflected inside (F; 1 under total internal reflection), for kMaxInternalBounces
-// walls. `viewDirection`: the primary ray's.
+// that leaves (Fresnel 1 − F, radiance scaled by 1/η², seeing the background) and the part
+// reflected inside (F; 1 under total internal reflection), for kMaxInternalBounces walls. The
+// first exit sees the objects behind it too (MissRadiance::transmitted, `viewDirection` the
+// primary ray's); the later ones carry at most F² of the light and see the background only.
 inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorption, const MissRadiance& miss,
                                    const SphereGeometry& sphere, glm::vec3 origin, glm::vec3 direction,
                                    glm::vec3 throughput, glm::vec3 viewDirection) {
@@ -91,7 +92,7 @@ inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorp
         if (exitReflectance < 1.0f) {
             const glm::vec3 leaving = refractDirection(direction, inwardNormal, glass.ior);
             radiance += throughput * ((1.0f - exitReflectance) / (glass.ior * glass.ior)) *
-                        miss.transmitted(origin, leaving, viewDirection);
+                        (bounce == 0 ? miss.transmitted(origin, leaving, viewDirection) : miss(leaving));
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);

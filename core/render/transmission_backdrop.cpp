@@ -48,7 +48,7 @@ float TransmissionBackdrop::levelFor(float perceptualRoughness, float ior) const
 namespace {
 
 template <class Level>
-glm::vec4 bilinear(const Level& level, glm::vec2 uv) {
+glm::vec4 bilinearInLevel(const Level& level, glm::vec2 uv) {
     const glm::vec2 position = uv * glm::vec2(level.width, level.height) - 0.5f;
     const glm::vec2 corner = glm::floor(position), weight = position - corner;
     const int x0 = std::clamp(static_cast<int>(corner.x), 0, level.width - 1);
@@ -66,7 +66,8 @@ glm::vec4 TransmissionBackdrop::sample(glm::vec2 uv, float level) const {
     const float clamped = std::clamp(level, 0.0f, static_cast<float>(levelCount() - 1));
     const int lower = static_cast<int>(std::floor(clamped));
     const int upper = std::min(lower + 1, levelCount() - 1);
-    return glm::mix(bilinear(levels_[lower], uv), bilinear(levels_[upper], uv), clamped - static_cast<float>(lower));
+    if (upper == lower || clamped == static_cast<float>(lower)) return bilinearInLevel(levels_[lower], uv);
+    return glm::mix(bilinearInLevel(levels_[lower], uv), bilinearInLevel(levels_[upper], uv), clamped - static_cast<float>(lower));
 }
 
 std::optional<glm::vec4> TransmissionBackdrop::behind(glm::vec3 exitPoint, glm::vec3 direction, glm::vec3 viewDirection,

@@ -45,7 +45,8 @@ vec3 traceInsideSphere(float ior, bool classic, float transmission, vec3 absorpt
         float exitReflectance = glassReflectance(classic, transmission, -dot(direction, inwardNormal), 1.0 / ior);
         if (exitReflectance < 1.0) {
             vec3 leaving = refractDirection(direction, inwardNormal, ior);
-            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * transmittedRadiance(origin, leaving, viewDirection);
+            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) *
+                        (bounce == 0 ? transmittedRadiance(origin, leaving, viewDirection) : missRadiance(leaving));
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);

@@ -29,6 +29,7 @@ vec4 backdropSample(vec2 uv, float level) {
     float clamped = clamp(level, 0.0, float(transmissionBackdropLevels - 1));
     int lower = int(floor(clamped));
     int upper = min(lower + 1, transmissionBackdropLevels - 1);
+    if (upper == lower || clamped == float(lower)) return backdropBilinear(lower, uv);
     return mix(backdropBilinear(lower, uv), backdropBilinear(upper, uv), clamped - float(lower));
 }
 
