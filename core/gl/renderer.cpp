@@ -416,8 +416,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
         const Material& material = scene.materials.at(object.materialIndex);
         const bool builtInModel = !material.custom && !material.measured;
+        const std::string backdropDefine = next >= firstTransmissive && transmission_->shows() ? TransmissionPass::kProgramDefine : "";
         const SurfaceVariant variant{samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere != nullptr,
-                                     specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines};
+                                     (specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines) +
+                                         backdropDefine};
         auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, variant)
                        : material.measured ? measured_.program(sources_, variant)
                                            : surfaceProgram(material.model, variant, TexturedParams::of(material));

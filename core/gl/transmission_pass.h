@@ -32,6 +32,11 @@ public:
     void capture(GLuint source, int width, int height, GLuint emptyVertexArray);
     // A frame that shows no backdrop: transmissive surfaces see the environment or background.
     void forget() { captured_ = false; }
+    // Whether transmissive surfaces see a backdrop this frame, and what their programs' prelude
+    // then defines (shaders/common/transmission_backdrop.glsl: without it the lookups are not
+    // compiled in, and cost nothing).
+    bool shows() const { return captured_; }
+    static constexpr const char* kProgramDefine = "#define GLINT_TRANSMISSION_BACKDROP 1\n";
     // Whether a captured backdrop of this size is held.
     bool holds(int width, int height) const { return captured_ && width == width_ && height == height_; }
     // Points a surface program's backdrop at the texture (or tells it there is none).

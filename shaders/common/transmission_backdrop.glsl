@@ -4,6 +4,7 @@
 // (core/gl/transmission_pass.*), read texel by texel and interpolated as on the CPU. Needs
 // uniforms.glsl and environment.glsl.
 
+#ifdef GLINT_TRANSMISSION_BACKDROP  // a program drawn over a backdrop (gl/transmission_pass.h)
 uniform sampler2D transmissionBackdrop;
 uniform int transmissionBackdropLevels;  // 0: the frame has no backdrop
 
@@ -57,3 +58,13 @@ vec3 transmittedRadianceRough(vec3 exitPoint, vec3 direction, vec3 viewDirection
     float level = transmissionBackdropLevels > 0 ? backdropLevelFor(perceptualRoughness, ior) : 0.0;
     return throughBackdrop(exitPoint, direction, viewDirection, level, missRadianceRough(direction, perceptualRoughness));
 }
+#else
+// No backdrop: a transmitted ray sees what a ray that misses the scene sees.
+vec3 transmittedRadiance(vec3 exitPoint, vec3 direction, vec3 viewDirection) {
+    return missRadiance(direction);
+}
+
+vec3 transmittedRadianceRough(vec3 exitPoint, vec3 direction, vec3 viewDirection, float perceptualRoughness, float ior) {
+    return missRadianceRough(direction, perceptualRoughness);
+}
+#endif
