@@ -45,8 +45,9 @@ vec3 traceInsideSphere(float ior, bool classic, float transmission, vec3 absorpt
         float exitReflectance = glassReflectance(classic, transmission, -dot(direction, inwardNormal), 1.0 / ior);
         if (exitReflectance < 1.0) {
             vec3 leaving = refractDirection(direction, inwardNormal, ior);
-            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) *
-                        (bounce == 0 ? transmittedRadiance(origin, leaving, viewDirection) : missRadiance(leaving));
+            vec3 seen = missRadiance(leaving);  // the first exit: the backdrop over it (traced once)
+            if (bounce == 0) seen = throughBackdrop(origin, leaving, viewDirection, 0.0, seen);
+            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * seen;
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);

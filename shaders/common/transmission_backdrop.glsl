@@ -60,6 +60,10 @@ vec3 transmittedRadianceRough(vec3 exitPoint, vec3 direction, vec3 viewDirection
 }
 #else
 // No backdrop: a transmitted ray sees what a ray that misses the scene sees.
+vec3 throughBackdrop(vec3 exitPoint, vec3 direction, vec3 viewDirection, float level, vec3 beyond) {
+    return beyond;
+}
+
 vec3 transmittedRadiance(vec3 exitPoint, vec3 direction, vec3 viewDirection) {
     return missRadiance(direction);
 }
