@@ -41,9 +41,6 @@ struct PixelAgreement {
     std::string firstDisagreement;
 };
 
-// |GPU − CPU| ≤ relativeTolerance·|CPU| + absoluteFloor per channel, on every pixel whose 3×3
-// neighbourhood sees one and the same object (or background) on the CPU, and is not marked in
-// `alsoExcluded` (row-major, optional: other edges, e.g. of total internal reflection).
 // The preview stage lit by its key light alone, unshadowed: for comparing a material's twins
 // pixel by pixel, where neither the environment's GPU approximations (compared on their own in
 // environment_gpu_test.cpp) nor PCF penumbrae (shadows_gpu_test.cpp) are what is tested.
@@ -66,7 +63,10 @@ inline RadianceImage referenceOfLastFrame(const Scene& scene, int width, int hei
     return renderReference(scene, width, height, options);
 }
 
-// Compares `gpu` with the reference of the shared renderer's last frame (render it just before).
+// Compares `gpu`, the shared renderer's last frame (render it just before), with its reference:
+// |GPU − CPU| ≤ relativeTolerance·|CPU| + absoluteFloor per channel, on every pixel whose 3×3
+// neighbourhood sees one and the same object (or background) on the CPU, and is not marked in
+// `alsoExcluded` (row-major, optional: other edges, e.g. of total internal reflection).
 inline PixelAgreement compareWithReference(const Scene& scene, const RadianceImage& gpu, float relativeTolerance = 1e-3f,
                                            float absoluteFloor = 1e-5f, const std::vector<bool>& alsoExcluded = {}) {
     const int width = gpu.width, height = gpu.height;
