@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -40,9 +41,6 @@ struct PixelAgreement {
     std::string firstDisagreement;
 };
 
-// |GPU − CPU| ≤ relativeTolerance·|CPU| + absoluteFloor per channel, on every pixel whose 3×3
-// neighbourhood sees one and the same object (or background) on the CPU, and is not marked in
-// `alsoExcluded` (row-major, optional: other edges, e.g. of total internal reflection).
 // The preview stage lit by its key light alone, unshadowed: for comparing a material's twins
 // pixel by pixel, where neither the environment's GPU approximations (compared on their own in
 // environment_gpu_test.cpp) nor PCF penumbrae (shadows_gpu_test.cpp) are what is tested.
@@ -53,10 +51,26 @@ inline Scene keyLitPreviewStage(const Material& material, int width, int height)
     return stage;
 }
 
+// The CPU reference of the shared renderer's last frame: its transmitted rays see the same opaque
+// pass as the GPU's did (its transmission backdrop), when that frame had one of this size.
+inline RadianceImage referenceOfLastFrame(const Scene& scene, int width, int height) {
+    const OpaquePassImage opaque = sharedHeadless().renderer().readTransmissionBackdrop();
+    std::optional<TransmissionBackdrop> backdrop;
+    if (opaque.width == width && opaque.height == height)
+        backdrop.emplace(opaque, scene.camera.viewProjection(static_cast<float>(width) / height));
+    ReferenceOptions options;
+    options.backdrop = backdrop ? &*backdrop : nullptr;
+    return renderReference(scene, width, height, options);
+}
+
+// Compares `gpu`, the shared renderer's last frame (render it just before), with its reference:
+// |GPU − CPU| ≤ relativeTolerance·|CPU| + absoluteFloor per channel, on every pixel whose 3×3
+// neighbourhood sees one and the same object (or background) on the CPU, and is not marked in
+// `alsoExcluded` (row-major, optional: other edges, e.g. of total internal reflection).
 inline PixelAgreement compareWithReference(const Scene& scene, const RadianceImage& gpu, float relativeTolerance = 1e-3f,
                                            float absoluteFloor = 1e-5f, const std::vector<bool>& alsoExcluded = {}) {
     const int width = gpu.width, height = gpu.height;
-    const RadianceImage cpu = renderReference(scene, width, height);
+    const RadianceImage cpu = referenceOfLastFrame(scene, width, height);
     const glm::mat4 inverse = glm::inverse(scene.camera.viewProjection(static_cast<float>(width) / height));
     std::vector<int> objectAt(static_cast<size_t>(width) * height);
     for (int y = 0; y < height; ++y)

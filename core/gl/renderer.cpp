@@ -15,6 +15,7 @@
 #include "gl/material_textures.h"
 #include "gl/shader_specialisation.h"
 #include "render/sphere_occlusion.h"
+#include "render/transmission_backdrop.h"
 #include "scene/plane_edge_fade.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
@@ -93,6 +94,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
     auto shadowMaps = ShadowMaps::create(renderer->sources_);
     if (!shadowMaps) return shadowMaps.error();
     renderer->shadowMaps_ = std::move(*shadowMaps);
+    auto transmission = TransmissionPass::create(renderer->sources_);
+    if (!transmission) return transmission.error();
+    renderer->transmission_ = std::move(*transmission);
     if (Status errors = takeGlErrors("renderer creation"); !errors) return errors.error();
     return renderer;
 }
@@ -277,6 +281,18 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // sample positions follow what it allocated.
     const int samples = requested > 1 ? multisampleTarget_.allocatedSamples() : 1;
     RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
+    // Transmissive objects are drawn last, after the backdrop of the opaque ones is captured:
+    // by this frame (a whole frame, or the band with the top row, whose opaque pass then covers the
+    // whole frame) or by the band above.
+    std::vector<size_t> drawOrder(scene.objects.size());
+    for (size_t i = 0; i < drawOrder.size(); ++i) drawOrder[i] = i;
+    const auto transmissive = [&](size_t i) { return transmitsLight(scene.materials.at(scene.objects[i].materialIndex)); };
+    const auto firstTransmissive = std::stable_partition(drawOrder.begin(), drawOrder.end(), [&](size_t i) { return !transmissive(i); });
+    // With no opaque object the backdrop would hold nothing: transmissive surfaces see the
+    // environment or background directly, and the frame costs no more than before.
+    const bool backdropNeeded = firstTransmissive != drawOrder.end() && firstTransmissive != drawOrder.begin();
+    const bool capturesBackdrop = backdropNeeded && (rows.count == 0 || rows.first + rows.count >= height);
+    if (!backdropNeeded || (!capturesBackdrop && !transmission_->holds(width, height))) transmission_->forget();
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
     fusedDisplay_.reset();
     if (fuseDisplay_ && samples == 1 && !scene.display.levelsRamp) {  // the ramp is drawn by the display pass
@@ -284,7 +300,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         fusedDisplay_ = scene.display;
     }
     // The float image is written unless the render is fused and nobody reads it (setRadianceKept).
-    radianceWritten_ = keepRadiance_ || !fusedDisplay_;
+    radianceWritten_ = keepRadiance_ || !fusedDisplay_ || capturesBackdrop;  // the backdrop is copied from it
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
@@ -295,13 +311,16 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     glViewport(0, 0, width, height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    // Clears, draws and the MSAA resolve keep to the band.
-    if (rows.count > 0) {
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(0, rows.first, width, rows.count);
-    } else {
-        glDisable(GL_SCISSOR_TEST);
-    }
+    // Clears, draws and the MSAA resolve keep to the band (after the backdrop's opaque pass, if any).
+    const auto scissorTo = [width](RowBand band) {
+        if (band.count > 0) {
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, band.first, width, band.count);
+        } else {
+            glDisable(GL_SCISSOR_TEST);
+        }
+    };
+    scissorTo(capturesBackdrop ? RowBand{} : rows);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -318,8 +337,11 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     const std::string frameDefines =
         specialise_ ? frameSpecialisation(packed, shadowMaps_->block(), scene.environment, fusedDisplay_) : "";
     // A background that is the same at every pixel is a clear (as cheap as a frame can be), not a
-    // pass: constant, no environment shown, and a display value without a dither pattern.
-    const bool uniformBackground = scene.background.kind == BackgroundKind::Constant &&
+    // pass: constant, no environment shown, and a display value without a dither pattern. Not in a
+    // frame that captures the backdrop: its opaque objects are drawn over a clear of zero coverage.
+    const GLfloat noCoverage[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (capturesBackdrop) glClearBufferfv(GL_COLOR, 0, noCoverage);
+    const bool uniformBackground = !capturesBackdrop && scene.background.kind == BackgroundKind::Constant &&
                                    !(scene.environment.enabled() && scene.environment.showAsBackground) &&
                                    (!fusedDisplay_ || fusedDisplay_->dither == Dither::None);
     if (uniformBackground) {
@@ -347,7 +369,44 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     simplifiedMeshesDrawn_ = 0;
     meshes_->releaseUnused();
     drawnMeshes_.clear();
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
+    // Any other background (sky, environment, dithered) after the opaque objects (and the backdrop),
+    // only where no object wrote depth: drawn at depth 1 with GL_LEQUAL against the cleared 1, so
+    // that pixels (and MSAA samples) an object covers are rejected before the background shader runs.
+    bool backgroundDrawn = false;
+    const auto drawBackground = [&] {
+        backgroundDrawn = true;
+        Result<const ShaderProgram*> background = static_cast<const ShaderProgram*>(nullptr);
+        if (!uniformBackground)
+            background = backgroundProgram(specialise_ ? backgroundSpecialisation(packed, scene.environment, fusedDisplay_) : "");
+        if (!background) {
+            shaderError_ = background.error().format();
+            result = background.error();
+        } else if (*background) {
+            glDepthMask(GL_FALSE);
+            glDepthFunc(GL_LEQUAL);
+            glDepthRange(1.0, 1.0);
+            clearDepthOnce();
+            glUseProgram((*background)->id());
+            setFusedDisplayUniforms(**background, fusedDisplay_);
+            glBindVertexArray(emptyVertexArray_);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glDepthRange(0.0, 1.0);
+            glDepthFunc(GL_LESS);
+            glDepthMask(GL_TRUE);
+            glBindVertexArray(0);
+        }
+    };
+    for (auto next = drawOrder.begin(); next != drawOrder.end(); ++next) {
+        if (next == firstTransmissive && capturesBackdrop) {
+            transmission_->capture(drawTarget.framebuffer(), width, height, emptyVertexArray_);
+            glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
+            glViewport(0, 0, width, height);
+            scissorTo(rows);
+            glDisable(GL_CULL_FACE);
+            clearDepthOnce();  // with the depth mask on: the background pass turns it off
+            drawBackground();
+        }
+        const size_t i = *next;
         const SceneObject& object = scene.objects[i];
         const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
         const auto* sphere = triangles ? nullptr : std::get_if<SphereShape>(&object.shape);
@@ -357,8 +416,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
         const Material& material = scene.materials.at(object.materialIndex);
         const bool builtInModel = !material.custom && !material.measured;
+        const std::string backdropDefine = next >= firstTransmissive && transmission_->shows() ? TransmissionPass::kProgramDefine : "";
         const SurfaceVariant variant{samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere != nullptr,
-                                     specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines};
+                                     (specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines) +
+                                         backdropDefine};
         auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, variant)
                        : material.measured ? measured_.program(sources_, variant)
                                            : surfaceProgram(material.model, variant, TexturedParams::of(material));
@@ -381,6 +442,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
         if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
+        if (next >= firstTransmissive) transmission_->bind(shader);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         const auto* plane = std::get_if<PlaneShape>(&object.shape);
         const glm::vec2 fadeRadii = plane ? planeEdgeFadeRadii(*plane) : glm::vec2(0.0f);
@@ -410,29 +472,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
                                 glm::vec4(placement.offset, placement.scale)});
     }
     glDisable(GL_CULL_FACE);
-    // Any other background (sky, environment, dithered) last, only where no object wrote depth:
-    // drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and MSAA samples) an
-    // object covers are rejected before the background shader runs.
-    Result<const ShaderProgram*> background = static_cast<const ShaderProgram*>(nullptr);
-    if (!uniformBackground)
-        background = backgroundProgram(specialise_ ? backgroundSpecialisation(packed, scene.environment, fusedDisplay_) : "");
-    if (!background) {
-        shaderError_ = background.error().format();
-        result = background.error();
-    } else if (*background) {
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
-        glDepthRange(1.0, 1.0);
-        clearDepthOnce();
-        glUseProgram((*background)->id());
-        setFusedDisplayUniforms(**background, fusedDisplay_);
-        glBindVertexArray(emptyVertexArray_);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glDepthRange(0.0, 1.0);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_TRUE);
-        glBindVertexArray(0);
-    }
+    if (!backgroundDrawn) drawBackground();
     if (samples > 1) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
@@ -528,6 +568,11 @@ RadianceImage Renderer::readRadiance() const {
     RadianceImage image(radianceTarget_.width(), radianceTarget_.height());
     readFlipped(radianceTarget_.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
     return image;
+}
+
+OpaquePassImage Renderer::readTransmissionBackdrop() const {
+    platform_.makeCurrent();
+    return transmission_->read();
 }
 
 DisplayImage Renderer::readDisplay() const {

@@ -25,6 +25,7 @@
 #include "gl/surface_variant.h"
 #include "gl/texture_cache.h"
 #include "gl/shadow_maps.h"
+#include "gl/transmission_pass.h"
 #include "image/image.h"
 #include "scene/scene.h"
 
@@ -55,6 +56,11 @@ public:
     // gl/gpu_mesh_cache.h); headless renders draw every triangle.
     // `rows`: only those rows of the width×height frame are drawn (the editor refines a slow full
     // frame band by band); the others keep what the targets held.
+    // A frame with transmissive materials (render/transmission_backdrop.h) draws the opaque objects
+    // first, copies them into the transmission backdrop (gl/transmission_pass.h), then draws the
+    // background and the transmissive objects, which look it up. A band that holds the top row draws the
+    // opaque pass over the whole frame for the backdrop; the bands below it reuse that backdrop (the
+    // editor draws a frame's bands top first).
     Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full,
                           RowBand rows = {});
     // Starts making the simplified stand-ins of the scene's large meshes on worker threads (the
@@ -94,6 +100,9 @@ public:
 
     RadianceImage readRadiance() const;  // top row first
     DisplayImage readDisplay() const;    // top row first
+    // The opaque pass the last frame's transmissive surfaces saw (base level; empty when the frame
+    // had none): the CPU reference's input for the same frame (ReferenceOptions::backdrop).
+    OpaquePassImage readTransmissionBackdrop() const;
 
     // Shaders on disk that changed since they were compiled are rebuilt on the next render.
     // Returns true when something changed (so the caller redraws).
@@ -171,6 +180,7 @@ private:
     std::vector<OverlayMesh> drawnMeshes_;  // what the last renderRadiance drew, for the overlays
     TextureCache textureCache_;
     std::unique_ptr<ShadowMaps> shadowMaps_;
+    std::unique_ptr<TransmissionPass> transmission_;
     long long trianglesDrawn_ = 0;
     int simplifiedMeshesDrawn_ = 0;
     std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block

@@ -1,6 +1,7 @@
 // What the OpenPBR model adds to a surface beyond its reflection of lights and environment: the
-// emission, and the light its transmission lets through from behind. Transmitted light is seen
-// through the environment's prefiltered level at the specular roughness (rough transmission);
+// emission, and the light its transmission lets through from behind. Transmitted light is the
+// frame's opaque objects where the backdrop shows them (MissRadiance::transmittedRough, blurred by
+// the specular roughness), else the environment's prefiltered level at that roughness;
 // a thin-walled surface, a plane or a mesh lets it pass straight on, tinted by
 // transmission_color; a volume sphere refracts it in and out (Snell) and absorbs it on the chord
 // by Beer-Lambert, transmission_color being the transmittance after transmission_depth. No
@@ -31,15 +32,17 @@ inline glm::vec3 transportOpenpbr(const OpenPbrParams& p, const MissRadiance& mi
     const glm::vec3 incoming = -towardsViewer;
     const bool outsideSphere = sphere && glm::dot(normal, position - sphere->center) > 0.0f;
     if (p.thinWalled || !outsideSphere)
-        return emission + weight * p.transmissionColor * miss.rough(incoming, view.specularRoughness);
+        return emission + weight * p.transmissionColor *
+                              miss.transmittedRough(position, incoming, incoming, view.specularRoughness, p.specularIor);
     const glm::vec3 refracted = refractDirection(incoming, normal, 1.0f / p.specularIor);
     const float chord = sphereExitDistance(*sphere, position, refracted);
-    const glm::vec3 inwardNormal = (sphere->center - (position + chord * refracted)) / sphere->radius;
+    const glm::vec3 exitPoint = position + chord * refracted;
+    const glm::vec3 inwardNormal = (sphere->center - exitPoint) / sphere->radius;
     const float exitReflectance = fresnelDielectric(-glm::dot(refracted, inwardNormal), 1.0f / p.specularIor);
     if (exitReflectance >= 1.0f) return emission;
     const glm::vec3 leaving = refractDirection(refracted, inwardNormal, p.specularIor);
     return emission + weight * openPbrVolumeTransmittance(p, chord) * (1.0f - exitReflectance) *
-                          miss.rough(leaving, view.specularRoughness);
+                          miss.transmittedRough(exitPoint, leaving, incoming, view.specularRoughness, p.specularIor);
 }
 
 }  // namespace glint

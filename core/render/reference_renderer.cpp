@@ -150,7 +150,7 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
     const glm::vec3 specular =
         material.measured ? glm::vec3(0.0f)
-                          : traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment),
+                          : traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment, options.backdrop),
                                           sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
     radiance += specular;
     if (breakdown) {

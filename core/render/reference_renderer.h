@@ -11,6 +11,7 @@
 #include "camera/camera.h"
 #include "geometry/mesh.h"
 #include "image/image.h"
+#include "render/transmission_backdrop.h"
 #include "scene/scene.h"
 
 namespace glint {
@@ -50,11 +51,16 @@ struct ReferenceOptions {
     uint32_t environmentSeed = 0;  // another seed: another (independent, as deterministic) estimate
     // Called now and then from the calling thread with the fraction of rows done (0 … 1).
     std::function<void(float)> progress = nullptr;
+    // What the transmitted rays of glass and openpbr see of the frame's opaque objects: the GPU's
+    // opaque pass of the same frame (Renderer::readTransmissionBackdrop). None: they see the
+    // environment or the background only, as rays that miss the scene.
+    const TransmissionBackdrop* backdrop = nullptr;
 };
 
 // Outgoing radiance [W/(sr·m²)] at a hit towards `towardsViewer`: Σ f_r·E⊥·cos θ over the delta
 // lights, plus k_a·L_a for the ambient lights, plus the model's traced delta lobes (mirror, glass)
-// whose secondary rays see the environment or the background, plus the environment's light.
+// whose secondary rays see the environment or the background (transmitted ones the backdrop
+// first), plus the environment's light.
 // Twin of shadeSurface() in common/shading.glsl. `pixelSeed` seeds the environment sampling.
 glm::vec3 shadeHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer,
                    const ReferenceOptions& options = {}, uint32_t pixelSeed = 0);

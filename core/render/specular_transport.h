@@ -1,8 +1,9 @@
 // Specular transport of the delta-lobe materials (mirror, glass), traced analytically: ideal
 // reflection weighted by exact Fresnel; ideal refraction (Snell) through a sphere with internal
 // reflections, Beer-Lambert absorption e^(−σ·d) and the (η_t/η_i)² radiance scaling; and the
-// classic Hearn-Baker transparency I = (1−k_t)·I_refl + k_t·I_trans. Secondary rays see the
-// environment map, or the background when there is none (MissRadiance), not other objects.
+// classic Hearn-Baker transparency I = (1−k_t)·I_refl + k_t·I_trans. Reflected rays see the
+// environment map, or the background when there is none (MissRadiance); transmitted rays see the
+// frame's opaque objects where the backdrop shows them (MissRadiance::transmitted).
 // GLSL twin: shaders/common/specular_transport.glsl. It does not evaluate f_r for lights.
 #pragma once
 
@@ -78,10 +79,12 @@ inline float glassReflectance(const GlassInterface& glass, float cosIncident, fl
 // A ray inside a glass sphere arriving at the wall point `origin` with direction `direction`
 // and throughput `throughput` (absorption so far included): at each wall it splits into the part
 // that leaves (Fresnel 1 − F, radiance scaled by 1/η², seeing the background) and the part
-// reflected inside (F; 1 under total internal reflection), for kMaxInternalBounces walls.
+// reflected inside (F; 1 under total internal reflection), for kMaxInternalBounces walls. The
+// first exit sees the objects behind it too (MissRadiance::transmitted, `viewDirection` the
+// primary ray's); the later ones carry at most F² of the light and see the background only.
 inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorption, const MissRadiance& miss,
                                    const SphereGeometry& sphere, glm::vec3 origin, glm::vec3 direction,
-                                   glm::vec3 throughput) {
+                                   glm::vec3 throughput, glm::vec3 viewDirection) {
     glm::vec3 radiance(0.0f);
     for (int bounce = 0; bounce < kMaxInternalBounces; ++bounce) {
         const glm::vec3 inwardNormal = (sphere.center - origin) / sphere.radius;
@@ -89,7 +92,7 @@ inline glm::vec3 traceInsideSphere(const GlassInterface& glass, glm::vec3 absorp
         if (exitReflectance < 1.0f) {
             const glm::vec3 leaving = refractDirection(direction, inwardNormal, glass.ior);
             radiance += throughput * ((1.0f - exitReflectance) / (glass.ior * glass.ior)) *
-                        miss(leaving);
+                        (bounce == 0 ? miss.transmitted(origin, leaving, viewDirection) : miss(leaving));
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);
@@ -116,18 +119,18 @@ inline glm::vec3 traceGlass(const GlassInterface& glass, glm::vec3 absorption, c
     const glm::vec3 incoming = -towardsViewer;
     if (sphere && glm::dot(normal, position - sphere->center) < 0.0f)
         return traceInsideSphere(glass, absorption, miss, *sphere, position, incoming,
-                                 glm::exp(-absorption * viewerDistance));
+                                 glm::exp(-absorption * viewerDistance), incoming);
     const float entryReflectance = glassReflectance(glass, glm::dot(normal, towardsViewer), glass.ior);
     glm::vec3 radiance = entryReflectance * miss(reflectDirection(incoming, normal));
     if (!sphere) {
         const float paneTransmittance = (1.0f - entryReflectance) * (1.0f - entryReflectance);
-        return radiance + paneTransmittance * miss(incoming);
+        return radiance + paneTransmittance * miss.transmitted(position, incoming, incoming);
     }
     const glm::vec3 refracted = refractDirection(incoming, normal, 1.0f / glass.ior);
     const float chord = sphereExitDistance(*sphere, position, refracted);
     const glm::vec3 throughput = (1.0f - entryReflectance) * glass.ior * glass.ior * glm::exp(-absorption * chord);
     return radiance + traceInsideSphere(glass, absorption, miss, *sphere, position + chord * refracted, refracted,
-                                        throughput);
+                                        throughput, incoming);
 }
 
 // The specular-transport hook of the model registry (ModelInfo::glslTransport): the radiance

@@ -169,13 +169,15 @@ vec3 transportOpenpbr(MaterialParams p, vec3 position, ShadingFrame frame, vec3 
     vec3 incoming = -towardsViewer;
     bool outsideSphere = shapeKind == SHAPE_SPHERE && dot(normal, position - sphere.xyz) > 0.0;
     if (p.geometry_thin_walled || !outsideSphere)
-        return emission + weight * p.transmission_color * missRadianceRough(incoming, v.specularRoughness);
+        return emission + weight * p.transmission_color *
+                              transmittedRadianceRough(position, incoming, incoming, v.specularRoughness, p.specular_ior);
     vec3 refracted = refractDirection(incoming, normal, 1.0 / p.specular_ior);
     float chord = sphereExitDistance(sphere, position, refracted);
-    vec3 inwardNormal = (sphere.xyz - (position + chord * refracted)) / sphere.w;
+    vec3 exitPoint = position + chord * refracted;
+    vec3 inwardNormal = (sphere.xyz - exitPoint) / sphere.w;
     float exitReflectance = fresnelDielectric(-dot(refracted, inwardNormal), 1.0 / p.specular_ior);
     if (exitReflectance >= 1.0) return emission;
     vec3 leaving = refractDirection(refracted, inwardNormal, p.specular_ior);
     return emission + weight * openPbrVolumeTransmittance(p, chord) * (1.0 - exitReflectance) *
-                          missRadianceRough(leaving, v.specularRoughness);
+                          transmittedRadianceRough(exitPoint, leaving, incoming, v.specularRoughness, p.specular_ior);
 }

@@ -1,7 +1,9 @@
 // Specular transport of mirror and glass, traced analytically: GLSL twin of
-// core/render/specular_transport.h (see there for the physics and the limits: secondary rays
-// see the environment or the background, not other objects). Needs environment.glsl.
+// core/render/specular_transport.h (see there for the physics and the limits: reflected rays
+// see the environment or the background, transmitted rays the frame's opaque objects where the
+// backdrop shows them). Needs environment.glsl.
 #include "brdf/fresnel.glsl"
+#include "common/transmission_backdrop.glsl"
 
 const int MAX_INTERNAL_BOUNCES = 6;  // kMaxInternalBounces
 
@@ -36,14 +38,16 @@ float glassReflectance(bool classic, float transmission, float cosIncident, floa
 
 // A ray inside the glass sphere at the wall point `origin` (see traceInsideSphere in the twin).
 vec3 traceInsideSphere(float ior, bool classic, float transmission, vec3 absorption, vec4 sphereGeometry,
-                       vec3 origin, vec3 direction, vec3 throughput) {
+                       vec3 origin, vec3 direction, vec3 throughput, vec3 viewDirection) {
     vec3 radiance = vec3(0.0);
     for (int bounce = 0; bounce < MAX_INTERNAL_BOUNCES; ++bounce) {
         vec3 inwardNormal = (sphereGeometry.xyz - origin) / sphereGeometry.w;
         float exitReflectance = glassReflectance(classic, transmission, -dot(direction, inwardNormal), 1.0 / ior);
         if (exitReflectance < 1.0) {
             vec3 leaving = refractDirection(direction, inwardNormal, ior);
-            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * missRadiance(leaving);
+            vec3 seen = missRadiance(leaving);  // the first exit: the backdrop over it (traced once)
+            if (bounce == 0) seen = throughBackdrop(origin, leaving, viewDirection, 0.0, seen);
+            radiance += throughput * ((1.0 - exitReflectance) / (ior * ior)) * seen;
         }
         throughput *= exitReflectance;
         direction = reflectDirection(direction, inwardNormal);
@@ -60,16 +64,16 @@ vec3 traceGlass(float ior, bool classic, float transmission, vec3 absorption, bo
     vec3 incoming = -towardsViewer;
     if (isSphere && dot(normal, position - sphereGeometry.xyz) < 0.0)
         return traceInsideSphere(ior, classic, transmission, absorption, sphereGeometry, position, incoming,
-                                 exp(-absorption * viewerDistance));
+                                 exp(-absorption * viewerDistance), incoming);
     float entryReflectance = glassReflectance(classic, transmission, dot(normal, towardsViewer), ior);
     vec3 radiance = entryReflectance * missRadiance(reflectDirection(incoming, normal));
     if (!isSphere) {
         float paneTransmittance = (1.0 - entryReflectance) * (1.0 - entryReflectance);
-        return radiance + paneTransmittance * missRadiance(incoming);
+        return radiance + paneTransmittance * transmittedRadiance(position, incoming, incoming);
     }
     vec3 refracted = refractDirection(incoming, normal, 1.0 / ior);
     float chord = sphereExitDistance(sphereGeometry, position, refracted);
     vec3 throughput = (1.0 - entryReflectance) * ior * ior * exp(-absorption * chord);
     return radiance + traceInsideSphere(ior, classic, transmission, absorption, sphereGeometry,
-                                        position + chord * refracted, refracted, throughput);
+                                        position + chord * refracted, refracted, throughput, incoming);
 }
