@@ -1,8 +1,9 @@
 // Material textures on the GPU (OSMesa): a textured quad and a mipmapped checker plane at
 // grazing angles (trilinear and anisotropic) against goldens, GPU against the CPU reference per
 // pixel for a procedural-marble sphere and an image-textured sphere at magnification, a normal
-// map tilting a plane's shading by a known angle, and one upload per image. Images are written
-// by the tests themselves; goldens update only with GLINT_UPDATE_GOLDENS=1.
+// map tilting a plane's shading by a known angle, clamped and mirrored wrap modes, and one
+// upload per image. Images are written by the tests themselves; goldens update only with
+// GLINT_UPDATE_GOLDENS=1.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -184,6 +185,28 @@ TEST(TextureGpu, TransformedFactoredImageMatchesCpuReference) {
     (void)writeDisplayImage(images->display, textureDirectory() + "/transformed_plane.png");
     const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
     std::printf("transformed plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
+                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 8000);
+}
+
+// Wrap modes (glTF samplers' wrapS/wrapT): a plane whose UV runs from −1 to 2 clamps along u and
+// mirrors along v, and its roughness (with a minification filter of its own) mirrors along u;
+// GPU sampler objects against the CPU's OpenGL addressing, per pixel.
+TEST(TextureGpu, ClampedAndMirroredImagesMatchCpuReference) {
+    writeColourTexture();
+    const Scene scene = sceneFrom(kFrontOrtho, kTwoLights,
+                                  R"({"name": "m", "model": "cook_torrance", "textures": {
+        "diffuse_albedo": {"type": "image", "file": "colour.png", "tiling": [3, 3], "offset": [-1, -1], "filter": "bilinear",
+                           "wrap_u": "clamp_to_edge", "wrap_v": "mirrored_repeat"},
+        "roughness": {"type": "image", "file": "colour.png", "channel": "r", "min": 0.1, "max": 0.6, "tiling": [3, 3],
+                      "offset": [-1, -1], "filter": "bilinear", "min_filter": "nearest_mipmap_linear", "wrap_u": "mirrored_repeat"}}})",
+                                  R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})");
+    auto images = test::sharedHeadless().render(scene, 128, 128);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    (void)writeDisplayImage(images->display, textureDirectory() + "/wrapped_plane.png");
+    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
+    std::printf("wrapped plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
                 agreement.excluded, agreement.disagreeing, agreement.worstRelative);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
     EXPECT_GT(agreement.compared, 8000);

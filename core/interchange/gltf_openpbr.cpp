@@ -92,7 +92,6 @@ struct Reading {
                 infos[slot.key] = *info;
             }
             const GltfTextureInfo& info = infos[slot.key];
-            if (!info.repeats) warn(info.pointer, "the sampler clamps or mirrors; Glint repeats textures (REPEAT)");
             if (info.texCoord != 0)
                 warn(info.pointer, "texCoord " + std::to_string(info.texCoord) + " is read as texCoord 0: Glint's shapes have one UV set");
             auto texture = gltfImageTexture(info, slot.parameter, slot.srgb ? TextureColorSpace::Srgb : TextureColorSpace::Linear);

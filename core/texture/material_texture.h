@@ -19,6 +19,11 @@ inline constexpr int kMaxMaterialTextures = 8;
 enum class TextureKind { Image, Checker, Marble, Wood };
 enum class TextureColorSpace { Srgb, Linear };  // how an image file's values are encoded
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+// OpenGL's minification filters (glTF samplers' minFilter); Default: the one `filter` implies
+// (nearest: NEAREST, bilinear: LINEAR, trilinear and anisotropic: LINEAR_MIPMAP_LINEAR).
+enum class TextureMinFilter { Default, Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest, NearestMipmapLinear, LinearMipmapLinear };
+// OpenGL's addressing outside [0, 1] along u or v (glTF samplers' wrapS, wrapT).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
 enum class TextureChannel { R, G, B, A };  // where a scalar parameter reads an image
 
 // Decoded image, linear RGBA floats, rows from the BOTTOM of the picture up (v = 0 is the
@@ -42,7 +47,9 @@ struct MaterialTexture {
     std::string file;  // absolute path of the image (written relative to the scene file)
     TextureColorSpace colorSpace = TextureColorSpace::Srgb;
     TextureChannel channel = TextureChannel::R;  // scalar parameters only
-    TextureFilter filter = TextureFilter::Trilinear;
+    TextureFilter filter = TextureFilter::Trilinear;  // magnification: nearest for Nearest, else linear
+    TextureMinFilter minFilter = TextureMinFilter::Default;
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
     glm::vec2 range{0.0f, 1.0f};  // scalar parameters: value = mix(range.x, range.y, texel)
     std::shared_ptr<const TextureImage> image;  // decoded when the material is read
     // Image and checker: the UV transform uv' = R(rotation)·(tiling ⊙ uv) + offset, in Glint's UV
