@@ -326,10 +326,15 @@ TEST(GltfOpenPbr, TexturesDriveTheirParametersWithFactorsChannelsAndTransforms) 
     const MaterialTexture* emission = findTexture(core, "emission_color");
     ASSERT_NE(emission, nullptr);
     EXPECT_EQ(emission->colorFactor, glm::vec3(1.0f, 0.5f, 0.25f));
-    // The occlusion map is kept for export, not rendered.
-    ASSERT_EQ(file.materials[0].textures.size(), 1u);
-    EXPECT_EQ(file.materials[0].textures[0].slot, "occlusionTexture");
-    EXPECT_EQ(file.materials[0].textures[0].path, folder() + "/occlusion.png");
+    // The occlusion map: red, 1 + strength·(texel − 1), just before the normal map.
+    const MaterialTexture* occlusion = findTexture(core, kOcclusionMapKey);
+    ASSERT_NE(occlusion, nullptr);
+    EXPECT_EQ(occlusion->file, folder() + "/occlusion.png");
+    EXPECT_EQ(occlusion->channel, TextureChannel::R);
+    EXPECT_EQ(occlusion->colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(occlusion->range, glm::vec2(0.5f, 1.0f));
+    EXPECT_EQ(core.textures[core.textures.size() - 2].parameter, kOcclusionMapKey);
+    EXPECT_TRUE(file.materials[0].textures.empty());  // nothing left only for export
     // Iridescence thickness: mix(minimum, maximum, G) in µm.
     const MaterialTexture* thickness = findTexture(file.materials[6].material, "thin_film_thickness");
     ASSERT_NE(thickness, nullptr);

@@ -205,6 +205,22 @@ TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
     ASSERT_FALSE(badWrap.ok());
     EXPECT_NE(badWrap.error().format().find("wrap_u"), std::string::npos) << badWrap.error().format();
 
+    // The occlusion map is a scalar texture of its own: channel and range, slot before the normal map.
+    auto occluded = parseMaterial(materialJson(R"({"normal": {"type": "image", "file": "maps/colour.png"},
+        "occlusion": {"type": "image", "file": "maps/colour.png", "channel": "g", "min": 0.25}})"), directory + "/o.json");
+    ASSERT_TRUE(occluded.ok()) << occluded.error().format();
+    ASSERT_EQ(occluded->textures.size(), 2u);
+    EXPECT_EQ(occluded->textures[0].parameter, kOcclusionMapKey);
+    EXPECT_EQ(occluded->textures[0].range, glm::vec2(0.25f, 1.0f));
+    EXPECT_EQ(materialToJson(*occluded, directory + "/o.json")["textures"]["occlusion"]["channel"], "g");
+    auto reoccluded = parseMaterial(materialToJson(*occluded, directory + "/o.json").dump(), directory + "/o.json");
+    ASSERT_TRUE(reoccluded.ok()) << reoccluded.error().format();
+    EXPECT_EQ(materialToJson(*reoccluded), materialToJson(*occluded));
+    TexturePoint bottomLeft;
+    bottomLeft.uv = {0.125f, 0.25f};  // the centre of the bottom row's first texel: grey 0
+    EXPECT_FLOAT_EQ(ambientOcclusion(*occluded, bottomLeft), 0.25f);
+    EXPECT_FLOAT_EQ(ambientOcclusion(*material, bottomLeft), 1.0f);  // none: unoccluded
+
     const std::string saved = directory + "/maps/b.material.json";  // another folder
     ASSERT_TRUE(saveMaterial(*material, saved).ok());
     EXPECT_EQ(materialToJson(*material, saved)["textures"]["albedo"]["file"], "colour.png");

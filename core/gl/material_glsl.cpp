@@ -41,7 +41,7 @@ TexturedParams TexturedParams::of(const Material& material) {
     for (const MaterialTexture& texture : material.textures) {
         const int index = findParam(table, texture.parameter);
         GLINT_CHECK(index < kProceduralBit);  // the bits above the table's are the maps' and the procedural flag
-        textured.mask |= 1u << (index < 0 ? kNormalMapBit : index);
+        textured.mask |= 1u << (index >= 0 ? index : texture.parameter == kNormalMapKey ? kNormalMapBit : kOcclusionMapBit);
         if (texture.kind != TextureKind::Image) textured.mask |= 1u << kProceduralBit;
     }
     return textured;
@@ -88,6 +88,8 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
         if (textured.hasProcedural()) textures += "#define GLINT_PROCEDURAL_TEXTURES 1\n" + perlinTableGlsl();
         textures += "#include \"common/textures.glsl\"\n";
         if (textured.hasNormalMap()) textures += "#define GLINT_NORMAL_MAP_SLOT " + std::to_string(textured.normalMapSlot()) + "\n";
+        if (textured.hasOcclusionMap())
+            textures += "#define GLINT_OCCLUSION_SLOT " + std::to_string(textured.slotOf(TexturedParams::kOcclusionMapBit)) + "\n";
     }
     return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures + constants +
            "struct MaterialParams {\n" + fields + "};\n\n" +

@@ -13,6 +13,11 @@ namespace glint {
 
 // The key of the tangent-space normal map in a material's "textures" (not a table parameter).
 inline constexpr const char* kNormalMapKey = "normal";
+// The key of the ambient-occlusion map (glTF's occlusionTexture; not a table parameter): a scalar
+// in [0, 1] by which only the ambient and environment light are scaled, never the lights'.
+inline constexpr const char* kOcclusionMapKey = "occlusion";
+// Whether a "textures" key is one of these maps rather than a parameter of the model's table.
+inline bool isSurfaceMapKey(const std::string& key) { return key == kNormalMapKey || key == kOcclusionMapKey; }
 // Textures per material: each takes one texture unit and one slot of uniforms in the shader.
 inline constexpr int kMaxMaterialTextures = 8;
 
@@ -41,7 +46,7 @@ struct TextureImage {
 };
 
 struct MaterialTexture {
-    std::string parameter;  // a Scalar or Color name of the model's table, or kNormalMapKey
+    std::string parameter;  // a Scalar or Color name of the model's table, kOcclusionMapKey or kNormalMapKey
     TextureKind kind = TextureKind::Checker;
     // Image
     std::string file;  // absolute path of the image (written relative to the scene file)

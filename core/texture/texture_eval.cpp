@@ -106,6 +106,16 @@ std::vector<float> texturedValues(const Material& material, const TexturePoint& 
     return values;
 }
 
+float ambientOcclusion(const Material& material, const TexturePoint& point) {
+    for (const MaterialTexture& texture : material.textures) {
+        if (texture.parameter != kOcclusionMapKey) continue;
+        const glm::vec4 sampled = evaluateTexture(texture, point);
+        return texture.kind == TextureKind::Image ? glm::mix(texture.range.x, texture.range.y, channelOf(sampled, texture.channel))
+                                                  : sampled.r;
+    }
+    return 1.0f;
+}
+
 ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame) {
     for (const MaterialTexture& texture : material.textures) {
         if (texture.parameter != kNormalMapKey) continue;

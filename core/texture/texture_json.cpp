@@ -107,6 +107,7 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
     for (const MaterialTexture& texture : material.textures) {
         const int index = findParam(table, texture.parameter);
         const bool color = index >= 0 && table[index].kind == ParamKind::Color;
+        const bool scalar = index >= 0 ? table[index].kind == ParamKind::Scalar : texture.parameter == kOcclusionMapKey;
         const auto value = [&](glm::vec3 v) { return color ? json{v.x, v.y, v.z} : json(v.x); };
         json entry = {{"type", kKinds[static_cast<int>(texture.kind)]}};
         switch (texture.kind) {
@@ -121,8 +122,8 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
                 if (texture.offset != glm::vec2(0.0f)) entry["offset"] = {texture.offset.x, texture.offset.y};
                 if (texture.rotation != 0.0f) entry["rotation"] = texture.rotation;
                 if (color && texture.colorFactor != glm::vec3(1.0f)) entry["factor"] = vec3Json(texture.colorFactor);
-                if (index < 0 && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
-                if (index >= 0 && !color) {
+                if (texture.parameter == kNormalMapKey && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
+                if (scalar) {
                     entry["channel"] = kChannels[static_cast<int>(texture.channel)];
                     entry["min"] = texture.range.x;
                     entry["max"] = texture.range.y;
