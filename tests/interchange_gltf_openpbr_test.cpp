@@ -326,10 +326,15 @@ TEST(GltfOpenPbr, TexturesDriveTheirParametersWithFactorsChannelsAndTransforms) 
     const MaterialTexture* emission = findTexture(core, "emission_color");
     ASSERT_NE(emission, nullptr);
     EXPECT_EQ(emission->colorFactor, glm::vec3(1.0f, 0.5f, 0.25f));
-    // The occlusion map is kept for export, not rendered.
-    ASSERT_EQ(file.materials[0].textures.size(), 1u);
-    EXPECT_EQ(file.materials[0].textures[0].slot, "occlusionTexture");
-    EXPECT_EQ(file.materials[0].textures[0].path, folder() + "/occlusion.png");
+    // The occlusion map: red, 1 + strength·(texel − 1), just before the normal map.
+    const MaterialTexture* occlusion = findTexture(core, kOcclusionMapKey);
+    ASSERT_NE(occlusion, nullptr);
+    EXPECT_EQ(occlusion->file, folder() + "/occlusion.png");
+    EXPECT_EQ(occlusion->channel, TextureChannel::R);
+    EXPECT_EQ(occlusion->colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(occlusion->range, glm::vec2(0.5f, 1.0f));
+    EXPECT_EQ(core.textures[core.textures.size() - 2].parameter, kOcclusionMapKey);
+    EXPECT_TRUE(file.materials[0].textures.empty());  // nothing left only for export
     // Iridescence thickness: mix(minimum, maximum, G) in µm.
     const MaterialTexture* thickness = findTexture(file.materials[6].material, "thin_film_thickness");
     ASSERT_NE(thickness, nullptr);
@@ -542,18 +547,63 @@ TEST(GltfOpenPbr, ExportReportsWhatGltfCannotHold) {
     EXPECT_NE(all.find("base_diffuse_roughness"), std::string::npos) << all;
 }
 
-// Sampler and UV-set limits are located warnings; the material still loads.
+// Samplers: wrapS/wrapT and magFilter/minFilter reach the material texture and come back
+// unchanged in the written glTF; a value glTF does not allow is refused at the textureInfo.
+TEST(GltfOpenPbr, SamplersCarryWrapAndFilterBothWays) {
+    writeImages();
+    json gltf = withMaterials({{{"name", "sampled"},
+                                {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 1}}}}},
+                                {"emissiveFactor", {1.0, 1.0, 1.0}},
+                                {"emissiveTexture", {{"index", 3}}}}});
+    const json samplers = {{{"magFilter", 9729}, {"minFilter", 9986}, {"wrapS", 33071}, {"wrapT", 33648}},
+                           {{"magFilter", 9728}, {"minFilter", 9987}, {"wrapS", 33648}},
+                           {{"magFilter", 9729}, {"minFilter", 9729}, {"wrapT", 33071}}};
+    gltf["samplers"] = samplers;
+    gltf["textures"][0]["sampler"] = 0;
+    gltf["textures"][1]["sampler"] = 1;
+    gltf["textures"][3]["sampler"] = 2;
+    const ImportedFile file = parseOk(gltf);
+    EXPECT_TRUE(allWarnings(file).empty()) << warningTexts(file)[0];
+    const auto expectSampling = [&](const char* parameter, TextureFilter filter, TextureMinFilter minFilter, TextureWrap u, TextureWrap v) {
+        const MaterialTexture* texture = findTexture(file.materials[0].material, parameter);
+        ASSERT_NE(texture, nullptr) << parameter;
+        EXPECT_EQ(texture->filter, filter) << parameter;
+        EXPECT_EQ(texture->minFilter, minFilter) << parameter;
+        EXPECT_EQ(texture->wrapU, u) << parameter;
+        EXPECT_EQ(texture->wrapV, v) << parameter;
+    };
+    expectSampling("base_color", TextureFilter::Trilinear, TextureMinFilter::NearestMipmapLinear, TextureWrap::ClampToEdge,
+                   TextureWrap::MirroredRepeat);
+    expectSampling("specular_roughness", TextureFilter::Nearest, TextureMinFilter::LinearMipmapLinear, TextureWrap::MirroredRepeat,
+                   TextureWrap::Repeat);
+    // LINEAR minification is what bilinear implies: no minFilter of its own.
+    expectSampling("emission_color", TextureFilter::Bilinear, TextureMinFilter::Default, TextureWrap::Repeat, TextureWrap::ClampToEdge);
+
+    const json written = json::parse(writeGltf(file.materials[0], {}, folder() + "/sampled_out.gltf").text);
+    const auto samplerOf = [&](const json& info) { return written["samplers"][written["textures"][info["index"].get<int>()]["sampler"].get<int>()]; };
+    const json& material = written["materials"][0];
+    expectSameJson(samplers[0], samplerOf(material["pbrMetallicRoughness"]["baseColorTexture"]), "baseColorTexture");
+    expectSameJson(samplers[1], samplerOf(material["pbrMetallicRoughness"]["metallicRoughnessTexture"]), "metallicRoughnessTexture");
+    expectSameJson(samplers[2], samplerOf(material["emissiveTexture"]), "emissiveTexture");
+
+    json bad = gltf;
+    bad["samplers"][0]["wrapS"] = 10496;
+    auto refused = parseGltf(bad.dump(2), folder() + "/bad_sampler.gltf");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().format().find("samplers[0].wrapS 10496 is not a value glTF 2.0 allows"), std::string::npos)
+        << refused.error().format();
+    EXPECT_NE(refused.error().format().find("bad_sampler.gltf:"), std::string::npos) << refused.error().format();
+}
+
+// UV-set limits and unreadable images are located warnings; the material still loads.
 TEST(GltfOpenPbr, UnsupportedTextureSettingsAreLocatedWarnings) {
     writeImages();
     json gltf = withMaterials({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}},
                                 {"extensions", {{"VENDOR_sparkle", json::object()}}}}});
-    gltf["samplers"] = {{{"wrapS", 33071}}};
-    gltf["textures"][0]["sampler"] = 0;
     gltf["images"][1] = {{"uri", "data:image/png;base64,AAAA"}};
     gltf["materials"][0]["normalTexture"] = {{"index", 1}};
     const ImportedFile file = parseOk(gltf);
     const std::vector<std::string> texts = warningTexts(file);
-    EXPECT_TRUE(mentions(texts, "/materials/0/pbrMetallicRoughness/baseColorTexture: the sampler clamps or mirrors")) << texts.size();
     EXPECT_TRUE(mentions(texts, "/materials/0/pbrMetallicRoughness/baseColorTexture: texCoord 1"));
     EXPECT_TRUE(mentions(texts, "/materials/0/normalTexture: texture not rendered"));
     EXPECT_TRUE(mentions(texts, "/materials/0/extensions/VENDOR_sparkle: extension not supported"));

@@ -51,6 +51,24 @@ TEST(ModelMachinery, NamesGlslHooksAndOptionsByConvention) {
               std::string::npos);
 }
 
+// Image textures alone give a program without Perlin noise (llvmpipe compiles it several times
+// faster); a procedural texture brings it in, and the flag takes no texture slot.
+TEST(ModelMachinery, ProceduralTextureCodeOnlyWhereAMaterialHasOne) {
+    Material material = Material::withDefaults("m", BrdfModel::CookTorrance);
+    MaterialTexture image;
+    image.parameter = "roughness", image.kind = TextureKind::Image;
+    MaterialTexture marble;
+    marble.parameter = "diffuse_albedo", marble.kind = TextureKind::Marble;
+    material.textures = {image};
+    const TexturedParams imagesOnly = TexturedParams::of(material);
+    EXPECT_EQ(generateMaterialGlsl(modelInfo(material.model), imagesOnly).find("PERLIN_PERMUTATION"), std::string::npos);
+    material.textures = {marble, image};
+    const TexturedParams withMarble = TexturedParams::of(material);
+    EXPECT_TRUE(withMarble.hasProcedural());
+    EXPECT_NE(generateMaterialGlsl(modelInfo(material.model), withMarble).find("#define GLINT_PROCEDURAL_TEXTURES"), std::string::npos);
+    EXPECT_EQ(withMarble.slotOf(TexturedParams::kNormalMapBit), 2);
+}
+
 TEST(ModelMachinery, WritesTheReferenceOfATestModel) {
     const ModelInfo info = describeModel<ToySheen>(BrdfModel{});
     const std::string markdown = modelsMarkdown({&info, 1});

@@ -1,8 +1,9 @@
 // Material textures on the GPU (OSMesa): a textured quad and a mipmapped checker plane at
 // grazing angles (trilinear and anisotropic) against goldens, GPU against the CPU reference per
 // pixel for a procedural-marble sphere and an image-textured sphere at magnification, a normal
-// map tilting a plane's shading by a known angle, and one upload per image. Images are written
-// by the tests themselves; goldens update only with GLINT_UPDATE_GOLDENS=1.
+// map tilting a plane's shading by a known angle, clamped and mirrored wrap modes, an occlusion
+// map that darkens only the ambient light, and one upload per image. Images are written by the tests themselves; goldens update only with
+// GLINT_UPDATE_GOLDENS=1.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -187,6 +188,53 @@ TEST(TextureGpu, TransformedFactoredImageMatchesCpuReference) {
                 agreement.excluded, agreement.disagreeing, agreement.worstRelative);
     EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
     EXPECT_GT(agreement.compared, 8000);
+}
+
+// Wrap modes (glTF samplers' wrapS/wrapT): a plane whose UV runs from −1 to 2 clamps along u and
+// mirrors along v, and its roughness (with a minification filter of its own) mirrors along u;
+// GPU sampler objects against the CPU's OpenGL addressing, per pixel.
+TEST(TextureGpu, ClampedAndMirroredImagesMatchCpuReference) {
+    writeColourTexture();
+    const Scene scene = sceneFrom(kFrontOrtho, kTwoLights,
+                                  R"({"name": "m", "model": "cook_torrance", "textures": {
+        "diffuse_albedo": {"type": "image", "file": "colour.png", "tiling": [3, 3], "offset": [-1, -1], "filter": "bilinear",
+                           "wrap_u": "clamp_to_edge", "wrap_v": "mirrored_repeat"},
+        "roughness": {"type": "image", "file": "colour.png", "channel": "r", "min": 0.1, "max": 0.6, "tiling": [3, 3],
+                      "offset": [-1, -1], "filter": "bilinear", "min_filter": "nearest_mipmap_linear", "wrap_u": "mirrored_repeat"}}})",
+                                  R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})");
+    auto images = test::sharedHeadless().render(scene, 128, 128);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    (void)writeDisplayImage(images->display, textureDirectory() + "/wrapped_plane.png");
+    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
+    std::printf("wrapped plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
+                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 8000);
+}
+
+// The occlusion map (glTF's occlusionTexture) scales the ambient light and no other: under a sun
+// alone the plane is the same with or without it, under ambient light it agrees with the CPU.
+TEST(TextureGpu, OcclusionMapDarkensOnlyTheAmbientLight) {
+    writeColourTexture();
+    const std::string occluded = R"({"name": "m", "model": "lambert", "textures": {
+        "occlusion": {"type": "image", "file": "colour.png", "channel": "g", "min": 0.1, "filter": "bilinear"}}})";
+    const char* plane = R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})";
+    const char* ambient = R"({"type": "ambient", "radiance": 0.5}, {"type": "directional", "direction": [0.3, 0, -1], "irradiance": 2})";
+    const Scene lit = sceneFrom(kFrontOrtho, ambient, occluded, plane);
+    auto images = test::sharedHeadless().render(lit, 64, 64);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    const auto agreement = test::compareWithReference(lit, images->radiance, 5e-3f);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 3000);
+    // The colour texture's green falls from 1 at the top to 0.03 at the bottom: so does the ambient part.
+    auto unoccluded = test::sharedHeadless().render(sceneFrom(kFrontOrtho, ambient, R"({"name": "m", "model": "lambert"})", plane), 64, 64);
+    ASSERT_TRUE(unoccluded.ok());
+    EXPECT_LT(images->radiance.at(32, 56).g, unoccluded->radiance.at(32, 56).g - 0.05f);
+    EXPECT_NEAR(images->radiance.at(32, 6).g, unoccluded->radiance.at(32, 6).g, 0.02f);
+    auto sunOnly = test::sharedHeadless().render(sceneFrom(kFrontOrtho, kSun, occluded, plane), 64, 64);
+    auto plain = test::sharedHeadless().render(sceneFrom(kFrontOrtho, kSun, R"({"name": "m", "model": "lambert"})", plane), 64, 64);
+    ASSERT_TRUE(sunOnly.ok() && plain.ok());
+    EXPECT_EQ(sunOnly->display.pixels, plain->display.pixels);
 }
 
 // A normal map of one tangent-space normal tilted 30° towards +tangent (+x on this plane):

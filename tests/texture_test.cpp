@@ -66,6 +66,35 @@ TEST(TextureImage, SamplesBilinearWithRepeatLikeOpenGl) {
     EXPECT_FLOAT_EQ(sampleImage(image, {0.6f, 0.5f}, false).r, 1.0f);  // nearest
 }
 
+// OpenGL 4.6 Table 8.20 along each axis: CLAMP_TO_EDGE holds the edge texel, MIRRORED_REPEAT
+// runs the image backwards in every other repetition.
+TEST(TextureImage, ClampsAndMirrorsLikeOpenGl) {
+    TextureImage image;
+    image.width = 4, image.height = 1;
+    image.rgba = {0, 0, 0, 1, 1, 1, 1, 1, 2, 2, 2, 1, 3, 3, 3, 1};  // texel i holds i
+    const auto nearest = [&](float u, TextureWrap wrap) { return sampleImage(image, {u, 0.5f}, false, wrap, wrap).r; };
+    EXPECT_EQ(nearest(1.1f, TextureWrap::Repeat), 0.0f);
+    EXPECT_EQ(nearest(1.1f, TextureWrap::ClampToEdge), 3.0f);
+    EXPECT_EQ(nearest(-0.4f, TextureWrap::ClampToEdge), 0.0f);
+    EXPECT_EQ(nearest(1.1f, TextureWrap::MirroredRepeat), 3.0f);   // 1.1: texel 4 → the mirrored 3
+    EXPECT_EQ(nearest(1.6f, TextureWrap::MirroredRepeat), 1.0f);   // texel 6 → 1
+    EXPECT_EQ(nearest(2.1f, TextureWrap::MirroredRepeat), 0.0f);   // texel 8: forwards again
+    EXPECT_EQ(nearest(-0.1f, TextureWrap::MirroredRepeat), 0.0f);  // texel −1 → 0
+    EXPECT_EQ(nearest(-0.6f, TextureWrap::MirroredRepeat), 2.0f);  // texel −3 → 2
+    // Bilinear at u = 0 blends the last and first texels (repeat), the first with itself
+    // (clamp) or with its mirror image, itself (mirror).
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.0f, 0.5f}, true).r, 1.5f);
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.0f, 0.5f}, true, TextureWrap::ClampToEdge, TextureWrap::Repeat).r, 0.0f);
+    EXPECT_FLOAT_EQ(sampleImage(image, {0.0f, 0.5f}, true, TextureWrap::MirroredRepeat, TextureWrap::Repeat).r, 0.0f);
+    EXPECT_FLOAT_EQ(sampleImage(image, {1.0f, 0.5f}, true, TextureWrap::MirroredRepeat, TextureWrap::Repeat).r, 3.0f);
+    // u and v wrap independently.
+    TextureImage column;
+    column.width = 1, column.height = 2;
+    column.rgba = {0, 0, 0, 1, 1, 1, 1, 1};
+    EXPECT_EQ(sampleImage(column, {1.9f, 1.2f}, false, TextureWrap::ClampToEdge, TextureWrap::Repeat).r, 0.0f);
+    EXPECT_EQ(sampleImage(column, {1.9f, 1.2f}, false, TextureWrap::Repeat, TextureWrap::ClampToEdge).r, 1.0f);
+}
+
 TEST(TextureImage, RefusesCorruptTruncatedAndNonFiniteFiles) {
     const std::string directory = test::outputDirectory("textures");
     const std::string corrupt = directory + "/corrupt.png";
@@ -157,6 +186,40 @@ TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
     EXPECT_EQ(material->textures[0].colorSpace, TextureColorSpace::Srgb);     // colour default
     EXPECT_EQ(material->textures[1].colorSpace, TextureColorSpace::Linear);   // normal map default
     EXPECT_EQ(material->textures[0].filter, TextureFilter::Anisotropic);
+    EXPECT_EQ(material->textures[0].wrapU, TextureWrap::Repeat);  // files without wrap keys repeat
+    EXPECT_EQ(material->textures[0].minFilter, TextureMinFilter::Default);
+    EXPECT_FALSE(materialToJson(*material)["textures"]["albedo"].contains("wrap_u"));  // written only when not repeat
+
+    // Wrap modes and a minification filter other than the filter's survive the file.
+    auto sampled = parseMaterial(materialJson(R"({"albedo": {"type": "image", "file": "maps/colour.png", "filter": "bilinear",
+        "min_filter": "nearest_mipmap_linear", "wrap_u": "clamp_to_edge", "wrap_v": "mirrored_repeat"}})"), directory + "/s.json");
+    ASSERT_TRUE(sampled.ok()) << sampled.error().format();
+    EXPECT_EQ(sampled->textures[0].wrapU, TextureWrap::ClampToEdge);
+    EXPECT_EQ(sampled->textures[0].wrapV, TextureWrap::MirroredRepeat);
+    EXPECT_EQ(sampled->textures[0].minFilter, TextureMinFilter::NearestMipmapLinear);
+    auto resampled = parseMaterial(materialToJson(*sampled, directory + "/s.json").dump(), directory + "/s.json");
+    ASSERT_TRUE(resampled.ok()) << resampled.error().format();
+    EXPECT_EQ(materialToJson(*resampled), materialToJson(*sampled));
+    auto badWrap = parseMaterial(materialJson(R"({"albedo": {"type": "image", "file": "maps/colour.png", "wrap_u": "clamp"}})"),
+                                 directory + "/w.json");
+    ASSERT_FALSE(badWrap.ok());
+    EXPECT_NE(badWrap.error().format().find("wrap_u"), std::string::npos) << badWrap.error().format();
+
+    // The occlusion map is a scalar texture of its own: channel and range, slot before the normal map.
+    auto occluded = parseMaterial(materialJson(R"({"normal": {"type": "image", "file": "maps/colour.png"},
+        "occlusion": {"type": "image", "file": "maps/colour.png", "channel": "g", "min": 0.25}})"), directory + "/o.json");
+    ASSERT_TRUE(occluded.ok()) << occluded.error().format();
+    ASSERT_EQ(occluded->textures.size(), 2u);
+    EXPECT_EQ(occluded->textures[0].parameter, kOcclusionMapKey);
+    EXPECT_EQ(occluded->textures[0].range, glm::vec2(0.25f, 1.0f));
+    EXPECT_EQ(materialToJson(*occluded, directory + "/o.json")["textures"]["occlusion"]["channel"], "g");
+    auto reoccluded = parseMaterial(materialToJson(*occluded, directory + "/o.json").dump(), directory + "/o.json");
+    ASSERT_TRUE(reoccluded.ok()) << reoccluded.error().format();
+    EXPECT_EQ(materialToJson(*reoccluded), materialToJson(*occluded));
+    TexturePoint bottomLeft;
+    bottomLeft.uv = {0.125f, 0.25f};  // the centre of the bottom row's first texel: grey 0
+    EXPECT_FLOAT_EQ(ambientOcclusion(*occluded, bottomLeft), 0.25f);
+    EXPECT_FLOAT_EQ(ambientOcclusion(*material, bottomLeft), 1.0f);  // none: unoccluded
 
     const std::string saved = directory + "/maps/b.material.json";  // another folder
     ASSERT_TRUE(saveMaterial(*material, saved).ok());

@@ -18,6 +18,7 @@
 #include "editor/texture_panel.h"
 #include "interchange/custom_brdf.h"
 #include "interchange/measured_brdf.h"
+#include "texture/texture_edit.h"
 
 namespace glint {
 namespace {
@@ -273,6 +274,11 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
         ImGui::PopTextWrapPos();
         return changed;
     }
+    std::string unused;
+    ImGui::TextUnformatted("Ambient occlusion");
+    ImGui::SameLine();
+    changed |= drawTextureControls(material, kOcclusionMapKey, texturableParam(material.model, kOcclusionMapKey, unused),
+                                   textureFileRequest, refusal);
     ImGui::TextUnformatted("Normal map");
     ImGui::SameLine();
     changed |= drawTextureControls(material, kNormalMapKey, nullptr, textureFileRequest, refusal);

@@ -16,6 +16,7 @@ namespace {
 
 constexpr const char* kKindLabels[] = {"Image", "Checker", "Marble", "Wood"};  // order of TextureKind
 constexpr const char* kFilterLabels[] = {"Nearest", "Bilinear", "Trilinear (mipmaps)", "Anisotropic"};
+constexpr const char* kWrapLabels[] = {"Repeat", "Clamp to edge", "Mirrored repeat"};  // order of TextureWrap
 constexpr const char* kChannelLabels[] = {"R", "G", "B", "A"};
 constexpr const char* kSpaceLabels[] = {"sRGB", "Linear"};
 
@@ -76,6 +77,8 @@ bool drawImageSettings(MaterialTexture& texture, const ParamSpec* spec, std::str
         else refusal = image.error().format();
     }
     changed |= combo("Filter", texture.filter, kFilterLabels);
+    changed |= combo("Wrap u", texture.wrapU, kWrapLabels);
+    changed |= combo("Wrap v", texture.wrapV, kWrapLabels);
     changed |= drawPositive("Tiling", texture.tiling, refusal);
     if (spec && spec->kind == ParamKind::Scalar) {
         changed |= combo("Channel", texture.channel, kChannelLabels);

@@ -317,15 +317,16 @@ ModelSwitch switchModel(const Material& source, BrdfModel target) {
     apply(extract(source), applier, target);
     std::erase(kept, std::string());
     result.kept = std::move(kept);
-    // Textures follow the parameter they drove where it was copied unchanged; the normal map always.
+    // Textures follow the parameter they drove where it was copied unchanged; the normal and
+    // occlusion maps always.
     for (const MaterialTexture& texture : source.textures) {
         const auto copied = applier.unchanged.find(texture.parameter);
-        if (texture.parameter != kNormalMapKey && copied == applier.unchanged.end()) {
+        if (!isSurfaceMapKey(texture.parameter) && copied == applier.unchanged.end()) {
             result.dropped.push_back("the texture on " + texture.parameter);
             continue;
         }
         result.material.textures.push_back(texture);
-        if (texture.parameter != kNormalMapKey) result.material.textures.back().parameter = copied->second;
+        if (!isSurfaceMapKey(texture.parameter)) result.material.textures.back().parameter = copied->second;
     }
     const auto table = modelInfo(source.model).params;
     for (size_t i = 0; i < table.size(); ++i) {

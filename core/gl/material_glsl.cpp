@@ -2,6 +2,7 @@
 #include "gl/material_glsl.h"
 
 #include "texture/procedural.h"
+#include "util/diagnostic.h"
 
 namespace glint {
 namespace {
@@ -39,7 +40,9 @@ TexturedParams TexturedParams::of(const Material& material) {
     const auto table = modelInfo(material.model).params;
     for (const MaterialTexture& texture : material.textures) {
         const int index = findParam(table, texture.parameter);
-        textured.mask |= 1u << (index < 0 ? kNormalMapBit : index);
+        GLINT_CHECK(index < kProceduralBit);  // the bits above the table's are the maps' and the procedural flag
+        textured.mask |= 1u << (index >= 0 ? index : texture.parameter == kNormalMapKey ? kNormalMapBit : kOcclusionMapBit);
+        if (texture.kind != TextureKind::Image) textured.mask |= 1u << kProceduralBit;
     }
     return textured;
 }
@@ -81,8 +84,12 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
     }
     std::string textures;
     if (textured.mask != 0) {
-        textures = "#define GLINT_TEXTURED 1\n" + perlinTableGlsl() + "#include \"common/textures.glsl\"\n";
+        textures = "#define GLINT_TEXTURED 1\n";
+        if (textured.hasProcedural()) textures += "#define GLINT_PROCEDURAL_TEXTURES 1\n" + perlinTableGlsl();
+        textures += "#include \"common/textures.glsl\"\n";
         if (textured.hasNormalMap()) textures += "#define GLINT_NORMAL_MAP_SLOT " + std::to_string(textured.normalMapSlot()) + "\n";
+        if (textured.hasOcclusionMap())
+            textures += "#define GLINT_OCCLUSION_SLOT " + std::to_string(textured.slotOf(TexturedParams::kOcclusionMapBit)) + "\n";
     }
     return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures + constants +
            "struct MaterialParams {\n" + fields + "};\n\n" +

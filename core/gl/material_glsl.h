@@ -15,17 +15,25 @@
 
 namespace glint {
 
-// Which parameters of a material are textured: bit i for the table's parameter i, bit 31 for
-// the normal map. Programs are built per model, MSAA samples and this mask.
+// Which parameters of a material are textured: bit i for the table's parameter i, bit 30 for
+// the occlusion map, bit 31 for the normal map, and bit 29 (no slot) when any texture is procedural, so that a program of image
+// textures alone carries no Perlin noise (llvmpipe compiles such a program about five times
+// faster). Programs are built per model, MSAA samples and this mask.
 struct TexturedParams {
+    static constexpr int kProceduralBit = 29;
+    static constexpr int kOcclusionMapBit = 30;
     static constexpr int kNormalMapBit = 31;
     std::uint32_t mask = 0;
 
     static TexturedParams of(const Material& material);
     bool has(int paramIndex) const { return (mask >> paramIndex) & 1u; }
     bool hasNormalMap() const { return has(kNormalMapBit); }
+    bool hasOcclusionMap() const { return has(kOcclusionMapBit); }
+    bool hasProcedural() const { return has(kProceduralBit); }
     // Slot = number of textured parameters before it in table order.
-    int slotOf(int paramIndex) const { return std::popcount(mask & ((1u << paramIndex) - 1u)); }
+    int slotOf(int paramIndex) const {
+        return std::popcount(mask & ((1u << paramIndex) - 1u) & ~(1u << kProceduralBit));
+    }
     int normalMapSlot() const { return slotOf(kNormalMapBit); }
 };
 

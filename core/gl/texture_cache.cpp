@@ -10,8 +10,37 @@ namespace glint {
 // hardware limit (and what llvmpipe offers).
 constexpr float kAnisotropyCap = 16.0f;
 
+namespace {
+
+GLint glWrap(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::Repeat: return GL_REPEAT;
+        case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+        case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    }
+    return GL_REPEAT;
+}
+
+GLint glMinFilter(const MaterialTexture& texture) {
+    switch (texture.minFilter) {
+        case TextureMinFilter::Default: break;
+        case TextureMinFilter::Nearest: return GL_NEAREST;
+        case TextureMinFilter::Linear: return GL_LINEAR;
+        case TextureMinFilter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
+        case TextureMinFilter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
+        case TextureMinFilter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+        case TextureMinFilter::LinearMipmapLinear: return GL_LINEAR_MIPMAP_LINEAR;
+    }
+    if (texture.filter == TextureFilter::Nearest) return GL_NEAREST;
+    if (texture.filter == TextureFilter::Bilinear) return GL_LINEAR;  // level 0 only
+    return GL_LINEAR_MIPMAP_LINEAR;
+}
+
+}  // namespace
+
 TextureCache::~TextureCache() {
     for (auto& [key, texture] : textures_) glDeleteTextures(1, &texture);
+    for (auto& [key, sampler] : samplers_) glDeleteSamplers(1, &sampler);
 }
 
 float TextureCache::maxAnisotropy() {
@@ -49,8 +78,6 @@ GLuint TextureCache::upload(const TextureImage& image) {
     // Rows are bottom-up in TextureImage, as GL expects; float keeps the CPU reference's values.
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width, image.height, 0, GL_RGBA, GL_FLOAT, image.rgba.data());
     glGenerateMipmap(GL_TEXTURE_2D);  // box-filtered chain down to 1×1
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
     textures_[{image.path, image.modifiedAt, image.colorSpace}] = texture;
     ++uploads_;
     return texture;
@@ -62,15 +89,24 @@ void TextureCache::bind(GLenum unit, const MaterialTexture& texture) {
     auto found = textures_.find({image.path, image.modifiedAt, image.colorSpace});
     if (found != textures_.end()) glBindTexture(GL_TEXTURE_2D, found->second);
     else upload(image);
-    GLint minFilter = GL_LINEAR_MIPMAP_LINEAR, magFilter = GL_LINEAR;
-    if (texture.filter == TextureFilter::Nearest) minFilter = magFilter = GL_NEAREST;
-    if (texture.filter == TextureFilter::Bilinear) minFilter = GL_LINEAR;  // level 0 only
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magFilter);
+    // A sampler object, not the texture's own state: one image may be sampled two ways at once.
+    glBindSampler(unit - GL_TEXTURE0, sampler(texture));
+}
+
+GLuint TextureCache::sampler(const MaterialTexture& texture) {
+    const SamplerKey key{texture.filter, texture.minFilter, texture.wrapU, texture.wrapV};
+    if (auto found = samplers_.find(key); found != samplers_.end()) return found->second;
+    GLuint sampler = 0;
+    glGenSamplers(1, &sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, glMinFilter(texture));
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, texture.filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, glWrap(texture.wrapU));
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, glWrap(texture.wrapV));
     const float anisotropy = maxAnisotropy();
     if (anisotropy > 1.0f)
-        glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY,
-                        texture.filter == TextureFilter::Anisotropic ? anisotropy : 1.0f);
+        glSamplerParameterf(sampler, GL_TEXTURE_MAX_ANISOTROPY, texture.filter == TextureFilter::Anisotropic ? anisotropy : 1.0f);
+    samplers_[key] = sampler;
+    return sampler;
 }
 
 }  // namespace glint

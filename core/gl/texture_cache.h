@@ -1,7 +1,8 @@
 // TextureCache: GL textures for decoded texture images, uploaded once per (path, modification
-// time, colour space) as linear RGBA32F with a full mipmap chain, and the sampler state of each
-// texture's filter (nearest, bilinear, trilinear, anisotropic where the context offers
-// GL_ARB/EXT_texture_filter_anisotropic; trilinear otherwise). Decoding is core/texture.
+// time, colour space) as linear RGBA32F with a full mipmap chain, and one sampler object per
+// sampler state: the texture's filter (nearest, bilinear, trilinear, anisotropic where the context
+// offers GL_ARB/EXT_texture_filter_anisotropic; trilinear otherwise), its minification filter and
+// its wrap modes along u and v. Decoding is core/texture.
 #pragma once
 
 #include <map>
@@ -21,8 +22,8 @@ public:
     TextureCache(const TextureCache&) = delete;
     TextureCache& operator=(const TextureCache&) = delete;
 
-    // Binds the texture's image to `unit` with its filter. An image whose file changed since it
-    // was uploaded replaces the old upload.
+    // Binds the texture's image to `unit` with its sampler state. An image whose file changed
+    // since it was uploaded replaces the old upload.
     void bind(GLenum unit, const MaterialTexture& texture);
 
     // Largest anisotropy the context supports (1 when the extension is absent); queried on first use.
@@ -32,9 +33,12 @@ public:
 
 private:
     using Key = std::tuple<std::string, long long, TextureColorSpace>;
+    using SamplerKey = std::tuple<TextureFilter, TextureMinFilter, TextureWrap, TextureWrap>;
     GLuint upload(const TextureImage& image);
+    GLuint sampler(const MaterialTexture& texture);
 
     std::map<Key, GLuint> textures_;
+    std::map<SamplerKey, GLuint> samplers_;
     int uploads_ = 0;
     float maxAnisotropy_ = 0.0f;  // 0: not queried yet
 };

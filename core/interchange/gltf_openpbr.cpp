@@ -33,6 +33,7 @@ constexpr TextureSlot kTextureSlots[] = {
     {"pbrMetallicRoughness", "metallicRoughnessTexture", "specular_roughness", TextureChannel::G},
     {"pbrMetallicRoughness", "metallicRoughnessTexture", "base_metalness", TextureChannel::B},
     {"", "normalTexture", kNormalMapKey},
+    {"", "occlusionTexture", kOcclusionMapKey},
     {"", "emissiveTexture", "emission_color", TextureChannel::R, true},
     {"KHR_materials_specular", "specularTexture", "specular_weight", TextureChannel::A},
     {"KHR_materials_specular", "specularColorTexture", "specular_color", TextureChannel::R, true},
@@ -48,7 +49,6 @@ constexpr TextureSlot kTextureSlots[] = {
 
 // Read and kept for export, not rendered: {extension ("" core), key}.
 constexpr std::pair<const char*, const char*> kKeptTextures[] = {
-    {"", "occlusionTexture"},
     {"KHR_materials_clearcoat", "clearcoatNormalTexture"},
     {"KHR_materials_volume", "thicknessTexture"},
 };
@@ -92,7 +92,6 @@ struct Reading {
                 infos[slot.key] = *info;
             }
             const GltfTextureInfo& info = infos[slot.key];
-            if (!info.repeats) warn(info.pointer, "the sampler clamps or mirrors; Glint repeats textures (REPEAT)");
             if (info.texCoord != 0)
                 warn(info.pointer, "texCoord " + std::to_string(info.texCoord) + " is read as texCoord 0: Glint's shapes have one UV set");
             auto texture = gltfImageTexture(info, slot.parameter, slot.srgb ? TextureColorSpace::Srgb : TextureColorSpace::Linear);
@@ -104,6 +103,8 @@ struct Reading {
             if (auto range = ranges.find(slot.parameter); range != ranges.end()) texture->range = range->second;
             if (auto factor = colorFactors.find(slot.parameter); factor != colorFactors.end()) texture->colorFactor = factor->second;
             if (std::string(slot.parameter) == kNormalMapKey) texture->normalScale = info.scale;
+            // glTF: occlusion = 1 + strength·(texel − 1) = mix(1 − strength, 1, texel).
+            if (std::string(slot.parameter) == kOcclusionMapKey) texture->range = {1.0f - info.scale, 1.0f};
             textures.push_back(std::move(*texture));
         }
     }
@@ -476,7 +477,12 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
         } else {
             object[slot->key] = textures.textureInfo(texture, extensionsUsed);
         }
-        if (parameter == kNormalMapKey) continue;
+        if (parameter == kOcclusionMapKey) {
+            if (texture.range.y != 1.0f || texture.channel != TextureChannel::R)
+                w.lost("glTF's occlusionTexture reads red as 1 + strength·(texel − 1); the occlusion map's maximum or channel is not kept");
+            if (texture.range.x != 0.0f) object[slot->key]["strength"] = 1.0f - texture.range.x;
+        }
+        if (isSurfaceMapKey(parameter)) continue;
         if (color) {
             const json factor = vec3Json(texture.colorFactor);
             if (parameter == "base_color") pbr["baseColorFactor"] = {factor[0], factor[1], factor[2], 1.0};

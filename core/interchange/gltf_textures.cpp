@@ -13,7 +13,11 @@ namespace {
 using nlohmann::json;
 
 // OpenGL enums as glTF samplers write them (glTF 2.0 §5.26).
-constexpr int kNearest = 9728, kLinear = 9729, kLinearMipmapLinear = 9987, kRepeat = 10497;
+constexpr int kNearest = 9728, kLinear = 9729, kLinearMipmapLinear = 9987;
+// minFilter values in the order of TextureMinFilter after Default.
+constexpr int kMinFilters[] = {kNearest, kLinear, 9984, 9985, 9986, kLinearMipmapLinear};
+// wrapS/wrapT values in the order of TextureWrap: REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT.
+constexpr int kWraps[] = {10497, 33071, 33648};
 
 // RFC 3986 percent-encoding of a relative URI path, and its decoding.
 std::string percentEncoded(const std::string& path) {
@@ -40,12 +44,40 @@ std::string percentDecoded(const std::string& uri) {
     return out;
 }
 
-TextureFilter filterOf(const json& sampler) {
-    const int magnification = sampler.value("magFilter", kLinear);
-    const int minification = sampler.value("minFilter", kLinearMipmapLinear);
-    if (magnification == kNearest) return TextureFilter::Nearest;
-    if (minification == kNearest || minification == kLinear) return TextureFilter::Bilinear;
-    return TextureFilter::Trilinear;
+// The minification filter Glint's `filter` implies (texture_cache.cpp binds the same).
+int impliedMinFilter(TextureFilter filter) {
+    return filter == TextureFilter::Nearest ? kNearest : filter == TextureFilter::Bilinear ? kLinear : kLinearMipmapLinear;
+}
+
+int minFilterOf(const MaterialTexture& texture) {
+    return texture.minFilter == TextureMinFilter::Default ? impliedMinFilter(texture.filter)
+                                                          : kMinFilters[static_cast<int>(texture.minFilter) - 1];
+}
+
+// The index of `value` in `allowed`, or a located error naming the sampler's member.
+template <size_t N>
+int indexOf(const ObjectReader& reader, const json& sampler, size_t samplerIndex, const char* member, const int (&allowed)[N],
+            int fallback) {
+    if (!sampler.contains(member)) return fallback;
+    for (size_t i = 0; i < N; ++i)
+        if (sampler[member].is_number_integer() && sampler[member].get<int>() == allowed[i]) return static_cast<int>(i);
+    reader.fail("index", "samplers[" + std::to_string(samplerIndex) + "]." + member + " " + sampler[member].dump() +
+                             " is not a value glTF 2.0 allows (§5.26)");
+}
+
+// glTF's magFilter and minFilter as Glint's filter (nearest when magnifying by NEAREST, else
+// bilinear without mipmaps, trilinear with) and the exact minFilter where it is another one.
+void readSampler(const ObjectReader& reader, const json& sampler, size_t samplerIndex, GltfTextureInfo& info) {
+    static constexpr int kMagFilters[] = {kNearest, kLinear};
+    const bool nearest = indexOf(reader, sampler, samplerIndex, "magFilter", kMagFilters, 1) == 0;
+    const int minIndex = indexOf(reader, sampler, samplerIndex, "minFilter", kMinFilters, -1);
+    const int minification = minIndex < 0 ? kLinearMipmapLinear : kMinFilters[minIndex];
+    info.filter = nearest ? TextureFilter::Nearest
+                  : minification == kNearest || minification == kLinear ? TextureFilter::Bilinear
+                                                                         : TextureFilter::Trilinear;
+    if (minIndex >= 0 && minification != impliedMinFilter(info.filter)) info.minFilter = static_cast<TextureMinFilter>(minIndex + 1);
+    info.wrapU = static_cast<TextureWrap>(indexOf(reader, sampler, samplerIndex, "wrapS", kWraps, 0));
+    info.wrapV = static_cast<TextureWrap>(indexOf(reader, sampler, samplerIndex, "wrapT", kWraps, 0));
 }
 
 // The entry `index` of the root array `name`, or a located error at `reader`'s `key`.
@@ -95,9 +127,8 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
     }
     if (texture.contains("sampler")) {
         if (!texture["sampler"].is_number_unsigned()) reader.fail("index", "texture " + std::to_string(index) + ": \"sampler\" is not an index");
-        const json& sampler = entryOf(reader, "index", root, "samplers", texture["sampler"].get<size_t>());
-        info.filter = filterOf(sampler);
-        info.repeats = sampler.value("wrapS", kRepeat) == kRepeat && sampler.value("wrapT", kRepeat) == kRepeat;
+        const size_t samplerIndex = texture["sampler"].get<size_t>();
+        readSampler(reader, entryOf(reader, "index", root, "samplers", samplerIndex), samplerIndex, info);
     }
     info.texCoord = reader.integer("texCoord", 0, 0, 1'000'000);
     if (reader.has("scale")) info.scale = static_cast<float>(reader.number("scale", 1.0));
@@ -131,6 +162,9 @@ Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std:
     texture.file = info.file;
     texture.colorSpace = colorSpace;
     texture.filter = info.filter;
+    texture.minFilter = info.minFilter;
+    texture.wrapU = info.wrapU;
+    texture.wrapV = info.wrapV;
     applyGltfUvTransform(texture, info.transform);
     auto image = loadTextureImage(texture.file, colorSpace);
     if (!image) return makeError(info.pointer + ": " + image.error().format());
@@ -138,7 +172,7 @@ Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std:
     return texture;
 }
 
-int GltfTextureWriter::textureIndex(const std::string& uri, TextureFilter filter) {
+int GltfTextureWriter::textureIndex(const std::string& uri, const MaterialTexture& sampling) {
     int image = -1;
     for (size_t i = 0; i < images_.size(); ++i)
         if (images_[i]["uri"] == uri) image = static_cast<int>(i);
@@ -146,9 +180,9 @@ int GltfTextureWriter::textureIndex(const std::string& uri, TextureFilter filter
         images_.push_back({{"uri", uri}});
         image = static_cast<int>(images_.size()) - 1;
     }
-    const json sampler = filter == TextureFilter::Nearest    ? json{{"magFilter", kNearest}, {"minFilter", kNearest}}
-                         : filter == TextureFilter::Bilinear ? json{{"magFilter", kLinear}, {"minFilter", kLinear}}
-                                                             : json{{"magFilter", kLinear}, {"minFilter", kLinearMipmapLinear}};
+    json sampler = {{"magFilter", sampling.filter == TextureFilter::Nearest ? kNearest : kLinear}, {"minFilter", minFilterOf(sampling)}};
+    if (sampling.wrapU != TextureWrap::Repeat) sampler["wrapS"] = kWraps[static_cast<int>(sampling.wrapU)];
+    if (sampling.wrapV != TextureWrap::Repeat) sampler["wrapT"] = kWraps[static_cast<int>(sampling.wrapV)];
     int samplerIndex = -1;
     for (size_t i = 0; i < samplers_.size(); ++i)
         if (samplers_[i] == sampler) samplerIndex = static_cast<int>(i);
@@ -164,7 +198,7 @@ int GltfTextureWriter::textureIndex(const std::string& uri, TextureFilter filter
 }
 
 json GltfTextureWriter::textureInfo(const MaterialTexture& texture, std::vector<std::string>& extensionsUsed) {
-    json info = {{"index", textureIndex(percentEncoded(referencedPathFor(texture.file, targetFile_)), texture.filter)}};
+    json info = {{"index", textureIndex(percentEncoded(referencedPathFor(texture.file, targetFile_)), texture)}};
     if (texture.tiling != glm::vec2(1.0f) || texture.rotation != 0.0f || texture.offset != glm::vec2(0.0f)) {
         const GltfUvTransform transform = gltfUvTransformOf(texture);
         json values = json::object();
@@ -179,7 +213,7 @@ json GltfTextureWriter::textureInfo(const MaterialTexture& texture, std::vector<
 
 json GltfTextureWriter::keptTextureInfo(const std::string& fileOrUri, json members) {
     const std::string uri = fileOrUri.rfind("data:", 0) == 0 ? fileOrUri : percentEncoded(referencedPathFor(fileOrUri, targetFile_));
-    members["index"] = textureIndex(uri, TextureFilter::Trilinear);
+    members["index"] = textureIndex(uri, MaterialTexture{});
     return members;
 }
 

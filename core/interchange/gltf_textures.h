@@ -32,7 +32,8 @@ struct GltfTextureInfo {
     std::string uri;        // the image's URI as written (percent-decoded); empty for a bufferView image
     std::string file;       // absolute path of a file URI; empty for data URIs and bufferViews
     TextureFilter filter = TextureFilter::Trilinear;
-    bool repeats = true;    // both wrap modes REPEAT (Glint's only addressing)
+    TextureMinFilter minFilter = TextureMinFilter::Default;
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;  // wrapS, wrapT
     int texCoord = 0;
     GltfUvTransform transform;
     float scale = 1.0f;     // normalTexture.scale / occlusionTexture.strength
@@ -44,7 +45,7 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
                                                    const std::string& folder);
 
 // A MaterialTexture on `parameter` from the texture's image (decoded; an error names the file
-// and the textureInfo), with its filter and UV transform.
+// and the textureInfo), with its sampler state and UV transform.
 Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std::string& parameter, TextureColorSpace colorSpace);
 
 // Collects a written glTF's images, samplers and textures (one each per distinct image and
@@ -62,7 +63,7 @@ public:
     void writeInto(nlohmann::json& gltf) const;
 
 private:
-    int textureIndex(const std::string& uri, TextureFilter filter);
+    int textureIndex(const std::string& uri, const MaterialTexture& sampling);
     std::string targetFile_;
     nlohmann::json images_ = nlohmann::json::array(), samplers_ = nlohmann::json::array(), textures_ = nlohmann::json::array();
 };

@@ -126,6 +126,11 @@ void writeTextures(const Material& material, const std::string& graphName, const
     for (const MaterialTexture& texture : material.textures) {
         const bool normal = texture.parameter == kNormalMapKey;
         const int index = normal ? -1 : findParam(table, texture.parameter);
+        if (texture.parameter == kOcclusionMapKey) {
+            warnings.push_back(makeError("warning: material '" + material.name +
+                                         "': the occlusion map is not written (open_pbr_surface has no ambient-occlusion input)"));
+            continue;
+        }
         if (texture.kind != TextureKind::Image) {
             warnings.push_back(makeError("warning: material '" + material.name + "': the procedural texture on '" + texture.parameter +
                                          "' is not written (MaterialX would need its own node graph); the constant is"));

@@ -131,7 +131,9 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     // come from its measured directional albedo.
     const glm::vec3 ambientFactor = material.measured ? measuredAmbientReflectance(*material.measured, towardsViewer, frame)
                                                       : ambientReflectance(material.model, values, towardsViewer, frame);
-    radiance += ambientFactor * ambient;
+    // The occlusion map (glTF's occlusionTexture) scales the ambient and environment light only.
+    const float occlusion = ambientOcclusion(material, texturePoint);
+    radiance += occlusion * ambientFactor * ambient;
     // Environment light: the GPU's image-based lighting, or sampled.
     const glm::vec3 unoccludedEnvironment =
         material.measured ? measuredEnvironmentLighting(*material.measured, towardsViewer, frame, scene.environment)
@@ -140,7 +142,8 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
                                         options.environmentSamples)
             : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
     // ...less what the scene's spheres cover (sphere_occlusion.h).
-    const glm::vec3 environment = unoccludedEnvironment * environmentVisibility(occludingSpheres(scene), hit.position, frame.normal);
+    const glm::vec3 environment =
+        occlusion * unoccludedEnvironment * environmentVisibility(occludingSpheres(scene), hit.position, frame.normal);
     radiance += environment;
     // Delta lobes (mirror, glass), traced against the environment or the background.
     const Shape& shape = scene.objects.at(hit.objectIndex).shape;

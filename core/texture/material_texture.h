@@ -13,12 +13,22 @@ namespace glint {
 
 // The key of the tangent-space normal map in a material's "textures" (not a table parameter).
 inline constexpr const char* kNormalMapKey = "normal";
+// The key of the ambient-occlusion map (glTF's occlusionTexture; not a table parameter): a scalar
+// in [0, 1] by which only the ambient and environment light are scaled, never the lights'.
+inline constexpr const char* kOcclusionMapKey = "occlusion";
+// Whether a "textures" key is one of these maps rather than a parameter of the model's table.
+inline bool isSurfaceMapKey(const std::string& key) { return key == kNormalMapKey || key == kOcclusionMapKey; }
 // Textures per material: each takes one texture unit and one slot of uniforms in the shader.
 inline constexpr int kMaxMaterialTextures = 8;
 
 enum class TextureKind { Image, Checker, Marble, Wood };
 enum class TextureColorSpace { Srgb, Linear };  // how an image file's values are encoded
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+// OpenGL's minification filters (glTF samplers' minFilter); Default: the one `filter` implies
+// (nearest: NEAREST, bilinear: LINEAR, trilinear and anisotropic: LINEAR_MIPMAP_LINEAR).
+enum class TextureMinFilter { Default, Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest, NearestMipmapLinear, LinearMipmapLinear };
+// OpenGL's addressing outside [0, 1] along u or v (glTF samplers' wrapS, wrapT).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
 enum class TextureChannel { R, G, B, A };  // where a scalar parameter reads an image
 
 // Decoded image, linear RGBA floats, rows from the BOTTOM of the picture up (v = 0 is the
@@ -36,13 +46,15 @@ struct TextureImage {
 };
 
 struct MaterialTexture {
-    std::string parameter;  // a Scalar or Color name of the model's table, or kNormalMapKey
+    std::string parameter;  // a Scalar or Color name of the model's table, kOcclusionMapKey or kNormalMapKey
     TextureKind kind = TextureKind::Checker;
     // Image
     std::string file;  // absolute path of the image (written relative to the scene file)
     TextureColorSpace colorSpace = TextureColorSpace::Srgb;
     TextureChannel channel = TextureChannel::R;  // scalar parameters only
-    TextureFilter filter = TextureFilter::Trilinear;
+    TextureFilter filter = TextureFilter::Trilinear;  // magnification: nearest for Nearest, else linear
+    TextureMinFilter minFilter = TextureMinFilter::Default;
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
     glm::vec2 range{0.0f, 1.0f};  // scalar parameters: value = mix(range.x, range.y, texel)
     std::shared_ptr<const TextureImage> image;  // decoded when the material is read
     // Image and checker: the UV transform uv' = R(rotation)·(tiling ⊙ uv) + offset, in Glint's UV

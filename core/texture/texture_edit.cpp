@@ -9,9 +9,19 @@
 
 namespace glint {
 
+namespace {
+
+// The occlusion map's value: 1 (unoccluded) by default, read from a linear channel.
+constexpr ParamSpec kOcclusionSpec{.name = kOcclusionMapKey, .label = "Ambient occlusion", .unit = "", .kind = ParamKind::Scalar,
+                                   .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 0, 0},
+                                   .help = "Scales the ambient and environment light only (glTF's occlusionTexture)"};
+
+}  // namespace
+
 const ParamSpec* texturableParam(BrdfModel model, const std::string& parameter, std::string& error) {
     error.clear();
     if (parameter == kNormalMapKey) return nullptr;
+    if (parameter == kOcclusionMapKey) return &kOcclusionSpec;
     const auto table = modelInfo(model).params;
     const int index = findParam(table, parameter);
     if (index < 0) {
@@ -20,7 +30,7 @@ const ParamSpec* texturableParam(BrdfModel model, const std::string& parameter, 
             if (candidate.kind == ParamKind::Scalar || candidate.kind == ParamKind::Color)
                 list += std::string(list.empty() ? "" : ", ") + candidate.name;
         error = "'" + parameter + "' is not a parameter of the model '" + modelInfo(model).id +
-                "' (textures can drive: " + list + (list.empty() ? "" : ", ") + kNormalMapKey + ")";
+                "' (textures can drive: " + list + (list.empty() ? "" : ", ") + kOcclusionMapKey + ", " + kNormalMapKey + ")";
         return nullptr;
     }
     const ParamSpec& spec = table[index];
@@ -66,7 +76,8 @@ void putTexture(Material& material, MaterialTexture texture) {
     const auto table = modelInfo(material.model).params;
     const auto order = [&](const MaterialTexture& t) {
         const int index = findParam(table, t.parameter);
-        return index < 0 ? static_cast<int>(table.size()) : index;
+        if (index >= 0) return index;
+        return static_cast<int>(table.size()) + (t.parameter == kNormalMapKey ? 1 : 0);
     };
     const auto at = std::upper_bound(material.textures.begin(), material.textures.end(), texture,
                                      [&](const auto& a, const auto& b) { return order(a) < order(b); });

@@ -10,7 +10,18 @@
 namespace glint {
 namespace {
 
-int wrap(int index, int size) { return ((index % size) + size) % size; }
+// OpenGL 4.6 Table 8.20: the texel index `index` of an axis of `size` texels under `mode`.
+int wrap(int index, int size, TextureWrap mode) {
+    switch (mode) {
+        case TextureWrap::Repeat: return ((index % size) + size) % size;
+        case TextureWrap::ClampToEdge: return std::clamp(index, 0, size - 1);
+        case TextureWrap::MirroredRepeat: {
+            const int shifted = ((index % (2 * size)) + 2 * size) % (2 * size) - size;
+            return (size - 1) - (shifted >= 0 ? shifted : -(1 + shifted));  // (size − 1) − mirror(...)
+        }
+    }
+    return 0;
+}
 
 float channelOf(glm::vec4 value, TextureChannel channel) { return value[static_cast<int>(channel)]; }
 
@@ -43,14 +54,15 @@ glm::vec2 transformedUv(const MaterialTexture& texture, glm::vec2 uv) {
     return glm::vec2(c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y) + texture.offset;
 }
 
-glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear) {
+glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear, TextureWrap wrapU, TextureWrap wrapV) {
     const float x = uv.x * image.width, y = uv.y * image.height;
     if (!bilinear)
-        return image.texel(wrap(static_cast<int>(std::floor(x)), image.width), wrap(static_cast<int>(std::floor(y)), image.height));
+        return image.texel(wrap(static_cast<int>(std::floor(x)), image.width, wrapU),
+                           wrap(static_cast<int>(std::floor(y)), image.height, wrapV));
     const float left = std::floor(x - 0.5f), bottom = std::floor(y - 0.5f);
     const float fx = x - 0.5f - left, fy = y - 0.5f - bottom;
-    const int x0 = wrap(static_cast<int>(left), image.width), x1 = wrap(static_cast<int>(left) + 1, image.width);
-    const int y0 = wrap(static_cast<int>(bottom), image.height), y1 = wrap(static_cast<int>(bottom) + 1, image.height);
+    const int x0 = wrap(static_cast<int>(left), image.width, wrapU), x1 = wrap(static_cast<int>(left) + 1, image.width, wrapU);
+    const int y0 = wrap(static_cast<int>(bottom), image.height, wrapV), y1 = wrap(static_cast<int>(bottom) + 1, image.height, wrapV);
     const glm::vec4 lower = glm::mix(image.texel(x0, y0), image.texel(x1, y0), fx);
     const glm::vec4 upper = glm::mix(image.texel(x0, y1), image.texel(x1, y1), fx);
     return glm::mix(lower, upper, fy);
@@ -60,7 +72,8 @@ glm::vec4 evaluateTexture(const MaterialTexture& texture, const TexturePoint& po
     float weight = 0.0f;
     switch (texture.kind) {
         case TextureKind::Image:
-            return sampleImage(*texture.image, transformedUv(texture, point.uv), texture.filter != TextureFilter::Nearest);
+            return sampleImage(*texture.image, transformedUv(texture, point.uv), texture.filter != TextureFilter::Nearest,
+                               texture.wrapU, texture.wrapV);
         case TextureKind::Checker: weight = checkerWeight(transformedUv(texture, point.uv)); break;
         case TextureKind::Marble:
             weight = marbleWeight(point.objectPosition, texture.frequency, texture.turbulence, texture.octaves);
@@ -91,6 +104,16 @@ std::vector<float> texturedValues(const Material& material, const TexturePoint& 
         }
     }
     return values;
+}
+
+float ambientOcclusion(const Material& material, const TexturePoint& point) {
+    for (const MaterialTexture& texture : material.textures) {
+        if (texture.parameter != kOcclusionMapKey) continue;
+        const glm::vec4 sampled = evaluateTexture(texture, point);
+        return texture.kind == TextureKind::Image ? glm::mix(texture.range.x, texture.range.y, channelOf(sampled, texture.channel))
+                                                  : sampled.r;
+    }
+    return 1.0f;
 }
 
 ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame) {

@@ -1,6 +1,8 @@
 // CPU evaluation of material textures at a surface point: the shape's (u, v) and object-space
 // position, image sampling (nearest or bilinear at level 0, OpenGL's REPEAT addressing), the
 // procedural textures, textured parameter values and the normal-mapped shading frame.
+// Addressing outside [0, 1] follows OpenGL 4.6 §8.14.2 (Table 8.20) per axis: REPEAT, CLAMP_TO_EDGE
+// or MIRRORED_REPEAT.
 // The GLSL twin is shaders/common/textures.glsl; the reference renderer calls this.
 #pragma once
 
@@ -28,13 +30,17 @@ TexturePoint texturePointOn(const Shape& shape, glm::vec3 position, std::optiona
 
 // The texture's UV transform applied to the shape's uv (material_texture.h).
 glm::vec2 transformedUv(const MaterialTexture& texture, glm::vec2 uv);
-// OpenGL-style sampling of level 0: texel centres at (i + ½)/size, coordinates wrap (REPEAT).
-glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear);
+// OpenGL-style sampling of level 0: texel centres at (i + ½)/size, texel indices outside the
+// image wrapped along u and v as OpenGL does.
+glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear, TextureWrap wrapU = TextureWrap::Repeat,
+                      TextureWrap wrapV = TextureWrap::Repeat);
 // The texture's raw value: an image's texel (linear RGBA), or mix(A, B, weight) of a procedural one.
 glm::vec4 evaluateTexture(const MaterialTexture& texture, const TexturePoint& point);
 
 // The material's packed values with each textured parameter replaced by its texture's value.
 std::vector<float> texturedValues(const Material& material, const TexturePoint& point);
+// The occlusion map's value at the point (1 without one): what scales ambient and environment light.
+float ambientOcclusion(const Material& material, const TexturePoint& point);
 // The frame whose normal is the normal map's (tangent space: n = 2·rgb − 1 along tangent,
 // bitangent, normal), or `frame` itself when the material has no normal map.
 ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame);

@@ -15,6 +15,10 @@ constexpr const char* kKinds[] = {"image", "checker", "marble", "wood"};  // ord
 constexpr const char* kColorSpaces[] = {"srgb", "linear"};
 constexpr const char* kFilters[] = {"nearest", "bilinear", "trilinear", "anisotropic"};
 constexpr const char* kChannels[] = {"r", "g", "b", "a"};
+constexpr const char* kWraps[] = {"repeat", "clamp_to_edge", "mirrored_repeat"};  // order of TextureWrap
+// TextureMinFilter after Default, in order.
+constexpr const char* kMinFilters[] = {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                                       "nearest_mipmap_linear", "linear_mipmap_linear"};
 
 // One of the two values of a procedural texture: a number (scalars, or grey for colours) or
 // [r, g, b] for colours, inside the parameter's valid range.
@@ -41,6 +45,9 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
         texture.file = resolveReferencedPath(file, referencingFile).string();
         texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(texture.colorSpace)));
         texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(texture.filter)));
+        if (reader.has("min_filter")) texture.minFilter = static_cast<TextureMinFilter>(reader.choice("min_filter", kMinFilters, 0) + 1);
+        texture.wrapU = static_cast<TextureWrap>(reader.choice("wrap_u", kWraps, static_cast<int>(texture.wrapU)));
+        texture.wrapV = static_cast<TextureWrap>(reader.choice("wrap_v", kWraps, static_cast<int>(texture.wrapV)));
         texture.tiling = reader.vec2("tiling", texture.tiling);  // negative mirrors (glTF's texture transform allows it)
         texture.offset = reader.vec2("offset", texture.offset);
         texture.rotation = static_cast<float>(reader.number("rotation", texture.rotation));
@@ -100,6 +107,7 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
     for (const MaterialTexture& texture : material.textures) {
         const int index = findParam(table, texture.parameter);
         const bool color = index >= 0 && table[index].kind == ParamKind::Color;
+        const bool scalar = index >= 0 ? table[index].kind == ParamKind::Scalar : texture.parameter == kOcclusionMapKey;
         const auto value = [&](glm::vec3 v) { return color ? json{v.x, v.y, v.z} : json(v.x); };
         json entry = {{"type", kKinds[static_cast<int>(texture.kind)]}};
         switch (texture.kind) {
@@ -107,12 +115,15 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
                 entry["file"] = referencedPathFor(texture.file, targetFile);
                 entry["color_space"] = kColorSpaces[static_cast<int>(texture.colorSpace)];
                 entry["filter"] = kFilters[static_cast<int>(texture.filter)];
+                if (texture.minFilter != TextureMinFilter::Default) entry["min_filter"] = kMinFilters[static_cast<int>(texture.minFilter) - 1];
+                if (texture.wrapU != TextureWrap::Repeat) entry["wrap_u"] = kWraps[static_cast<int>(texture.wrapU)];
+                if (texture.wrapV != TextureWrap::Repeat) entry["wrap_v"] = kWraps[static_cast<int>(texture.wrapV)];
                 entry["tiling"] = {texture.tiling.x, texture.tiling.y};
                 if (texture.offset != glm::vec2(0.0f)) entry["offset"] = {texture.offset.x, texture.offset.y};
                 if (texture.rotation != 0.0f) entry["rotation"] = texture.rotation;
                 if (color && texture.colorFactor != glm::vec3(1.0f)) entry["factor"] = vec3Json(texture.colorFactor);
-                if (index < 0 && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
-                if (index >= 0 && !color) {
+                if (texture.parameter == kNormalMapKey && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
+                if (scalar) {
                     entry["channel"] = kChannels[static_cast<int>(texture.channel)];
                     entry["min"] = texture.range.x;
                     entry["max"] = texture.range.y;

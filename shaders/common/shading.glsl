@@ -30,13 +30,19 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     for (int i = 0; i < lightCount.x; ++i)
         radiance += lightTerm(params, i, LIGHT_ANY, true, position, frame, towardsViewer);
 #endif
+    // The occlusion map (glTF's occlusionTexture) scales the ambient and environment light only.
+#ifdef GLINT_OCCLUSION_SLOT
+    float occlusion = textureScalar(GLINT_OCCLUSION_SLOT);
+#else
+    float occlusion = 1.0;
+#endif
     // Ambient: k_a · L_a (GLINT_AMBIENT_REFLECTANCE is the registry's hook, zero when absent).
-    radiance += GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;
+    radiance += occlusion * GLINT_AMBIENT_REFLECTANCE(params, towardsViewer, frame) * ambientRadiance.rgb;
 #ifdef GLINT_ENVIRONMENT_LIGHTING
     // Environment light: the model's image-based lighting hook (registry glslEnvironment), less
     // what the scene's spheres cover (sphere_occlusion.glsl).
     if (environmentEnabled())
-        radiance += GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame) * environmentVisibility(position, frame.normal);
+        radiance += occlusion * GLINT_ENVIRONMENT_LIGHTING(params, towardsViewer, frame) * environmentVisibility(position, frame.normal);
 #endif
 #ifdef GLINT_SPECULAR_TRANSPORT
     radiance += GLINT_SPECULAR_TRANSPORT(params, position, frame, towardsViewer);

@@ -2,7 +2,8 @@
 // trilinear or anisotropic per the texture's sampler state), the UV checker, Perlin noise,
 // turbulence, marble and wood, and the tangent-space normal map. GLSL twin of
 // core/texture/texture_eval.cpp and core/texture/procedural.cpp. Included by the generated
-// material file only when the material has textures (after PERLIN_PERMUTATION and frame.glsl).
+// material file only when the material has textures (after frame.glsl); the procedural textures
+// only where one of them is procedural (GLINT_PROCEDURAL_TEXTURES, after PERLIN_PERMUTATION).
 
 const int MAX_MATERIAL_TEXTURES = 8;  // kMaxMaterialTextures
 const int TEXTURE_IMAGE = 0;
@@ -30,6 +31,7 @@ struct TextureCoordinates {
 };
 TextureCoordinates textureCoordinates;
 
+#ifdef GLINT_PROCEDURAL_TEXTURES
 // --- Perlin noise (Perlin, "Improving Noise", SIGGRAPH 2002) ---------------------------------
 
 int permute(int i) { return PERLIN_PERMUTATION[i & 255]; }
@@ -77,6 +79,7 @@ float woodWeight(vec3 objectPosition, float frequency, float amplitude, int octa
 float checkerWeight(vec2 tiledUv) {
     return ((int(floor(tiledUv.x)) + int(floor(tiledUv.y))) & 1) == 1 ? 1.0 : 0.0;
 }
+#endif
 
 // --- evaluation ------------------------------------------------------------------------------
 
@@ -96,12 +99,16 @@ vec4 evaluateTexture(int slot) {
         TextureCoordinates c = textureCoordinates;
         return textureGrad(textureImages[slot], uv, linear * c.uvDx, linear * c.uvDy);
     }
+#ifdef GLINT_PROCEDURAL_TEXTURES
     float weight;
     if (kind == TEXTURE_CHECKER) weight = checkerWeight(uv);
     else if (kind == TEXTURE_MARBLE)
         weight = marbleWeight(textureCoordinates.objectPosition, textureScale[slot].z, textureScale[slot].w, textureSettings[slot].z);
     else weight = woodWeight(textureCoordinates.objectPosition, textureScale[slot].z, textureScale[slot].w, textureSettings[slot].z);
     return vec4(mix(textureValueA[slot].rgb, textureValueB[slot].rgb, weight), 1.0);
+#else
+    return vec4(0.0);  // not reached: every slot of this program is an image
+#endif
 }
 
 vec3 textureColor(int slot) { return evaluateTexture(slot).rgb * textureColorFactor[slot]; }
