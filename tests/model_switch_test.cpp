@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "brdf/fresnel.h"
+#include "brdf/microfacet.h"
 #include "brdf/model_switch.h"
 #include "interchange/material_values.h"
 

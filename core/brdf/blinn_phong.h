@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -85,6 +86,13 @@ struct BlinnPhong {
     static constexpr auto ambientReflectance = ambientReflectanceBlinnPhong;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(n+2)) (w = 1 for the normalized form)";
     static bool isReciprocal(const Params& p) { return p.form != BlinnForm::Lecture; }  // the lecture form is not
+    // MTL's highlight is Ks·(N·H)^Ns: Blinn-Phong's lecture form.
+    static MtlForm mtlForm(const Params& p) {
+        MtlForm form{.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular, .exponent = p.exponent};
+        if (p.form != BlinnForm::Lecture) form.lost.push_back("MTL's highlight is Ks·(N·H)^Ns (the lecture form); the BRDF form is not kept");
+        return form;
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, p.exponent); }
 };
 
 }  // namespace glint

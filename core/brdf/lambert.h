@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -41,6 +42,8 @@ struct Lambert {
     static constexpr auto eval = evalLambert;
     static constexpr auto ambientReflectance = ambientReflectanceLambert;
     static constexpr const char* environmentResponse = "ρ·E(n)/π (irradiance map)";
+    static MtlForm mtlForm(const Params& p) { return {.diffuse = p.albedo}; }
+    static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
 };
 
 }  // namespace glint

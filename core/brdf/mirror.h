@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/export_forms.h"
+#include "brdf/fresnel.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -52,6 +54,11 @@ struct Mirror {
     static constexpr auto ambientReflectance = ambientReflectanceMirror;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π; the mirror lobe is traced into the map";
     static constexpr bool tracesDeltaLobes = true;
+    static MtlForm mtlForm(const Params& p) {
+        return {.illum = 3, .diffuse = p.diffuseAlbedo, .specular = fresnelF0(p.ior, p.extinction),
+                .lost = {"the complex index n + iκ is written as its normal-incidence reflectance Ks"}};
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfMetal(p.diffuseAlbedo, p.ior, p.extinction, 0.0f); }
 };
 
 }  // namespace glint

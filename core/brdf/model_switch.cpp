@@ -10,20 +10,10 @@
 #include <sstream>
 
 #include "brdf/fresnel.h"
+#include "brdf/microfacet.h"
 #include "interchange/material_values.h"
 
 namespace glint {
-
-float dielectricIorFromF0(float f0) {
-    const float root = std::sqrt(std::clamp(f0, 0.0f, 0.99f));
-    return (1.0f + root) / (1.0f - root);
-}
-float conductorExtinctionFromF0(float f0) {
-    const float clamped = std::clamp(f0, 0.0f, 0.999f);
-    return 2.0f * std::sqrt(clamped / (1.0f - clamped));
-}
-float blinnPhongExponentFromAlpha(float alpha) { return 2.0f / (alpha * alpha) - 2.0f; }
-float alphaFromBlinnPhongExponent(float exponent) { return std::sqrt(2.0f / (std::max(exponent, 0.0f) + 2.0f)); }
 
 namespace {
 

@@ -8,11 +8,14 @@
 // openpbr_params.h. Transmission and emission are traced by render/openpbr_transport.h.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <glm/glm.hpp>
 
+#include "brdf/export_forms.h"
+#include "brdf/fresnel.h"
 #include "brdf/openpbr_albedo.h"
 #include "brdf/openpbr_lobes.h"
 #include "brdf/openpbr_params.h"
@@ -201,6 +204,17 @@ struct OpenPbr {
         "direction × their compensated albedo; transmission: prefiltered radiance through the surface";
     static constexpr bool tracesDeltaLobes = true;
     static std::string glslTables() { return openPbrAlbedoGlsl(); }
+    // The base only: Kd = weight·colour·(1 − metalness); Ks = the specular F0 mixed with the metal's colour.
+    static MtlForm mtlForm(const Params& p) {
+        const float dielectricF0 = std::min(fresnelF0(glm::vec3(p.specularIor), glm::vec3(0.0f)).x * p.specularWeight, 1.0f);
+        const float alpha = std::max(p.specularRoughness, 0.03f);
+        return {.illum = 2, .diffuse = p.baseWeight * p.baseColor * (1.0f - p.baseMetalness),
+                .specular = glm::mix(glm::vec3(dielectricF0) * p.specularColor, p.baseColor, p.baseMetalness),
+                .exponent = 2.0f / (alpha * alpha * alpha * alpha) - 2.0f,  // α = r², Walter et al. 2007, eq. 33
+                .lost = {"OpenPBR is written as its base with a Blinn-Phong highlight (Ks = F0, Ns = 2/α² − 2); coat, fuzz, "
+                         "transmission, thin film and emission are not kept"}};
+    }
+    static constexpr bool gltfOpenPbr = true;
 };
 
 }  // namespace glint

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -90,6 +91,13 @@ struct Phong {
     static constexpr auto ambientReflectance = ambientReflectancePhong;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(4n+2)) (w = 1 for the normalized form)";
     static bool isReciprocal(const Params& p) { return p.form != PhongForm::Lecture; }  // the lecture form is not
+    static MtlForm mtlForm(const Params& p) {
+        MtlForm form{.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular, .exponent = p.exponent};
+        if (p.form != PhongForm::Lecture) form.lost.push_back("MTL's highlight is Ks·(N·H)^Ns (the lecture form); the BRDF form is not kept");
+        form.lost.push_back("MTL has no Phong (mirror-direction) lobe; written as illum 2, which is Blinn's half-vector lobe");
+        return form;
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, p.exponent); }
 };
 
 }  // namespace glint
