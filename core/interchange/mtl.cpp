@@ -330,11 +330,7 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
     return result;
 }
 
-Result<ImportedFile> loadMtl(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseMtl(*text, path);
-}
+Result<ImportedFile> loadMtl(const std::string& path) { return parseTextFile(path, parseMtl); }
 
 // --- writer ---------------------------------------------------------------------------------
 
