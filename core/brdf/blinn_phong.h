@@ -7,7 +7,9 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
+#include "brdf/microfacet.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -93,6 +95,15 @@ struct BlinnPhong {
         return form;
     }
     static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, p.exponent); }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .specular = {p.specular, {"specular"}},
+                .alpha = {glm::vec2(alphaFromBlinnPhongExponent(p.exponent)), {"exponent"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.reflectanceTo("specular");
+        to.alphaTo("exponent", blinnPhongExponentFromAlpha(std::max(to.isotropicAlpha(), 0.01f)), " (n = 2/α² − 2)");
+    }
 };
 
 }  // namespace glint

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "brdf/microfacet.h"
@@ -112,6 +113,15 @@ struct CookTorrance {
             form.lost.push_back("glTF's BRDF is GGX with Smith masking; other viewers render it so");
         if (p.fresnel != FresnelMode::Schlick) form.lost.push_back("glTF's BRDF uses Schlick's Fresnel; other viewers render it so");
         return form;
+    }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .alpha = {glm::vec2(p.roughness), {"roughness"}},
+                .ior = {p.ior, {"ior"}}, .extinction = {p.extinction, {"extinction"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.indexTo("ior", "extinction");
+        to.alphaTo("roughness", to.isotropicAlpha(), " (α = √(α_x α_y))");
     }
 };
 

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "brdf/microfacet.h"
@@ -92,6 +93,16 @@ struct GgxAnisotropic {
                                        {"anisotropy is not kept (α = √(α_x α_y))"});
         if (p.fresnel != FresnelMode::Schlick) form.lost.push_back("glTF's BRDF uses Schlick's Fresnel; other viewers render it so");
         return form;
+    }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}},
+                .alpha = {glm::vec2(p.roughnessX, p.roughnessY), {"roughness_x", "roughness_y"}}, .ior = {p.ior, {"ior"}},
+                .extinction = {p.extinction, {"extinction"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.indexTo("ior", "extinction");
+        to.anisotropicAlphaTo("roughness_x", "roughness_y");
     }
 };
 

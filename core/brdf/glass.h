@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/frame.h"
@@ -69,6 +70,20 @@ struct Glass {
         GltfForm form{.kind = GltfForm::Kind::Glass, .ior = p.ior, .alpha = 0.0f, .absorption = p.absorption};
         if (p.transparency != GlassTransparency::Fresnel) form.lost.push_back("classic transparency k_t is not kept (glTF is Fresnel)");
         return form;
+    }
+    static Appearance appearance(const Params& p) {
+        return {.alpha = {glm::vec2(0.0f), {}}, .glassIor = {p.ior, {"ior"}}, .absorption = {p.absorption, {"absorption"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        const Appearance& a = to.source();
+        if (a.glassIor) {
+            to.set("ior", *a.glassIor);
+            to.use(a.glassIor, joinedNames(a.glassIor.from) + " → ior");
+        } else if (a.ior && !to.metal()) {
+            to.set("ior", (*a.ior).g);
+            to.use(a.ior, joinedNames(a.ior.from) + " → ior (green channel)");
+        }
+        if (a.absorption) to.set("absorption", *a.absorption), to.use(a.absorption, joinedNames(a.absorption.from) + " → absorption");
     }
 };
 

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
@@ -44,6 +45,8 @@ struct Lambert {
     static constexpr const char* environmentResponse = "ρ·E(n)/π (irradiance map)";
     static MtlForm mtlForm(const Params& p) { return {.diffuse = p.albedo}; }
     static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
+    static Appearance appearance(const Params& p) { return {.diffuse = {p.albedo, {"albedo"}}}; }
+    static void takeAppearance(AppearanceWriter& to) { to.diffuseTo("albedo"); }
 };
 
 }  // namespace glint

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/fresnel.h"
 #include "brdf/model.h"
@@ -59,6 +60,14 @@ struct Mirror {
                 .lost = {"the complex index n + iκ is written as its normal-incidence reflectance Ks"}};
     }
     static GltfForm gltfForm(const Params& p) { return gltfMetal(p.diffuseAlbedo, p.ior, p.extinction, 0.0f); }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .alpha = {glm::vec2(0.0f), {}}, .ior = {p.ior, {"ior"}},
+                .extinction = {p.extinction, {"extinction"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.indexTo("ior", "extinction");
+    }
 };
 
 }  // namespace glint

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
@@ -78,6 +79,8 @@ struct OrenNayar {
         return {.diffuse = p.albedo, .lost = {"roughness σ is not kept (written as Lambert)"}};
     }
     static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
+    static Appearance appearance(const Params& p) { return {.diffuse = {p.albedo, {"albedo"}}}; }
+    static void takeAppearance(AppearanceWriter& to) { to.diffuseTo("albedo"); }
 };
 
 }  // namespace glint

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
@@ -92,6 +93,16 @@ struct Ward {
                 .lost = {"the Ward lobe is approximated by Blinn-Phong (Ns = 2/(α_x α_y) − 2)"}};
     }
     static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, 2.0f / (p.roughnessX * p.roughnessY) - 2.0f); }
+    // Ward's α is the RMS slope, Beckmann's m, close to GGX's α.
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .specular = {p.specular, {"specular"}},
+                .alpha = {glm::vec2(p.roughnessX, p.roughnessY), {"roughness_x", "roughness_y"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.reflectanceTo("specular");
+        to.anisotropicAlphaTo("roughness_x", "roughness_y");
+    }
 };
 
 }  // namespace glint
