@@ -3,18 +3,11 @@
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
-#include <cctype>
+
+#include "util/text.h"
 
 namespace glint {
 namespace {
-
-std::string extensionOf(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
-    std::string extension = path.substr(dot + 1);
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension;
-}
 
 template <class Pixel>
 Status writeImage(const std::string& path, int width, int height, const Pixel* pixels, OIIO::TypeDesc type, int pngCompression = 6) {
@@ -54,7 +47,7 @@ Result<Image> readImage(const std::string& path, OIIO::TypeDesc type) {
 }  // namespace
 
 bool isFloatImagePath(const std::string& path) {
-    const std::string extension = extensionOf(path);
+    const std::string extension = lowerExtension(path);
     return extension == "exr" || extension == "hdr";
 }
 

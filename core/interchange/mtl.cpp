@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "brdf/export_forms.h"
 #include "brdf/fresnel.h"
@@ -16,6 +17,7 @@
 #include "interchange/measured_brdf.h"
 #include "interchange/text_checks.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -79,14 +81,8 @@ std::string hexByte(char c) {
     return text;
 }
 
-// The whitespace of splitWords (std::isspace in the C locale), so that the two agree.
-constexpr const char* kWhitespace = " \t\r\n\f\v";
-
-std::string trim(const std::string& text) {
-    const size_t first = text.find_first_not_of(kWhitespace);
-    if (first == std::string::npos) return "";
-    return text.substr(first, text.find_last_not_of(kWhitespace) - first + 1);
-}
+// White space as splitWords sees it (std::isspace in the C locale).
+std::string trim(std::string_view text) { return std::string(trimmed(text)); }
 
 // --- statements -----------------------------------------------------------------------------
 
@@ -336,16 +332,8 @@ Result<ImportedFile> loadMtl(const std::string& path) { return parseTextFile(pat
 
 namespace {
 
-std::string numbers(glm::vec3 value) {
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "%.9g %.9g %.9g", value.r, value.g, value.b);
-    return buffer;
-}
-std::string number(float value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
-}
+std::string number(float value) { return formatNumber(value, "%.9g"); }
+std::string numbers(glm::vec3 value) { return number(value.r) + " " + number(value.g) + " " + number(value.b); }
 
 // Names go on one line: control characters become spaces.
 std::string oneLine(std::string name) {
