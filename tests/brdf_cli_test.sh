@@ -7,34 +7,19 @@ set -u
 glint=$1
 out=$2
 examples=$3
-rm -rf "$out" && mkdir -p "$out"
-failures=0
-passed=0
 here=$(cd "$(dirname "$0")" && pwd)
+source "$here/cli_checks.sh"
 # A loaded CI machine may need more than the default 8 s to prove a good shader; the endless-loop
 # case sets its own 2 s.
 export GLINT_BRDF_TIMEOUT_S=60
-
-expect_error() {  # expect_error NAME EXPECTED_REGEX -- ARGS...
-  local name=$1 pattern=$2
-  shift 3
-  "$glint" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr"
-  local code=$?
-  if [[ $code -ne 2 ]] || ! grep -Eq -- "$pattern" "$out/$name.stderr"; then
-    echo "FAIL $name: exit code $code, stderr:"; cat "$out/$name.stderr"; failures=$((failures + 1)); return
-  fi
-  passed=$((passed + 1))
-  echo "ok   $name: $(head -n 1 "$out/$name.stderr")"
-}
 
 expect_image() {  # expect_image NAME IMAGE -- ARGS...
   local name=$1 image=$2
   shift 3
   if "$glint" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr" && [[ -s $image ]]; then
-    passed=$((passed + 1))
-    echo "ok   $name"
+    pass "$name"
   else
-    echo "FAIL $name:"; cat "$out/$name.stderr"; failures=$((failures + 1))
+    fail "$name:"; cat "$out/$name.stderr"
   fi
 }
 
@@ -70,8 +55,7 @@ start=$(date +%s)
 GLINT_BRDF_TIMEOUT_S=2 expect_error endless_loop "endless.brdf:2:1: the shader did not finish in 2 s" -- \
   render "$out/endless.brdf" -o "$out/x.png"
 elapsed=$(($(date +%s) - start))
-if [[ $elapsed -gt 15 ]]; then echo "FAIL endless_loop took ${elapsed} s"; failures=$((failures + 1)); fi
-[[ -e "$out/x.png" ]] && { echo "FAIL: an image was written for a failed render"; failures=$((failures + 1)); }
+if [[ $elapsed -gt 15 ]]; then fail "endless_loop took ${elapsed} s"; fi
+[[ -e "$out/x.png" ]] && fail "an image was written for a failed render"
 
-echo "$passed passed, $failures failed"
-[[ $failures -eq 0 ]]
+summary

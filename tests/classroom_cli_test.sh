@@ -6,9 +6,7 @@ set -u
 glint=$1
 out=$2
 source=$3
-rm -rf "$out" && mkdir -p "$out"
-failures=0
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+source "$(dirname "$0")/cli_checks.sh"
 
 "$glint" lessons --check >"$out/check.stdout" 2>"$out/check.stderr" || fail "lessons --check exited $? ($(cat "$out/check.stderr"))"
 grep -q "18 lessons, 18 load, 0 failed" "$out/check.stdout" || fail "lessons --check summary: $(tail -n 1 "$out/check.stdout")"

@@ -4,24 +4,8 @@
 set -u
 glint=$1
 out=$2
-rm -rf "$out" && mkdir -p "$out"
-failures=0
 here=$(cd "$(dirname "$0")" && pwd)
-
-# expect_error NAME EXPECTED_REGEX -- ARGS...: exit code 2 and stderr matching the regex.
-expect_error() {
-  local name=$1 pattern=$2
-  shift 3
-  "$glint" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr"
-  local code=$?
-  if [[ $code -ne 2 ]]; then
-    echo "FAIL $name: exit code $code, expected 2"; cat "$out/$name.stderr"; failures=$((failures + 1)); return
-  fi
-  if ! grep -Eq -- "$pattern" "$out/$name.stderr"; then
-    echo "FAIL $name: message does not match /$pattern/:"; cat "$out/$name.stderr"; failures=$((failures + 1)); return
-  fi
-  echo "ok   $name: $(head -n 1 "$out/$name.stderr")"
-}
+source "$here/cli_checks.sh"
 
 scene() {  # scene NAME LIGHT_JSON: writes a scene whose light (line 4) is LIGHT_JSON
   cat >"$out/$1.json" <<JSON
@@ -76,9 +60,9 @@ expect_error truncated_hdr "bad_hdr\.json:3:[0-9]+: environment 'file': .*trunca
 # A built-in environment renders with no file at all.
 printf '{\n  "format": "glint-scene", "version": 1,\n  "environment": {"type": "studio"},\n  "materials": [{"name": "m", "model": "cook_torrance"}],\n  "objects": [{"shape": "sphere", "material": "m"}]\n}\n' >"$out/studio.json"
 if ! "$glint" render "$out/studio.json" -o "$out/studio.png" --size 64x64 || [[ ! -s "$out/studio.png" ]]; then
-  echo "FAIL studio environment: no image"; failures=$((failures + 1))
+  fail "studio environment: no image"
 else
-  echo "ok   studio environment renders"
+  pass "studio environment renders"
 fi
 expect_error unknown_preset "unknown preset 'unobtainium'" -- presets unobtainium -o "$out/x.json"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "lambert",\n   "textures": {"albedo": {"type": "image", "file": "maps/missing.png"}}}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/missing_texture.json"
@@ -89,16 +73,16 @@ if "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.png" --size 100x
    "$glint" render "$here/scenes/lambert_sun.json" -o "$out/sun.exr" &&
    [[ $(od -An -tu1 -j16 -N8 "$out/sun.png" | tr -s ' ') == " 0 0 0 100 0 0 0 60" ]] &&
    [[ $(head -c 4 "$out/sun.exr" | od -An -tx1 | tr -d ' ') == "762f3101" ]]; then
-  echo "ok   render: PNG 100x60 and EXR written"
+  pass "render: PNG 100x60 and EXR written"
 else
-  echo "FAIL render: good input did not produce the images"; failures=$((failures + 1))
+  fail "render: good input did not produce the images"
 fi
 # Presets: the list names sources; a preset written to a file is a material file.
 if "$glint" presets >"$out/presets.stdout" && grep -q "^gold .*cook_torrance.*McPeak" "$out/presets.stdout" &&
    "$glint" presets copper -o "$out/copper.json" >/dev/null && grep -q '"format": "glint-material"' "$out/copper.json"; then
-  echo "ok   presets: listed $(($(wc -l <"$out/presets.stdout") - 1)), copper written"
+  pass "presets: listed $(($(wc -l <"$out/presets.stdout") - 1)), copper written"
 else
-  echo "FAIL presets: no list or no material file"; failures=$((failures + 1))
+  fail "presets: no list or no material file"
 fi
 # Classroom: display lessons and compare views (docs/classroom.md, "Classroom: compare and display chain").
 sun="$here/scenes/lambert_sun.json"
@@ -110,9 +94,9 @@ expect_error compare_reference "compare views are drawn by the OpenGL renderer" 
 if "$glint" render "$sun" -o "$out/compare.png" --size 96x64 --compare preset:gold,preset:copper --levels 8 --dither bayer2 &&
    "$glint" render "$sun" -o "$out/shading.png" --size 96x48 --compare-interpolation --tessellation 8x4 &&
    [[ -s "$out/compare.png" && -s "$out/shading.png" ]]; then
-  echo "ok   classroom: split compare with 8 dithered levels, interpolation row"
+  pass "classroom: split compare with 8 dithered levels, interpolation row"
 else
-  echo "FAIL classroom: no compare image"; failures=$((failures + 1))
+  fail "classroom: no compare image"
 fi
 # Every sample count --msaa accepts renders: above what this OpenGL offers (llvmpipe: 4) with a note, never a failed check.
 msaa_failed=0
@@ -121,17 +105,16 @@ for samples in 1 2 4 8 16; do
     [[ -s "$out/msaa$samples.png" ]] || { echo "FAIL msaa $samples:"; cat "$out/msaa$samples.stderr"; msaa_failed=1; }
 done
 if [[ $msaa_failed -eq 0 ]] && grep -q "note: MSAA 16 asked; this OpenGL offers at most [0-9]* samples" "$out/msaa16.stderr"; then
-  echo "ok   msaa: 1 to 16 render; $(head -n 1 "$out/msaa16.stderr")"
+  pass "msaa: 1 to 16 render; $(head -n 1 "$out/msaa16.stderr")"
 else
-  echo "FAIL msaa: a sample count failed or 16 gave no note"; failures=$((failures + 1))
+  fail "msaa: a sample count failed or 16 gave no note"
 fi
 # No display: plain `glint` renders the default scene headless and says where it went.
 if (cd "$out" && DISPLAY= "$glint" >"$out/nodisplay.stdout") && grep -q "glint-default.png" "$out/nodisplay.stdout" &&
    [[ -s "$out/glint-default.png" ]]; then
-  echo "ok   no display: $(tail -n 1 "$out/nodisplay.stdout")"
+  pass "no display: $(tail -n 1 "$out/nodisplay.stdout")"
 else
-  echo "FAIL no display: no headless image"; failures=$((failures + 1))
+  fail "no display: no headless image"
 fi
 
-echo "$((28 - failures)) passed, $failures failed"
-[[ $failures -eq 0 ]]
+summary

@@ -17,11 +17,9 @@ namespace glint {
 namespace {
 
 TEST(GltfAssimp, ExportedSphereAndLightsLoadInAssimp) {
-    Material material = Material::withDefaults("varnish", BrdfModel::CookTorrance);
-    setParam(material, "diffuse_albedo", glm::vec3(0.3f, 0.2f, 0.1f));
-    setParam(material, "extinction", 0.0f);
-    setParam(material, "roughness", 0.25f);
-    setParam(material, "fresnel", 0.0f);
+    Material material = test::materialWith("varnish", BrdfModel::CookTorrance,
+        {{"diffuse_albedo", glm::vec3(0.3f, 0.2f, 0.1f)}, {"extinction", 0.0f}, {"roughness", 0.25f},
+         {"fresnel", 0.0f}});
     Light point;
     point.name = "bulb";
     point.type = LightType::Point;

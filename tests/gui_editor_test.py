@@ -669,9 +669,5 @@ def scenario_model_switch(x, glint, output, state):
         editor.kill()
 
 
-def main():
-    run_scenario_from_arguments(globals())
-
-
 if __name__ == "__main__":
-    main()
+    run_scenario_from_arguments(globals())

@@ -171,9 +171,5 @@ def scenario_open_mesh(x, glint, output, state):
         editor.kill()
 
 
-def main():
-    run_scenario_from_arguments(globals())
-
-
 if __name__ == "__main__":
-    main()
+    run_scenario_from_arguments(globals())

@@ -42,9 +42,5 @@ def scenario_plots_window(x, glint, output, state):
         process.communicate()
 
 
-def main():
-    run_scenario_from_arguments(globals())
-
-
 if __name__ == "__main__":
-    main()
+    run_scenario_from_arguments(globals())

@@ -6,27 +6,14 @@
 set -u
 glint=$1
 out=$2
-rm -rf "$out" && mkdir -p "$out"
-failures=0
-passed=0
+source "$(dirname "$0")/cli_checks.sh"
 check() {  # check NAME COMMAND...: the command must succeed
   local name=$1
   shift
   if "$@" >"$out/$name.log" 2>&1; then
-    echo "ok   $name"; passed=$((passed + 1))
+    pass "$name"
   else
-    echo "FAIL $name:"; cat "$out/$name.log"; failures=$((failures + 1))
-  fi
-}
-expect_error() {  # expect_error NAME PATTERN ARGS...: exit code 2 and stderr matching PATTERN
-  local name=$1 pattern=$2
-  shift 2
-  "$glint" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr"
-  local code=$?
-  if [[ $code -eq 2 ]] && grep -Eq -- "$pattern" "$out/$name.stderr"; then
-    echo "ok   $name: $(head -n 1 "$out/$name.stderr")"; passed=$((passed + 1))
-  else
-    echo "FAIL $name: exit code $code, stderr:"; cat "$out/$name.stderr"; failures=$((failures + 1))
+    fail "$name:"; cat "$out/$name.log"
   fi
 }
 
@@ -94,9 +81,9 @@ done
 (cd "$out" && DISPLAY= "$glint_path" short.binary >/dev/null 2>"$out/no_display_short.stderr")
 code=$?
 if [[ $code -eq 2 ]] && grep -q "short.binary: .*truncated" "$out/no_display_short.stderr"; then
-  echo "ok   no_display_short: $(head -n 1 "$out/no_display_short.stderr")"; passed=$((passed + 1))
+  pass "no_display_short: $(head -n 1 "$out/no_display_short.stderr")"
 else
-  echo "FAIL no_display_short: exit code $code"; cat "$out/no_display_short.stderr"; failures=$((failures + 1))
+  fail "no_display_short: exit code $code"; cat "$out/no_display_short.stderr"
 fi
 
 # Files from the wild (tests/files/README.md): what `glint render`, `glint FILE` and `glint info` say.
@@ -107,9 +94,9 @@ expect_output() {  # expect_output NAME PATTERN ARGS...: exit code 0 and stdout+
   "$glint" "$@" >"$out/$name.log" 2>&1
   local code=$?
   if [[ $code -eq 0 ]] && grep -Eq -- "$pattern" "$out/$name.log"; then
-    echo "ok   $name"; passed=$((passed + 1))
+    pass "$name"
   else
-    echo "FAIL $name: exit code $code, output:"; cat "$out/$name.log"; failures=$((failures + 1))
+    fail "$name: exit code $code, output:"; cat "$out/$name.log"
   fi
 }
 expect_output render_mesh "cube.obj: 24 vertices, 12 triangles; dropped 1 faces of one or two corners" \
@@ -139,5 +126,4 @@ for file in obj/cube.obj brdf/explorer_disney.bparam; do
   check "no_display_$name" bash -c "cd '$out' && DISPLAY= '$glint_path' '$files/$file' | grep -q 'glint-$name.png' && [[ -s 'glint-$name.png' ]]"
 done
 
-echo "$passed passed, $failures failed"
-[[ $failures -eq 0 ]]
+summary

@@ -416,15 +416,10 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
         return texture;
     };
     std::vector<Material> materials;
-    Material paint = Material::withDefaults("car paint", BrdfModel::OpenPbr);
-    setParam(paint, "base_color", glm::vec3(0.6f, 0.05f, 0.04f));
-    setParam(paint, "base_metalness", 0.4f);
-    setParam(paint, "specular_roughness", 0.35f);
-    setParam(paint, "specular_ior", 1.6f);
-    setParam(paint, "coat_weight", 1.0f);
-    setParam(paint, "coat_roughness", 0.05f);
-    setParam(paint, "coat_ior", 1.5f);
-    setParam(paint, "coat_darkening", 0.0f);
+    Material paint = test::materialWith("car paint", BrdfModel::OpenPbr,
+        {{"base_color", glm::vec3(0.6f, 0.05f, 0.04f)}, {"base_metalness", 0.4f}, {"specular_roughness", 0.35f},
+         {"specular_ior", 1.6f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.05f}, {"coat_ior", 1.5f},
+         {"coat_darkening", 0.0f}});
     MaterialTexture color = image("base_color", "color.png", TextureColorSpace::Srgb);
     color.colorFactor = paramValue(paint, "base_color");
     color.tiling = {3.0f, 2.0f};
@@ -449,28 +444,19 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     putTexture(paint, coatRough);
     materials.push_back(paint);
 
-    Material velvet = Material::withDefaults("velvet", BrdfModel::OpenPbr);
-    setParam(velvet, "base_color", glm::vec3(0.3f, 0.02f, 0.1f));
-    setParam(velvet, "base_metalness", 0.0f);
-    setParam(velvet, "fuzz_weight", 1.0f);
-    setParam(velvet, "fuzz_color", glm::vec3(0.9f, 0.4f, 0.6f));
-    setParam(velvet, "fuzz_roughness", 0.7f);
+    Material velvet = test::materialWith("velvet", BrdfModel::OpenPbr,
+        {{"base_color", glm::vec3(0.3f, 0.02f, 0.1f)}, {"base_metalness", 0.0f}, {"fuzz_weight", 1.0f},
+         {"fuzz_color", glm::vec3(0.9f, 0.4f, 0.6f)}, {"fuzz_roughness", 0.7f}});
     MaterialTexture fuzz = image("fuzz_color", "color.png", TextureColorSpace::Srgb);
     fuzz.colorFactor = paramValue(velvet, "fuzz_color");
     putTexture(velvet, fuzz);
     materials.push_back(velvet);
 
-    Material bubble = Material::withDefaults("soap bubble", BrdfModel::OpenPbr);
-    setParam(bubble, "base_color", glm::vec3(1.0f));
-    setParam(bubble, "base_metalness", 0.0f);
-    setParam(bubble, "specular_roughness", 0.0f);
-    setParam(bubble, "specular_ior", 1.33f);
-    setParam(bubble, "transmission_weight", 1.0f);
-    setParam(bubble, "transmission_color", glm::vec3(1.0f));
-    setParam(bubble, "geometry_thin_walled", 1.0f);
-    setParam(bubble, "thin_film_weight", 1.0f);
-    setParam(bubble, "thin_film_thickness", 0.38f);
-    setParam(bubble, "thin_film_ior", 1.33f);
+    Material bubble = test::materialWith("soap bubble", BrdfModel::OpenPbr,
+        {{"base_color", glm::vec3(1.0f)}, {"base_metalness", 0.0f}, {"specular_roughness", 0.0f},
+         {"specular_ior", 1.33f}, {"transmission_weight", 1.0f}, {"transmission_color", glm::vec3(1.0f)},
+         {"geometry_thin_walled", 1.0f}, {"thin_film_weight", 1.0f}, {"thin_film_thickness", 0.38f},
+         {"thin_film_ior", 1.33f}});
     materials.push_back(bubble);
 
     Material glass = Material::withDefaults("frosted glass", BrdfModel::OpenPbr);
@@ -485,19 +471,14 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     putTexture(glass, transmission);
     materials.push_back(glass);
 
-    Material brushed = Material::withDefaults("brushed steel", BrdfModel::OpenPbr);
-    setParam(brushed, "base_color", glm::vec3(0.56f, 0.57f, 0.58f));
-    setParam(brushed, "base_metalness", 1.0f);
-    setParam(brushed, "specular_roughness", 0.4f);
-    setParam(brushed, "specular_roughness_anisotropy", 0.8f);
-    setParam(brushed, "geometry_tangent_rotation", 30.0f);
-    setParam(brushed, "specular_weight", 0.7f);
-    setParam(brushed, "specular_color", glm::vec3(0.9f, 0.8f, 1.0f));
+    Material brushed = test::materialWith("brushed steel", BrdfModel::OpenPbr,
+        {{"base_color", glm::vec3(0.56f, 0.57f, 0.58f)}, {"base_metalness", 1.0f}, {"specular_roughness", 0.4f},
+         {"specular_roughness_anisotropy", 0.8f}, {"geometry_tangent_rotation", 30.0f}, {"specular_weight", 0.7f},
+         {"specular_color", glm::vec3(0.9f, 0.8f, 1.0f)}});
     materials.push_back(brushed);
 
-    Material lamp = Material::withDefaults("lamp", BrdfModel::OpenPbr);
-    setParam(lamp, "emission_luminance", 1500.0f);
-    setParam(lamp, "emission_color", glm::vec3(1.0f, 0.85f, 0.6f));
+    Material lamp = test::materialWith("lamp", BrdfModel::OpenPbr,
+        {{"emission_luminance", 1500.0f}, {"emission_color", glm::vec3(1.0f, 0.85f, 0.6f)}});
     MaterialTexture glow = image("emission_color", "emissive.png", TextureColorSpace::Srgb);
     glow.colorFactor = paramValue(lamp, "emission_color");
     glow.filter = TextureFilter::Nearest;

@@ -67,21 +67,14 @@ TEST(Gltf, PunctualLightUnitsConvertAt683LumensPerWatt) {
 // The other models export to their nearest metallic-roughness material, read back as openpbr
 // (gltf_openpbr.h has the openpbr round trips); lights keep their units, place and cone.
 TEST(Gltf, RoundTripKeepsLightsAndTheModelsNearestGltf) {
-    Material dielectric = Material::withDefaults("varnish", BrdfModel::CookTorrance);
-    setParam(dielectric, "diffuse_albedo", glm::vec3(0.3f, 0.2f, 0.1f));
-    setParam(dielectric, "ior", 1.6f);
-    setParam(dielectric, "extinction", 0.0f);
-    setParam(dielectric, "roughness", 0.09f);
-    setParam(dielectric, "fresnel", 0.0f);
-    Material metal = Material::withDefaults("gold", BrdfModel::CookTorrance);
-    setParam(metal, "diffuse_albedo", 0.0f);
-    setParam(metal, "ior", 1.0f);
-    setParam(metal, "extinction", glm::vec3(6.0f, 3.0f, 1.0f));
-    setParam(metal, "roughness", 0.3f);
-    setParam(metal, "fresnel", 0.0f);
-    Material glass = Material::withDefaults("bottle", BrdfModel::Glass);
-    setParam(glass, "ior", 1.52f);
-    setParam(glass, "absorption", glm::vec3(0.5f, 0.1f, 2.0f));
+    Material dielectric = test::materialWith("varnish", BrdfModel::CookTorrance,
+        {{"diffuse_albedo", glm::vec3(0.3f, 0.2f, 0.1f)}, {"ior", 1.6f}, {"extinction", 0.0f}, {"roughness", 0.09f},
+         {"fresnel", 0.0f}});
+    Material metal = test::materialWith("gold", BrdfModel::CookTorrance,
+        {{"diffuse_albedo", 0.0f}, {"ior", 1.0f}, {"extinction", glm::vec3(6.0f, 3.0f, 1.0f)}, {"roughness", 0.3f},
+         {"fresnel", 0.0f}});
+    Material glass = test::materialWith("bottle", BrdfModel::Glass,
+        {{"ior", 1.52f}, {"absorption", glm::vec3(0.5f, 0.1f, 2.0f)}});
 
     std::vector<Light> lights(3);
     lights[0].name = "key";

@@ -217,14 +217,10 @@ TEST(MaterialX, ImageNodesBecomeTexturesAndProceduralGraphsAreWarnings) {
 }
 
 TEST(MaterialX, GlintMaterialsRoundTripThroughOpenPbrSurface) {
-    Material openPbr = Material::withDefaults("car paint", BrdfModel::OpenPbr);
-    setParam(openPbr, "base_color", glm::vec3(0.05f, 0.1f, 0.6f));
-    setParam(openPbr, "specular_roughness", 0.37f);
-    setParam(openPbr, "coat_weight", 1.0f);
-    setParam(openPbr, "coat_ior", 1.55f);
-    setParam(openPbr, "fuzz_color", glm::vec3(0.123456789f, 0.3f, 1.0f));
-    setParam(openPbr, "geometry_thin_walled", 1.0f);
-    setParam(openPbr, "emission_luminance", 1500.0f);
+    Material openPbr = test::materialWith("car paint", BrdfModel::OpenPbr,
+        {{"base_color", glm::vec3(0.05f, 0.1f, 0.6f)}, {"specular_roughness", 0.37f}, {"coat_weight", 1.0f},
+         {"coat_ior", 1.55f}, {"fuzz_color", glm::vec3(0.123456789f, 0.3f, 1.0f)}, {"geometry_thin_walled", 1.0f},
+         {"emission_luminance", 1500.0f}});
     Material lambert = Material::withDefaults("car paint", BrdfModel::Lambert);  // same name: written unique
     setParam(lambert, "albedo", glm::vec3(0.7f, 0.2f, 0.1f));
     const std::vector<ImportedMaterial> materials = {{openPbr, {}, {}}, {lambert, {}, {}}};

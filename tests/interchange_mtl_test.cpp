@@ -4,6 +4,7 @@
 
 #include "interchange/material_values.h"
 #include "interchange/mtl.h"
+#include "test_support.h"
 
 namespace glint {
 namespace {
@@ -83,19 +84,16 @@ TEST(Mtl, ValidButUnusedStatementsWarnWithTheirLine) {
 // Every parameter MTL can hold survives Glint → MTL → Glint for the models it maps exactly.
 TEST(Mtl, RoundTripKeepsEveryParameterMtlHolds) {
     std::vector<ImportedMaterial> originals;
-    Material blinn = Material::withDefaults("glossy red", BrdfModel::BlinnPhong);
-    setParam(blinn, "diffuse_albedo", glm::vec3(0.7f, 0.123456f, 0.05f));
-    setParam(blinn, "specular", glm::vec3(0.3f, 0.2f, 0.1f));
-    setParam(blinn, "exponent", 123.456f);
-    setParam(blinn, "form", 0.0f);
+    Material blinn = test::materialWith("glossy red", BrdfModel::BlinnPhong,
+        {{"diffuse_albedo", glm::vec3(0.7f, 0.123456f, 0.05f)}, {"specular", glm::vec3(0.3f, 0.2f, 0.1f)},
+         {"exponent", 123.456f}, {"form", 0.0f}});
     originals.push_back({blinn, {{"map_Kd", "albedo map.png", "-s 2 2 1"}, {"bump", "n.png", ""}}});
     Material lambert = Material::withDefaults("chalk", BrdfModel::Lambert);
     setParam(lambert, "albedo", glm::vec3(0.9f, 0.8f, 0.7f));
     originals.push_back({lambert, {}});
-    Material mirror = Material::withDefaults("steel", BrdfModel::Mirror);
-    setParam(mirror, "ior", 1.0f);
-    setParam(mirror, "extinction", glm::vec3(3.0f, 2.5f, 2.0f));
-    setParam(mirror, "diffuse_albedo", glm::vec3(0.01f, 0.02f, 0.03f));
+    Material mirror = test::materialWith("steel", BrdfModel::Mirror,
+        {{"ior", 1.0f}, {"extinction", glm::vec3(3.0f, 2.5f, 2.0f)},
+         {"diffuse_albedo", glm::vec3(0.01f, 0.02f, 0.03f)}});
     originals.push_back({mirror, {}});
     Material glass = Material::withDefaults("crown glass", BrdfModel::Glass);
     setParam(glass, "ior", 1.523f);

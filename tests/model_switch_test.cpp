@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "brdf/fresnel.h"
+#include "brdf/microfacet.h"
 #include "brdf/model_switch.h"
 #include "interchange/material_values.h"
+#include "test_support.h"
 
 namespace glint {
 namespace {
@@ -97,10 +99,9 @@ TEST(ModelSwitch, SaysWhatWasKeptAndDropped) {
 }
 
 TEST(ModelSwitch, MetalIndexBecomesMetalnessWithTheSameF0AndBack) {
-    Material gold = Material::withDefaults("gold", BrdfModel::CookTorrance);
-    setParam(gold, "ior", glm::vec3(0.18f, 0.42f, 1.37f));
-    setParam(gold, "extinction", glm::vec3(3.42f, 2.35f, 1.77f));
-    setParam(gold, "roughness", 0.09f);
+    Material gold = test::materialWith("gold", BrdfModel::CookTorrance,
+        {{"ior", glm::vec3(0.18f, 0.42f, 1.37f)}, {"extinction", glm::vec3(3.42f, 2.35f, 1.77f)},
+         {"roughness", 0.09f}});
     const glm::vec3 f0 = fresnelF0(glm::vec3(0.18f, 0.42f, 1.37f), glm::vec3(3.42f, 2.35f, 1.77f));
     const Material openPbr = switchModel(gold, BrdfModel::OpenPbr).material;
     EXPECT_EQ(paramScalar(openPbr, "base_metalness"), 1.0f);
@@ -114,9 +115,8 @@ TEST(ModelSwitch, MetalIndexBecomesMetalnessWithTheSameF0AndBack) {
 }
 
 TEST(ModelSwitch, GlassAndOpenPbrTransmissionKeepIndexAndAbsorption) {
-    Material glass = Material::withDefaults("green glass", BrdfModel::Glass);
-    setParam(glass, "ior", 1.52f);
-    setParam(glass, "absorption", glm::vec3(2.0f, 0.1f, 1.0f));
+    Material glass = test::materialWith("green glass", BrdfModel::Glass,
+        {{"ior", 1.52f}, {"absorption", glm::vec3(2.0f, 0.1f, 1.0f)}});
     const Material openPbr = switchModel(glass, BrdfModel::OpenPbr).material;
     EXPECT_EQ(paramScalar(openPbr, "transmission_weight"), 1.0f);
     EXPECT_EQ(paramScalar(openPbr, "specular_ior"), 1.52f);
@@ -126,11 +126,8 @@ TEST(ModelSwitch, GlassAndOpenPbrTransmissionKeepIndexAndAbsorption) {
 }
 
 TEST(ModelSwitch, DielectricIndexCarriesIntoOpenPbrAndAnisotropyIntoGgx) {
-    Material ggx = Material::withDefaults("brushed", BrdfModel::GgxAnisotropic);
-    setParam(ggx, "ior", glm::vec3(1.45f));
-    setParam(ggx, "extinction", glm::vec3(0.0f));
-    setParam(ggx, "roughness_x", 0.4f);
-    setParam(ggx, "roughness_y", 0.1f);
+    Material ggx = test::materialWith("brushed", BrdfModel::GgxAnisotropic,
+        {{"ior", glm::vec3(1.45f)}, {"extinction", glm::vec3(0.0f)}, {"roughness_x", 0.4f}, {"roughness_y", 0.1f}});
     const Material openPbr = switchModel(ggx, BrdfModel::OpenPbr).material;
     EXPECT_EQ(paramScalar(openPbr, "base_metalness"), 0.0f);
     EXPECT_NEAR(paramScalar(openPbr, "specular_ior"), 1.45f, 1e-6f);

@@ -6,30 +6,22 @@ set -u
 glint=$1
 out=$2
 tests=$3
-rm -rf "$out" && mkdir -p "$out"
-failures=0
-passes=0
+source "$(dirname "$0")/cli_checks.sh"
 
 expect_png() {  # expect_png NAME ARGS...: exit code 0 and a non-empty PNG at $out/NAME.png
   local name=$1
   shift
   if "$glint" render "$@" -o "$out/$name.png" --size 200x160 >"$out/$name.stdout" 2>"$out/$name.stderr" && [[ -s "$out/$name.png" ]]; then
-    echo "ok   $name"; passes=$((passes + 1))
+    pass "$name"
   else
-    echo "FAIL $name:"; cat "$out/$name.stderr"; failures=$((failures + 1))
+    fail "$name:"; cat "$out/$name.stderr"
   fi
 }
 
-expect_error() {  # expect_error NAME REGEX ARGS...: exit code 2 and stderr matching REGEX
+render_error() {  # render_error NAME REGEX ARGS...: `glint render ARGS` exits with code 2, stderr matching REGEX
   local name=$1 pattern=$2
   shift 2
-  "$glint" render "$@" >/dev/null 2>"$out/$name.stderr"
-  local code=$?
-  if [[ $code -eq 2 ]] && grep -Eq -- "$pattern" "$out/$name.stderr"; then
-    echo "ok   $name: $(head -n 1 "$out/$name.stderr")"; passes=$((passes + 1))
-  else
-    echo "FAIL $name: exit code $code"; cat "$out/$name.stderr"; failures=$((failures + 1))
-  fi
+  expect_error "$name" "$pattern" render "$@"
 }
 
 blinn="$tests/scenes/blinn_point.json"
@@ -48,15 +40,14 @@ with open(sys.argv[1], "wb") as f:
         f.write(struct.pack("<d", 0.5 / 3.141592653589793 * scale) * (90 * 90 * 180))' "$out/grey.binary"
 expect_png albedo_merl "$out/grey.binary" --overlay albedo
 expect_png plot_and_probe "$blinn" --overlay polar --overlay probe --probe 100,80
-expect_error two_plots "one plot per image" "$blinn" -o "$out/x.png" --overlay polar --overlay lobe
-expect_error fresnel_merl "grey\" is a measured table" "$out/grey.binary" -o "$out/x.png" --overlay fresnel
-expect_error bad_incidence "--incidence needs an angle in degrees from 0 to 90 \(got 95\)" "$blinn" -o "$out/x.png" --overlay polar --incidence 95
-expect_error nan_incidence "--incidence needs an angle" "$blinn" -o "$out/x.png" --overlay polar --incidence nan
-expect_error unknown_plot "(unknown option --overlay|bogus)" "$blinn" -o "$out/x.png" --overlay bogus
-expect_error plot_reference "not with --reference" "$blinn" -o "$out/x.png" --overlay albedo --reference
-expect_error plot_exr "drawn on the PNG" "$blinn" -o "$out/x.exr" --overlay albedo
-expect_error incidence_alone "--incidence needs --overlay" "$blinn" -o "$out/x.png" --incidence 30
-expect_error fresnel_without_index "no material in the scene has an index of refraction" "$blinn" -o "$out/x.png" --overlay fresnel
+render_error two_plots "one plot per image" "$blinn" -o "$out/x.png" --overlay polar --overlay lobe
+render_error fresnel_merl "grey\" is a measured table" "$out/grey.binary" -o "$out/x.png" --overlay fresnel
+render_error bad_incidence "--incidence needs an angle in degrees from 0 to 90 \(got 95\)" "$blinn" -o "$out/x.png" --overlay polar --incidence 95
+render_error nan_incidence "--incidence needs an angle" "$blinn" -o "$out/x.png" --overlay polar --incidence nan
+render_error unknown_plot "(unknown option --overlay|bogus)" "$blinn" -o "$out/x.png" --overlay bogus
+render_error plot_reference "not with --reference" "$blinn" -o "$out/x.png" --overlay albedo --reference
+render_error plot_exr "drawn on the PNG" "$blinn" -o "$out/x.exr" --overlay albedo
+render_error incidence_alone "--incidence needs --overlay" "$blinn" -o "$out/x.png" --incidence 30
+render_error fresnel_without_index "no material in the scene has an index of refraction" "$blinn" -o "$out/x.png" --overlay fresnel
 
-echo "$passes passed, $failures failed"
-[[ $failures -eq 0 ]]
+summary

@@ -1,12 +1,16 @@
-// Helpers shared by Glint's tests: where the test data lives, a per-test output folder, and a
-// shared OSMesa renderer (one GL context for the whole test binary).
+// Helpers shared by Glint's tests: where the test data lives, a per-test output folder, a scene
+// loaded from the test data, and a material with some parameters set.
 #pragma once
 
 #include <filesystem>
+#include <initializer_list>
 #include <string>
+#include <utility>
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
+#include "interchange/material_values.h"
 #include "scene/scene_json.h"
 
 namespace glint::test {
@@ -24,6 +28,21 @@ inline Scene loadTestScene(const std::string& relative) {
     auto scene = loadScene(dataPath(relative));
     if (!scene) ADD_FAILURE() << scene.error().format();
     return scene ? *scene : Scene{};
+}
+
+// One parameter by name: a scalar (or an enum option's index) or a colour.
+struct Setting {
+    const char* param;
+    glm::vec3 value;
+    Setting(const char* param, float value) : param(param), value(value) {}
+    Setting(const char* param, glm::vec3 value) : param(param), value(value) {}
+};
+
+// A material of `model` with `settings` over the model's defaults.
+inline Material materialWith(std::string name, BrdfModel model, std::initializer_list<Setting> settings) {
+    Material material = Material::withDefaults(std::move(name), model);
+    for (const Setting& setting : settings) setParam(material, setting.param, setting.value);
+    return material;
 }
 
 }  // namespace glint::test

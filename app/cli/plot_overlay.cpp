@@ -3,7 +3,6 @@
 #include "cli/plot_overlay.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 
@@ -12,6 +11,7 @@
 #include "classroom/brdf_plots.h"
 #include "classroom/plot_materials.h"
 #include "cli/command_line.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -66,9 +66,7 @@ std::string plotOverlayConflict(const PlotOverlayOptions& options, std::optional
         return "";
     }
     if (reference) return "--overlay plots are drawn with OpenGL, not with --reference";
-    std::string extension = outputPath.size() >= 4 ? outputPath.substr(outputPath.size() - 4) : "";
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (extension != ".png") return "--overlay plots are drawn on the PNG (-o OUT.png), not into radiance";
+    if (lowerExtension(outputPath) != "png") return "--overlay plots are drawn on the PNG (-o OUT.png), not into radiance";
     if (options.fromInside && *plot != PlotOverlayKind::Fresnel) return "--from-inside needs --overlay fresnel";
     if (options.incidenceGiven && *plot == PlotOverlayKind::Fresnel) return "--incidence is not used by --overlay fresnel";
     return "";

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
 #include "runtime/brdf_probe.h"
 #include "interchange/bparam_file.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -21,12 +21,6 @@ long long modificationTime(const std::string& path) {
     std::error_code error;
     const auto time = std::filesystem::last_write_time(path, error);
     return error ? 0 : static_cast<long long>(time.time_since_epoch().count());
-}
-
-std::string secondsText(double seconds) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", seconds);
-    return text;
 }
 
 void startProbe(EditorState& state, std::shared_ptr<const CustomBrdf> brdf, std::vector<float> values, bool reload,
@@ -40,7 +34,7 @@ void startProbe(EditorState& state, std::shared_ptr<const CustomBrdf> brdf, std:
         return probed;
     });
     state.customBrdfs.pending = std::move(pending);
-    state.statusMessage = "Checking " + brdf->displayName + " (compiles, and finishes within " + secondsText(timeout) +
+    state.statusMessage = "Checking " + brdf->displayName + " (compiles, and finishes within " + formatNumber(timeout) +
                           " s)…";
 }
 

@@ -18,6 +18,7 @@
 
 #include "runtime/headless.h"
 #include "scene/preview_stage.h"
+#include "util/text.h"
 
 namespace glint {
 
@@ -39,19 +40,9 @@ std::string& probeExecutable() {
     return executable;
 }
 
-std::string formatSeconds(double seconds) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", seconds);
-    return text;
-}
-
 std::string joinValues(const std::vector<float>& values) {
     std::string joined;
-    for (float value : values) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.9g", value);
-        joined += (joined.empty() ? "" : ",") + std::string(text);
-    }
+    for (float value : values) joined += (joined.empty() ? "" : ",") + formatNumber(value, "%.9g");
     return joined.empty() ? "none" : joined;
 }
 
@@ -129,7 +120,7 @@ Status probeCustomBrdf(const CustomBrdf& brdf, const std::vector<float>& values,
     if (!finished) {
         kill(child, SIGKILL);
         waitpid(child, &status, 0);
-        return makeError("the shader did not finish in " + formatSeconds(timeoutSeconds) +
+        return makeError("the shader did not finish in " + formatNumber(timeoutSeconds) +
                              " s (an endless loop?); it is not used",
                          {brdf.file.path, brdf.file.shaderLine, 1});
     }

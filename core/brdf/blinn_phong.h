@@ -7,6 +7,9 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
+#include "brdf/microfacet.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -85,6 +88,22 @@ struct BlinnPhong {
     static constexpr auto ambientReflectance = ambientReflectanceBlinnPhong;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(n+2)) (w = 1 for the normalized form)";
     static bool isReciprocal(const Params& p) { return p.form != BlinnForm::Lecture; }  // the lecture form is not
+    // MTL's highlight is Ks·(N·H)^Ns: Blinn-Phong's lecture form.
+    static MtlForm mtlForm(const Params& p) {
+        MtlForm form{.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular, .exponent = p.exponent};
+        if (p.form != BlinnForm::Lecture) form.lost.push_back("MTL's highlight is Ks·(N·H)^Ns (the lecture form); the BRDF form is not kept");
+        return form;
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, p.exponent); }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .specular = {p.specular, {"specular"}},
+                .alpha = {glm::vec2(alphaFromBlinnPhongExponent(p.exponent)), {"exponent"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.reflectanceTo("specular");
+        to.alphaTo("exponent", blinnPhongExponentFromAlpha(std::max(to.isotropicAlpha(), 0.01f)), " (n = 2/α² − 2)");
+    }
 };
 
 }  // namespace glint

@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "brdf/microfacet.h"
 #include "math/frame.h"
@@ -104,6 +106,23 @@ struct CookTorrance {
     static constexpr auto eval = evalCookTorrance;
     static constexpr auto ambientReflectance = ambientReflectanceCookTorrance;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + prefiltered radiance at α × (F0·A + B), split sum (GGX table for both distributions)";
+    static MtlForm mtlForm(const Params& p) { return mtlMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, p.roughness); }
+    static GltfForm gltfForm(const Params& p) {
+        GltfForm form = gltfMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, p.roughness);
+        if (p.distribution != MicrofacetDistribution::Ggx || p.geometry != MicrofacetGeometry::Smith)
+            form.lost.push_back("glTF's BRDF is GGX with Smith masking; other viewers render it so");
+        if (p.fresnel != FresnelMode::Schlick) form.lost.push_back("glTF's BRDF uses Schlick's Fresnel; other viewers render it so");
+        return form;
+    }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .alpha = {glm::vec2(p.roughness), {"roughness"}},
+                .ior = {p.ior, {"ior"}}, .extinction = {p.extinction, {"extinction"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.indexTo("ior", "extinction");
+        to.alphaTo("roughness", to.isotropicAlpha(), " (α = √(α_x α_y))");
+    }
 };
 
 }  // namespace glint

@@ -75,6 +75,17 @@ inline glm::vec3 fresnelF0(glm::vec3 n, glm::vec3 k) {
     return ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);
 }
 
+// Back from a reflectance F0 at normal incidence, each exact there: a dielectric's index
+// n = (1 + √F0)/(1 − √F0); a conductor with n = 1 has κ = 2√(F0/(1 − F0)) (F0 = κ²/(4 + κ²)).
+inline float dielectricIorFromF0(float f0) {
+    const float root = std::sqrt(std::clamp(f0, 0.0f, 0.99f));
+    return (1.0f + root) / (1.0f - root);
+}
+inline float conductorExtinctionFromF0(float f0) {
+    const float clamped = std::clamp(f0, 0.0f, 0.999f);
+    return 2.0f * std::sqrt(clamped / (1.0f - clamped));
+}
+
 // Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", 1994:
 // F ≈ F0 + (1 − F0)(1 − cos θ)^5.
 inline glm::vec3 fresnelSchlick(glm::vec3 f0, float cosIncident) {

@@ -3,8 +3,12 @@
 // metal. CPU reference; GLSL twin: shaders/brdf/ggx_anisotropic.glsl. Needs a real tangent.
 #pragma once
 
+#include <cmath>
+
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "brdf/microfacet.h"
 #include "math/frame.h"
@@ -81,6 +85,25 @@ struct GgxAnisotropic {
     static constexpr auto eval = evalGgxAnisotropic;
     static constexpr auto ambientReflectance = ambientReflectanceGgxAnisotropic;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + split sum at the isotropic α = √(α_x α_y)";
+    static MtlForm mtlForm(const Params& p) {
+        return mtlMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, std::sqrt(p.roughnessX * p.roughnessY));
+    }
+    static GltfForm gltfForm(const Params& p) {
+        GltfForm form = gltfMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, std::sqrt(p.roughnessX * p.roughnessY),
+                                       {"anisotropy is not kept (α = √(α_x α_y))"});
+        if (p.fresnel != FresnelMode::Schlick) form.lost.push_back("glTF's BRDF uses Schlick's Fresnel; other viewers render it so");
+        return form;
+    }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}},
+                .alpha = {glm::vec2(p.roughnessX, p.roughnessY), {"roughness_x", "roughness_y"}}, .ior = {p.ior, {"ior"}},
+                .extinction = {p.extinction, {"extinction"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.indexTo("ior", "extinction");
+        to.anisotropicAlphaTo("roughness_x", "roughness_y");
+    }
 };
 
 }  // namespace glint

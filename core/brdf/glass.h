@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/frame.h"
 
@@ -58,6 +60,31 @@ struct Glass {
     // No environment hook: only the traced lobes see the map.
     static constexpr const char* environmentNote = "refracts and reflects the map through its traced delta lobes";
     static constexpr bool tracesDeltaLobes = true;
+    static MtlForm mtlForm(const Params& p) {
+        MtlForm form{.illum = 7, .specular = glm::vec3(1.0f), .ior = p.ior};
+        if (p.absorption != glm::vec3(0.0f)) form.lost.push_back("absorption σ is not kept");
+        if (p.transparency != GlassTransparency::Fresnel) form.lost.push_back("classic transparency k_t is not kept");
+        return form;
+    }
+    static GltfForm gltfForm(const Params& p) {
+        GltfForm form{.kind = GltfForm::Kind::Glass, .ior = p.ior, .alpha = 0.0f, .absorption = p.absorption};
+        if (p.transparency != GlassTransparency::Fresnel) form.lost.push_back("classic transparency k_t is not kept (glTF is Fresnel)");
+        return form;
+    }
+    static Appearance appearance(const Params& p) {
+        return {.alpha = {glm::vec2(0.0f), {}}, .glassIor = {p.ior, {"ior"}}, .absorption = {p.absorption, {"absorption"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        const Appearance& a = to.source();
+        if (a.glassIor) {
+            to.set("ior", *a.glassIor);
+            to.use(a.glassIor, joinedNames(a.glassIor.from) + " → ior");
+        } else if (a.ior && !to.metal()) {
+            to.set("ior", (*a.ior).g);
+            to.use(a.ior, joinedNames(a.ior.from) + " → ior (green channel)");
+        }
+        if (a.absorption) to.set("absorption", *a.absorption), to.use(a.absorption, joinedNames(a.absorption.from) + " → absorption");
+    }
 };
 
 }  // namespace glint

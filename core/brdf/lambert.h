@@ -4,6 +4,8 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -41,6 +43,10 @@ struct Lambert {
     static constexpr auto eval = evalLambert;
     static constexpr auto ambientReflectance = ambientReflectanceLambert;
     static constexpr const char* environmentResponse = "ρ·E(n)/π (irradiance map)";
+    static MtlForm mtlForm(const Params& p) { return {.diffuse = p.albedo}; }
+    static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
+    static Appearance appearance(const Params& p) { return {.diffuse = {p.albedo, {"albedo"}}}; }
+    static void takeAppearance(AppearanceWriter& to) { to.diffuseTo("albedo"); }
 };
 
 }  // namespace glint

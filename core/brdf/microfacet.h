@@ -22,6 +22,11 @@ inline constexpr EnumOption kFresnelModeOptions[] = {
     {"exact", "Exact (complex index n + iκ)"},
 };
 
+// Blinn-Phong's exponent ↔ Beckmann/GGX α: n = 2/α² − 2 (Walter et al., "Microfacet Models for
+// Refraction", EGSR 2007, eq. 30).
+inline float blinnPhongExponentFromAlpha(float alpha) { return 2.0f / (alpha * alpha) - 2.0f; }
+inline float alphaFromBlinnPhongExponent(float exponent) { return std::sqrt(2.0f / (std::max(exponent, 0.0f) + 2.0f)); }
+
 // F(cos θ_d) for a complex index per channel (θ_d: angle between ω_i and the half vector).
 inline glm::vec3 microfacetFresnel(FresnelMode mode, float cosDifference, glm::vec3 ior, glm::vec3 extinction) {
     if (mode == FresnelMode::Schlick) return fresnelSchlick(fresnelF0(ior, extinction), cosDifference);

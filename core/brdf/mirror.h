@@ -6,6 +6,9 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
+#include "brdf/fresnel.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -52,6 +55,19 @@ struct Mirror {
     static constexpr auto ambientReflectance = ambientReflectanceMirror;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π; the mirror lobe is traced into the map";
     static constexpr bool tracesDeltaLobes = true;
+    static MtlForm mtlForm(const Params& p) {
+        return {.illum = 3, .diffuse = p.diffuseAlbedo, .specular = fresnelF0(p.ior, p.extinction),
+                .lost = {"the complex index n + iκ is written as its normal-incidence reflectance Ks"}};
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfMetal(p.diffuseAlbedo, p.ior, p.extinction, 0.0f); }
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .alpha = {glm::vec2(0.0f), {}}, .ior = {p.ior, {"ior"}},
+                .extinction = {p.extinction, {"extinction"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.indexTo("ior", "extinction");
+    }
 };
 
 }  // namespace glint

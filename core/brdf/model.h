@@ -16,6 +16,12 @@
 //   isReciprocal(Params)         a form that breaks the model's reciprocity claim
 //   glslTables()                 GLSL the twin needs before its file, computed on the C++ side
 //                                (constant tables), so that both twins read the same numbers
+//   mtlForm(Params), gltfForm(Params)  the model in .mtl / glTF terms, for the exporters
+//                                (export_forms.h); without one, the exporter says it has none
+//   gltfOpenPbr                  glTF's own PBR material and its extensions hold the model
+//                                whole, textures included (interchange/gltf_openpbr.h)
+//   appearance(Params), takeAppearance(AppearanceWriter&)  what the model holds and takes in
+//                                terms models share, for switching models (appearance.h)
 // GLSL names follow from the id by convention: "cook_torrance" -> CookTorrance -> evalCookTorrance.
 #pragma once
 
@@ -60,6 +66,20 @@ template <class M>
 concept TracesDeltaLobes = requires { requires M::tracesDeltaLobes; };
 template <class M>
 concept HasGlslTables = requires { { M::glslTables() } -> std::same_as<std::string>; };
+struct MtlForm;   // export_forms.h
+struct GltfForm;
+struct Appearance;  // appearance.h
+class AppearanceWriter;
+template <class M>
+concept HasMtlForm = requires(const typename M::Params& p) { { M::mtlForm(p) } -> std::same_as<MtlForm>; };
+template <class M>
+concept HasGltfForm = requires(const typename M::Params& p) { { M::gltfForm(p) } -> std::same_as<GltfForm>; };
+template <class M>
+concept HasAppearance = requires(const typename M::Params& p) { { M::appearance(p) } -> std::same_as<Appearance>; };
+template <class M>
+concept TakesAppearance = requires(AppearanceWriter& writer) { M::takeAppearance(writer); };
+template <class M>
+concept IsGltfOpenPbr = requires { requires M::gltfOpenPbr; };
 template <class M>
 concept HasFormReciprocity = requires(const typename M::Params& p) { { M::isReciprocal(p) } -> std::same_as<bool>; };
 

@@ -2,17 +2,14 @@
 #include "brdf/model_docs.h"
 
 #include <cmath>
-#include <cstdio>
+#include <string>
+
+#include "util/text.h"
 
 namespace glint {
 namespace {
 
-std::string number(float value) {
-    if (std::isinf(value)) return "∞";
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
+std::string number(float value) { return std::isinf(value) ? "∞" : formatNumber(value); }
 
 const char* kindName(ParamKind kind) {
     switch (kind) {

@@ -24,13 +24,4 @@ struct ModelSwitch {
 // copied unchanged. A .brdf (custom) material keeps nothing; a measured one its Lambert stand-in.
 ModelSwitch switchModel(const Material& source, BrdfModel target);
 
-// Conversions the switch uses, each exact at normal incidence. A dielectric's index from its
-// reflectance F0 = ((n−1)/(n+1))²; a conductor with n = 1 and κ = 2√(F0/(1 − F0)) (so that
-// F0 = κ²/(4 + κ²)); Blinn-Phong's exponent ↔ Beckmann/GGX α, n = 2/α² − 2 (Walter et al.,
-// "Microfacet Models for Refraction", EGSR 2007, eq. 30).
-float dielectricIorFromF0(float f0);
-float conductorExtinctionFromF0(float f0);
-float blinnPhongExponentFromAlpha(float alpha);
-float alphaFromBlinnPhongExponent(float exponent);
-
 }  // namespace glint

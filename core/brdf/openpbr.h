@@ -8,11 +8,16 @@
 // openpbr_params.h. Transmission and emission are traced by render/openpbr_transport.h.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
+#include "brdf/fresnel.h"
 #include "brdf/openpbr_albedo.h"
 #include "brdf/openpbr_lobes.h"
 #include "brdf/openpbr_params.h"
@@ -201,6 +206,78 @@ struct OpenPbr {
         "direction × their compensated albedo; transmission: prefiltered radiance through the surface";
     static constexpr bool tracesDeltaLobes = true;
     static std::string glslTables() { return openPbrAlbedoGlsl(); }
+    // The base only: Kd = weight·colour·(1 − metalness); Ks = the specular F0 mixed with the metal's colour.
+    static MtlForm mtlForm(const Params& p) {
+        const float dielectricF0 = std::min(fresnelF0(glm::vec3(p.specularIor), glm::vec3(0.0f)).x * p.specularWeight, 1.0f);
+        const float alpha = std::max(p.specularRoughness, 0.03f);
+        return {.illum = 2, .diffuse = p.baseWeight * p.baseColor * (1.0f - p.baseMetalness),
+                .specular = glm::mix(glm::vec3(dielectricF0) * p.specularColor, p.baseColor, p.baseMetalness),
+                .exponent = 2.0f / (alpha * alpha * alpha * alpha) - 2.0f,  // α = r², Walter et al. 2007, eq. 33
+                .lost = {"OpenPBR is written as its base with a Blinn-Phong highlight (Ks = F0, Ns = 2/α² − 2); coat, fuzz, "
+                         "transmission, thin film and emission are not kept"}};
+    }
+    static constexpr bool gltfOpenPbr = true;
+    static Appearance appearance(const Params& p) {
+        // OpenPBR's anisotropic mapping: α_t = r²·√(2/(1 + (1 − a)²)), α_b = (1 − a)·α_t.
+        const float r = p.specularRoughness, anisotropy = p.specularAnisotropy;
+        const float alphaT = std::min(1.0f, r * r * std::sqrt(2.0f / (1.0f + (1.0f - anisotropy) * (1.0f - anisotropy))));
+        Appearance a{.alpha = {glm::vec2(alphaT, (1.0f - anisotropy) * alphaT),
+                               anisotropy > 0.0f ? std::vector<std::string>{"specular_roughness", "specular_roughness_anisotropy"}
+                                                 : std::vector<std::string>{"specular_roughness"}}};
+        const glm::vec3 base = p.baseColor * p.baseWeight;
+        if (p.transmissionWeight >= 0.5f) {
+            a.glassIor = {p.specularIor, {"specular_ior"}};
+            const glm::vec3 tint = glm::max(p.transmissionColor, glm::vec3(1e-4f));
+            if (p.transmissionDepth > 0.0f) a.absorption = {-glm::log(tint) / p.transmissionDepth, {"transmission_color", "transmission_depth"}};
+            a.alpha.from.clear();  // Glint's glass is smooth
+        } else if (p.baseMetalness >= 0.5f) {
+            a.specular = {base, {"base_color", "base_metalness"}};
+            const glm::vec3 f0 = glm::clamp(base, glm::vec3(0.0f), glm::vec3(0.999f));
+            a.ior = {glm::vec3(1.0f), {"base_metalness"}};
+            a.extinction = {glm::vec3(conductorExtinctionFromF0(f0.r), conductorExtinctionFromF0(f0.g), conductorExtinctionFromF0(f0.b)),
+                            {"base_color", "base_metalness"}};
+        } else {
+            a.diffuse = {base, p.baseWeight != 1.0f ? std::vector<std::string>{"base_color", "base_weight"}
+                                                    : std::vector<std::string>{"base_color"}};
+            a.ior = {glm::vec3(p.specularIor), {"specular_ior"}};
+            a.extinction = {glm::vec3(0.0f), {}};
+        }
+        return a;
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        const Appearance& a = to.source();
+        if (a.glassIor) {
+            to.set("transmission_weight", 1.0f);
+            to.set("specular_ior", *a.glassIor);
+            to.use(a.glassIor, joinedNames(a.glassIor.from) + " → specular_ior, transmission_weight 1");
+            if (a.absorption) {
+                // Beer-Lambert over 1 m: transmission_color = e^(−σ·1 m) at transmission_depth 1 m.
+                to.set("transmission_depth", 1.0f);
+                to.set("transmission_color", glm::exp(-*a.absorption));
+                to.use(a.absorption, joinedNames(a.absorption.from) + " → transmission_color at transmission_depth 1 m");
+            }
+        } else if (to.metal() || (a.specular && !a.diffuse && !a.ior)) {
+            to.set("base_metalness", 1.0f);
+            to.reflectanceTo("base_color");
+        } else {
+            to.diffuseTo("base_color");
+            if (a.ior) {
+                to.set("specular_ior", std::max((*a.ior).g, 1.0f));
+                to.use(a.ior, joinedNames(a.ior.from) + " → specular_ior (green channel)");
+            } else if (a.specular) {
+                to.set("specular_ior", dielectricIorFromF0((*a.specular).g));
+                to.use(a.specular, joinedNames(a.specular.from) + " → specular_ior (same F0)");
+            }
+        }
+        if (a.alpha && !a.glassIor) {
+            // Inverting OpenPBR's mapping: a = 1 − α_b/α_t, r = √(α_t / √(2/(1 + (1 − a)²))).
+            const float alphaT = std::max((*a.alpha).x, (*a.alpha).y), alphaB = std::min((*a.alpha).x, (*a.alpha).y);
+            const float anisotropy = alphaT > 0.0f ? 1.0f - alphaB / alphaT : 0.0f;
+            const float stretch = std::sqrt(2.0f / (1.0f + (1.0f - anisotropy) * (1.0f - anisotropy)));
+            if (anisotropy > 1e-3f) to.set("specular_roughness_anisotropy", anisotropy);
+            to.alphaTo("specular_roughness", std::sqrt(alphaT / stretch), anisotropy > 1e-3f ? " (r = √α, with anisotropy)" : " (r = √α)");
+        }
+    }
 };
 
 }  // namespace glint

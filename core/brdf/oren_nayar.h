@@ -7,6 +7,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -73,6 +75,12 @@ struct OrenNayar {
     static constexpr auto eval = evalOrenNayar;
     static constexpr auto ambientReflectance = ambientReflectanceOrenNayar;
     static constexpr const char* environmentResponse = "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo)";
+    static MtlForm mtlForm(const Params& p) {
+        return {.diffuse = p.albedo, .lost = {"roughness σ is not kept (written as Lambert)"}};
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
+    static Appearance appearance(const Params& p) { return {.diffuse = {p.albedo, {"albedo"}}}; }
+    static void takeAppearance(AppearanceWriter& to) { to.diffuseTo("albedo"); }
 };
 
 }  // namespace glint

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
+#include "brdf/microfacet.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -90,6 +93,23 @@ struct Phong {
     static constexpr auto ambientReflectance = ambientReflectancePhong;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(4n+2)) (w = 1 for the normalized form)";
     static bool isReciprocal(const Params& p) { return p.form != PhongForm::Lecture; }  // the lecture form is not
+    static MtlForm mtlForm(const Params& p) {
+        MtlForm form{.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular, .exponent = p.exponent};
+        if (p.form != PhongForm::Lecture) form.lost.push_back("MTL's highlight is Ks·(N·H)^Ns (the lecture form); the BRDF form is not kept");
+        form.lost.push_back("MTL has no Phong (mirror-direction) lobe; written as illum 2, which is Blinn's half-vector lobe");
+        return form;
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, p.exponent); }
+    // Phong's lobe about the mirror direction is about as wide as Blinn-Phong's with 4× the exponent.
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .specular = {p.specular, {"specular"}},
+                .alpha = {glm::vec2(alphaFromBlinnPhongExponent(4.0f * p.exponent)), {"exponent"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.reflectanceTo("specular");
+        to.alphaTo("exponent", blinnPhongExponentFromAlpha(std::max(to.isotropicAlpha(), 0.01f)) / 4.0f, " (n = (2/α² − 2)/4)");
+    }
 };
 
 }  // namespace glint

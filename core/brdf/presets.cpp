@@ -5,7 +5,7 @@
 #include "brdf/presets.h"
 
 #include "brdf/cook_torrance.h"
-#include "util/diagnostic.h"
+#include "interchange/material_values.h"
 
 namespace glint {
 namespace {
@@ -107,13 +107,9 @@ constexpr Preset kPresets[] = {
 
 Material Preset::material() const {
     Material result = Material::withDefaults(name, model);
-    const auto table = modelInfo(model).params;
     for (const PresetSetting& setting : settings) {
         if (!setting.param) break;
-        const int index = findParam(table, setting.param);
-        GLINT_CHECK(index >= 0 && "preset names a parameter its model lacks");
-        for (int c = 0; c < componentCount(table[index].kind); ++c)
-            result.values[packedOffset(table, index) + c] = setting.value[c];
+        setParam(result, setting.param, setting.value);  // checks that the model has the parameter
     }
     return result;
 }

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -88,6 +90,12 @@ struct Retroreflective {
     static constexpr auto eval = evalRetroreflective;
     static constexpr auto ambientReflectance = ambientReflectanceRetroreflective;
     static constexpr const char* environmentResponse = "k_a(ω_o)·E(n)/π (the retroreflective lobe is left out)";
+    static MtlForm mtlForm(const Params& p) {
+        return {.diffuse = p.albedo, .lost = {"the limb darkening and retroreflective lobe are not kept (written as Lambert)"}};
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
+    static Appearance appearance(const Params& p) { return {.diffuse = {p.albedo, {"albedo"}}}; }
+    static void takeAppearance(AppearanceWriter& to) { to.diffuseTo("albedo"); }
 };
 
 }  // namespace glint

@@ -3,9 +3,12 @@
 // Lambert diffuse. α_x = α_y is the isotropic model. GLSL twin: shaders/brdf/ward.glsl.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "brdf/appearance.h"
+#include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -83,6 +86,23 @@ struct Ward {
     static constexpr auto eval = evalWard;
     static constexpr auto ambientReflectance = ambientReflectanceWard;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + ρ_s·prefiltered radiance at α = √(α_x α_y)";
+    // Blinn-Phong's exponent for Ward's slopes: n = 2/(α_x α_y) − 2.
+    static MtlForm mtlForm(const Params& p) {
+        return {.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular,
+                .exponent = std::max(2.0f / (p.roughnessX * p.roughnessY) - 2.0f, 0.0f),
+                .lost = {"the Ward lobe is approximated by Blinn-Phong (Ns = 2/(α_x α_y) − 2)"}};
+    }
+    static GltfForm gltfForm(const Params& p) { return gltfFromExponent(p.diffuseAlbedo, 2.0f / (p.roughnessX * p.roughnessY) - 2.0f); }
+    // Ward's α is the RMS slope, Beckmann's m, close to GGX's α.
+    static Appearance appearance(const Params& p) {
+        return {.diffuse = {p.diffuseAlbedo, {"diffuse_albedo"}}, .specular = {p.specular, {"specular"}},
+                .alpha = {glm::vec2(p.roughnessX, p.roughnessY), {"roughness_x", "roughness_y"}}};
+    }
+    static void takeAppearance(AppearanceWriter& to) {
+        to.diffuseTo("diffuse_albedo");
+        to.reflectanceTo("specular");
+        to.anisotropicAlphaTo("roughness_x", "roughness_y");
+    }
 };
 
 }  // namespace glint

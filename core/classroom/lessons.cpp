@@ -60,11 +60,7 @@ Result<LessonList> parseLessonList(const std::string& text, const std::string& f
     }
 }
 
-Result<LessonList> loadLessonList(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseLessonList(*text, path);
-}
+Result<LessonList> loadLessonList(const std::string& path) { return parseTextFile(path, parseLessonList); }
 
 std::string defaultLessonListPath() {
     if (const char* chosen = std::getenv("GLINT_LESSONS"); chosen && *chosen) return chosen;

@@ -3,18 +3,11 @@
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
-#include <cctype>
+
+#include "util/text.h"
 
 namespace glint {
 namespace {
-
-std::string extensionOf(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
-    std::string extension = path.substr(dot + 1);
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension;
-}
 
 template <class Pixel>
 Status writeImage(const std::string& path, int width, int height, const Pixel* pixels, OIIO::TypeDesc type, int pngCompression = 6) {
@@ -29,28 +22,32 @@ Status writeImage(const std::string& path, int width, int height, const Pixel* p
     return success();
 }
 
-template <class Pixel>
-Result<std::vector<Pixel>> readImage(const std::string& path, OIIO::TypeDesc type, int& width, int& height) {
+// An image file as RGB pixels of `Image` (RadianceImage or DisplayImage): grey repeats its one
+// channel, channels past the third are dropped.
+template <class Image>
+Result<Image> readImage(const std::string& path, OIIO::TypeDesc type) {
     auto input = OIIO::ImageInput::open(path);
     if (!input) return makeError("cannot read image: " + OIIO::geterror(), {path});
     const OIIO::ImageSpec& spec = input->spec();
-    width = spec.width;
-    height = spec.height;
-    if (width <= 0 || height <= 0 || spec.nchannels < 1)
+    Image image;
+    image.width = spec.width;
+    image.height = spec.height;
+    if (image.width <= 0 || image.height <= 0 || spec.nchannels < 1)
         return makeError("image has no pixels", {path});
-    std::vector<Pixel> all(static_cast<size_t>(width) * height * spec.nchannels);
+    const size_t count = static_cast<size_t>(image.width) * image.height;
+    decltype(image.pixels) all(count * spec.nchannels);
     if (!input->read_image(0, 0, 0, spec.nchannels, type, all.data()))
         return makeError("cannot read image: " + input->geterror(), {path});
-    std::vector<Pixel> rgb(static_cast<size_t>(width) * height * 3);
-    for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i)
-        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = all[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
-    return rgb;
+    image.pixels.resize(count * 3);
+    for (size_t i = 0; i < count; ++i)
+        for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = all[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+    return image;
 }
 
 }  // namespace
 
 bool isFloatImagePath(const std::string& path) {
-    const std::string extension = extensionOf(path);
+    const std::string extension = lowerExtension(path);
     return extension == "exr" || extension == "hdr";
 }
 
@@ -62,20 +59,8 @@ Status writeDisplayImage(const DisplayImage& image, const std::string& path, int
     return writeImage(path, image.width, image.height, image.pixels.data(), OIIO::TypeDesc::UINT8, pngCompression);
 }
 
-Result<RadianceImage> readRadianceImage(const std::string& path) {
-    RadianceImage image;
-    auto pixels = readImage<float>(path, OIIO::TypeDesc::FLOAT, image.width, image.height);
-    if (!pixels) return pixels.error();
-    image.pixels = std::move(*pixels);
-    return image;
-}
+Result<RadianceImage> readRadianceImage(const std::string& path) { return readImage<RadianceImage>(path, OIIO::TypeDesc::FLOAT); }
 
-Result<DisplayImage> readDisplayImage(const std::string& path) {
-    DisplayImage image;
-    auto pixels = readImage<uint8_t>(path, OIIO::TypeDesc::UINT8, image.width, image.height);
-    if (!pixels) return pixels.error();
-    image.pixels = std::move(*pixels);
-    return image;
-}
+Result<DisplayImage> readDisplayImage(const std::string& path) { return readImage<DisplayImage>(path, OIIO::TypeDesc::UINT8); }
 
 }  // namespace glint

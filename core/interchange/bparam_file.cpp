@@ -3,7 +3,6 @@
 #include "interchange/bparam_file.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 
 #include "scene/preview_stage.h"
@@ -12,15 +11,6 @@
 #include "util/text.h"
 
 namespace glint {
-namespace {
-
-std::string formatNumber(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-}  // namespace
 
 Result<BparamFile> parseBparamFile(std::string_view text, const std::string& path) {
     if (text.size() > kMaxBrdfFileBytes) return makeError("the file is larger than 1 MiB", {path, 1, 1});

@@ -405,10 +405,6 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
     return file;
 }
 
-Result<BrdfFile> loadBrdfFile(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseBrdfFile(*text, path);
-}
+Result<BrdfFile> loadBrdfFile(const std::string& path) { return parseTextFile(path, parseBrdfFile); }
 
 }  // namespace glint

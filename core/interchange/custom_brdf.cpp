@@ -1,12 +1,12 @@
 // A .brdf file as a Glint model (see custom_brdf.h).
 #include "interchange/custom_brdf.h"
 
-#include <cctype>
 #include <filesystem>
 
 #include "scene/preview_stage.h"
 #include "scene/scene.h"
 #include "snapshot/case_source.h"
+#include "util/text.h"
 
 namespace glint {
 
@@ -44,9 +44,7 @@ Material customBrdfMaterial(std::shared_ptr<const CustomBrdf> brdf) {
 }
 
 bool isBrdfFilePath(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".brdf";
+    return lowerExtension(path) == "brdf";
 }
 
 Result<Scene> loadBrdfPreviewStage(const std::string& path, std::vector<Diagnostic>* warnings, int width, int height) {

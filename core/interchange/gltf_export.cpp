@@ -11,12 +11,12 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
-#include "brdf/fresnel.h"
+#include "brdf/export_forms.h"
+#include "brdf/model_registry.h"
 #include "geometry/mesh.h"
 #include "interchange/base64.h"
 #include "interchange/gltf_openpbr.h"
 #include "interchange/gltf_textures.h"
-#include "interchange/material_values.h"
 #include "interchange/measured_brdf.h"
 #include "light/photometry.h"
 #include "scene/json_vectors.h"
@@ -81,94 +81,29 @@ void addSphere(json& gltf) {
 
 // --- material -------------------------------------------------------------------------------
 
-
-// Glint → glTF for the models other than openpbr: Cook-Torrance with κ = 0 is a dielectric (baseColor = ρ_d, ior = n); with κ > 0
-// a metal (baseColor = F0 of n + iκ); glass is a transmitting dielectric with volume absorption.
-// Other models go to the nearest metallic-roughness material, with a warning.
-json materialJson(const Material& material, std::set<std::string>& extensionsUsed, std::vector<Diagnostic>& warnings) {
-    auto lost = [&](const std::string& what) {
-        warnings.push_back(makeError("warning: '" + material.name + "' (" + modelInfo(material.model).id + "): " + what));
-    };
-    if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
-        lost("the measured BRDF " + material.measured->displayName + " has no glTF form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
-    json out = {{"name", material.name}};
-    json pbr;
-    json extensions = json::object();
-    auto setIor = [&](float ior) {
-        extensions["KHR_materials_ior"] = {{"ior", ior}};
-        extensionsUsed.insert("KHR_materials_ior");
-    };
-    auto dielectric = [&](glm::vec3 diffuse, glm::vec3 ior, float roughness) {
-        pbr = {{"baseColorFactor", {diffuse.r, diffuse.g, diffuse.b, 1.0}}, {"metallicFactor", 0.0},
-               {"roughnessFactor", std::sqrt(roughness)}};
-        if (ior.r != ior.g || ior.g != ior.b) lost("a per-channel index is written as its green channel " + std::to_string(ior.g));
-        setIor(ior.g);
-    };
-    auto metal = [&](glm::vec3 diffuse, glm::vec3 ior, glm::vec3 extinction, float roughness) {
-        const glm::vec3 f0 = fresnelF0(ior, extinction);
-        pbr = {{"baseColorFactor", {f0.r, f0.g, f0.b, 1.0}}, {"metallicFactor", 1.0}, {"roughnessFactor", std::sqrt(roughness)}};
-        if (diffuse != glm::vec3(0.0f)) lost("a metal's diffuse albedo is not kept");
-        if (ior != glm::vec3(1.0f)) lost("n + iκ is written as its normal-incidence reflectance (imported back with n = 1)");
-    };
-    switch (material.model) {
-        case BrdfModel::CookTorrance:
-        case BrdfModel::GgxAnisotropic: {
-            const bool anisotropic = material.model == BrdfModel::GgxAnisotropic;
-            const float alpha = anisotropic ? std::sqrt(paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y"))
-                                            : paramScalar(material, "roughness");
-            if (anisotropic) lost("anisotropy is not kept (α = √(α_x α_y))");
-            const glm::vec3 extinction = paramValue(material, "extinction");
-            if (extinction == glm::vec3(0.0f)) dielectric(paramValue(material, "diffuse_albedo"), paramValue(material, "ior"), alpha);
-            else metal(paramValue(material, "diffuse_albedo"), paramValue(material, "ior"), extinction, alpha);
-            if (!anisotropic && (paramScalar(material, "distribution") != 1.0f || paramScalar(material, "geometry") != 1.0f))
-                lost("glTF's BRDF is GGX with Smith masking; other viewers render it so");
-            if (paramScalar(material, "fresnel") != 0.0f) lost("glTF's BRDF uses Schlick's Fresnel; other viewers render it so");
-            break;
-        }
-        case BrdfModel::Mirror:
-            metal(paramValue(material, "diffuse_albedo"), paramValue(material, "ior"), paramValue(material, "extinction"), 0.0f);
-            break;
-        case BrdfModel::Glass: {
-            pbr = {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.0}};
-            setIor(paramScalar(material, "ior"));
-            extensions["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
-            extensionsUsed.insert("KHR_materials_transmission");
-            const glm::vec3 absorption = paramValue(material, "absorption");
-            const float strongest = std::max({absorption.r, absorption.g, absorption.b});
-            if (strongest > 0.0f) {
-                // KHR_materials_volume: σ = −ln(c)/d. Choosing d = 1/max σ keeps every c ≥ e^−1 (no underflow).
-                const float distance = 1.0f / strongest;
-                extensions["KHR_materials_volume"] = {{"thicknessFactor", 2.0},  // the sphere's diameter
-                                                      {"attenuationDistance", distance},
-                                                      {"attenuationColor", vec3Json(glm::exp(-absorption * distance))}};
-                extensionsUsed.insert("KHR_materials_volume");
-            }
-            if (paramScalar(material, "transparency") != 0.0f) lost("classic transparency k_t is not kept (glTF is Fresnel)");
-            break;
-        }
-        case BrdfModel::Lambert:
-        case BrdfModel::OrenNayar:
-        case BrdfModel::Retroreflective:
-            dielectric(paramValue(material, "albedo"), glm::vec3(1.5f), 1.0f);
-            lost("written as a rough dielectric (roughness 1) with base colour = albedo");
-            break;
-        case BrdfModel::OpenPbr:  // gltfOpenPbrMaterial (gltf_openpbr.h)
-            GLINT_CHECK(false);
-            break;
-        case BrdfModel::BlinnPhong:
-        case BrdfModel::Phong:
-        case BrdfModel::Ward: {
-            const float exponent = material.model == BrdfModel::Ward
-                                       ? 2.0f / (paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y")) - 2.0f
-                                       : paramScalar(material, "exponent");
-            const float alpha = std::clamp(std::sqrt(2.0f / (exponent + 2.0f)), 0.001f, 1.0f);  // Walter et al. 2007, eq. 33
-            dielectric(paramValue(material, "diffuse_albedo"), glm::vec3(1.5f), alpha);
-            lost("written as a GGX dielectric (ior 1.5, α = √(2/(n + 2))); k_s is not kept");
-            break;
-        }
+// A model's glTF form (brdf/export_forms.h) as a glTF material.
+json formJson(const std::string& name, const GltfForm& form, std::set<std::string>& extensionsUsed) {
+    const glm::vec3 base = form.baseColor;
+    json out = {{"name", name},
+                {"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}},
+                                          {"metallicFactor", form.kind == GltfForm::Kind::Metal ? 1.0 : 0.0},
+                                          {"roughnessFactor", std::sqrt(form.alpha)}}}};
+    if (form.kind == GltfForm::Kind::Metal) return out;
+    json& extensions = out["extensions"];
+    extensions["KHR_materials_ior"] = {{"ior", form.ior}};
+    extensionsUsed.insert("KHR_materials_ior");
+    if (form.kind == GltfForm::Kind::Dielectric) return out;
+    extensions["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+    extensionsUsed.insert("KHR_materials_transmission");
+    const float strongest = std::max({form.absorption.r, form.absorption.g, form.absorption.b});
+    if (strongest > 0.0f) {
+        // KHR_materials_volume: σ = −ln(c)/d. Choosing d = 1/max σ keeps every c ≥ e^−1 (no underflow).
+        const float distance = 1.0f / strongest;
+        extensions["KHR_materials_volume"] = {{"thicknessFactor", 2.0},  // the sphere's diameter
+                                              {"attenuationDistance", distance},
+                                              {"attenuationColor", vec3Json(glm::exp(-form.absorption * distance))}};
+        extensionsUsed.insert("KHR_materials_volume");
     }
-    out["pbrMetallicRoughness"] = pbr;
-    if (!extensions.empty()) out["extensions"] = extensions;
     return out;
 }
 
@@ -238,17 +173,30 @@ ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> 
     gltf["scenes"] = json::array({{{"nodes", json::array({0})}}});
     gltf["nodes"] = json::array({{{"name", "sphere"}, {"mesh", 0}}});
     addSphere(gltf);
-    const bool openPbr = imported.material.model == BrdfModel::OpenPbr && !imported.material.measured;
-    if (openPbr) {
-        std::vector<std::string> used;
-        gltf["materials"] = json::array({gltfOpenPbrMaterial(imported, textures, used, out.warnings)});
-        extensionsUsed.insert(used.begin(), used.end());
-        textures.writeInto(gltf);
-    } else {
-        gltf["materials"] = json::array({materialJson(imported.material, extensionsUsed, out.warnings)});
-        if (!imported.material.textures.empty())
-            out.warnings.push_back(makeError("warning: material textures are written to glTF for the openpbr model only"));
-    }
+    const Material& material = imported.material;
+    auto lost = [&](const std::string& what) {
+        out.warnings.push_back(makeError("warning: '" + material.name + "' (" + modelInfo(material.model).id + "): " + what));
+    };
+    if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
+        lost("the measured BRDF " + material.measured->displayName + " has no glTF form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
+    const json written = dispatch(material.model, [&](auto model) -> json {
+        using M = decltype(model);
+        if constexpr (IsGltfOpenPbr<M>) {
+            std::vector<std::string> used;
+            json openPbr = gltfOpenPbrMaterial(imported, textures, used, out.warnings);
+            extensionsUsed.insert(used.begin(), used.end());
+            return openPbr;
+        } else {
+            GltfForm form{.lost = {"the model has no glTF form; written as a rough dielectric"}};
+            if constexpr (HasGltfForm<M>) form = M::gltfForm(unpack<M>(material.values.data()));
+            for (const std::string& what : form.lost) lost(what);
+            if (!material.textures.empty())
+                out.warnings.push_back(makeError("warning: material textures are written to glTF for the openpbr model only"));
+            return formJson(material.name, form, extensionsUsed);
+        }
+    });
+    gltf["materials"] = json::array({written});
+    textures.writeInto(gltf);  // the openpbr material's textures; none for the other models
     if (!imported.textures.empty() && imported.gltfKept.empty())
         out.warnings.push_back(makeError("warning: texture references are not written to glTF (Glint does not render them)"));
     addLights(gltf, lights, out.warnings);

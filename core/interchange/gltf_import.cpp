@@ -226,10 +226,6 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
     return result;
 }
 
-Result<ImportedFile> loadGltf(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseGltf(*text, path);
-}
+Result<ImportedFile> loadGltf(const std::string& path) { return parseTextFile(path, parseGltf); }
 
 }  // namespace glint

@@ -1,15 +1,12 @@
 // The table of interchange formats (see import_formats.h).
 #include "interchange/import_formats.h"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-
 #include "interchange/glb.h"
 #include "interchange/gltf.h"
 #include "interchange/materialx.h"
 #include "interchange/measured_brdf.h"
 #include "interchange/mtl.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -27,9 +24,7 @@ constexpr ImportFormat kFormats[] = {
 std::span<const ImportFormat> importFormats() { return kFormats; }
 
 const ImportFormat* findImportFormat(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = "." + lowerExtension(path);
     for (const ImportFormat& format : kFormats)
         if (extension == format.extension) return &format;
     return nullptr;

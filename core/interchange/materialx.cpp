@@ -240,11 +240,7 @@ Result<ImportedFile> parseMaterialX(std::string_view text, const std::string& fi
     return imported;
 }
 
-Result<ImportedFile> loadMaterialX(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseMaterialX(*text, path);
-}
+Result<ImportedFile> loadMaterialX(const std::string& path) { return parseTextFile(path, parseMaterialX); }
 
 ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const std::string& folder) {
     ExportedText out;

@@ -8,12 +8,16 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <string_view>
 
+#include "brdf/export_forms.h"
 #include "brdf/fresnel.h"
+#include "brdf/model_registry.h"
 #include "interchange/material_values.h"
 #include "interchange/measured_brdf.h"
 #include "interchange/text_checks.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -77,14 +81,8 @@ std::string hexByte(char c) {
     return text;
 }
 
-// The whitespace of splitWords (std::isspace in the C locale), so that the two agree.
-constexpr const char* kWhitespace = " \t\r\n\f\v";
-
-std::string trim(const std::string& text) {
-    const size_t first = text.find_first_not_of(kWhitespace);
-    if (first == std::string::npos) return "";
-    return text.substr(first, text.find_last_not_of(kWhitespace) - first + 1);
-}
+// White space as splitWords sees it (std::isspace in the C locale).
+std::string trim(std::string_view text) { return std::string(trimmed(text)); }
 
 // --- statements -----------------------------------------------------------------------------
 
@@ -223,10 +221,6 @@ void readStatement(const Line& line, MtlBlock& block, std::vector<Diagnostic>& w
 
 // --- illum mapping --------------------------------------------------------------------------
 
-// Normal-incidence reflectance R of a mirror made of a conductor with n = 1: κ = 2√(R/(1−R))
-// inverts R = κ²/(4 + κ²) (Born & Wolf §14.2 at θ = 0).
-float extinctionForReflectance(float reflectance) { return 2.0f * std::sqrt(reflectance / (1.0f - reflectance)); }
-
 ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file) {
     const SourceLocation where{file, block.line, 0};
     ImportedMaterial imported;
@@ -259,7 +253,7 @@ ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file) {
                 warn("'" + block.name + "': Ks = 1 (a perfect mirror) is imported as reflectance 0.999");
                 reflectance = 0.999f;
             }
-            extinction[c] = extinctionForReflectance(reflectance);
+            extinction[c] = conductorExtinctionFromF0(reflectance);  // a conductor with n = 1
         }
         setParam(material, "ior", 1.0f);
         setParam(material, "extinction", extinction);
@@ -332,26 +326,14 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
     return result;
 }
 
-Result<ImportedFile> loadMtl(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseMtl(*text, path);
-}
+Result<ImportedFile> loadMtl(const std::string& path) { return parseTextFile(path, parseMtl); }
 
 // --- writer ---------------------------------------------------------------------------------
 
 namespace {
 
-std::string numbers(glm::vec3 value) {
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "%.9g %.9g %.9g", value.r, value.g, value.b);
-    return buffer;
-}
-std::string number(float value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
-}
+std::string number(float value) { return formatNumber(value, "%.9g"); }
+std::string numbers(glm::vec3 value) { return number(value.r) + " " + number(value.g) + " " + number(value.b); }
 
 // Names go on one line: control characters become spaces.
 std::string oneLine(std::string name) {
@@ -375,89 +357,21 @@ ExportedText writeMtl(std::span<const ImportedMaterial> materials) {
         };
         if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
             lost("the measured BRDF " + material.measured->displayName + " has no MTL form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
-        glm::vec3 diffuse(0.0f), specular(0.0f);
-        float exponent = 0.0f, ior = 1.0f;
-        int illum = 1;
-        switch (material.model) {
-            case BrdfModel::Lambert: diffuse = paramValue(material, "albedo"); break;
-            case BrdfModel::BlinnPhong:
-            case BrdfModel::Phong:
-                illum = 2;
-                diffuse = paramValue(material, "diffuse_albedo");
-                specular = paramValue(material, "specular");
-                exponent = paramScalar(material, "exponent");
-                if (paramScalar(material, "form") != 0.0f)
-                    lost("MTL's highlight is Ks·(N·H)^Ns (the lecture form); the BRDF form is not kept");
-                if (material.model == BrdfModel::Phong)
-                    lost("MTL has no Phong (mirror-direction) lobe; written as illum 2, which is Blinn's half-vector lobe");
-                break;
-            case BrdfModel::Mirror:
-                illum = 3;
-                diffuse = paramValue(material, "diffuse_albedo");
-                specular = fresnelF0(paramValue(material, "ior"), paramValue(material, "extinction"));
-                lost("the complex index n + iκ is written as its normal-incidence reflectance Ks");
-                break;
-            case BrdfModel::Glass:
-                illum = 7;
-                ior = paramScalar(material, "ior");
-                specular = glm::vec3(1.0f);
-                if (paramValue(material, "absorption") != glm::vec3(0.0f)) lost("absorption σ is not kept");
-                if (paramScalar(material, "transparency") != 0.0f) lost("classic transparency k_t is not kept");
-                break;
-            case BrdfModel::CookTorrance:
-            case BrdfModel::GgxAnisotropic: {
-                illum = 2;
-                diffuse = paramValue(material, "diffuse_albedo");
-                specular = fresnelF0(paramValue(material, "ior"), paramValue(material, "extinction"));
-                const float alpha = material.model == BrdfModel::CookTorrance
-                                        ? paramScalar(material, "roughness")
-                                        : std::sqrt(paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y"));
-                exponent = 2.0f / (alpha * alpha) - 2.0f;  // Walter et al. 2007, eq. 33: Phong n ≈ 2/α² − 2
-                if (exponent < 0.0f) exponent = 0.0f;
-                lost("the microfacet lobe is approximated by Blinn-Phong (Ks = F(0°), Ns = 2/α² − 2)");
-                break;
-            }
-            case BrdfModel::OpenPbr: {
-                // The base only: Kd = weight·colour·(1 − metalness); Ks = the specular F0 mixed with the metal's colour.
-                illum = 2;
-                const float metalness = paramScalar(material, "base_metalness");
-                const glm::vec3 color = paramValue(material, "base_color");
-                const float n = paramScalar(material, "specular_ior");
-                const float dielectricF0 = std::min((n - 1.0f) * (n - 1.0f) / ((n + 1.0f) * (n + 1.0f)) * paramScalar(material, "specular_weight"), 1.0f);
-                diffuse = paramScalar(material, "base_weight") * color * (1.0f - metalness);
-                specular = glm::mix(glm::vec3(dielectricF0) * paramValue(material, "specular_color"), color, metalness);
-                const float alpha = std::max(paramScalar(material, "specular_roughness"), 0.03f);
-                exponent = 2.0f / (alpha * alpha * alpha * alpha) - 2.0f;  // α = r², Walter et al. 2007, eq. 33
-                lost("OpenPBR is written as its base with a Blinn-Phong highlight (Ks = F0, Ns = 2/α² − 2); coat, fuzz, "
-                     "transmission, thin film and emission are not kept");
-                break;
-            }
-            case BrdfModel::Ward:
-                illum = 2;
-                diffuse = paramValue(material, "diffuse_albedo");
-                specular = paramValue(material, "specular");
-                exponent = 2.0f / (paramScalar(material, "roughness_x") * paramScalar(material, "roughness_y")) - 2.0f;
-                if (exponent < 0.0f) exponent = 0.0f;
-                lost("the Ward lobe is approximated by Blinn-Phong (Ns = 2/(α_x α_y) − 2)");
-                break;
-            case BrdfModel::OrenNayar:
-                diffuse = paramValue(material, "albedo");
-                lost("roughness σ is not kept (written as Lambert)");
-                break;
-            case BrdfModel::Retroreflective:
-                diffuse = paramValue(material, "albedo");
-                lost("the limb darkening and retroreflective lobe are not kept (written as Lambert)");
-                break;
-        }
+        const MtlForm form = dispatch(material.model, [&](auto model) {
+            using M = decltype(model);
+            if constexpr (HasMtlForm<M>) return M::mtlForm(unpack<M>(material.values.data()));
+            else return MtlForm{.lost = {"the model has no MTL form; written as a black Lambert"}};
+        });
+        for (const std::string& what : form.lost) lost(what);
         text += "\nnewmtl " + name + "\n";
         text += "# Glint model: " + std::string(modelInfo(material.model).id) + "\n";
-        text += "Ka " + numbers(diffuse) + "\n";
-        text += "Kd " + numbers(diffuse) + "\n";
-        text += "Ks " + numbers(specular) + "\n";
-        text += "Ns " + number(exponent) + "\n";
-        text += "Ni " + number(ior) + "\n";
+        text += "Ka " + numbers(form.diffuse) + "\n";
+        text += "Kd " + numbers(form.diffuse) + "\n";
+        text += "Ks " + numbers(form.specular) + "\n";
+        text += "Ns " + number(form.exponent) + "\n";
+        text += "Ni " + number(form.ior) + "\n";
         text += "d 1\n";
-        text += "illum " + std::to_string(illum) + "\n";
+        text += "illum " + std::to_string(form.illum) + "\n";
         for (const TextureReference& texture : imported.textures) {
             if (!kTextureStatements.count(texture.slot)) {
                 lost("texture '" + texture.slot + "' has no MTL statement; not written");

@@ -1,6 +1,6 @@
 // A parameter table's values in JSON: one key per parameter (numbers, [r, g, b] or one grey
 // number, booleans, enum ids), read with located errors against the table's valid ranges.
-// Shared by built-in materials (scene_json.cpp) and .brdf materials (custom_material_json.cpp).
+// Shared by built-in materials (scene_json.cpp) and .brdf materials (file_material_json.cpp).
 #pragma once
 
 #include <span>

@@ -5,8 +5,7 @@
 #include <array>
 
 #include "display/quantisation.h"
-#include "interchange/custom_material_json.h"
-#include "interchange/measured_material_json.h"
+#include "interchange/file_material_json.h"
 #include "scene/format_migration.h"
 #include "scene/environment_json.h"
 #include "scene/json_object_reader.h"
@@ -332,11 +331,7 @@ Result<Scene> parseScene(const std::string& text, const std::string& file) {
     }
 }
 
-Result<Scene> loadScene(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseScene(*text, path);
-}
+Result<Scene> loadScene(const std::string& path) { return parseTextFile(path, parseScene); }
 
 json sceneToJson(const Scene& scene, const std::string& file) {
     json out = {{"format", kSceneFormat}, {"version", kSceneFormatVersion}};
@@ -390,11 +385,7 @@ Result<Material> parseMaterial(const std::string& text, const std::string& file)
     }
 }
 
-Result<Material> loadMaterial(const std::string& path) {
-    auto text = readTextFile(path);
-    if (!text) return text.error();
-    return parseMaterial(*text, path);
-}
+Result<Material> loadMaterial(const std::string& path) { return parseTextFile(path, parseMaterial); }
 
 json materialToJson(const Material& material, const std::string& file) {
     json out = {{"format", kMaterialFormat}, {"version", kSceneFormatVersion}};

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -14,6 +15,13 @@ namespace glint {
 inline std::string_view trimmed(std::string_view text) {
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+    return text;
+}
+
+// A number through a printf format: "%g" for people, "%.9g" to read back as the same float.
+inline std::string formatNumber(double value, const char* format = "%g") {
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
     return text;
 }
 

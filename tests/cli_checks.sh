@@ -1,0 +1,28 @@
+# What the command-line test scripts share; each sources it after setting $glint and $out:
+# a fresh output folder, counting passes and failures, the exit-code-2 check and the summary.
+# Sourced, never run; the scripts keep their own checks beside these.
+rm -rf "$out" && mkdir -p "$out"
+failures=0
+passes=0
+pass() { echo "ok   $1"; passes=$((passes + 1)); }
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+# expect_error NAME REGEX [--] ARGS...: `glint ARGS` exits with code 2 and its stderr matches REGEX.
+expect_error() {
+  local name=$1 pattern=$2
+  shift 2
+  [[ ${1-} == -- ]] && shift
+  "$glint" "$@" >"$out/$name.stdout" 2>"$out/$name.stderr"
+  local code=$?
+  if [[ $code -eq 2 ]] && grep -Eq -- "$pattern" "$out/$name.stderr"; then
+    pass "$name: $(head -n 1 "$out/$name.stderr")"
+  else
+    fail "$name: exit code $code (expected 2), stderr (expected to match /$pattern/):"; cat "$out/$name.stderr"
+  fi
+}
+
+# The counts; the script's exit status is 0 when nothing failed.
+summary() {
+  echo "$passes passed, $failures failed"
+  [[ $failures -eq 0 ]]
+}
