@@ -307,6 +307,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         };
         glm::ivec2 renderPixels = drawnAt(plan.pixelScale);
         bool waitedForPrograms = false;
+        double renderMilliseconds = 0.0;  // this iteration's render (one band of a banded frame)
         if (plan.render) {
             // Programs still compiling in the background: a frame with their generic stand-ins is
             // drawn at reduced resolution (they are slower), or, where there is none or the frame
@@ -341,7 +342,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
-            const double renderMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            renderMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             // A frame drawn in bands shows its bands' time so far, the whole frame's at the last.
             refinedMilliseconds = plan.band == 0 ? renderMilliseconds : refinedMilliseconds + renderMilliseconds;
             state.lastRenderMilliseconds = refinedMilliseconds;
@@ -391,11 +392,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %lld triangles, %d stand-in programs\n",
-                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, ms(frameStart, now),
+                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %d stand-in programs, %lld triangles\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, renderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
                          ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
-                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.triangleCount, state.standInProgramsShown);
+                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
         }
         if (logFrames && waitedForPrograms)
             std::fprintf(stderr, "glint programs: the frame waits for programs compiling in the background; input to presented %.1f ms\n",
