@@ -192,6 +192,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     glm::ivec2 renderedSize{0, 0};
     std::uint64_t renderedRevision = ~0ull;
     int renderedScale = 1;
+    DisplaySettings shownDisplay;  // of the frame last drawn (a change may wait for its programs)
     std::string shownTitle;
     ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
     UiLayerCache uiLayers;  // unchanged windows copied, not drawn again (ui_layer_cache.h)
@@ -319,7 +320,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                 renderPixels = drawnAt(plan.pixelScale);
                 ready = renderer.programsReady(*drawn, renderPixels.x, renderPixels.y);  // without MSAA, say
             }
-            if (ready == Ready::No || (ready == Ready::WithStandIns && plan.bands > 1)) {
+            // Only where the targets still hold the frame on screen (nothing else drew with the renderer).
+            const bool frameKept = renderedSize == viewportPixels;
+            if (frameKept && (ready == Ready::No || (ready == Ready::WithStandIns && plan.bands > 1))) {
                 plan.render = false;
                 state.waitingForPrograms = waitedForPrograms = true;
             }
@@ -360,6 +363,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedSize = viewportPixels;
             renderedRevision = state.session.revision();
             renderedScale = plan.pixelScale;
+            shownDisplay = drawn->display;
             framesToDraw = std::max(framesToDraw, 2);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -376,7 +380,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             glEnable(GL_SCISSOR_TEST);
             glScissor(viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows, renderedSize.x, refinedRows);
         }
-        renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
+        renderer.displayToScreen(shownDisplay, viewportLowerLeft, renderedScale);
         glDisable(GL_SCISSOR_TEST);
         if (logFrames) glFinish();  // so that the log can tell the phases apart
         const auto displayed = std::chrono::steady_clock::now();
