@@ -141,5 +141,22 @@ TEST(ViewportRefresh, AStandInNotYetMadeLeavesTheFrameFull) {
     EXPECT_FALSE(refresh.plan(idle(3.0)).render);
 }
 
+TEST(ViewportRefresh, AFrameWithGenericStandInProgramsIsRefinedOnlyOnceTheProgramsArrive) {
+    ViewportRefresh refresh = afterFullFrame(20.0);  // a fast scene
+    // A model switch drawn with the generic programs while the specialised ones compile.
+    RefreshPlan plan = refresh.plan(change(5.0, false));
+    EXPECT_TRUE(plan.render);
+    refresh.rendered(plan, 30.0, true);
+    Input waiting = idle(6.0);
+    waiting.waitingForPrograms = true;
+    EXPECT_FALSE(refresh.plan(waiting).render);  // long after the pause, still waiting
+    EXPECT_GT(refresh.secondsToRefine(6.0, true), 1e8);  // the programs' arrival wakes the loop
+    plan = refresh.plan(idle(6.5));  // arrived
+    EXPECT_TRUE(plan.render);
+    EXPECT_EQ(plan.pixelScale, 1);
+    refresh.rendered(plan, 20.0, false);
+    EXPECT_FALSE(refresh.plan(idle(7.0)).render);
+}
+
 }  // namespace
 }  // namespace glint

@@ -1,7 +1,8 @@
 // Specialised programs (gl/shader_specialisation.h) draw the same pictures as the generic ones:
 // for every light kind (directional, point, spot, classic attenuation), a shadowed light, a sky
 // and a constant background (a clear), the fused display's choices and a material's enum choices,
-// the radiance agrees to float rounding and the 8-bit display image byte for byte.
+// and OpenPBR's layers weighted zero, the radiance agrees to float rounding and the 8-bit display
+// image byte for byte.
 #include <algorithm>
 #include <cmath>
 
@@ -105,6 +106,22 @@ TEST(Specialisation, MaterialChoicesDrawTheGenericPicture) {
                 expectSamePictures(scene, "cook_torrance " + std::to_string(distribution) + std::to_string(geometry) +
                                               std::to_string(fresnel));
             }
+}
+
+TEST(Specialisation, LayersWeightedZeroAreCompiledOutAndDrawTheGenericPicture) {
+    Scene scene = everyLightKind();
+    Material& material = scene.materials[0];
+    material = Material::withDefaults("openpbr", BrdfModel::OpenPbr);
+    const auto table = modelInfo(BrdfModel::OpenPbr).params;
+    const auto weight = [&](const char* name) -> float& { return material.values[packedOffset(table, findParam(table, name))]; };
+    weight("coat_weight") = 0.0f;
+    weight("fuzz_weight") = 0.0f;
+    const std::string defines = materialSpecialisation(material);
+    EXPECT_NE(defines.find("#define GLINT_PARAM_coat_weight 0.0"), std::string::npos) << defines;
+    EXPECT_NE(defines.find("#define GLINT_PARAM_fuzz_weight 0.0"), std::string::npos) << defines;
+    expectSamePictures(scene, "openpbr, no coat or fuzz");
+    weight("coat_weight") = 0.7f;
+    EXPECT_EQ(materialSpecialisation(material).find("GLINT_PARAM_coat_weight"), std::string::npos);
 }
 
 TEST(Specialisation, TheFramesChoicesBecomeConstants) {

@@ -37,6 +37,7 @@
 #include "editor/viewport_refresh.h"
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
+#include "gl/program_compiler.h"
 #include "gl/render_target.h"
 #include "gl/renderer.h"
 #include "image/image_io.h"
@@ -151,6 +152,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     // written (the screenshot renders its own when it saves an EXR).
     renderer.setFusedDisplay(true);
     renderer.setRadianceKept(false);
+    // New specialised programs are built on a worker thread, the loop woken when one is ready.
+    if (auto context = platform->createWorkerContext())
+        renderer.compileInBackground(std::make_unique<ProgramCompiler>(std::move(context), platform->procAddressLoader(),
+                                                                       [] { glfwPostEmptyEvent(); }));
     GLFWwindow* window = platform->window();
 
     BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
@@ -187,24 +192,28 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     glm::ivec2 renderedSize{0, 0};
     std::uint64_t renderedRevision = ~0ull;
     int renderedScale = 1;
+    DisplaySettings shownDisplay;  // of the frame last drawn (a change may wait for its programs)
     std::string shownTitle;
     ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
     UiLayerCache uiLayers;  // unchanged windows copied, not drawn again (ui_layer_cache.h)
     RenderTarget reducedFrame{GL_RGBA8, false};  // on screen while the full frame is refined in bands
     int refinedRows = 0;  // the full frame's rows drawn so far, from the top
+    double refinedMilliseconds = 0.0;  // the full frame's bands so far
     const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
     while (!state.quitNow) {
         gEventSeen = false;
-        const double secondsToWake = std::min({secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime())});
+        const double secondsToWake = std::min(
+            {secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
         if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
         else if (framesToDraw > 0) glfwPollEvents();
         else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
         else glfwWaitEvents();
         const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
         if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
+        if (renderer.adoptCompiledPrograms()) state.waitingForPrograms = false;  // programs built in the background
         secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());  // .brdf probes and hot reload
         if (gCloseRequested) {
             gCloseRequested = false;
@@ -282,21 +291,45 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedSize = {0, 0};
         }
         const bool changed = state.session.revision() != renderedRevision;
-        const RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
-                                               state.settings.simplifyMeshesWhileDragging});
-        if (plan.render) {
-            const glm::ivec2 renderPixels = (viewportPixels + plan.pixelScale - 1) / plan.pixelScale;
-            const long long shadowMapRenders = renderer.shadowMapRenders();
-            const auto start = std::chrono::steady_clock::now();
-            // A reduced-resolution preview (while dragging) skips MSAA, about 1.8x the frame on
-            // llvmpipe; the full frame after the drag smooths the edges again.
-            const Scene* drawn = &state.session.scene();
-            Scene preview;
-            if (plan.pixelScale > 1 && drawn->msaaSamples > 1) {
+        RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
+                                         state.settings.simplifyMeshesWhileDragging, state.waitingForPrograms});
+        // A reduced-resolution preview (while dragging) skips MSAA, about 1.8x the frame on
+        // llvmpipe; the full frame after the drag smooths the edges again.
+        const Scene* drawn = &state.session.scene();
+        Scene preview;
+        const auto drawnAt = [&](int scale) {
+            drawn = &state.session.scene();
+            if (scale > 1 && drawn->msaaSamples > 1) {
                 preview = *drawn;
                 preview.msaaSamples = 1;
                 drawn = &preview;
             }
+            return (viewportPixels + scale - 1) / scale;
+        };
+        glm::ivec2 renderPixels = drawnAt(plan.pixelScale);
+        bool waitedForPrograms = false;
+        double renderMilliseconds = 0.0;  // this iteration's render (one band of a banded frame)
+        if (plan.render) {
+            // Programs still compiling in the background: a frame with their generic stand-ins is
+            // drawn at reduced resolution (they are slower), or, where there is none or the frame
+            // would refine a reduced one, the frame on screen stays until they arrive.
+            using Ready = Renderer::ProgramsReady;
+            Ready ready = renderer.programsReady(*drawn, renderPixels.x, renderPixels.y);
+            if (ready == Ready::WithStandIns && plan.bands == 1 && plan.pixelScale < ViewportRefresh::kStandInPixelScale) {
+                plan.pixelScale = ViewportRefresh::kStandInPixelScale;
+                renderPixels = drawnAt(plan.pixelScale);
+                ready = renderer.programsReady(*drawn, renderPixels.x, renderPixels.y);  // without MSAA, say
+            }
+            // Only where the targets still hold the frame on screen (nothing else drew with the renderer).
+            const bool frameKept = renderedSize == viewportPixels;
+            if (frameKept && (ready == Ready::No || (ready == Ready::WithStandIns && plan.bands > 1))) {
+                plan.render = false;
+                state.waitingForPrograms = waitedForPrograms = true;
+            }
+        }
+        if (plan.render) {
+            const long long shadowMapRenders = renderer.shadowMapRenders();
+            const auto start = std::chrono::steady_clock::now();
             // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
             RowBand rows;
             if (plan.bands > 1) {
@@ -312,9 +345,13 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
-            state.lastRenderMilliseconds =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            refresh.rendered(plan, state.lastRenderMilliseconds, renderer.simplifiedMeshesDrawn() > 0);
+            renderMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            // A frame drawn in bands shows its bands' time so far, the whole frame's at the last.
+            refinedMilliseconds = plan.band == 0 ? renderMilliseconds : refinedMilliseconds + renderMilliseconds;
+            state.lastRenderMilliseconds = refinedMilliseconds;
+            state.standInProgramsShown = renderer.standInProgramsDrawn();
+            state.waitingForPrograms = state.standInProgramsShown > 0;
+            refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0);
             // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
             if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
                 renderer.prepareSimplifiedMeshes(state.session.scene());
@@ -326,6 +363,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedSize = viewportPixels;
             renderedRevision = state.session.revision();
             renderedScale = plan.pixelScale;
+            shownDisplay = drawn->display;
             framesToDraw = std::max(framesToDraw, 2);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -342,7 +380,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             glEnable(GL_SCISSOR_TEST);
             glScissor(viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows, renderedSize.x, refinedRows);
         }
-        renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
+        renderer.displayToScreen(shownDisplay, viewportLowerLeft, renderedScale);
         glDisable(GL_SCISSOR_TEST);
         if (logFrames) glFinish();  // so that the log can tell the phases apart
         const auto displayed = std::chrono::steady_clock::now();
@@ -358,12 +396,15 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %lld triangles\n",
-                         viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, ms(frameStart, now),
+                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %d stand-in programs, %lld triangles\n",
+                         viewportPixels.x, viewportPixels.y, renderedScale, renderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
                          ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
-                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.triangleCount);
+                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
         }
+        if (logFrames && waitedForPrograms)
+            std::fprintf(stderr, "glint programs: the frame waits for programs compiling in the background; input to presented %.1f ms\n",
+                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         // Refusals and status lines written before the scene's last change no longer hold.
         for (SceneMessage* message : {&state.statusMessage, &state.materialPanelMessage, &state.lightPanelMessage,

@@ -56,6 +56,8 @@ struct EditorState {
     double lastRenderMilliseconds = 0.0;
     int previewScale = 1;  // >1 while a drag renders at reduced resolution
     int simplifiedMeshesShown = 0;  // large meshes drawn by their simplified stand-ins (while dragging)
+    int standInProgramsShown = 0;   // objects drawn with generic programs while their own compile
+    bool waitingForPrograms = false;  // a frame waits for programs compiling in the background
     bool shadowMapsRedrawn = false;  // the last render drew the shadow maps again
     long long triangleCount = 0;  // submitted by the last render
     std::string rendererDescription;

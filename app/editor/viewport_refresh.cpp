@@ -22,7 +22,7 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
     // a pause, as nothing tells when the next one comes.
     const bool interacting = input.dragging || input.nowSeconds - lastChangeSeconds_ < kSettleSeconds;
     RefreshPlan plan;
-    plan.render = input.sceneChanged || input.sizeChanged || (shownReduced_ && !interacting);
+    plan.render = input.sceneChanged || input.sizeChanged || (shownReduced_ && !interacting && !input.waitingForPrograms);
     if (plan.render && !interacting && shownReduced_ && !input.sizeChanged && fullFramesAreSlow())
         plan.bands = std::min(kMostRefineBands, static_cast<int>(std::ceil(fullFrameMilliseconds_ / kFrameBudgetMilliseconds)));
     bands_ = plan.bands;
@@ -41,14 +41,14 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
     return plan;
 }
 
-void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewSimplified) {
+void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewStandIns) {
     if (plan.bands > 1) {
         bandsMilliseconds_ = (plan.band == 0 ? 0.0 : bandsMilliseconds_) + renderMilliseconds;
         nextBand_ = plan.band + 1 < plan.bands ? plan.band + 1 : 0;
         if (nextBand_ > 0) return;  // the reduced frame is still partly on screen
         renderMilliseconds = bandsMilliseconds_;  // the whole frame's
     }
-    shownReduced_ = plan.pixelScale > 1 || drewSimplified;
+    shownReduced_ = plan.pixelScale > 1 || drewStandIns;
     if (shownReduced_ || plan.detail == MeshDetail::Simplified) {
         // Drawn for an interaction (with stand-ins or not yet: then it was the full mesh).
         interactiveMilliseconds_ = renderMilliseconds;
@@ -58,9 +58,10 @@ void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMillisecond
     if (!shownReduced_) fullFrameMilliseconds_ = renderMilliseconds;
 }
 
-double ViewportRefresh::secondsToRefine(double nowSeconds) const {
+double ViewportRefresh::secondsToRefine(double nowSeconds, bool waitingForPrograms) const {
     if (nextBand_ > 0) return 0.0;  // the next band
-    if (!shownReduced_ || dragging_) return 1e9;  // a drag's end is an input event itself
+    // A drag's end is an input event itself, and so is a program's arrival.
+    if (!shownReduced_ || dragging_ || waitingForPrograms) return 1e9;
     return std::max(0.0, lastChangeSeconds_ + kSettleSeconds - nowSeconds);
 }
 

@@ -30,6 +30,9 @@ public:
     // frame at ½ would take more than twice the budget (a million shadowed triangles): then down to ¼.
     static constexpr int kCoarsestPixelScale = 2;
     static constexpr int kCoarsestPixelScaleOfSlowScenes = 4;
+    // A frame drawn with generic programs while the specialised ones compile (gl/renderer.h), which
+    // are several times slower, is drawn at no finer than this.
+    static constexpr int kStandInPixelScale = 4;
     // A change outside a drag counts as part of an interaction for this long [s]: wheel ticks and
     // key repeats come faster.
     static constexpr double kSettleSeconds = 0.25;
@@ -42,14 +45,18 @@ public:
         bool sizeChanged = false;   // the viewport is not the size last drawn
         bool dragging = false;      // a gesture is in progress (ImGui item active, camera or handle drag)
         bool simplifyWhileDragging = true;  // the user's setting (Settings::simplifyMeshesWhileDragging)
+        // The frame on screen waits for programs compiling in the background (gl/renderer.h): it
+        // is not refined until they arrive.
+        bool waitingForPrograms = false;
     };
 
     RefreshPlan plan(const Input& input);
-    // After the planned frame was drawn: its render time and whether it drew a simplified mesh.
-    void rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewSimplified);
+    // After the planned frame was drawn: its render time and whether it drew a stand-in (a
+    // simplified mesh, a generic program).
+    void rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewStandIns);
     // Seconds until a frame drawn with stand-ins is due for its full-detail redraw (for the event
-    // wait); a large number when none is due.
-    double secondsToRefine(double nowSeconds) const;
+    // wait); a large number when none is due or it waits for programs.
+    double secondsToRefine(double nowSeconds, bool waitingForPrograms = false) const;
     // Whether full frames are slow enough that the stand-ins are worth making ahead of a drag.
     bool fullFramesAreSlow() const { return fullFrameMilliseconds_ > kFrameBudgetMilliseconds; }
     // Whether a full frame is part drawn: its bands so far are shown over the reduced frame.

@@ -12,14 +12,30 @@ std::string lastGlfwError() {
     return description ? description : "unknown GLFW error";
 }
 
-}  // namespace
-
-Result<std::unique_ptr<GlfwPlatform>> GlfwPlatform::create(int width, int height, const std::string& title) {
-    if (!glfwInit()) return makeError("cannot open a window: " + lastGlfwError());
+void requestCoreContext() {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+}
+
+// The hidden window's context, current on the worker thread.
+class GlfwWorkerContext final : public GlWorkerContext {
+public:
+    explicit GlfwWorkerContext(GLFWwindow* window) : window_(window) {}
+    ~GlfwWorkerContext() override { glfwDestroyWindow(window_); }
+    void makeCurrent() override { glfwMakeContextCurrent(window_); }
+    void release() override { glfwMakeContextCurrent(nullptr); }
+
+private:
+    GLFWwindow* window_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<GlfwPlatform>> GlfwPlatform::create(int width, int height, const std::string& title) {
+    if (!glfwInit()) return makeError("cannot open a window: " + lastGlfwError());
+    requestCoreContext();
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window) {
         const std::string reason = lastGlfwError();
@@ -36,6 +52,16 @@ Result<std::unique_ptr<GlfwPlatform>> GlfwPlatform::create(int width, int height
 GlfwPlatform::~GlfwPlatform() {
     if (window_) glfwDestroyWindow(window_);
     glfwTerminate();
+}
+
+std::unique_ptr<GlWorkerContext> GlfwPlatform::createWorkerContext() {
+    glfwDefaultWindowHints();
+    requestCoreContext();
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    GLFWwindow* hidden = glfwCreateWindow(1, 1, "glint worker", nullptr, window_);
+    glfwDefaultWindowHints();
+    if (!hidden) return nullptr;
+    return std::make_unique<GlfwWorkerContext>(hidden);
 }
 
 GetProcAddress GlfwPlatform::procAddressLoader() const { return reinterpret_cast<GetProcAddress>(&glfwGetProcAddress); }

@@ -23,6 +23,9 @@ public:
     glm::ivec2 framebufferSize() const override;
     void present() override;
     const char* name() const override { return "GLFW window"; }
+    // A hidden window whose context shares the editor window's objects (programs built in the
+    // background, gl/program_compiler.h); null when GLFW refuses one.
+    std::unique_ptr<GlWorkerContext> createWorkerContext() override;
 
     GLFWwindow* window() const { return window_; }
 

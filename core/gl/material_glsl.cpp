@@ -60,7 +60,7 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
         switch (spec.kind) {
             case ParamKind::Scalar:
                 fields += "    float " + name + ";\n";
-                loads += "    p." + name + " = " + (isTextured ? "textureScalar(" + slot + ")" : at(0)) + ";\n";
+                loads += isTextured ? "    p." + name + " = textureScalar(" + slot + ");\n" : specialisable(name, at(0));
                 break;
             case ParamKind::Color:
             case ParamKind::PerChannel:

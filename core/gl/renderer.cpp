@@ -102,6 +102,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(GlPlatform& platform, ShaderS
 }
 
 Renderer::~Renderer() {
+    compiler_.reset();  // its worker may be building a program
     platform_.makeCurrent();
     meshes_.reset();
     glDeleteBuffers(3, uniformBuffers_);
@@ -172,16 +173,105 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
 }
 
 Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) {
-    const auto key = std::make_tuple(model, variant, textured.mask);
+    const SurfaceKey key{model, variant, textured.mask};
     if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end()) {
         found->second.lastUsed = framesRendered_;
+        found->second.drawn = true;
         return &found->second.program;
+    }
+    if (compiler_ && !failedInBackground_.count(key)) {
+        if (SurfaceProgram* standIn = standInFor(key)) {
+            requestPrograms({key}, nullptr);
+            standIn->lastUsed = framesRendered_;
+            ++standInProgramsDrawn_;
+            return &standIn->program;
+        }
     }
     auto built = buildSurfaceProgram(model, variant, textured);
     if (!built) return built.error();
     makeRoom(surfacePrograms_, kSurfaceProgramCapacity, framesRendered_);
     built->lastUsed = framesRendered_;
+    built->drawn = true;
     return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
+}
+
+SurfaceVariant Renderer::surfaceVariant(const SceneObject& object, const Material& material, int samples,
+                                        const std::string& frameDefines, bool seesBackdrop) const {
+    const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
+    const bool sphere = !triangles && std::holds_alternative<SphereShape>(object.shape);
+    const bool builtInModel = !material.custom && !material.measured;
+    return {samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere,
+            (specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines) +
+                (seesBackdrop ? TransmissionPass::kProgramDefine : "")};
+}
+
+// --- programs built in the background -------------------------------------------------------
+
+Renderer::SurfaceProgram* Renderer::standInFor(const SurfaceKey& key) {
+    auto generic = key;
+    std::get<SurfaceVariant>(generic).specialisation.clear();
+    if (generic == key) return nullptr;
+    const auto found = surfacePrograms_.find(generic);
+    return found == surfacePrograms_.end() || !found->second.drawn ? nullptr : &found->second;
+}
+
+void Renderer::compileInBackground(std::unique_ptr<ProgramCompiler> compiler) {
+    compiler_ = std::move(compiler);
+    if (compiler_) compiler_->atStop([this] { warmUp_.reset(); });
+}
+
+void Renderer::requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_ptr<const Scene> warmUpScene) {
+    std::vector<std::pair<SurfaceKey, std::shared_ptr<PendingSurfaceProgram>>> batch;
+    for (const SurfaceKey& key : keys) {
+        if (surfacePrograms_.count(key) || pendingPrograms_.count(key)) continue;
+        batch.emplace_back(key, std::make_shared<PendingSurfaceProgram>());
+        pendingPrograms_.insert(batch.back());
+    }
+    if (batch.empty()) return;
+    const bool fuse = fuseDisplay_, keep = keepRadiance_, specialise = specialise_;
+    compiler_->submit(
+        [this, batch, warmUpScene, fuse, keep, specialise](GlPlatform& worker) {
+            for (const auto& [key, pending] : batch) {
+                const auto& [model, variant, textured] = key;
+                pending->result = buildSurfaceProgram(model, variant, {textured});
+            }
+            // llvmpipe makes a program's machine code per context, at its first draw, and keeps it in
+            // Mesa's shader cache: drawn here first, with the same targets, textures and state,
+            // the renderer's first draw finds it there instead of compiling it.
+            if (warmUpScene && !warmUp_)
+                if (auto created = Renderer::create(worker, sources_)) warmUp_ = std::move(*created);
+            if (warmUpScene && warmUp_) {
+                warmUp_->setFusedDisplay(fuse);
+                warmUp_->setRadianceKept(keep);
+                warmUp_->setSpecialisedPrograms(specialise);
+                (void)warmUp_->renderRadiance(*warmUpScene, kWarmUpSize, kWarmUpSize);
+                glFinish();
+            }
+            for (const auto& entry : batch) entry.second->done.store(true, std::memory_order_release);
+        },
+        ProgramCompiler::Priority::Urgent);
+}
+
+bool Renderer::adoptCompiledPrograms() {
+    bool arrived = false;
+    for (auto entry = pendingPrograms_.begin(); entry != pendingPrograms_.end();) {
+        PendingSurfaceProgram& pending = *entry->second;
+        if (!pending.done.load(std::memory_order_acquire)) {
+            ++entry;
+            continue;
+        }
+        if (!*pending.result) {
+            failedInBackground_.insert(entry->first);
+        } else if (!surfacePrograms_.count(entry->first)) {
+            platform_.makeCurrent();
+            makeRoom(surfacePrograms_, kSurfaceProgramCapacity, framesRendered_);
+            (*pending.result)->lastUsed = framesRendered_;
+            surfacePrograms_.insert_or_assign(entry->first, std::move(**pending.result));
+            arrived = true;
+        }
+        entry = pendingPrograms_.erase(entry);
+    }
+    return arrived;
 }
 
 const ShaderProgram& Renderer::displayProgram(const DisplaySettings& display) {
@@ -259,6 +349,36 @@ FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kLightBinding]);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof packed.lights, &packed.lights);
     return packed;
+}
+
+Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, int height) {
+    if (!compiler_) return ProgramsReady::All;
+    // As renderRadiance finds them (with the shadow maps of the frame before).
+    const int samples = samplesFor(scene.msaaSamples);
+    std::optional<DisplaySettings> fused;
+    if (fuseDisplay_ && samples == 1 && !scene.display.levelsRamp) fused = scene.display;
+    const std::string frameDefines =
+        specialise_ ? frameSpecialisation(packFrameUniforms(scene, width, height), shadowMaps_->block(), scene.environment, fused) : "";
+    ProgramsReady ready = ProgramsReady::All;
+    std::vector<SurfaceKey> missing;
+    auto warmUpScene = std::make_shared<Scene>(scene);  // with the objects that need them
+    warmUpScene->objects.clear();
+    // As renderRadiance decides: transmissive objects see a backdrop when an opaque object is drawn.
+    const auto transmissive = [&](const SceneObject& object) { return transmitsLight(scene.materials.at(object.materialIndex)); };
+    const bool backdropShown = std::any_of(scene.objects.begin(), scene.objects.end(), transmissive) &&
+                               !std::all_of(scene.objects.begin(), scene.objects.end(), transmissive);
+    for (const SceneObject& object : scene.objects) {
+        const Material& material = scene.materials.at(object.materialIndex);
+        if (material.custom || material.measured) continue;
+        const SurfaceKey key{material.model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmissive(object)),
+                             TexturedParams::of(material).mask};
+        if (surfacePrograms_.count(key) || failedInBackground_.count(key)) continue;
+        missing.push_back(key);
+        warmUpScene->objects.push_back(object);
+        ready = standInFor(key) && ready != ProgramsReady::No ? ProgramsReady::WithStandIns : ProgramsReady::No;
+    }
+    if (!missing.empty()) requestPrograms(missing, std::move(warmUpScene));
+    return ready;
 }
 
 // --- drawing --------------------------------------------------------------------------------
@@ -367,6 +487,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     const std::vector<glm::vec4> occluders = occludingSpheres(scene);  // render/sphere_occlusion.h
     trianglesDrawn_ = 0;
     simplifiedMeshesDrawn_ = 0;
+    standInProgramsDrawn_ = 0;
     meshes_->releaseUnused();
     drawnMeshes_.clear();
     // Any other background (sky, environment, dithered) after the opaque objects (and the backdrop),
@@ -415,11 +536,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
             sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
         if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
         const Material& material = scene.materials.at(object.materialIndex);
-        const bool builtInModel = !material.custom && !material.measured;
-        const std::string backdropDefine = next >= firstTransmissive && transmission_->shows() ? TransmissionPass::kProgramDefine : "";
-        const SurfaceVariant variant{samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere != nullptr,
-                                     (specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines) +
-                                         backdropDefine};
+        const bool seesBackdrop = next >= firstTransmissive && transmission_->shows();
+        const SurfaceVariant variant = surfaceVariant(object, material, samples, frameDefines, seesBackdrop);
         auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, variant)
                        : material.measured ? measured_.program(sources_, variant)
                                            : surfaceProgram(material.model, variant, TexturedParams::of(material));

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,6 +22,7 @@
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
 #include "gl/platform.h"
+#include "gl/program_compiler.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
 #include "gl/surface_variant.h"
@@ -90,6 +93,27 @@ public:
     // keep fixed is compiled in as constants, one program per combination, built when first drawn.
     // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
     void setSpecialisedPrograms(bool enabled) { specialise_ = enabled; }
+    // Specialised programs built in the background (the editor; gl/program_compiler.h): a
+    // built-in model's program that programsReady() finds missing is built on the compiler's
+    // worker, which then draws the objects that need it with a renderer of its own, so that
+    // llvmpipe's machine code for it (made per context at the first draw) is in Mesa's shader
+    // cache when this renderer first draws it. Meanwhile an object is drawn with its model's generic
+    // program if this renderer has drawn that before (the same picture, slower: a stand-in), or
+    // else its program is built here, as without a compiler. Headless renders have no compiler,
+    // so every program is built before it draws.
+    void compileInBackground(std::unique_ptr<ProgramCompiler> compiler);
+    // Takes the programs the compiler has finished; true when any arrived (the editor redraws).
+    bool adoptCompiledPrograms();
+    // Whether the compiler holds programs this renderer asked for.
+    bool compilingPrograms() const { return !pendingPrograms_.empty(); }
+    // What drawing the scene at width×height would find (the editor asks before each frame, and
+    // keeps the frame on screen rather than draw one that is not All or WithStandIns): every program
+    // built; stand-ins for those still compiling; or programs that have no stand-in and would be
+    // built on this thread. Has the compiler build the missing ones.
+    enum class ProgramsReady { All, WithStandIns, No };
+    ProgramsReady programsReady(const Scene& scene, int width, int height);
+    // Objects the last renderRadiance drew with a stand-in program.
+    int standInProgramsDrawn() const { return standInProgramsDrawn_; }
     // Display pass into the default framebuffer, at the given lower-left corner; a scaled copy of
     // the fused image when the last radiance render fused these settings (the editor fuses).
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
@@ -135,6 +159,9 @@ private:
         std::vector<std::string> files;
         long long builtAt = 0;  // newest modification time of its files when built
         std::uint64_t lastUsed = 0;  // the radiance frame (framesRendered_) that last drew with it
+        // Drawn in this context: llvmpipe compiles a program's machine code per context at its
+        // first draw, so only a program drawn before is a quick stand-in.
+        bool drawn = false;
     };
     struct BackgroundProgram {
         ShaderProgram program;
@@ -152,8 +179,26 @@ private:
     // The display pass's program for these settings (specialised unless switched off); the
     // generic one when a specialised one fails to build.
     const ShaderProgram& displayProgram(const DisplaySettings& display);
+    // Keyed by model, variant (MSAA, Gouraud, ray-cast sphere, specialisation) and which
+    // parameters are textured (TexturedParams::mask).
+    using SurfaceKey = std::tuple<BrdfModel, SurfaceVariant, std::uint32_t>;
+    // A program the background compiler builds: `result` is set before `done`.
+    struct PendingSurfaceProgram {
+        std::atomic<bool> done{false};
+        std::optional<Result<SurfaceProgram>> result;
+    };
     Result<SurfaceProgram> buildSurfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) const;
     Result<const ShaderProgram*> surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured);
+    // The surface program variant an object needs in a frame with these samples and frame defines,
+    // drawn over the transmission backdrop or not.
+    SurfaceVariant surfaceVariant(const SceneObject& object, const Material& material, int samples,
+                                  const std::string& frameDefines, bool seesBackdrop) const;
+    // Has the compiler build the programs not built or asked for already, then draw
+    // `warmUpScene` (when given: the objects that need them) with its own renderer.
+    void requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_ptr<const Scene> warmUpScene);
+    static constexpr int kWarmUpSize = 16;  // pixels a side of the warm-up draw
+    // The generic program of a specialised key's model and variant, when it was drawn before; or null.
+    SurfaceProgram* standInFor(const SurfaceKey& key);
     FrameUniforms uploadFrame(const Scene& scene, int width, int height);
     long long newestModification(const std::vector<std::string>& files) const;
 
@@ -161,9 +206,10 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    // Keyed by model, variant (MSAA, Gouraud, ray-cast sphere) and which parameters are textured
-    // (TexturedParams::mask).
-    std::map<std::tuple<BrdfModel, SurfaceVariant, std::uint32_t>, SurfaceProgram> surfacePrograms_;
+    std::map<SurfaceKey, SurfaceProgram> surfacePrograms_;
+    std::map<SurfaceKey, std::shared_ptr<PendingSurfaceProgram>> pendingPrograms_;
+    std::set<SurfaceKey> failedInBackground_;  // built here instead, which reports the error
+    int standInProgramsDrawn_ = 0;
     CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
     MeasuredBrdfGpu measured_;  // materials with a MERL table
     std::map<std::string, ShaderProgram> displayPrograms_;  // by specialisation prelude
@@ -193,6 +239,8 @@ private:
     RenderTarget multisampleTarget_{kRadianceFormat, true};
     RenderTarget radianceTarget_{kRadianceFormat, true};
     RenderTarget displayTarget_{GL_RGBA8, false};
+    std::unique_ptr<Renderer> warmUp_;  // made, used and deleted on the compiler's worker only
+    std::unique_ptr<ProgramCompiler> compiler_;  // last: its worker stops before the rest goes
 };
 
 }  // namespace glint

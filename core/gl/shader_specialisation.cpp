@@ -1,13 +1,22 @@
 // Program specialisation preludes (see shader_specialisation.h).
 #include "gl/shader_specialisation.h"
 
+#include <string_view>
+
 #include "brdf/model_registry.h"
 #include "brdf/param_table.h"
+#include "gl/material_glsl.h"
 
 namespace glint {
 namespace {
 
 std::string define(const std::string& name, const std::string& value) { return "#define " + name + " " + value + "\n"; }
+
+// A scalar named *_weight scales a layer or lobe that contributes nothing at 0.
+bool isLayerWeight(std::string_view name) {
+    constexpr std::string_view suffix = "_weight";
+    return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
+}
 
 // The kind constant of shaders/common/lights.glsl that a packed light needs.
 const char* lightKind(const GpuLightStd140& light) {
@@ -59,13 +68,18 @@ std::string displaySpecialisation(const DisplaySettings& display) {
 
 std::string materialSpecialisation(const Material& material) {
     const auto table = modelInfo(material.model).params;
+    const TexturedParams textured = TexturedParams::of(material);
     std::string text;
     int offset = 0;
-    for (const ParamSpec& spec : table) {
+    for (int index = 0; index < static_cast<int>(table.size()); ++index) {
+        const ParamSpec& spec = table[index];
         const float value = offset < static_cast<int>(material.values.size()) ? material.values[offset] : 0.0f;
         // As the generic loadMaterialParams() reads them: int(v + 0.5) and v > 0.5.
         if (spec.kind == ParamKind::Enum) text += define("GLINT_PARAM_" + std::string(spec.name), std::to_string(static_cast<int>(value + 0.5f)));
         if (spec.kind == ParamKind::Bool) text += define("GLINT_PARAM_" + std::string(spec.name), value > 0.5f ? "true" : "false");
+        // A layer weighted 0 (OpenPBR's coat, fuzz, thin film, transmission, ...) is compiled out.
+        if (spec.kind == ParamKind::Scalar && value == 0.0f && isLayerWeight(spec.name) && !textured.has(index))
+            text += define("GLINT_PARAM_" + std::string(spec.name), "0.0");
         offset += componentCount(spec.kind);
     }
     return text;

@@ -38,8 +38,9 @@ std::string backgroundSpecialisation(const FrameUniforms& frame, const Environme
 // radiance passes' and the display pass's.
 std::string displaySpecialisation(const DisplaySettings& display);
 
-// A built-in model's enum and bool parameters, by name (GLINT_PARAM_<name>, read by the generated
-// loadMaterialParams(), gl/material_glsl.h).
+// A built-in model's enum and bool parameters, and its layer weights (scalars named *_weight) that
+// are 0, by name (GLINT_PARAM_<name>, read by the generated loadMaterialParams(),
+// gl/material_glsl.h): a layer weighted 0 (OpenPBR's coat, fuzz, thin film) is compiled out.
 std::string materialSpecialisation(const Material& material);
 
 }  // namespace glint

@@ -25,8 +25,13 @@ float drawStatusBar(EditorState& state, float top, float width) {
     // While dragging: what the frame left out (editor/viewport_refresh.h).
     std::string reduced = state.previewScale > 1 ? "preview 1/" + std::to_string(state.previewScale) : "";
     if (state.simplifiedMeshesShown > 0) reduced += reduced.empty() ? "simplified meshes" : ", simplified meshes";
+    if (state.standInProgramsShown > 0) reduced += reduced.empty() ? "generic shaders" : ", generic shaders";
     if (!reduced.empty()) ImGui::Text("frame %.1f ms (%s)", state.lastRenderMilliseconds, reduced.c_str());
     else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
+    if (state.waitingForPrograms) {
+        ImGui::SameLine(0, 24);
+        ImGui::TextUnformatted("compiling shaders");
+    }
     ImGui::SameLine(0, 24);
     ImGui::Text("%lld triangles", state.triangleCount);
     ImGui::SameLine(0, 24);
