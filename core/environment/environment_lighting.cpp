@@ -41,6 +41,30 @@ glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 
            prefilteredRadiance(*environment.map, environmentMapDirection(environment, worldDirection), perceptualRoughness);
 }
 
+glm::vec3 environmentWorldDirection(const Environment& environment, glm::vec3 d) {
+    const float angle = environment.rotationDegrees * (kPi / 180.0f);
+    const float cosAngle = std::cos(angle), sinAngle = std::sin(angle);
+    return {cosAngle * d.x + sinAngle * d.z, d.y, -sinAngle * d.x + cosAngle * d.z};
+}
+
+bool environmentUsesPeaks(const Environment& environment, float alpha) {
+    return alpha >= kPeakMinimumAlpha && !environment.map->peaks.empty();
+}
+
+glm::vec3 environmentPeakDirection(const Environment& environment, int k) {
+    return environmentWorldDirection(environment, environment.map->peaks[k].direction);
+}
+
+glm::vec3 environmentPeakIrradiance(const Environment& environment, int k) {
+    return environment.intensity * environment.map->peaks[k].irradiance;
+}
+
+glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, glm::vec3 worldDirection,
+                                              float perceptualRoughness) {
+    return environment.intensity * residualPrefilteredRadiance(*environment.map, environmentMapDirection(environment, worldDirection),
+                                                               perceptualRoughness);
+}
+
 // --- roughness mapping ----------------------------------------------------------------------
 
 namespace {
@@ -66,6 +90,25 @@ float formWeight(int form, float cosOut, float normalization) {
     }
 }
 
+// The prefiltered radiance for GGX roughness α, of the map less its peaks where the lobe takes them.
+glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha) {
+    return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, std::sqrt(alpha))
+                                          : environmentSpecularRadiance(e, worldDirection, std::sqrt(alpha));
+}
+
+// The peaks as directional lights: Σ_k f_r(ω_k, ω_o) cos θ_k E_k, `reflectedCos` giving the glossy
+// lobe's f_r cos θ_i (Fresnel included); zero where the lobe does not take them.
+template <class ReflectedCos>
+glm::vec3 peakSpecular(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
+    glm::vec3 sum(0.0f);
+    if (!environmentUsesPeaks(e, alpha) || frame.cosTheta(wo) <= 0.0f) return sum;
+    for (int k = 0; k < static_cast<int>(e.map->peaks.size()); ++k) {
+        const glm::vec3 wi = environmentPeakDirection(e, k);
+        if (frame.cosTheta(wi) > 0.0f) sum += reflectedCos(wi) * environmentPeakIrradiance(e, k);
+    }
+    return sum;
+}
+
 // --- per-model hooks ------------------------------------------------------------------------
 
 glm::vec3 environmentLightingLambert(const LambertParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
@@ -88,25 +131,37 @@ glm::vec3 environmentLightingMirror(const MirrorParams& p, glm::vec3, const Shad
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
+// Blinn-Phong, Phong, Ward: a GGX-prefiltered lobe of equivalent α for the map (less its peaks),
+// their own lobe for the peaks.
 glm::vec3 environmentLightingBlinnPhong(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                         const Environment& e) {
+    const float alpha = blinnAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 8.0f) / (8.0f * kPi));
+    BlinnPhongParams lobe = p;
+    lobe.diffuseAlbedo = glm::vec3(0.0f);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(e, mirrorDirection(wo, frame), std::sqrt(blinnAlpha(p.exponent)));
+           p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakSpecular(e, alpha, wo, frame,
+                        [&](glm::vec3 wi) { return evalBlinnPhong(lobe, wi, wo, frame) * frame.cosTheta(wi); });
 }
 
 glm::vec3 environmentLightingPhong(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const float alpha = phongAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 2.0f) / (2.0f * kPi));
+    PhongParams lobe = p;
+    lobe.diffuseAlbedo = glm::vec3(0.0f);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(e, mirrorDirection(wo, frame), std::sqrt(phongAlpha(p.exponent)));
+           p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakSpecular(e, alpha, wo, frame,
+                        [&](glm::vec3 wi) { return evalPhong(lobe, wi, wo, frame) * frame.cosTheta(wi); });
 }
 
 glm::vec3 environmentLightingWard(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
-    const float perceptual = std::sqrt(std::sqrt(p.roughnessX * p.roughnessY));
+    const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * environmentSpecularRadiance(e, mirrorDirection(wo, frame), perceptual);
+           p.specular * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakSpecular(e, alpha, wo, frame,
+                        [&](glm::vec3 wi) { return p.specular * (wardSpecular(p, wi, wo, frame) * frame.cosTheta(wi)); });
 }
 
 // The direction the GGX lobe's reflected light mostly comes from: the mirror direction bent
@@ -118,25 +173,37 @@ glm::vec3 dominantDirection(glm::vec3 wo, const ShadingFrame& frame, float alpha
     return glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * factor);
 }
 
-// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B) with F0 from n + iκ.
+// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B) with F0
+// from n + iκ; of the map less its peaks where the lobe takes them as directions.
 glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm::vec3 wo, const ShadingFrame& frame,
                            const Environment& e) {
     const float perceptual = std::sqrt(alpha);
     const glm::vec2 scaleBias = sampleSplitSum(splitSumLut(), std::max(frame.cosTheta(wo), 0.0f), perceptual);
-    return environmentSpecularRadiance(e, dominantDirection(wo, frame, alpha), perceptual) *
+    return glossyRadiance(e, dominantDirection(wo, frame, alpha), alpha) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 
 glm::vec3 environmentLightingCookTorrance(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                           const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e);
+           splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e) +
+           peakSpecular(e, p.roughness, wo, frame, [&](glm::vec3 wi) {
+               const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
+               return microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction) *
+                      (cookTorranceSpecular(p, wi, wo, frame) * frame.cosTheta(wi));
+           });
 }
 
 glm::vec3 environmentLightingGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                             const Environment& e) {
+    const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           splitSumSpecular(p.ior, p.extinction, std::sqrt(p.roughnessX * p.roughnessY), wo, frame, e);
+           splitSumSpecular(p.ior, p.extinction, alpha, wo, frame, e) +
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi) {
+               const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
+               return microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction) *
+                      (ggxAnisotropicSpecular(p, wi, wo, frame) * frame.cosTheta(wi));
+           });
 }
 
 }  // namespace
@@ -161,7 +228,9 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
 const char* environmentApproximation(BrdfModel model) {
     switch (model) {
         case BrdfModel::CookTorrance:
-        case BrdfModel::GgxAnisotropic: return "irradiance map + GGX split sum (prefiltered along the dominant direction)";
+        case BrdfModel::GgxAnisotropic:
+            return "irradiance map + GGX split sum along the dominant direction; from α 0.04 of the map less "
+                   "its peaks, which light the model's own lobe as directional lights";
         case BrdfModel::BlinnPhong:
         case BrdfModel::Phong:
         case BrdfModel::Ward: return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R";

@@ -24,6 +24,20 @@ glm::vec3 environmentDiffuseRadiance(const Environment& environment, glm::vec3 n
 // Prefiltered radiance along a world direction for perceptual roughness r = √α.
 glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 worldDirection, float perceptualRoughness);
 
+// Glossy lobes from GGX roughness kPeakMinimumAlpha on take the map's peaks as directional lights
+// through their own BRDF and the prefiltered rest (environment_map.h); sharper lobes, which would
+// show the lights' cells as separate highlights, the prefiltered map as a whole.
+inline constexpr float kPeakMinimumAlpha = 0.04f;
+bool environmentUsesPeaks(const Environment& environment, float alpha);
+// Peak k's world direction and irradiance [W/m²] at normal incidence (× the intensity).
+glm::vec3 environmentPeakDirection(const Environment& environment, int k);
+glm::vec3 environmentPeakIrradiance(const Environment& environment, int k);
+// The prefiltered radiance of the map less its peaks (r clamped to ≥ 1/kPrefilteredLevels).
+glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, glm::vec3 worldDirection,
+                                              float perceptualRoughness);
+// The inverse of environmentMapDirection.
+glm::vec3 environmentWorldDirection(const Environment& environment, glm::vec3 mapDirection);
+
 // The GGX roughness α a model's glossy lobe is prefiltered with (0 when it has none): microfacet
 // α itself (√(α_x α_y) when anisotropic), Ward √(α_x α_y), Blinn-Phong √(2/(n+2)) (Walter et al.
 // 2007, after eq. 30: the Beckmann α of a Blinn exponent n), Phong √(2/(4n+2)) (a Phong lobe

@@ -8,6 +8,7 @@
 
 #include "brdf/microfacet.h"
 #include "environment/ggx_sampling.h"
+#include "light/photometry.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -77,6 +78,59 @@ EquirectImage irradianceMap(const std::vector<EquirectImage>& pyramid) {
     return irradiance;
 }
 
+// --- peaks --------------------------------------------------------------------------------
+
+// Each texel's radiance above the threshold T = kPeakThreshold × the mean luminance over the
+// sphere, as a share of its luminance Y: L·max(0, 1 − T/Y), so that the peak keeps its colour.
+EquirectImage peakRadiance(const EquirectImage& radiance) {
+    double power = 0.0;
+    for (int y = 0; y < radiance.height; ++y) {
+        const float solidAngle = texelSolidAngle(y, radiance.width, radiance.height);
+        for (int x = 0; x < radiance.width; ++x) power += relativeLuminance(radiance.at(x, y)) * solidAngle;
+    }
+    const float threshold = kPeakThreshold * static_cast<float>(power / (4.0 * kPi));
+    EquirectImage peak(radiance.width, radiance.height);
+    for (size_t i = 0; i < peak.texels.size(); ++i) {
+        const float y = relativeLuminance(radiance.texels[i]);
+        if (y > threshold) peak.texels[i] = radiance.texels[i] * (1.0f - threshold / y);
+    }
+    return peak;
+}
+
+// The peaks as directional lights: the peak image's texels binned into the cells of the finest
+// grid (64 cells wide at most, halving) with at most kMaxPeakLights occupied cells; each occupied
+// cell a light with the cell's ∫ L_peak dω and its luminance-weighted mean direction (exact for
+// the peaks' power; a 4° light is one or a few lights, a studio's soft boxes a few dozen).
+std::vector<EnvironmentPeakLight> peakLights(const EquirectImage& peak) {
+    for (int shift = 0; (peak.width >> shift) >= 1; ++shift) {
+        const int columns = std::max(1, peak.width >> shift), rows = std::max(1, peak.height >> shift);
+        if (columns > 64) continue;
+        std::vector<glm::vec3> power(static_cast<size_t>(columns) * rows, glm::vec3(0.0f)), moment(power.size(), glm::vec3(0.0f));
+        for (int y = 0; y < peak.height; ++y) {
+            const float solidAngle = texelSolidAngle(y, peak.width, peak.height);
+            for (int x = 0; x < peak.width; ++x) {
+                const glm::vec3 radiance = peak.at(x, y);
+                if (relativeLuminance(radiance) <= 0.0f) continue;
+                const size_t cell = static_cast<size_t>(std::min(y >> shift, rows - 1)) * columns + std::min(x >> shift, columns - 1);
+                const glm::vec3 direction = equirectDirection({(x + 0.5f) / peak.width, (y + 0.5f) / peak.height});
+                power[cell] += radiance * solidAngle;
+                moment[cell] += relativeLuminance(radiance) * solidAngle * direction;
+            }
+        }
+        std::vector<EnvironmentPeakLight> lights;
+        for (size_t cell = 0; cell < power.size(); ++cell)
+            if (relativeLuminance(power[cell]) > 0.0f) lights.push_back({glm::normalize(moment[cell]), power[cell]});
+        if (static_cast<int>(lights.size()) <= kMaxPeakLights) return lights;
+    }
+    return {};
+}
+
+std::vector<EquirectImage> pyramidOf(EquirectImage image) {
+    std::vector<EquirectImage> pyramid{std::move(image)};
+    while (pyramid.back().width > 8 && pyramid.back().height > 4) pyramid.push_back(downsampleEquirect(pyramid.back()));
+    return pyramid;
+}
+
 // --- GGX prefiltering -----------------------------------------------------------------------
 
 // Trilinear lookup in a mip pyramid (level 0 the full image) at a fractional level.
@@ -125,12 +179,17 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float al
 
 std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance) {
     auto map = std::make_shared<EnvironmentMap>();
-    std::vector<EquirectImage> pyramid{radiance};
-    while (pyramid.back().width > 8 && pyramid.back().height > 4) pyramid.push_back(downsampleEquirect(pyramid.back()));
+    const std::vector<EquirectImage> pyramid = pyramidOf(radiance);
     map->irradiance = irradianceMap(pyramid);
+    const EquirectImage peak = peakRadiance(radiance);
+    map->peaks = peakLights(peak);
+    EquirectImage residual = radiance;
+    for (size_t i = 0; i < residual.texels.size(); ++i) residual.texels[i] -= peak.texels[i];
+    const std::vector<EquirectImage> residualPyramid = pyramidOf(std::move(residual));
     for (int k = 1; k <= kPrefilteredLevels; ++k) {
         const float perceptual = static_cast<float>(k) / kPrefilteredLevels;
         map->prefiltered.push_back(prefilterLevel(pyramid, perceptual * perceptual));
+        map->residualPrefiltered.push_back(prefilterLevel(residualPyramid, perceptual * perceptual));
     }
     map->distribution = EnvironmentDistribution(radiance);
     map->radiance = std::move(radiance);
@@ -194,6 +253,14 @@ glm::vec3 prefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, fl
         sampleEquirect(lower == 0 ? map.radiance : map.prefiltered[lower - 1], direction);
     const glm::vec3 upperRadiance = sampleEquirect(map.prefiltered[lower], direction);
     return lowerRadiance * (1.0f - t) + upperRadiance * t;
+}
+
+glm::vec3 residualPrefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, float perceptualRoughness) {
+    const float level = std::clamp(perceptualRoughness * kPrefilteredLevels, 1.0f, static_cast<float>(kPrefilteredLevels));
+    const int lower = std::min(static_cast<int>(level), kPrefilteredLevels - 1);
+    const float t = level - lower;
+    return sampleEquirect(map.residualPrefiltered[lower - 1], direction) * (1.0f - t) +
+           sampleEquirect(map.residualPrefiltered[lower], direction) * t;
 }
 
 }  // namespace glint

@@ -25,9 +25,13 @@ vec3 ambientReflectanceBlinnPhong(MaterialParams p, vec3 wo, ShadingFrame frame)
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingBlinnPhong in core/environment/environment_lighting.cpp.
 vec3 environmentLightingBlinnPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float alpha = sqrt(2.0 / (p.exponent + 2.0));
     float weight = environmentFormWeight(p.form, cosTheta(frame, wo), (p.exponent + 8.0) / (8.0 * PI));
+    MaterialParams lobe = p;
+    lobe.diffuse_albedo = vec3(0.0);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, evalBlinnPhong(lobe, wi, wo, frame) * cosTheta(frame, wi))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(environmentMirrorDirection(wo, frame), sqrt(sqrt(2.0 / (p.exponent + 2.0))));
+           p.specular * weight * environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
 }
 #endif

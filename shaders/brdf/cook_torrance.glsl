@@ -34,7 +34,12 @@ vec3 ambientReflectanceCookTorrance(MaterialParams p, vec3 wo, ShadingFrame fram
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingCookTorrance in core/environment/environment_lighting.cpp.
 vec3 environmentLightingCookTorrance(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float alpha = p.roughness;
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame,
+                          microfacetFresnel(p.fresnel, dot(wi, normalize(wi + wo)), p.ior, p.extinction) *
+                              (cookTorranceSpecular(p, wi, wo, frame) * cosTheta(frame, wi)))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame);
+           environmentSplitSumSpecular(p.ior, p.extinction, alpha, wo, frame) + peaks;
 }
 #endif

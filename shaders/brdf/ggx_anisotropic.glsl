@@ -27,7 +27,12 @@ vec3 ambientReflectanceGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame fr
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingGgxAnisotropic in core/environment/environment_lighting.cpp.
 vec3 environmentLightingGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float alpha = sqrt(p.roughness_x * p.roughness_y);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame,
+                          microfacetFresnel(p.fresnel, dot(wi, normalize(wi + wo)), p.ior, p.extinction) *
+                              (ggxAnisotropicSpecular(p, wi, wo, frame) * cosTheta(frame, wi)))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(p.ior, p.extinction, sqrt(p.roughness_x * p.roughness_y), wo, frame);
+           environmentSplitSumSpecular(p.ior, p.extinction, alpha, wo, frame) + peaks;
 }
 #endif

@@ -24,9 +24,13 @@ vec3 ambientReflectancePhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingPhong in core/environment/environment_lighting.cpp.
 vec3 environmentLightingPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float alpha = sqrt(2.0 / (4.0 * p.exponent + 2.0));
     float weight = environmentFormWeight(p.form, cosTheta(frame, wo), (p.exponent + 2.0) / (2.0 * PI));
+    MaterialParams lobe = p;
+    lobe.diffuse_albedo = vec3(0.0);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, evalPhong(lobe, wi, wo, frame) * cosTheta(frame, wi))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(environmentMirrorDirection(wo, frame), sqrt(sqrt(2.0 / (4.0 * p.exponent + 2.0))));
+           p.specular * weight * environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
 }
 #endif

@@ -26,8 +26,10 @@ vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingWard in core/environment/environment_lighting.cpp.
 vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
-    float perceptual = sqrt(sqrt(p.roughness_x * p.roughness_y));
+    float alpha = sqrt(p.roughness_x * p.roughness_y);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, p.specular * (wardSpecular(p, wi, wo, frame) * cosTheta(frame, wi)))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           p.specular * environmentSpecularRadiance(environmentMirrorDirection(wo, frame), perceptual);
+           p.specular * environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
 }
 #endif

@@ -8,14 +8,20 @@
 
 const int PREFILTERED_LEVELS = 5;  // kPrefilteredLevels
 const int SPLIT_SUM_SIZE = 32;     // kSplitSumLutSize
+const int MAX_PEAK_LIGHTS = 64;    // kMaxPeakLights
+const float PEAK_MINIMUM_ALPHA = 0.04;  // kPeakMinimumAlpha
 
 layout(std140) uniform EnvironmentBlock {
     vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity
-    ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background
+    ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background;
+                                // z: the map's peak lights
     ivec4 environmentSizes;     // x, y: base level size; z, w: prefiltered level size
+    vec4 environmentPeakDirections[MAX_PEAK_LIGHTS];  // xyz: map space
+    vec4 environmentPeakIrradiances[MAX_PEAK_LIGHTS]; // rgb [W/m²]
 };
 uniform sampler2D environmentBase;             // the radiance image
-uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π
+uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
+                                               // layer L + k: roughness k/L of the map less its peaks
 uniform sampler2D environmentSplitSum;         // rg: split-sum scale A and bias B
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
@@ -38,7 +44,8 @@ vec3 fetchEnvironmentLevel(int level, ivec2 texel) {
     return texelFetch(environmentPrefiltered, ivec3(texel, level - 1), 0).rgb;
 }
 
-// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance): twin of sampleEquirect().
+// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance, L + 1 + k: residual k):
+// twin of sampleEquirect().
 vec3 sampleEnvironmentLevel(int level, vec3 d) {
     ivec2 size = level == 0 ? environmentSizes.xy : environmentSizes.zw;
     float u = 0.5 + atan(d.x, -d.z) * (0.5 * INV_PI);
@@ -78,6 +85,45 @@ vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness)
                                      sampleEnvironmentLevel(lower + 1, d) * t);
 }
 
+// Twin of residualPrefilteredRadiance() (environment_map.cpp) with the intensity.
+vec3 environmentResidualSpecularRadiance(vec3 worldDirection, float perceptualRoughness) {
+    vec3 d = environmentMapDirection(worldDirection);
+    float level = clamp(perceptualRoughness * float(PREFILTERED_LEVELS), 1.0, float(PREFILTERED_LEVELS));
+    int lower = min(int(level), PREFILTERED_LEVELS - 1);
+    float t = level - float(lower);
+    return environmentTransform.z * (sampleEnvironmentLevel(PREFILTERED_LEVELS + 1 + lower, d) * (1.0 - t) +
+                                     sampleEnvironmentLevel(PREFILTERED_LEVELS + 2 + lower, d) * t);
+}
+
+// The map's peak lights (twins of environmentUsesPeaks, environmentPeakDirection and
+// environmentPeakIrradiance in environment_lighting.cpp).
+bool environmentUsesPeaks(float alpha) { return alpha >= PEAK_MINIMUM_ALPHA && environmentFlags.z > 0; }
+
+vec3 environmentPeakDirection(int k) {
+    vec3 d = environmentPeakDirections[k].xyz;
+    float c = environmentTransform.x, s = environmentTransform.y;
+    return vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+}
+
+vec3 environmentPeakIrradiance(int k) { return environmentTransform.z * environmentPeakIrradiances[k].rgb; }
+
+// Twin of peakSpecular() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k) cos θ_k E_k over
+// the peak lights where a lobe of roughness ALPHA takes them, LOBE being the glossy lobe's
+// f_r cos θ_i (Fresnel included) for the light direction `wi` (a macro: GLSL has no callbacks).
+#define ENVIRONMENT_ADD_PEAKS(SUM, ALPHA, WO, FRAME, LOBE)                          \
+    if (environmentUsesPeaks(ALPHA) && cosTheta(FRAME, WO) > 0.0) {                 \
+        for (int k = 0; k < environmentFlags.z; ++k) {                              \
+            vec3 wi = environmentPeakDirection(k);                                  \
+            if (cosTheta(FRAME, wi) > 0.0) SUM += (LOBE) * environmentPeakIrradiance(k); \
+        }                                                                           \
+    }
+
+// Twin of glossyRadiance(): the prefiltered map, less its peaks where the lobe takes them.
+vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
+    return environmentUsesPeaks(alpha) ? environmentResidualSpecularRadiance(worldDirection, sqrt(alpha))
+                                       : environmentSpecularRadiance(worldDirection, sqrt(alpha));
+}
+
 // Split-sum (A, B): twin of sampleSplitSum() in environment_map.cpp.
 vec2 sampleSplitSum(float cosOut, float perceptualRoughness) {
     float last = float(SPLIT_SUM_SIZE - 1);
@@ -115,7 +161,7 @@ vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
 vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
     float perceptual = sqrt(alpha);
     vec2 scaleBias = sampleSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
-    return environmentSpecularRadiance(environmentDominantDirection(wo, frame, alpha), perceptual) *
+    return environmentGlossyRadiance(environmentDominantDirection(wo, frame, alpha), alpha) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 
