@@ -14,6 +14,7 @@
 #include "cli/headless.h"
 #include "cli/export_command.h"
 #include "cli/lessons_command.h"
+#include "cli/models_command.h"
 #include "cli/presets_command.h"
 #include "cli/render_command.h"
 #include "cli/render_input.h"
@@ -48,6 +49,7 @@ constexpr const char* kUsage =
     "                              write a material (file, scene, .mtl or .gltf) as .mtl or glTF\n"
     "  glint presets [NAME -o FILE.json]\n"
     "                              list the material presets, or write one as a material file\n"
+    "  glint models [--markdown]   list the BRDF models, or write their parameter reference (docs/models.md)\n"
     "  glint present [LIST.json]   the editor in presentation mode (full screen, large type) on the first\n"
     "                              lesson of LIST (the shipped lessons when omitted); PageDown / PageUp step\n"
     "  glint lessons [LIST.json] [--check] [--render DIR]\n"
@@ -122,6 +124,8 @@ int main(int argc, char** argv) {
         return glint::runExportCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "presets")
         return glint::runPresetsCommand({arguments.begin() + 1, arguments.end()});
+    if (!arguments.empty() && arguments[0] == "models")
+        return glint::runModelsCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "cmf")
         return glint::runCmfCommand({arguments.begin() + 1, arguments.end()});
     if (!arguments.empty() && arguments[0] == "spectral")

@@ -312,7 +312,7 @@ TEST(BrdfProperties, MirrorWithADiffusePartReflectsMoreThanItReceives) {
     // The mirror lobe reflects F(θ) of the incident radiance (traced, not in f_r) and the Lambert
     // part adds ρ_d on top: aluminium (F ≈ 0.91 at normal incidence) with ρ_d = 0.5 gives > 1.
     const std::vector<float> values = valuesOf(BrdfModel::Mirror, {{"diffuse_albedo", glm::vec3(0.5f)}});
-    const MirrorParams mirror = unpackMirror(values.data());
+    const MirrorParams mirror = unpack<Mirror>(values.data());
     const glm::vec3 lobe = fresnelConductor(1.0f, mirror.ior, mirror.extinction);
     const BrdfFunction brdf = [&](glm::vec3 wi, glm::vec3 wo) { return evalBrdf(BrdfModel::Mirror, values, wi, wo, {}); };
     const glm::vec3 diffuse = directionalAlbedoAroundMirror(brdf, viewAt(0.0f));

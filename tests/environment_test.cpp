@@ -292,9 +292,9 @@ TEST(WhiteOut, LambertUnderUniformWhiteIsAFlatDiscOnTheCpu) {
 // A conductor with F = 1 (Schlick, F0 = 1 from κ = 10⁴): the specular lobe alone.
 Material perfectConductor(float roughness) {
     Material material = Material::withDefaults("furnace", BrdfModel::CookTorrance);
-    CookTorranceParams params = unpackCookTorrance(material.values.data());
+    CookTorranceParams params = unpack<CookTorrance>(material.values.data());
     material.values = {0, 0, 0, 1, 1, 1, 1e4f, 1e4f, 1e4f, roughness, 1, 1, 0};
-    EXPECT_EQ(unpackCookTorrance(material.values.data()).fresnel, FresnelMode::Schlick);
+    EXPECT_EQ(unpack<CookTorrance>(material.values.data()).fresnel, FresnelMode::Schlick);
     (void)params;
     return material;
 }

@@ -52,7 +52,7 @@ TEST(SceneJsonLights, GlassAndMirrorMaterialsLoad) {
     const Scene scene = test::loadTestScene("scenes/glass_sphere.json");
     ASSERT_EQ(scene.materials.size(), 2u);
     EXPECT_EQ(scene.materials[0].model, BrdfModel::Glass);
-    const GlassParams glass = unpackGlass(scene.materials[0].values.data());
+    const GlassParams glass = unpack<Glass>(scene.materials[0].values.data());
     EXPECT_FLOAT_EQ(glass.ior, 1.5f);
     EXPECT_EQ(glass.transparency, GlassTransparency::Fresnel);
     EXPECT_EQ(scene.materials[1].model, BrdfModel::Mirror);

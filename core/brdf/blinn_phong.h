@@ -7,7 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -50,10 +50,6 @@ inline constexpr ParamSpec kBlinnPhongTable[] = {
      .options = kBlinnFormOptions, .help = "How the lobe is made a BRDF"},
 };
 
-inline BlinnPhongParams unpackBlinnPhong(const float* v) {
-    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], static_cast<BlinnForm>(static_cast<int>(v[7]))};
-}
-
 // f_r = ρ_d/π + specular form (see BlinnForm), zero below the horizon.
 inline glm::vec3 evalBlinnPhong(const BlinnPhongParams& p, glm::vec3 wi, glm::vec3 wo,
                                 const ShadingFrame& frame) {
@@ -78,5 +74,19 @@ inline glm::vec3 evalBlinnPhong(const BlinnPhongParams& p, glm::vec3 wi, glm::ve
 inline glm::vec3 ambientReflectanceBlinnPhong(const BlinnPhongParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return p.diffuseAlbedo;
 }
+
+struct BlinnPhong {
+    static constexpr const char *id = "blinn_phong", *label = "Blinn-Phong";
+    static constexpr const char* citation = "J. F. Blinn, Models of Light Reflection for Computer Synthesized Pictures, SIGGRAPH 1977";
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kBlinnPhongTable;
+    using Params = BlinnPhongParams;
+    static constexpr auto eval = evalBlinnPhong;
+    static constexpr auto ambientReflectance = ambientReflectanceBlinnPhong;
+    static constexpr const char* environmentResponse =
+        "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(n+2)) (w = 1 for the normalized form); from α 0.04 "
+        "the map's peaks as directional lights through the BRDF";
+    static bool isReciprocal(const Params& p) { return p.form != BlinnForm::Lecture; }  // the lecture form is not
+};
 
 }  // namespace glint

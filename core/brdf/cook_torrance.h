@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/model.h"
 #include "brdf/microfacet.h"
 #include "math/frame.h"
 
@@ -57,16 +58,6 @@ inline constexpr ParamSpec kCookTorranceTable[] = {
      .options = kFresnelModeOptions, .help = "Schlick's approximation or the exact equations"},
 };
 
-inline CookTorranceParams unpackCookTorrance(const float* v) {
-    return {{v[0], v[1], v[2]},
-            {v[3], v[4], v[5]},
-            {v[6], v[7], v[8]},
-            v[9],
-            static_cast<MicrofacetDistribution>(static_cast<int>(v[10])),
-            static_cast<MicrofacetGeometry>(static_cast<int>(v[11])),
-            static_cast<FresnelMode>(static_cast<int>(v[12]))};
-}
-
 // D·G / (4 cos θ_i cos θ_o) without Fresnel: the specular term of a perfect (F = 1) reflector.
 inline float cookTorranceSpecular(const CookTorranceParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
     const float cosIn = frame.cosTheta(wi), cosOut = frame.cosTheta(wo);
@@ -99,5 +90,22 @@ inline glm::vec3 ambientReflectanceCookTorrance(const CookTorranceParams& p, glm
                                                 const ShadingFrame& /*frame*/) {
     return p.diffuseAlbedo;
 }
+
+struct CookTorrance {
+    static constexpr const char *id = "cook_torrance", *label = "Cook-Torrance (microfacet)";
+    static constexpr const char* citation =
+        "R. L. Cook, K. E. Torrance, A Reflectance Model for Computer Graphics, ACM TOG 1(1), 1982; "
+        "B. Walter et al., Microfacet Models for Refraction through Rough Surfaces, EGSR 2007; "
+        "E. Heitz, Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs, JCGT 3(2), 2014";
+    // Not energy-conserving as a whole: the Lambert term is added, not coupled, to the specular one.
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kCookTorranceTable;
+    using Params = CookTorranceParams;
+    static constexpr auto eval = evalCookTorrance;
+    static constexpr auto ambientReflectance = ambientReflectanceCookTorrance;
+    static constexpr const char* environmentResponse =
+        "ρ_d·E(n)/π + prefiltered radiance at α × (F0·A + B), split sum (GGX table for both distributions); "
+        "from α 0.04 the map's peaks as directional lights through the BRDF, the rest split-summed";
+};
 
 }  // namespace glint

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "brdf/model.h"
 #include "brdf/microfacet.h"
 #include "math/frame.h"
 
@@ -41,11 +42,6 @@ inline constexpr ParamSpec kGgxAnisotropicTable[] = {
      .options = kFresnelModeOptions, .help = "Schlick's approximation or the exact equations"},
 };
 
-inline GgxAnisotropicParams unpackGgxAnisotropic(const float* v) {
-    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, v[9], v[10],
-            static_cast<FresnelMode>(static_cast<int>(v[11]))};
-}
-
 // D·G / (4 cos θ_i cos θ_o) with anisotropic GGX D and height-correlated Smith G (Heitz 2014,
 // eqs. 85, 86, 99); F = 1.
 inline float ggxAnisotropicSpecular(const GgxAnisotropicParams& p, glm::vec3 wi, glm::vec3 wo,
@@ -73,5 +69,20 @@ inline glm::vec3 ambientReflectanceGgxAnisotropic(const GgxAnisotropicParams& p,
                                                   const ShadingFrame& /*frame*/) {
     return p.diffuseAlbedo;
 }
+
+struct GgxAnisotropic {
+    static constexpr const char *id = "ggx_anisotropic", *label = "GGX anisotropic";
+    static constexpr const char* citation =
+        "B. Walter et al., EGSR 2007; E. Heitz, Understanding the Masking-Shadowing Function in "
+        "Microfacet-Based BRDFs, JCGT 3(2), 2014 (anisotropic GGX, height-correlated Smith)";
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kGgxAnisotropicTable;
+    using Params = GgxAnisotropicParams;
+    static constexpr auto eval = evalGgxAnisotropic;
+    static constexpr auto ambientReflectance = ambientReflectanceGgxAnisotropic;
+    static constexpr const char* environmentResponse =
+        "ρ_d·E(n)/π + split sum at the isotropic α = √(α_x α_y); from α 0.04 the map's peaks as directional "
+        "lights through the BRDF, the rest split-summed";
+};
 
 }  // namespace glint

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/frame.h"
 
 namespace glint {
@@ -43,13 +43,21 @@ inline constexpr ParamSpec kGlassTable[] = {
      .help = "Classic transparency only: fraction transmitted at each interface"},
 };
 
-inline GlassParams unpackGlass(const float* v) {
-    return {v[0], {v[1], v[2], v[3]}, static_cast<GlassTransparency>(static_cast<int>(v[4])), v[5]};
-}
-
 // f_r for delta lights: 0 (both lobes are deltas; a point light's reflection has zero area).
 inline glm::vec3 evalGlass(const GlassParams& /*p*/, glm::vec3 /*wi*/, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return glm::vec3(0.0f);
 }
+
+struct Glass {
+    static constexpr const char *id = "glass", *label = "Glass (dielectric)";
+    static constexpr const char* citation = "Snell's law and Fresnel (1823); transparency after Hearn & Baker, Computer Graphics, §14.5";
+    static constexpr bool reciprocal = true, energyConserving = true;
+    static constexpr const auto& params = kGlassTable;
+    using Params = GlassParams;
+    static constexpr auto eval = evalGlass;
+    // No environment hook: only the traced lobes see the map.
+    static constexpr const char* environmentNote = "refracts and reflects the map through its traced delta lobes";
+    static constexpr bool tracesDeltaLobes = true;
+};
 
 }  // namespace glint

@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -20,8 +20,6 @@ inline constexpr ParamSpec kLambertTable[] = {
      .help = "Fraction of incident flux reflected; f_r = ρ/π"},
 };
 
-inline LambertParams unpackLambert(const float* v) { return {{v[0], v[1], v[2]}}; }
-
 // f_r = ρ/π [1/sr], independent of direction (Lambert 1760).
 inline glm::vec3 evalLambert(const LambertParams& p, glm::vec3 /*wi*/, glm::vec3 /*wo*/,
                              const ShadingFrame& /*frame*/) {
@@ -33,5 +31,16 @@ inline glm::vec3 evalLambert(const LambertParams& p, glm::vec3 /*wi*/, glm::vec3
 inline glm::vec3 ambientReflectanceLambert(const LambertParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return p.albedo;
 }
+
+struct Lambert {
+    static constexpr const char *id = "lambert", *label = "Lambert";
+    static constexpr const char* citation = "J. H. Lambert, Photometria, 1760";
+    static constexpr bool reciprocal = true, energyConserving = true;
+    static constexpr const auto& params = kLambertTable;
+    using Params = LambertParams;
+    static constexpr auto eval = evalLambert;
+    static constexpr auto ambientReflectance = ambientReflectanceLambert;
+    static constexpr const char* environmentResponse = "ρ·E(n)/π (irradiance map)";
+};
 
 }  // namespace glint

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -32,10 +32,6 @@ inline constexpr ParamSpec kMirrorTable[] = {
              "lobe, not balanced against it (F + ρ_d may exceed 1)"},
 };
 
-inline MirrorParams unpackMirror(const float* v) {
-    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}};
-}
-
 // f_r for delta lights: only the Lambert part ρ_d/π (the mirror lobe is a delta).
 inline glm::vec3 evalMirror(const MirrorParams& p, glm::vec3 /*wi*/, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return p.diffuseAlbedo * kInvPi;
@@ -45,5 +41,17 @@ inline glm::vec3 evalMirror(const MirrorParams& p, glm::vec3 /*wi*/, glm::vec3 /
 inline glm::vec3 ambientReflectanceMirror(const MirrorParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return p.diffuseAlbedo;
 }
+
+struct Mirror {
+    static constexpr const char *id = "mirror", *label = "Mirror (conductor Fresnel)";
+    static constexpr const char* citation = "A. Fresnel (1823); complex index after Born & Wolf, Principles of Optics, §14.2";
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kMirrorTable;
+    using Params = MirrorParams;
+    static constexpr auto eval = evalMirror;
+    static constexpr auto ambientReflectance = ambientReflectanceMirror;
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π; the mirror lobe is traced into the map";
+    static constexpr bool tracesDeltaLobes = true;
+};
 
 }  // namespace glint

@@ -1,7 +1,8 @@
-// The list of BRDF models: each model's id, label, parameter table and the physical claims
-// it makes (reciprocity, energy conservation), and dispatch of eval over packed values.
-// Adding a model: one header in core/brdf, one GLSL twin, one row here; optionally the two hooks
-// below (ambient reflectance, specular transport), each a case in model_registry.cpp.
+// Glint's BRDF models: the one list of model types (brdf/model.h says what a model declares),
+// the BrdfModel ids it derives, and the run-time view of each model (ModelInfo) for the code that
+// picks a model by id: the panel, the files, the GLSL generator.
+// Adding a model: its header core/brdf/<id>.h, its GLSL twin shaders/brdf/<id>.glsl, one line in
+// GLINT_BRDF_MODELS below (appended: a model's position is its BrdfModel id).
 #pragma once
 
 #include <optional>
@@ -10,44 +11,34 @@
 
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/blinn_phong.h"
+#include "brdf/cook_torrance.h"
+#include "brdf/ggx_anisotropic.h"
+#include "brdf/glass.h"
+#include "brdf/lambert.h"
+#include "brdf/mirror.h"
+#include "brdf/model.h"
+#include "brdf/oren_nayar.h"
+#include "brdf/phong.h"
+#include "brdf/retroreflective.h"
+#include "brdf/ward.h"
 #include "math/frame.h"
 
 namespace glint {
 
-enum class BrdfModel {
-    Lambert, BlinnPhong, OrenNayar, Phong, CookTorrance, GgxAnisotropic, Ward, Retroreflective, Mirror, Glass
-};
+#define GLINT_BRDF_MODELS(X)                                                                              \
+    X(Lambert), X(BlinnPhong), X(OrenNayar), X(Phong), X(CookTorrance), X(GgxAnisotropic), X(Ward), \
+        X(Retroreflective), X(Mirror), X(Glass)
+#define GLINT_MODEL_NAME(Model) Model
+enum class BrdfModel : int { GLINT_BRDF_MODELS(GLINT_MODEL_NAME) };
+using Models = ModelList<GLINT_BRDF_MODELS(GLINT_MODEL_NAME)>;
+#undef GLINT_MODEL_NAME
 
-struct ModelInfo {
-    BrdfModel model;
-    const char* id;         // as written in files
-    const char* label;      // as shown in the UI
-    const char* glslFile;   // the GLSL twin, under shaders/
-    const char* glslEval;   // its eval function
-    std::span<const ParamSpec> params;
-    bool reciprocal;        // f(wi, wo) == f(wo, wi) for every parameter set
-    bool energyConserving;  // directional albedo <= 1 over the whole valid range
-    const char* citation;
-    // Ambient hook: the GLSL function `vec3 f(MaterialParams, vec3 wo, ShadingFrame)` returning
-    // the model's ambient reflectance k_a (Hearn-Baker's k_a·I_a, with I_a a uniform radiance
-    // L_a): physically the directional albedo ∫ f_r cos θ_i dω_i for wo. Its C++ twin
-    // `ambientReflectance<Model>(params, wo, frame)` sits in the model's header and gets a case in
-    // ambientReflectance() below. nullptr: the model reflects no ambient light (k_a = 0).
-    const char* glslAmbient = nullptr;
-    // Specular-transport hook for delta lobes that f_r cannot hold (mirror, glass): the GLSL
-    // function `vec3 f(MaterialParams, vec3 position, ShadingFrame, vec3 wo)` tracing them
-    // (common/specular_transport.glsl); C++ twin: a case in traceSpecular() in
-    // render/specular_transport.cpp. nullptr: none.
-    const char* glslTransport = nullptr;
-    // Environment hook: the GLSL function `vec3 f(MaterialParams, vec3 wo, ShadingFrame)` giving
-    // the radiance the model's non-delta lobes reflect from the environment map (image-based
-    // lighting, shaders/common/environment.glsl), at the end of the model's GLSL file; C++ twin: a
-    // case in environmentLighting() (environment/environment_lighting.cpp). nullptr: none.
-    const char* glslEnvironment = nullptr;
-    // How the environment lights the model, in words (shown under the material panel).
-    const char* environmentResponse = "not lit by the environment (only its delta lobes see it)";
-};
+// Calls f(M{}) with the type of `model`.
+template <class F>
+decltype(auto) dispatch(BrdfModel model, F&& f) {
+    return dispatch(Models{}, static_cast<int>(model), std::forward<F>(f));
+}
 
 std::span<const ModelInfo> allModels();
 const ModelInfo& modelInfo(BrdfModel model);

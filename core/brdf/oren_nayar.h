@@ -7,7 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -26,8 +26,6 @@ inline constexpr ParamSpec kOrenNayarTable[] = {
      .sliderMin = 0, .sliderMax = 90, .validMin = 0, .validMax = 90, .defaultValue = {30, 0, 0},
      .help = "Standard deviation of the facet slope angle, in degrees"},
 };
-
-inline OrenNayarParams unpackOrenNayar(const float* v) { return {{v[0], v[1], v[2]}, v[3]}; }
 
 // f_r = ρ/π (A + B max(0, cos(φ_i − φ_o)) sin α tan β), α = max(θ_i, θ_o), β = min(θ_i, θ_o),
 // A = 1 − 0.5 σ²/(σ² + 0.33), B = 0.45 σ²/(σ² + 0.09), σ in radians. Uses
@@ -64,5 +62,17 @@ inline float directionalAlbedoOrenNayar(float roughnessDegrees, float cosOut) {
 inline glm::vec3 ambientReflectanceOrenNayar(const OrenNayarParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return p.albedo;
 }
+
+struct OrenNayar {
+    static constexpr const char *id = "oren_nayar", *label = "Oren-Nayar";
+    static constexpr const char* citation = "M. Oren, S. K. Nayar, Generalization of Lambert's Reflectance Model, SIGGRAPH 1994 (qualitative model, eq. 30)";
+    // Qualitative model: its albedo reaches about 1.015 ρ at grazing view for σ ≈ 12° (brdf_test).
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kOrenNayarTable;
+    using Params = OrenNayarParams;
+    static constexpr auto eval = evalOrenNayar;
+    static constexpr auto ambientReflectance = ambientReflectanceOrenNayar;
+    static constexpr const char* environmentResponse = "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo)";
+};
 
 }  // namespace glint

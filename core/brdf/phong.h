@@ -7,7 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -50,10 +50,6 @@ inline constexpr ParamSpec kPhongTable[] = {
      .options = kPhongFormOptions, .help = "How the lobe is made a BRDF"},
 };
 
-inline PhongParams unpackPhong(const float* v) {
-    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], static_cast<PhongForm>(static_cast<int>(v[7]))};
-}
-
 // f_r = ρ_d/π + specular form (see PhongForm), R = 2(N·ω_i)N − ω_i; zero below the horizon.
 // R·ω_o = 2(N·ω_i)(N·ω_o) − ω_i·ω_o is symmetric in ω_i and ω_o, so the lobe itself is reciprocal.
 inline glm::vec3 evalPhong(const PhongParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
@@ -81,5 +77,21 @@ inline glm::vec3 evalPhong(const PhongParams& p, glm::vec3 wi, glm::vec3 wo, con
 inline glm::vec3 ambientReflectancePhong(const PhongParams& p, glm::vec3 /*wo*/, const ShadingFrame& /*frame*/) {
     return p.diffuseAlbedo;
 }
+
+struct Phong {
+    static constexpr const char *id = "phong", *label = "Phong";
+    static constexpr const char* citation =
+        "B. T. Phong, Illumination for Computer Generated Pictures, CACM 18(6), 1975; "
+        "normalisation: R. R. Lewis, Making Shaders More Physically Plausible, 1994";
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kPhongTable;
+    using Params = PhongParams;
+    static constexpr auto eval = evalPhong;
+    static constexpr auto ambientReflectance = ambientReflectancePhong;
+    static constexpr const char* environmentResponse =
+        "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(4n+2)) (w = 1 for the normalized form); from "
+        "α 0.04 the map's peaks as directional lights through the BRDF";
+    static bool isReciprocal(const Params& p) { return p.form != PhongForm::Lecture; }  // the lecture form is not
+};
 
 }  // namespace glint

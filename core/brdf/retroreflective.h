@@ -7,7 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "brdf/param_table.h"
+#include "brdf/model.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -49,11 +49,6 @@ inline constexpr ParamSpec kRetroreflectiveTable[] = {
      .scale = ParamScale::Log, .help = "Sharpness of the retroreflective lobe"},
 };
 
-inline RetroreflectiveParams unpackRetroreflective(const float* v) {
-    return {{v[0], v[1], v[2]}, static_cast<LimbDarkening>(static_cast<int>(v[3])), v[4],
-            {v[5], v[6], v[7]}, v[8]};
-}
-
 // f_r = diffuse law + k_r (m+1)/(2π) max(0, ω_i·ω_o)^m. Both terms are symmetric in ω_i, ω_o.
 // Minnaert's BRDF (cos θ_i cos θ_o)^(k−1) (Minnaert 1941, "The reciprocity principle in lunar
 // photometry") is normalised so that its albedo at normal incidence is ρ; Lommel-Seeliger
@@ -81,5 +76,18 @@ inline glm::vec3 ambientReflectanceRetroreflective(const RetroreflectiveParams& 
     if (p.limbDarkening == LimbDarkening::Minnaert) return p.albedo * std::pow(cosOut, p.minnaertExponent - 1.0f);
     return p.albedo * (0.5f * (1.0f - cosOut * std::log(1.0f + 1.0f / cosOut)));
 }
+
+struct Retroreflective {
+    static constexpr const char *id = "retroreflective", *label = "Moon / retroreflective";
+    static constexpr const char* citation =
+        "M. Minnaert, The Reciprocity Principle in Lunar Photometry, ApJ 93, 1941; "
+        "B. Hapke, Bidirectional Reflectance Spectroscopy 1, JGR 86, 1981 (Lommel-Seeliger)";
+    static constexpr bool reciprocal = true, energyConserving = false;
+    static constexpr const auto& params = kRetroreflectiveTable;
+    using Params = RetroreflectiveParams;
+    static constexpr auto eval = evalRetroreflective;
+    static constexpr auto ambientReflectance = ambientReflectanceRetroreflective;
+    static constexpr const char* environmentResponse = "k_a(ω_o)·E(n)/π (the retroreflective lobe is left out)";
+};
 
 }  // namespace glint

@@ -139,12 +139,12 @@ DeltaLobes deltaLobes(const PlotMaterial& material, float incidenceDegrees) {
     const glm::vec3 mirrored{-wi.x, -wi.y, wi.z};
     if (material.measured || material.sampler) return lobes;  // f_r is all there is
     if (material.model == BrdfModel::Mirror) {
-        const MirrorParams mirror = unpackMirror(material.values.data());
+        const MirrorParams mirror = unpack<Mirror>(material.values.data());
         lobes.hasReflection = true;
         lobes.reflectedDirection = mirrored;
         lobes.reflectedWeight = fresnelComplexIndex(cosIncident, mirror.ior, mirror.extinction);
     } else if (material.model == BrdfModel::Glass) {
-        const GlassParams glass = unpackGlass(material.values.data());
+        const GlassParams glass = unpack<Glass>(material.values.data());
         // Snell: sin θ_t = sin θ_i / η; from air into glass (η ≥ 1) there is no total internal reflection.
         const float sinTransmitted = std::sin(incidence) / glass.ior;
         const float cosTransmitted = std::sqrt(std::max(0.0f, 1.0f - sinTransmitted * sinTransmitted));

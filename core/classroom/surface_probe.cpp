@@ -107,7 +107,7 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         // Refraction (glass): the viewer is outside unless the ray hit an exact sphere from inside.
         std::optional<std::pair<float, float>> etas;  // η on the viewer's side, η beyond
         if (material.model == BrdfModel::Glass) {
-            const float ior = unpackGlass(breakdown.values.data()).ior;
+            const float ior = unpack<Glass>(breakdown.values.data()).ior;
             const auto* sphere = std::get_if<SphereShape>(&object.shape);
             const bool inside = sphere && !hit->triangle && glm::dot(hit->normal, hit->position - sphere->center) < 0.0f;
             etas = inside ? std::pair{ior, 1.0f} : std::pair{1.0f, ior};

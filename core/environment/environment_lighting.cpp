@@ -1,20 +1,11 @@
-// Image-based lighting per model (see environment_lighting.h). Each environmentLighting<Model>
-// below has its GLSL twin of the same name at the end of shaders/brdf/<model>.glsl.
+// Image-based lighting per model (see environment_lighting.h). Each lightingOf(<Model>Params) below
+// is the C++ twin of environmentLighting<Model> at the end of shaders/brdf/<model>.glsl.
 // Sections: lookups · roughness mapping · per-model hooks · dispatch.
 #include "environment/environment_lighting.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "brdf/blinn_phong.h"
-#include "brdf/cook_torrance.h"
-#include "brdf/ggx_anisotropic.h"
-#include "brdf/lambert.h"
-#include "brdf/mirror.h"
-#include "brdf/oren_nayar.h"
-#include "brdf/phong.h"
-#include "brdf/retroreflective.h"
-#include "brdf/ward.h"
 #include "environment/environment_map.h"
 #include "math/constants.h"
 
@@ -111,30 +102,29 @@ glm::vec3 peakSpecular(const Environment& e, float alpha, glm::vec3 wo, const Sh
 
 // --- per-model hooks ------------------------------------------------------------------------
 
-glm::vec3 environmentLightingLambert(const LambertParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
+glm::vec3 lightingOf(const LambertParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
     return p.albedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
 // The directional albedo × E(n)/π: exact under a uniform map, as for Lambert.
-glm::vec3 environmentLightingOrenNayar(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame,
+glm::vec3 lightingOf(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                        const Environment& e) {
     return p.albedo * directionalAlbedoOrenNayar(p.roughnessDegrees, frame.cosTheta(wo)) *
            environmentDiffuseRadiance(e, frame.normal);
 }
 
-glm::vec3 environmentLightingRetroreflective(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame,
+glm::vec3 lightingOf(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                              const Environment& e) {
     return ambientReflectanceRetroreflective(p, wo, frame) * environmentDiffuseRadiance(e, frame.normal);
 }
 
-glm::vec3 environmentLightingMirror(const MirrorParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
+glm::vec3 lightingOf(const MirrorParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
 // Blinn-Phong, Phong, Ward: a GGX-prefiltered lobe of equivalent α for the map (less its peaks),
 // their own lobe for the peaks.
-glm::vec3 environmentLightingBlinnPhong(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame,
-                                        const Environment& e) {
+glm::vec3 lightingOf(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = blinnAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 8.0f) / (8.0f * kPi));
     BlinnPhongParams lobe = p;
@@ -145,7 +135,7 @@ glm::vec3 environmentLightingBlinnPhong(const BlinnPhongParams& p, glm::vec3 wo,
                         [&](glm::vec3 wi) { return evalBlinnPhong(lobe, wi, wo, frame) * frame.cosTheta(wi); });
 }
 
-glm::vec3 environmentLightingPhong(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = phongAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 2.0f) / (2.0f * kPi));
     PhongParams lobe = p;
@@ -156,7 +146,7 @@ glm::vec3 environmentLightingPhong(const PhongParams& p, glm::vec3 wo, const Sha
                         [&](glm::vec3 wi) { return evalPhong(lobe, wi, wo, frame) * frame.cosTheta(wi); });
 }
 
-glm::vec3 environmentLightingWard(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
@@ -183,7 +173,7 @@ glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 
-glm::vec3 environmentLightingCookTorrance(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
+glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                           const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e) +
@@ -194,7 +184,7 @@ glm::vec3 environmentLightingCookTorrance(const CookTorranceParams& p, glm::vec3
            });
 }
 
-glm::vec3 environmentLightingGgxAnisotropic(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingFrame& frame,
+glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                             const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
@@ -206,37 +196,40 @@ glm::vec3 environmentLightingGgxAnisotropic(const GgxAnisotropicParams& p, glm::
            });
 }
 
+// The GGX α each glossy lobe is prefiltered with: split sum for microfacet lobes, an equivalent
+// roughness along R for the others (see environment_lighting.h).
+float splitSumAlpha(const CookTorranceParams& p) { return p.roughness; }
+float splitSumAlpha(const GgxAnisotropicParams& p) { return std::sqrt(p.roughnessX * p.roughnessY); }
+float lobeAlpha(const BlinnPhongParams& p) { return blinnAlpha(p.exponent); }
+float lobeAlpha(const PhongParams& p) { return phongAlpha(p.exponent); }
+float lobeAlpha(const WardParams& p) { return std::sqrt(p.roughnessX * p.roughnessY); }
+
+template <class M>
+concept SplitSum = requires(const typename M::Params& p) { splitSumAlpha(p); };
+template <class M>
+concept EquivalentLobe = requires(const typename M::Params& p) { lobeAlpha(p); };
+
 }  // namespace
 
 float environmentRoughness(BrdfModel model, std::span<const float> values) {
-    switch (model) {
-        case BrdfModel::BlinnPhong: return blinnAlpha(unpackBlinnPhong(values.data()).exponent);
-        case BrdfModel::Phong: return phongAlpha(unpackPhong(values.data()).exponent);
-        case BrdfModel::Ward: {
-            const WardParams p = unpackWard(values.data());
-            return std::sqrt(p.roughnessX * p.roughnessY);
-        }
-        case BrdfModel::CookTorrance: return unpackCookTorrance(values.data()).roughness;
-        case BrdfModel::GgxAnisotropic: {
-            const GgxAnisotropicParams p = unpackGgxAnisotropic(values.data());
-            return std::sqrt(p.roughnessX * p.roughnessY);
-        }
-        default: return 0.0f;
-    }
+    return dispatch(model, [&]<class M>(M) {
+        if constexpr (SplitSum<M>) return splitSumAlpha(unpack<M>(values.data()));
+        else if constexpr (EquivalentLobe<M>) return lobeAlpha(unpack<M>(values.data()));
+        else return 0.0f;
+    });
 }
 
 const char* environmentApproximation(BrdfModel model) {
-    switch (model) {
-        case BrdfModel::CookTorrance:
-        case BrdfModel::GgxAnisotropic:
-            return "irradiance map + GGX split sum along the dominant direction; from α 0.04 of the map less "
-                   "its peaks, which light the model's own lobe as directional lights";
-        case BrdfModel::BlinnPhong:
-        case BrdfModel::Phong:
-        case BrdfModel::Ward: return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R";
-        case BrdfModel::Glass: return "none (traced)";
-        default: return "irradiance map";
-    }
+    return dispatch(model, []<class M>(M) {
+        if constexpr (!HasEnvironment<M>) return "none (traced)";
+        else if constexpr (SplitSum<M>)
+            return "irradiance map + GGX split sum along the dominant direction; from α 0.04 of the map less its "
+                   "peaks, which light the model's own lobe as directional lights";
+        else if constexpr (EquivalentLobe<M>)
+            return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R; from α 0.04 of the map "
+                   "less its peaks, which light the model's own lobe as directional lights";
+        else return "irradiance map";
+    });
 }
 
 // --- dispatch -------------------------------------------------------------------------------
@@ -244,20 +237,14 @@ const char* environmentApproximation(BrdfModel model) {
 glm::vec3 environmentLighting(BrdfModel model, std::span<const float> values, glm::vec3 wo, const ShadingFrame& frame,
                               const Environment& e) {
     if (!e.enabled()) return glm::vec3(0.0f);
-    const float* v = values.data();
-    switch (model) {
-        case BrdfModel::Lambert: return environmentLightingLambert(unpackLambert(v), wo, frame, e);
-        case BrdfModel::BlinnPhong: return environmentLightingBlinnPhong(unpackBlinnPhong(v), wo, frame, e);
-        case BrdfModel::OrenNayar: return environmentLightingOrenNayar(unpackOrenNayar(v), wo, frame, e);
-        case BrdfModel::Phong: return environmentLightingPhong(unpackPhong(v), wo, frame, e);
-        case BrdfModel::CookTorrance: return environmentLightingCookTorrance(unpackCookTorrance(v), wo, frame, e);
-        case BrdfModel::GgxAnisotropic: return environmentLightingGgxAnisotropic(unpackGgxAnisotropic(v), wo, frame, e);
-        case BrdfModel::Ward: return environmentLightingWard(unpackWard(v), wo, frame, e);
-        case BrdfModel::Retroreflective: return environmentLightingRetroreflective(unpackRetroreflective(v), wo, frame, e);
-        case BrdfModel::Mirror: return environmentLightingMirror(unpackMirror(v), wo, frame, e);
-        case BrdfModel::Glass: break;  // delta lobes only: traced (specular_transport.h)
-    }
-    return glm::vec3(0.0f);
+    return dispatch(model, [&]<class M>(M) {
+        constexpr bool twin = requires(const typename M::Params& p, glm::vec3 w, const ShadingFrame& f, const Environment& env) {
+            lightingOf(p, w, f, env);
+        };
+        static_assert(twin == HasEnvironment<M>, "a model with an environment hook needs its lightingOf here");
+        if constexpr (twin) return lightingOf(unpack<M>(values.data()), wo, frame, e);
+        else return glm::vec3(0.0f);  // delta lobes only: traced (specular_transport.h)
+    });
 }
 
 }  // namespace glint

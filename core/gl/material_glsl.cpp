@@ -45,7 +45,7 @@ TexturedParams TexturedParams::of(const Material& material) {
 }
 
 std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured) {
-    std::string fields, loads;
+    std::string constants, fields, loads;
     int offset = 0;
     for (size_t index = 0; index < model.params.size(); ++index) {
         const ParamSpec& spec = model.params[index];
@@ -70,6 +70,9 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
                 loads += specialisable(name, at(0) + " > 0.5");
                 break;
             case ParamKind::Enum:
+                for (size_t option = 0; option < spec.options.size(); ++option)
+                    constants += "const int " + glslOptionConstant(name, spec.options[option].id) + " = " +
+                                 std::to_string(option) + ";\n";
                 fields += "    int " + name + ";\n";
                 loads += specialisable(name, "int(" + at(0) + " + 0.5)");
                 break;
@@ -81,7 +84,7 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
         textures = "#define GLINT_TEXTURED 1\n" + perlinTableGlsl() + "#include \"common/textures.glsl\"\n";
         if (textured.hasNormalMap()) textures += "#define GLINT_NORMAL_MAP_SLOT " + std::to_string(textured.normalMapSlot()) + "\n";
     }
-    return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures +
+    return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures + constants +
            "struct MaterialParams {\n" + fields + "};\n\n" +
            "MaterialParams loadMaterialParams() {\n    MaterialParams p;\n" + loads + "    return p;\n}\n\n" +
            "#include \"" + model.glslFile + "\"\n" + "#define GLINT_EVAL_BRDF " + model.glslEval + "\n" +

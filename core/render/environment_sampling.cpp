@@ -40,7 +40,7 @@ enum Strategy { kEnvironment, kCosine, kGgx, kStrategyCount };
 glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> values, glm::vec3 wo,
                                     const ShadingFrame& frame, const Environment& environment, uint32_t pixelSeed,
                                     int sampleCount) {
-    if (!environment.enabled() || model == BrdfModel::Glass) return glm::vec3(0.0f);
+    if (!environment.enabled() || !modelInfo(model).glslEnvironment) return glm::vec3(0.0f);  // delta lobes only
     const glm::vec3 view = frame.toLocal(wo);
     if (view.z <= 0.0f) return glm::vec3(0.0f);
     const float alpha = std::max(environmentRoughness(model, values), 1e-3f);

@@ -6,23 +6,38 @@
 #include "brdf/mirror.h"
 
 namespace glint {
+namespace {
+
+// The C++ twins of transport<Model> (shaders/brdf/<model>.glsl), one per model with delta lobes.
+struct TracedRay {
+    const MissRadiance& miss;
+    const SphereGeometry* sphere;
+    glm::vec3 position, normal, towardsViewer;
+    float viewerDistance;
+};
+
+glm::vec3 traceDeltaLobes(const MirrorParams& mirror, const TracedRay& ray) {
+    return traceMirror(mirror.ior, mirror.extinction, ray.miss, ray.normal, ray.towardsViewer);
+}
+
+glm::vec3 traceDeltaLobes(const GlassParams& glass, const TracedRay& ray) {
+    const GlassInterface glassInterface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
+    return traceGlass(glassInterface, glass.absorption, ray.miss, ray.sphere, ray.position, ray.normal,
+                      ray.towardsViewer, ray.viewerDistance);
+}
+
+}  // namespace
 
 glm::vec3 traceSpecular(BrdfModel model, std::span<const float> values, const MissRadiance& miss,
                         const SphereGeometry* sphere, glm::vec3 position, glm::vec3 normal, glm::vec3 towardsViewer,
                         float viewerDistance) {
-    switch (model) {
-        case BrdfModel::Mirror: {
-            const MirrorParams mirror = unpackMirror(values.data());
-            return traceMirror(mirror.ior, mirror.extinction, miss, normal, towardsViewer);
-        }
-        case BrdfModel::Glass: {
-            const GlassParams glass = unpackGlass(values.data());
-            const GlassInterface glassInterface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
-            return traceGlass(glassInterface, glass.absorption, miss, sphere, position, normal, towardsViewer,
-                              viewerDistance);
-        }
-        default: return glm::vec3(0.0f);  // no delta lobes (ModelInfo::glslTransport == nullptr)
-    }
+    const TracedRay ray{miss, sphere, position, normal, towardsViewer, viewerDistance};
+    return dispatch(model, [&]<class M>(M) {
+        constexpr bool twin = requires(const typename M::Params& p, const TracedRay& r) { traceDeltaLobes(p, r); };
+        static_assert(twin == TracesDeltaLobes<M>, "a model that traces delta lobes needs its traceDeltaLobes here");
+        if constexpr (twin) return traceDeltaLobes(unpack<M>(values.data()), ray);
+        else return glm::vec3(0.0f);
+    });
 }
 
 }  // namespace glint

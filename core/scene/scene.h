@@ -10,14 +10,13 @@
 
 #include <glm/glm.hpp>
 
-#include "brdf/model_registry.h"
 #include "camera/camera.h"
 #include "geometry/mesh.h"
 #include "light/light.h"
 #include "scene/background.h"
-#include "scene/overlays.h"
-#include "texture/material_texture.h"
+#include "scene/display_settings.h"
 #include "scene/environment.h"
+#include "scene/material.h"
 
 namespace glint {
 
@@ -25,24 +24,6 @@ inline constexpr int kSceneFormatVersion = 1;
 // Lights per scene. Each costs 80 bytes of the LightBlock (64 × 80 = 5 KiB, well inside the
 // 16 KiB that OpenGL 4.1 guarantees per uniform block); the shader loops only over those present.
 inline constexpr int kMaxLights = 64;
-
-struct CustomBrdf;  // interchange/custom_brdf.h
-struct MeasuredBrdf;  // interchange/measured_brdf.h
-
-struct Material {
-    std::string name;
-    BrdfModel model = BrdfModel::Lambert;
-    std::vector<float> values;  // packed per the model's parameter table
-    std::vector<MaterialTexture> textures;  // parameters driven by textures (texture/), table order
-    // A BRDF Explorer .brdf file (GPU only). When set, `model` is unused and `values` are packed
-    // per custom->table.
-    std::shared_ptr<const CustomBrdf> custom;
-    // A MERL measured BRDF (.binary). When set, it is what renders; `model` and `values` hold a
-    // Lambert stand-in for code that knows only analytic models (measured_brdf.h).
-    std::shared_ptr<const MeasuredBrdf> measured;
-
-    static Material withDefaults(std::string name, BrdfModel model);
-};
 
 struct SphereShape {
     glm::vec3 center{0.0f};
@@ -109,27 +90,6 @@ struct SceneObject {
     Shape shape;
     int materialIndex = 0;  // into Scene::materials
     SurfaceInterpolation interpolation = SurfaceInterpolation::Exact;  // see defaultInterpolation
-};
-
-// Srgb: IEC 61966-2-1; Gamma: value^(1/γ); Linear: no encoding ("gamma off", the classroom's
-// lesson on why encoding matters).
-enum class Transfer { Srgb, Gamma, Linear };
-// Ordered dither added before quantising to `levels` (display/quantisation.h has the matrices).
-enum class Dither { None, Bayer2, Bayer4, Halftone };
-// Tone mapping of exposed radiance before encoding (display_chain.h has the formulas).
-enum class ToneMap { None, Reinhard, AcesFilmic, PbrNeutral };
-
-// The display chain: exposure → tone map → clamp → sRGB, gamma or no encoding → quantisation to
-// `levels` per channel (with an optional ordered dither) → 8 bits.
-struct DisplaySettings {
-    float exposureStops = 0.0f;  // radiance is multiplied by 2^exposureStops
-    Transfer transfer = Transfer::Srgb;
-    float gamma = 2.2f;  // used when transfer == Gamma
-    ToneMap toneMap = ToneMap::None;  // None: values above 1 clip
-    int levels = 256;  // intensity levels per channel, 2..256 (256: plain 8-bit output)
-    Dither dither = Dither::None;
-    bool levelsRamp = false;  // bottom eighth of the image: a grey radiance ramp 0..1 through the chain
-    OverlaySettings overlays;  // wireframe / normals drawn over the displayed image (GL only)
 };
 
 struct Scene {

@@ -10,9 +10,9 @@ vec3 evalBlinnPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     vec3 halfway = normalize(sum);
     float lobe = powZeroIsOne(max(cosTheta(frame, halfway), 0.0), p.exponent);
     float specularScale;
-    if (p.form == 0) specularScale = lobe / cosIn;                             // lecture
-    else if (p.form == 1) specularScale = lobe / max(cosIn, cosOut);           // max-Blinn
-    else if (p.form == 2) specularScale = lobe / dot(sum, sum);                // |L+V|²
+    if (p.form == FORM_LECTURE) specularScale = lobe / cosIn;                             // lecture
+    else if (p.form == FORM_MAX_COSINE) specularScale = lobe / max(cosIn, cosOut);           // max-Blinn
+    else if (p.form == FORM_HALF_VECTOR) specularScale = lobe / dot(sum, sum);                // |L+V|²
     else specularScale = lobe * (p.exponent + 8.0) / (8.0 * PI);               // normalised
     return p.diffuse_albedo * INV_PI + p.specular * specularScale;
 }

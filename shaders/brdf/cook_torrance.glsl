@@ -9,11 +9,11 @@ float cookTorranceSpecular(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame fram
     float cosHalf = cosTheta(frame, halfway);
     float cosDifference = dot(wo, halfway);
     float sin2Half = sinSquared(frame.normal, halfway);
-    bool ggx = p.distribution == 1;
+    bool ggx = p.distribution == DISTRIBUTION_GGX;
     float distribution = ggx ? distributionGgx(cosHalf, sin2Half, p.roughness)
                              : distributionBeckmann(cosHalf, sin2Half, p.roughness);
     float geometry;
-    if (p.geometry == 0) geometry = maskingVCavity(cosHalf, cosIn, cosOut, cosDifference);
+    if (p.geometry == GEOMETRY_V_CAVITY) geometry = maskingVCavity(cosHalf, cosIn, cosOut, cosDifference);
     else if (ggx) geometry = smithHeightCorrelated(lambdaGgx(cosIn, p.roughness), lambdaGgx(cosOut, p.roughness));
     else geometry = smithHeightCorrelated(lambdaBeckmann(cosIn, p.roughness), lambdaBeckmann(cosOut, p.roughness));
     return distribution * geometry / (4.0 * cosIn * cosOut);

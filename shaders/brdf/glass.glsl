@@ -10,6 +10,6 @@ vec3 evalGlass(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
 // CPU's hit distance (rayTowards works in the vertex stage too, for Gouraud shading).
 vec3 transportGlass(MaterialParams p, vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     float viewerDistance = length(position - rayTowards(position).origin);
-    return traceGlass(p.ior, p.transparency == 1, p.transmission, p.absorption, shapeKind == SHAPE_SPHERE, sphere,
+    return traceGlass(p.ior, p.transparency == TRANSPARENCY_CLASSIC, p.transmission, p.absorption, shapeKind == SHAPE_SPHERE, sphere,
                       position, frame.normal, towardsViewer, viewerDistance);
 }

@@ -3,7 +3,7 @@
 #include "brdf/fresnel.glsl"
 
 vec3 microfacetFresnel(int mode, float cosDifference, vec3 ior, vec3 extinction) {
-    if (mode == 0) return fresnelSchlick(fresnelF0(ior, extinction), cosDifference);
+    if (mode == FRESNEL_SCHLICK) return fresnelSchlick(fresnelF0(ior, extinction), cosDifference);
     return fresnelComplexIndex(cosDifference, ior, extinction);
 }
 

@@ -9,9 +9,9 @@ vec3 evalPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     float lobe = powZeroIsOne(max(cosMirror, 0.0), p.exponent);
     float specularScale;
     vec3 sum = wi + wo;
-    if (p.form == 0) specularScale = lobe / cosIn;                             // lecture
-    else if (p.form == 1) specularScale = lobe / max(cosIn, cosOut);           // max-cosine
-    else if (p.form == 2) specularScale = lobe / dot(sum, sum);                // |L+V|²
+    if (p.form == FORM_LECTURE) specularScale = lobe / cosIn;                             // lecture
+    else if (p.form == FORM_MAX_COSINE) specularScale = lobe / max(cosIn, cosOut);           // max-cosine
+    else if (p.form == FORM_HALF_VECTOR) specularScale = lobe / dot(sum, sum);                // |L+V|²
     else specularScale = lobe * (p.exponent + 2.0) / (2.0 * PI);               // normalised
     return p.diffuse_albedo * INV_PI + p.specular * specularScale;
 }

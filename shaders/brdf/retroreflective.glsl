@@ -6,7 +6,7 @@ vec3 evalRetroreflective(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame)
     float cosIn = cosTheta(frame, wi), cosOut = cosTheta(frame, wo);
     if (cosIn <= 0.0 || cosOut <= 0.0) return vec3(0.0);
     float diffuse;
-    if (p.limb_darkening == 0)
+    if (p.limb_darkening == LIMB_DARKENING_MINNAERT)
         diffuse = (p.minnaert_k + 1.0) / (2.0 * PI) * pow(cosIn * cosOut, p.minnaert_k - 1.0);
     else diffuse = 1.0 / (4.0 * PI * (cosIn + cosOut));
     float retro = (p.retro_exponent + 1.0) / (2.0 * PI) * powZeroIsOne(max(dot(wi, wo), 0.0), p.retro_exponent);
@@ -17,7 +17,7 @@ vec3 evalRetroreflective(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame)
 vec3 ambientReflectanceRetroreflective(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float cosOut = cosTheta(frame, wo);
     if (cosOut <= 0.0) return vec3(0.0);
-    if (p.limb_darkening == 0) return p.albedo * pow(cosOut, p.minnaert_k - 1.0);
+    if (p.limb_darkening == LIMB_DARKENING_MINNAERT) return p.albedo * pow(cosOut, p.minnaert_k - 1.0);
     return p.albedo * (0.5 * (1.0 - cosOut * log(1.0 + 1.0 / cosOut)));
 }
 

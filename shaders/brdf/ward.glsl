@@ -8,7 +8,7 @@ float wardSpecular(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     float x = halfway.x / p.roughness_x, y = halfway.y / p.roughness_y;
     float hz2 = halfway.z * halfway.z;
     float gaussian = exp(-(x * x + y * y) / hz2);
-    if (p.normalization == 0)
+    if (p.normalization == NORMALIZATION_WARD_1992)
         return gaussian / (4.0 * PI * p.roughness_x * p.roughness_y * sqrt(inLocal.z * outLocal.z));
     return gaussian * dot(halfway, halfway) / (PI * p.roughness_x * p.roughness_y * hz2 * hz2);
 }
