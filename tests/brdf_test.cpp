@@ -114,7 +114,7 @@ TEST(BrdfRegistry, TablesAreConsistent) {
     for (const ModelInfo& info : allModels()) {
         SCOPED_TRACE(info.id);
         EXPECT_EQ(findModel(info.id), info.model);
-        EXPECT_LE(packedSize(info.params), 32) << "MaterialBlock holds 32 floats";
+        EXPECT_LE(packedSize(info.params), 48) << "MaterialBlock holds 48 floats";
         for (const ParamSpec& spec : info.params) {
             SCOPED_TRACE(spec.name);
             EXPECT_LE(spec.validMin, spec.sliderMin);
@@ -465,7 +465,8 @@ TEST(BrdfProperties, LimbDarkeningLaws) {
 
 // Ambient reflectance k_a: every model but glass has the hook; k_a is never more than the
 // model's whole directional albedo (the hooks leave out only non-negative lobes), except for
-// Oren-Nayar, whose k_a = ρ differs from its qualitative albedo by a few percent either way.
+// Oren-Nayar, whose k_a = ρ differs from its qualitative albedo by a few percent either way, and
+// OpenPBR, whose k_a is all of its albedo.
 TEST(BrdfAmbient, EveryHookIsAtMostTheDirectionalAlbedo) {
     std::mt19937 random(11);
     for (const ModelInfo& info : allModels()) {
@@ -475,7 +476,9 @@ TEST(BrdfAmbient, EveryHookIsAtMostTheDirectionalAlbedo) {
             for (float theta : {0.0f, 0.7f, 1.3f}) {
                 const glm::vec3 ka = ambientReflectance(info.model, values, viewAt(theta), {});
                 ASSERT_TRUE(ka.r >= 0 && ka.g >= 0 && ka.b >= 0 && std::isfinite(ka.r + ka.g + ka.b)) << info.id;
-                if (info.model == BrdfModel::OrenNayar) continue;
+                // OpenPBR's k_a is its whole albedo, from tables: this grid misses its sharp random
+                // lobes by a few percent either way (openpbr_test.cpp checks it on a finer one).
+                if (info.model == BrdfModel::OrenNayar || info.model == BrdfModel::OpenPbr) continue;
                 const glm::vec3 albedo = directionalAlbedo(info, values, viewAt(theta));
                 for (int c = 0; c < 3; ++c) EXPECT_LE(ka[c], albedo[c] * 1.01f + 1e-3f) << info.id << " θ " << theta;
             }

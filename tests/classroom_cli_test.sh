@@ -11,12 +11,12 @@ failures=0
 fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 
 "$glint" lessons --check >"$out/check.stdout" 2>"$out/check.stderr" || fail "lessons --check exited $? ($(cat "$out/check.stderr"))"
-grep -q "17 lessons, 17 load, 0 failed" "$out/check.stdout" || fail "lessons --check summary: $(tail -n 1 "$out/check.stdout")"
+grep -q "18 lessons, 18 load, 0 failed" "$out/check.stdout" || fail "lessons --check summary: $(tail -n 1 "$out/check.stdout")"
 grep -q "White-out" "$out/check.stdout" || fail "lessons list does not name the white-out lesson"
 
 "$glint" lessons --render "$out/rendered" --width 64 >"$out/render.stdout" 2>"$out/render.stderr" || fail "lessons --render exited $?"
 count=$(ls "$out/rendered"/*.png 2>/dev/null | wc -l)
-[[ $count -eq 17 ]] || fail "lessons --render wrote $count PNGs, expected 17"
+[[ $count -eq 18 ]] || fail "lessons --render wrote $count PNGs, expected 18"
 [[ -s "$out/rendered/08_08_white_out.png" ]] || fail "no white-out render"
 [[ -s "$out/rendered/17_17_dispersion.png" ]] || fail "no dispersion render"
 

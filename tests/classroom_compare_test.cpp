@@ -1,5 +1,5 @@
 // The compare view's pure parts: pane and divider rectangles of the split, grid and row layouts
-// (core/classroom/compare_layout.h) and the pane scenes (compare_scenes.h: the subject, material
+// (app/classroom/compare_layout.h) and the pane scenes (compare_scenes.h: the subject, material
 // swaps, a model change that keeps shared parameters, interpolation and tessellation). The
 // rendered composite is tested in classroom_gpu_test.cpp.
 #include <gtest/gtest.h>

@@ -2,7 +2,11 @@
 // ramp) in the fused radiance pass and the separate display pass equal the CPU chain pixel by
 // pixel; the split compare shows material A left and B right of the divider exactly as their own
 // renders do; snapshot goldens of the dither lesson and the split, grid and interpolation views.
+#include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
 
 #include "classroom/compare_render.h"
 #include "cli/classroom_options.h"
@@ -85,9 +89,10 @@ TEST(ClassroomGpu, SplitShowsMaterialALeftAndBRightOfTheDivider) {
 // `glint render`'s options turned into panes, rendered and checked against a golden.
 void expectCompareGolden(const std::string& golden, const Scene& scene, const std::vector<std::string>& arguments, int width, int height) {
     ClassroomOptions options;
-    std::string error;
-    for (size_t i = 0; i < arguments.size(); ++i)
-        ASSERT_EQ(options.parse(arguments, i, error), ClassroomOptions::Parsed::Taken) << error;
+    CLI::App render;
+    options.addTo(render);
+    std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 takes them last first
+    ASSERT_NO_THROW(render.parse(reversed));
     ASSERT_EQ(options.check(), "");
     auto panes = options.paneScenes(scene);
     ASSERT_TRUE(panes.ok()) << panes.error().format();

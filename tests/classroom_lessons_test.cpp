@@ -20,7 +20,7 @@ TEST(Lessons, ShippedListHasTheLectureOrderAndEverySceneLoads) {
     const char* const expectedStarts[] = {"Lambert", "Phong", "Blinn", "Symmetric Blinn", "Cook-Torrance",
                                           "Fresnel", "Refraction", "White-out", "Radiometry", "The rendering equation",
                                           "Spot lights", "Oren-Nayar", "Anisotropy", "Beer-Lambert", "Gamma",
-                                          "Flat, Gouraud", "Spectral dispersion"};
+                                          "Flat, Gouraud", "Spectral dispersion", "The standard surface"};
     ASSERT_EQ(list->lessons.size(), std::size(expectedStarts));
     for (size_t index = 0; index < list->lessons.size(); ++index) {
         const Lesson& lesson = list->lessons[index];

@@ -100,7 +100,7 @@ if "$glint" presets >"$out/presets.stdout" && grep -q "^gold .*cook_torrance.*Mc
 else
   echo "FAIL presets: no list or no material file"; failures=$((failures + 1))
 fi
-# Classroom: display lessons and compare views (README "Classroom: compare and display chain").
+# Classroom: display lessons and compare views (docs/classroom.md, "Classroom: compare and display chain").
 sun="$here/scenes/lambert_sun.json"
 expect_error bad_levels "--levels needs a whole number in \[2, 256\]" -- render "$sun" -o "$out/x.png" --levels 1
 expect_error bad_dither "--dither needs none, bayer2, bayer4 or halftone" -- render "$sun" -o "$out/x.png" --dither floyd

@@ -110,7 +110,7 @@ TEST(Colour, LambertSunUnderAFlatSpectrumRendersTheSameGreyAsRgb) {
     flat.wavelengthSamples = 8;
     auto xyz = renderSpectralXyz(*scene, flat, 33, 33);
     ASSERT_TRUE(xyz.ok()) << xyz.error().format();
-    // The centre pixel is 0.5 W/(sr·m²) in the RGB render (README): neutral 0.5 here too.
+    // The centre pixel is 0.5 W/(sr·m²) in the RGB render (docs/scene-format.md): neutral 0.5 here too.
     const glm::vec3 centre = spectralXyzToRgb(xyz->at(16, 16));
     EXPECT_NEAR(centre.r, 0.5f, 0.01f);
     EXPECT_NEAR(centre.g, 0.5f, 0.01f);

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 #include "gpu_test_support.h"
 #include "interchange/custom_brdf.h"
 #include "scene/preview_stage.h"

@@ -9,10 +9,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "edit/crash_guard.h"
-#include "edit/edit_session.h"
-#include "edit/recovery.h"
-#include "edit/scene_message.h"
+#include "editor/crash_guard.h"
+#include "editor/edit_session.h"
+#include "editor/recovery.h"
+#include "editor/scene_message.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
 #include "util/file_io.h"

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <thread>
 
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "scene/scene_json.h"

@@ -55,7 +55,7 @@ TEST_F(EditorClassroom, LessonsOpenInOrderThroughTheUnsavedChangesGuard) {
     EditorState state;
     openLesson(state, 0);
     ASSERT_TRUE(state.errorMessage.empty()) << state.errorMessage;
-    ASSERT_EQ(state.classroom.lessonList.lessons.size(), 17u);
+    ASSERT_EQ(state.classroom.lessonList.lessons.size(), 18u);
     EXPECT_EQ(state.classroom.lessonIndex, 0);
     EXPECT_EQ(state.session.path(), "");  // read-only: Ctrl+S asks for a new name
     EXPECT_EQ(lessonDocumentName(state), "Lesson 1 — 01_lambert.json (read-only)");

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cli/brdf_probe.h"
-#include "edit/recovery.h"
+#include "runtime/brdf_probe.h"
+#include "editor/recovery.h"
 #include "editor/mesh_loading.h"
 #include "editor/camera_actions.h"
 #include "editor/document.h"

@@ -13,7 +13,7 @@
 #include <thread>
 #include <tuple>
 
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
 #include "editor/mesh_loading.h"
@@ -67,7 +67,7 @@ TEST_F(EditorInterchange, DroppedGltfBringsItsMaterialAndLights) {
 TEST_F(EditorInterchange, AFileWithSeveralMaterialsAsksWhichOneAndAppliesTheChoice) {
     const std::string gltf = write("pair.gltf", R"({"asset": {"version": "2.0"},
         "materials": [{"name": "brass", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.7, 0.3, 1]}},
-                      {"name": "glow", "emissiveFactor": [1, 1, 1]}],
+                      {"name": "glow", "emissiveFactor": [1, 1, 1], "alphaMode": "BLEND"}],
         "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 50}]}},
         "nodes": [{"translation": [0, 3, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}}]})");
     const std::string mtl = write("pair.mtl", "newmtl paint\nKd 0.8 0.1 0.1\nillum 1\n\nnewmtl shiny\nKd 0.2 0.4 0.6\nKs 0.5 0.5 0.5\nNs 80\nillum 2\n");
@@ -95,8 +95,8 @@ TEST_F(EditorInterchange, AFileWithSeveralMaterialsAsksWhichOneAndAppliesTheChoi
             << state.statusMessage.text();
         const bool isGltf = path == gltf;
         EXPECT_EQ(scene.lights.size(), before.lights.size() + (isGltf ? 1 : 0));
-        // The chosen material's warnings only: the glTF's second one glows, its first does not.
-        EXPECT_EQ(state.errorMessage.find("emission") != std::string::npos, isGltf) << state.errorMessage;
+        // The chosen material's warnings only: the glTF's second one blends alpha, its first does not.
+        EXPECT_EQ(state.errorMessage.find("alpha") != std::string::npos, isGltf) << state.errorMessage;
         EXPECT_TRUE(state.session.undo());  // one step
         EXPECT_EQ(state.session.scene().materials[materialIndex].name, before.materials[materialIndex].name);
         EXPECT_EQ(state.session.scene().lights.size(), before.lights.size());
@@ -116,11 +116,11 @@ TEST_F(EditorInterchange, AFileWithSeveralMaterialsAsksWhichOneAndAppliesTheChoi
 
 TEST_F(EditorInterchange, WarningsAreShownAfterOpening) {
     EditorState state;
-    openDroppedFile(state, write("glow.gltf", R"({"asset": {"version": "2.0"},
-        "materials": [{"emissiveFactor": [1, 1, 1]}]})"));
+    openDroppedFile(state, write("veil.gltf", R"({"asset": {"version": "2.0"},
+        "materials": [{"alphaMode": "BLEND"}]})"));
     EXPECT_NE(state.errorMessage.find("with warnings"), std::string::npos);
-    EXPECT_NE(state.errorMessage.find("emission"), std::string::npos);
-    EXPECT_EQ(state.session.scene().materials[state.session.scene().objects[0].materialIndex].model, BrdfModel::CookTorrance);
+    EXPECT_NE(state.errorMessage.find("alpha"), std::string::npos);
+    EXPECT_EQ(state.session.scene().materials[state.session.scene().objects[0].materialIndex].model, BrdfModel::OpenPbr);
 }
 
 TEST_F(EditorInterchange, MalformedFileShowsFileAndLineAndChangesNothing) {
@@ -172,7 +172,7 @@ TEST_F(EditorInterchange, ExportMaterialWritesGltfOrMtlAndShowsWhatTheFormatLose
     EXPECT_EQ(mtl->materials.size(), 1u);
     EXPECT_NE(state.statusMessage.text().find("Exported material"), std::string::npos);
     EXPECT_FALSE(exportMaterialTo(state, write("ball.txt", "")));
-    EXPECT_NE(state.errorMessage.find("must end in .mtl or .gltf"), std::string::npos) << state.errorMessage;
+    EXPECT_NE(state.errorMessage.find("must end in .mtl, .gltf or .mtlx"), std::string::npos) << state.errorMessage;
     EXPECT_FALSE(state.session.dirty());  // exporting changes nothing
 }
 

@@ -41,13 +41,45 @@ TEST(ViewportRefresh, ADragOfASlowSceneDrawsSimplifiedMeshesThenTheFullFrame) {
     // Holding still mid-drag draws nothing and waits for input.
     EXPECT_FALSE(refresh.plan(idle(10.2, true)).render);
     EXPECT_GT(refresh.secondsToRefine(10.2), 1e8);
-    // Released: the full frame comes on the next loop iteration, with no new input.
-    plan = refresh.plan(idle(10.3));
-    EXPECT_TRUE(plan.render);
-    EXPECT_EQ(plan.detail, MeshDetail::Full);
-    EXPECT_EQ(plan.pixelScale, 1);
-    refresh.rendered(plan, 1100.0, false);
+    // Released: the full frame comes on the next loop iterations, with no new input, in bands
+    // (about one per frame budget, at most kMostRefineBands), one an iteration.
+    for (int band = 0; band < ViewportRefresh::kMostRefineBands; ++band) {
+        plan = refresh.plan(idle(10.3 + 0.1 * band));
+        EXPECT_TRUE(plan.render);
+        EXPECT_EQ(plan.detail, MeshDetail::Full);
+        EXPECT_EQ(plan.pixelScale, 1);
+        EXPECT_EQ(plan.band, band);
+        EXPECT_EQ(plan.bands, ViewportRefresh::kMostRefineBands);
+        EXPECT_DOUBLE_EQ(refresh.secondsToRefine(10.3 + 0.1 * band), 0.0);
+        refresh.rendered(plan, 150.0, false);
+        EXPECT_EQ(refresh.refining(), band + 1 < plan.bands);
+    }
     EXPECT_FALSE(refresh.plan(idle(11.5)).render);
+}
+
+TEST(ViewportRefresh, ADragDuringTheBandsAbandonsThem) {
+    ViewportRefresh refresh = afterFullFrame(200.0);
+    RefreshPlan plan = refresh.plan(change(1.0, true));
+    refresh.rendered(plan, 30.0, false);
+    plan = refresh.plan(idle(1.1));  // released
+    EXPECT_EQ(plan.bands, 7);  // 200 ms in 33 ms budgets
+    refresh.rendered(plan, 30.0, false);
+    EXPECT_TRUE(refresh.refining());
+    // A new drag before the second band: a reduced frame at once, the bands left.
+    plan = refresh.plan(change(1.2, true));
+    EXPECT_EQ(plan.bands, 1);
+    EXPECT_EQ(plan.pixelScale, 2);
+    refresh.rendered(plan, 30.0, false);
+    EXPECT_FALSE(refresh.refining());
+    // Released again: the bands start over, and the whole frame's time is what the next drag plans with.
+    plan = refresh.plan(idle(1.3));
+    EXPECT_EQ(plan.band, 0);
+    for (int band = 0; band < plan.bands; ++band) {
+        plan = band == 0 ? plan : refresh.plan(idle(1.3));
+        refresh.rendered(plan, 40.0, false);
+    }
+    EXPECT_FALSE(refresh.refining());
+    EXPECT_FALSE(refresh.plan(idle(1.4)).render);
 }
 
 TEST(ViewportRefresh, AChangeOutsideADragIsRefinedOnceChangesPause) {
@@ -64,7 +96,7 @@ TEST(ViewportRefresh, AChangeOutsideADragIsRefinedOnceChangesPause) {
     plan = refresh.plan(idle(5.2 + ViewportRefresh::kSettleSeconds + 0.01));
     EXPECT_TRUE(plan.render);
     EXPECT_EQ(plan.detail, MeshDetail::Full);
-    refresh.rendered(plan, 1200.0, false);
+    for (int band = 0; band < plan.bands; ++band) refresh.rendered(band == 0 ? plan : refresh.plan(idle(5.5)), 150.0, false);
     EXPECT_GT(refresh.secondsToRefine(6.0), 1e8);
 }
 

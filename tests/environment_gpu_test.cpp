@@ -3,8 +3,11 @@
 // against the CPU reference pixel by pixel, and a golden of a GGX sphere in the studio.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "brdf/cook_torrance.h"
 #include "brdf/glass.h"
+#include "brdf/presets.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 #include "image/image_compare.h"
@@ -137,6 +140,22 @@ TEST_F(EnvironmentHdrTest, GlassSphereRefractsTheMapAsTheCpuReferenceDoes) {
     expectAgreesWithReference(scene, 96);
     const RadianceImage tinted = renderGpu(scene, 32, 32);
     EXPECT_LT(tinted.at(16, 16).b, 0.5f * clear.at(16, 16).b);
+}
+
+TEST_F(EnvironmentHdrTest, EveryLayeredPresetAgreesWithTheReference) {
+    // The OpenPBR presets (coat, fuzz, thin film, rough and thin-walled transmission, F82 metal)
+    // under the smooth sky: environment hook and traced transmission to 1e-3.
+    for (const Preset& preset : allPresets()) {
+        if (preset.model != BrdfModel::OpenPbr) continue;
+        Scene scene = test::sphereUnderEnvironment(preset.material(), EnvironmentKind::File, hdrPath());
+        scene.environment.rotationDegrees = 40.0f;
+        const RadianceImage gpu = renderGpu(scene, 96, 96);
+        const test::PixelAgreement agreement = test::compareWithReference(scene, gpu, 1e-3f, 1e-4f);
+        std::printf("%s: worst relative GPU-CPU difference %.2e over %d pixels\n", preset.name, agreement.worstRelative,
+                    agreement.compared);
+        EXPECT_GT(agreement.compared, 96 * 96 / 4) << preset.name;
+        EXPECT_EQ(agreement.disagreeing, 0) << preset.name << ": " << agreement.firstDisagreement;
+    }
 }
 
 TEST_F(EnvironmentHdrTest, InsideAWaterBallTotalInternalReflectionAgreesWithTheReference) {

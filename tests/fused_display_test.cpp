@@ -4,6 +4,8 @@
 // settings than the fused ones still runs the pass. Not the CPU twin (gpu_reference_test.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "gpu_test_support.h"
 
 namespace glint {
@@ -58,6 +60,59 @@ TEST(FusedDisplay, MsaaRendersKeepTheDisplayPass) {
     auto fused = test::sharedHeadless().render(scene, 64, 64);
     ASSERT_TRUE(fused.ok());
     EXPECT_EQ(fused->display.pixels, throughDisplayPass(scene, 64, 64).pixels);
+}
+
+// Renderer::setRadianceKept(false) (PNG renders, `glint bench`): the fused render writes the 8-bit
+// image alone, the same bytes, with objects, a sky, or nothing but the background (whose frame then
+// clears no depth either: the frame after it, with objects, is whole again).
+TEST(FusedDisplay, WithoutTheFloatImageTheDisplayIsTheSame) {
+    Scene empty = defaultScene();
+    empty.objects.clear();
+    for (const Scene& scene : {defaultScene(), skyScene(), empty, defaultScene()}) {
+        auto kept = test::sharedHeadless().render(scene, 96, 64, true);
+        auto alone = test::sharedHeadless().render(scene, 96, 64, false);
+        ASSERT_TRUE(kept.ok() && alone.ok());
+        EXPECT_TRUE(alone->radiance.pixels.empty());
+        EXPECT_EQ(alone->display.pixels, kept->display.pixels);
+    }
+    // Unfused (MSAA) renders write the float image all the same: the display pass reads it.
+    Scene msaa = skyScene();
+    msaa.msaaSamples = 4;
+    auto alone = test::sharedHeadless().render(msaa, 64, 64, false);
+    ASSERT_TRUE(alone.ok());
+    EXPECT_EQ(alone->display.pixels, throughDisplayPass(msaa, 64, 64).pixels);
+    test::sharedHeadless().renderer().setRadianceKept(true);  // as the other tests expect
+}
+
+// The editor refines a slow full frame in bands of rows (Renderer::renderRadiance's RowBand): the
+// bands together are the whole frame, float and 8-bit, fused or through MSAA and the display pass.
+TEST(FusedDisplay, AFrameDrawnInBandsIsTheWholeFrame) {
+    Renderer& renderer = test::sharedHeadless().renderer();
+    for (int samples : {1, 4}) {
+        Scene scene = skyScene();
+        scene.msaaSamples = samples;
+        ASSERT_TRUE(renderer.renderRadiance(scene, 96, 64).ok());
+        renderer.displayOffscreen(scene.display);
+        const RadianceImage wholeRadiance = renderer.readRadiance();
+        const DisplayImage wholeDisplay = renderer.readDisplay();
+        Scene other = scene;  // other pixels in the targets: a red background, no object
+        other.objects.clear();
+        other.background.kind = BackgroundKind::Constant;
+        other.background.color = {1.0f, 0.0f, 0.0f};
+        ASSERT_TRUE(renderer.renderRadiance(other, 96, 64).ok());
+        for (const RowBand rows : {RowBand{40, 24}, RowBand{13, 27}})
+            ASSERT_TRUE(renderer.renderRadiance(scene, 96, 64, MeshDetail::Full, rows).ok());
+        // Two bands: the bottom 13 rows (last in the top-first readback) still hold the other scene.
+        renderer.displayOffscreen(scene.display);
+        const DisplayImage partial = renderer.readDisplay();
+        const size_t bandStart = static_cast<size_t>(64 - 13) * 96 * 3;
+        EXPECT_TRUE(std::equal(partial.pixels.begin(), partial.pixels.begin() + bandStart, wholeDisplay.pixels.begin()));
+        EXPECT_FALSE(std::equal(partial.pixels.begin() + bandStart, partial.pixels.end(), wholeDisplay.pixels.begin() + bandStart));
+        ASSERT_TRUE(renderer.renderRadiance(scene, 96, 64, MeshDetail::Full, RowBand{0, 13}).ok());
+        renderer.displayOffscreen(scene.display);
+        EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples";
+        EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples";
+    }
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/headless.h"
+#include "runtime/headless.h"
 #include "render/reference_renderer.h"
 #include "scene/preview_stage.h"
 

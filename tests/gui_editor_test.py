@@ -27,6 +27,9 @@ screenshots. One scenario per ctest entry:
                corrupt image is refused with a message naming it and changes nothing
   material_choice File ▸ Open of a .mtl with two materials asks which one: Down and Enter put the
                second (blue) on the sphere, Ctrl+Z takes it off; Esc in the same question changes nothing
+  model_switch the Model combo from Blinn-Phong to Lambert: the sphere keeps its red (the diffuse
+               albedo carries over) and loses its highlight, the panel says what was kept; one
+               Ctrl+Z brings the Blinn-Phong material back
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
 import json
 import os
@@ -63,6 +66,9 @@ IMAGE_TEXTURE_MENU_IMAGE = (1010, 227)
 TEXTURE_MENU_BOX = (970, 173, 1275, 303)  # where either menu shows
 DIALOG_BOX = (450, 370, 840, 430)    # the middle of the window, where a centred dialog shows
 SPHERE_ROW = (420, 830, 375)         # x from, x to, y: a row across the lit sphere
+MODEL_COMBO = (1040, 117)            # the material column's Model combo; its list opens below:
+MODEL_LAMBERT = (980, 145)           #   Lambert first
+HIGHLIGHT = (735, 290)               # the red plastic's specular highlight on the sphere
 
 
 class Editor:
@@ -175,7 +181,9 @@ def scenario_save_reopen(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
+        dragged = x.wait_stable(VIEWPORT)
         x.click(*ADD_POINT_LIGHT)
+        x.wait_for(differs(dragged), "the added light to show")  # a slow frame: not the picture before the click
         before_save = x.wait_stable(VIEWPORT)
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name
@@ -632,6 +640,31 @@ def scenario_material_choice(x, glint, output, state):
         x.key("Escape")
         x.wait_for(matches(base), "Esc to change nothing")
         print("ok: two materials offered, the second applied and undone, Esc changed nothing")
+    finally:
+        editor.kill()
+
+
+def scenario_model_switch(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    try:
+        x.wait_for(lit_sphere, "the lit sphere (red plastic)")
+        base = x.wait_stable(VIEWPORT)
+        x.click(*MODEL_COMBO)
+        time.sleep(0.5)
+        click_after_hover(x, MODEL_LAMBERT)
+
+        def lambert_keeps_red(shot):
+            centre, before = pixel(shot, *SPHERE_CENTRE), pixel(base, *SPHERE_CENTRE)
+            highlight_gone = sum(pixel(shot, *HIGHLIGHT)) < sum(pixel(base, *HIGHLIGHT)) - 30
+            # Lambert's default albedo is grey 0.5: a switch that reset the material would turn it grey.
+            same_hue = abs(centre[1] / centre[0] - before[1] / before[0]) < 0.08
+            return highlight_gone and lit_sphere(shot) and same_hue
+        switched = x.wait_for(lambert_keeps_red, "a red Lambert sphere without the highlight")
+        save(switched, output, "model_switch_1_lambert")
+        x.move(625, 700)
+        x.key("ctrl+z")
+        x.wait_for(matches(base), "one Ctrl+Z to bring the Blinn-Phong material back")
+        print("ok: Blinn-Phong → Lambert kept the red albedo, one Ctrl+Z undid the switch")
     finally:
         editor.kill()
 

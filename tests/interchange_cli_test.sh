@@ -58,7 +58,7 @@ printf '{"asset": {"version": "2.0"},\n "materials": [{"pbrMetallicRoughness": {
 expect_error bad_gltf "bad.gltf:2:[0-9]+: .*'roughnessFactor'" render "$out/bad.gltf" -o "$out/x.png"
 printf '{"asset": {"version": "2.0"}, "materials": [{}]' >"$out/truncated.gltf"
 expect_error truncated_gltf "truncated.gltf:1:" render "$out/truncated.gltf" -o "$out/x.png"
-expect_error export_extension "must end in .mtl or .gltf" export "$out/plastic.json" -o "$out/x.obj"
+expect_error export_extension "must end in .mtl, .gltf or .mtlx" export "$out/plastic.json" -o "$out/x.obj"
 
 # A MERL measured BRDF (a constant table, made here) renders on the GPU and on the CPU reference,
 # and exports as its Lambert stand-in with a warning; a .glb carries the .gltf's JSON chunk.
@@ -120,14 +120,15 @@ expect_output render_tristrips "tristrips_binary.ply: 6 vertices, 4 triangles" r
 # A .bparam renders its .brdf with its values: not the picture of the .brdf's defaults.
 check render_bparam bash -c "'$glint' render '$files/brdf/explorer_disney.bparam' -o '$out/bparam.png' && '$glint' render '$files/brdf/disney.brdf' -o '$out/brdf.png' && ! cmp -s '$out/bparam.png' '$out/brdf.png'"
 expect_output render_gltf_lights "its 1 light\\(s\\) added" render "$files/gltf/DirectionalLight.gltf" -o "$out/lights.png"
-# Warnings are for the material used: the first has roughness 0, the second none.
-expect_output render_gltf_first "/materials/0: roughness 0" render "$files/gltf/DirectionalLight.gltf" -o "$out/m0.png"
+# Warnings are for the material used: ClearCoatTest's Partial_Coating blends alpha, the others do not.
+expect_output render_gltf_warned "/materials/5: alpha" render "$files/gltf/khronos/ClearCoatTest.gltf" --material Partial_Coating -o "$out/m5.png"
+check render_gltf_quiet bash -c "! '$glint' render '$files/gltf/khronos/ClearCoatTest.gltf' --material 1 -o '$out/m1.png' 2>&1 | grep -Eq 'warning|note'"
 check render_gltf_chosen bash -c "'$glint' render '$files/gltf/DirectionalLight.gltf' --material mat_1.001 -o '$out/m1.png' 2>&1 | grep -q \"'mat_1.001' (1) on the stage\" && ! '$glint' render '$files/gltf/DirectionalLight.gltf' --material 1 -o '$out/m1.png' 2>&1 | grep -q warning"
 expect_error render_gltf_unknown_material "no material 'nope' in the file; it holds 0 'mat_0.001', 1 'mat_1.001', 2 'mat_2.001'" \
   render "$files/gltf/DirectionalLight.gltf" --material nope -o "$out/x.png"
 expect_error render_lfs_pointer "lfs_pointer.binary:1:1: not a MERL BRDF but a Git LFS pointer" render "$files/merl/lfs_pointer.binary" -o "$out/x.png"
 check export_chosen bash -c "'$glint' export '$files/gltf/DirectionalLight.gltf' -o '$out/chosen.mtl' --material 2 && grep -q 'newmtl mat_2.001' '$out/chosen.mtl' && ! grep -q 'newmtl mat_0.001' '$out/chosen.mtl'"
-expect_output info_gltf "1 'mat_1.001' \\(cook_torrance\\)" info "$files/gltf/DirectionalLight.gltf"
+expect_output info_gltf "1 'mat_1.001' \\(openpbr\\)" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_gltf_lights "0 'Sun' \\(directional\\)" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_gltf_meshes "2 'Sphere.100'" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_mesh "mesh: 24 vertices, 12 triangles" info "$files/obj/cube.obj"

@@ -23,7 +23,7 @@
 namespace glint {
 namespace {
 
-std::string meshPath(const std::string& name) { return test::outputDirectory("mesh_normals") + "/" + name; }
+std::string normalsMeshPath(const std::string& name) { return test::outputDirectory("mesh_normals") + "/" + name; }
 
 // Quads (a, b, c, d), counter-clockwise seen from outside, as two triangles each.
 void addQuad(test::GridMesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
@@ -116,12 +116,12 @@ TEST(MeshNormals, EveryFormatWithoutNormalsGivesTheSameNormalsAtEveryCreaseAngle
     const Shape shapes[] = {{"cube", cubeMesh(), 12, {24, 24, 24, 8, 8}}, {"prism", prismMesh(), 32, {50, 34, 34, 18, 18}}};
     const float angles[] = {0.0f, 60.0f, 89.0f, 91.0f, 180.0f};
     for (const Shape& shape : shapes) {
-        for (const Format& format : formats()) format.write(meshPath(shape.name + std::string(format.file)), shape.mesh);
+        for (const Format& format : formats()) format.write(normalsMeshPath(shape.name + std::string(format.file)), shape.mesh);
         for (size_t a = 0; a < std::size(angles); ++a) {
-            const ImportedMesh reference = load(meshPath(shape.name + std::string(".obj")), angles[a]);
+            const ImportedMesh reference = load(normalsMeshPath(shape.name + std::string(".obj")), angles[a]);
             for (const Format& format : formats()) {
                 SCOPED_TRACE(shape.name + std::string(format.file) + " at " + std::to_string(angles[a]) + "°");
-                const ImportedMesh imported = load(meshPath(shape.name + std::string(format.file)), angles[a]);
+                const ImportedMesh imported = load(normalsMeshPath(shape.name + std::string(format.file)), angles[a]);
                 EXPECT_FALSE(imported.statistics.hadNormals);  // STL's facet normals are not vertex normals
                 EXPECT_EQ(imported.statistics.triangleCount, shape.triangles);
                 ASSERT_EQ(imported.statistics.vertexCount, shape.vertices[a]);
@@ -143,7 +143,7 @@ glm::vec3 faceNormal(const Mesh& mesh, size_t triangle) {
 }
 
 TEST(MeshNormals, CreaseAngleZeroIsFlatAndOneEightySmoothEverywhere) {
-    const std::string path = meshPath("prism_flat_smooth.ply");
+    const std::string path = normalsMeshPath("prism_flat_smooth.ply");
     test::writePly(path, prismMesh(), true);  // indexed: every triangle shares its corners
     const ImportedMesh flat = load(path, 0.0f);
     for (size_t t = 0; t < flat.mesh->triangleCount(); ++t)
@@ -156,7 +156,7 @@ TEST(MeshNormals, CreaseAngleZeroIsFlatAndOneEightySmoothEverywhere) {
 }
 
 TEST(MeshNormals, ACubesRightAngledEdgesSplitBelowNinetyDegreesAndSmoothAbove) {
-    const std::string path = meshPath("cube_edges.glb");
+    const std::string path = normalsMeshPath("cube_edges.glb");
     test::writeGlb(path, cubeMesh());
     const ImportedMesh split = load(path, 89.0f), smooth = load(path, 91.0f);
     for (const Vertex& vertex : split.mesh->vertices) {  // the faces' own normals
@@ -178,8 +178,8 @@ TEST(MeshNormals, AVertexSharedByAHundredThousandFacesIsSmoothedInOnePass) {
         disc.positions.push_back({std::cos(angle), std::sin(angle), 0.0f});
         disc.indices.insert(disc.indices.end(), {0u, uint32_t(1 + i), uint32_t(1 + (i + 1) % segments)});
     }
-    test::writePly(meshPath("fan_disc.ply"), disc, true);
-    const ImportedMesh imported = load(meshPath("fan_disc.ply"), 30.0f);
+    test::writePly(normalsMeshPath("fan_disc.ply"), disc, true);
+    const ImportedMesh imported = load(normalsMeshPath("fan_disc.ply"), 30.0f);
     EXPECT_EQ(imported.statistics.vertexCount, disc.positions.size());
     for (const Vertex& vertex : imported.mesh->vertices) EXPECT_LT(glm::length(vertex.normal - glm::vec3(0, 0, 1)), 1e-5f);
 }
@@ -196,8 +196,8 @@ TEST(MeshNormals, NormalsInTheFileAreKept) {
         for (size_t k = i; k < i + 3; ++k) obj += " " + std::to_string(cube.indices[k] + 1) + "//" + std::to_string(cube.indices[k] + 1);
         obj += "\n";
     }
-    test::writeText(meshPath("cube_with_normals.obj"), obj);
-    const ImportedMesh imported = load(meshPath("cube_with_normals.obj"), 0.0f);
+    test::writeText(normalsMeshPath("cube_with_normals.obj"), obj);
+    const ImportedMesh imported = load(normalsMeshPath("cube_with_normals.obj"), 0.0f);
     EXPECT_TRUE(imported.statistics.hadNormals);
     EXPECT_EQ(imported.statistics.vertexCount, 8u);
     for (const Vertex& vertex : imported.mesh->vertices)
@@ -214,7 +214,7 @@ TEST(MeshTangents, AUvQuadsTangentRunsAlongPlusUInEveryFormatWithUvs) {
     for (const Format& format : formats()) {
         if (!format.uvs) continue;
         SCOPED_TRACE(format.file);
-        const std::string path = meshPath("uv_quad" + std::string(format.file));
+        const std::string path = normalsMeshPath("uv_quad" + std::string(format.file));
         format.write(path, quad);
         const ImportedMesh imported = load(path, 60.0f);
         EXPECT_TRUE(imported.statistics.hadUvs);

@@ -12,6 +12,7 @@
 #include "snapshot/case_source.h"
 #include "snapshot/golden_check.h"
 #include "snapshot/snapshot_report.h"
+#include "util/text.h"
 #include "snapshot/snapshot_suite.h"
 #include "test_support.h"
 

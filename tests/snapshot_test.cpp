@@ -67,6 +67,7 @@ TEST(Snapshot, OneSpherePerModel) {
         {BrdfModel::Retroreflective, moon},
         {BrdfModel::Mirror, Material::withDefaults("mirror", BrdfModel::Mirror)},
         {BrdfModel::Glass, Material::withDefaults("glass", BrdfModel::Glass)},
+        {BrdfModel::OpenPbr, findPreset("car_paint")->material()},
     };
     ASSERT_EQ(std::size(samples), allModels().size());
     const Background constant = scene.background;

@@ -22,8 +22,8 @@
 #include <random>
 #include <string>
 
-#include "cli/headless.h"
-#include "edit/edit_session.h"
+#include "runtime/headless.h"
+#include "editor/edit_session.h"
 
 namespace glint {
 namespace {

@@ -161,6 +161,34 @@ TEST(TextureGpu, ImageSphereMatchesCpuReferenceAtMagnification) {
     EXPECT_GT(agreement.compared, 8000);
 }
 
+// The UV transform (offset, rotation, a mirroring tiling), a colour factor and a scaled normal map
+// (glTF's KHR_texture_transform, baseColorFactor, normalTexture.scale) agree with the CPU, on a
+// plane (a rotated texture is discontinuous across a sphere's u seam, on both).
+TEST(TextureGpu, TransformedFactoredImageMatchesCpuReference) {
+    writeColourTexture();
+    DisplayImage bumps(8, 8);  // tangent-space normals tilted by up to about 17° in x and y
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            uint8_t* p = &bumps.pixels[(y * 8 + x) * 3];
+            p[0] = static_cast<uint8_t>(88 + 11 * x), p[1] = static_cast<uint8_t>(88 + 11 * y), p[2] = 250;
+        }
+    ASSERT_TRUE(writeDisplayImage(bumps, textureDirectory() + "/bumps.png").ok());
+    const Scene scene = sceneFrom(kFrontOrtho, kTwoLights,
+                                  R"({"name": "m", "model": "cook_torrance", "textures": {
+        "diffuse_albedo": {"type": "image", "file": "colour.png", "tiling": [2, -1.5], "offset": [0.3, -0.2], "rotation": 0.6,
+                           "factor": [0.9, 0.5, 0.7], "filter": "bilinear"},
+        "normal": {"type": "image", "file": "bumps.png", "scale": 1.5, "rotation": -0.3, "filter": "bilinear"}}})",
+                                  R"({"shape": "plane", "center": [0, 0, 0], "normal": [0.2, 0.3, 1], "size": [2, 2], "material": "m"})");
+    auto images = test::sharedHeadless().render(scene, 128, 128);
+    ASSERT_TRUE(images.ok()) << images.error().format();
+    (void)writeDisplayImage(images->display, textureDirectory() + "/transformed_plane.png");
+    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
+    std::printf("transformed plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
+                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, 8000);
+}
+
 // A normal map of one tangent-space normal tilted 30° towards +tangent (+x on this plane):
 // lit from that direction the plane reflects as if facing the light, from straight on cos 30°.
 TEST(TextureGpu, NormalMapTiltsTheShadingNormal) {

@@ -21,7 +21,7 @@ configure_and_build() {
 
 "$root/third_party/install-deps.sh"
 # Optimised; line tables only (-g1): stack traces keep file and line. Unity batches (see
-# CMakeLists.txt) and -g1 keep the three builds of the test command inside CI's time budget.
+# CMakeLists.txt) and -g1 keep the test command's two builds inside CI's time budget.
 configure_and_build "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
   -DGLINT_UNITY_BUILD=ON -DGLINT_SHARD_GTESTS=ON
 [[ $mode == run ]] && exec "$build/app/glint" "$@"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "classroom/compare_layout.h"
-#include "cli/headless.h"
+#include "runtime/headless.h"
 
 namespace glint {
 

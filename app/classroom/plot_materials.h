@@ -1,6 +1,6 @@
 // Scene materials as the classroom plots see them, shared by the editor's Plots window and
 // `glint render --overlay polar|lobe|albedo`: built-in models and MERL tables evaluated on the CPU
-// (core/classroom/brdf_plot_data.h), .brdf shaders sampled on the GPU (core/gl/brdf_sampler.h)
+// (app/classroom/brdf_plot_data.h), .brdf shaders sampled on the GPU (core/gl/brdf_sampler.h)
 // in the GL context current when the plots are computed. Draws nothing.
 #pragma once
 

@@ -22,8 +22,8 @@
 #include <assimp/postprocess.h>
 
 #include "cli/bench_scenes.h"
-#include "cli/command_options.h"
-#include "cli/headless.h"
+#include "cli/command_line.h"
+#include "runtime/headless.h"
 #include "geometry/mesh_import.h"
 #include "geometry/shape_mesh.h"
 #include "gl/bare_shading_pass.h"
@@ -41,37 +41,22 @@ using nlohmann::json;
 
 // --- options ------------------------------------------------------------------------------------
 
-constexpr const char* kUsage =
-    "usage: glint bench [--frames N] [--quick] [--json FILE] [--scene NAME]... [--scene-file FILE]... [--size WxH]\n"
-    "                   [--generic]\n"
-    "  --frames N        frames timed per scene, interleaved with the floor pass (default 11; --quick: 1)\n"
-    "  --quick           fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy\n"
-    "  --json FILE       also write the figures as JSON (\"format\": \"glint-bench\")\n"
-    "  --scene NAME      time only this standard scene, no program figures (repeatable; e.g. lambert/4;\n"
-    "                    `--scene list` lists them)\n"
-    "  --scene-file FILE time this scene file (repeatable), no program figures\n"
-    "  --size WxH        frame size (default 1280x720)\n"
-    "  --generic         draw with the generic programs, not the specialised ones (for comparison)\n";
-
 struct BenchOptions {
     int frames = 0;  // 0: the default for the mode
     bool quick = false;
     bool generic = false;  // Renderer::setSpecialisedPrograms(false)
+    bool radiance = false;  // Renderer::setRadianceKept(true)
     int width = 1280, height = 720;
     std::string jsonPath;
     std::vector<std::string> sceneNames;  // empty: every standard scene
     std::vector<std::string> sceneFiles;
+    std::vector<BenchScene> fileScenes;  // --scene-file, loaded, in the order given
     bool scenesOnly() const { return !sceneNames.empty() || !sceneFiles.empty(); }
     int coldStarts() const { return quick ? 3 : 11; }
     int thumbnails() const { return quick ? 8 : 40; }
     int meshLoads() const { return quick ? 1 : 5; }
     int framesPerScene() const { return frames ? frames : quick ? 1 : 11; }
 };
-
-int usageError(const std::string& message) {
-    std::fprintf(stderr, "glint bench: %s\n%s", message.c_str(), kUsage);
-    return 2;
-}
 
 // --- statistics ---------------------------------------------------------------------------------
 
@@ -317,9 +302,9 @@ Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::pat
 
 void printTable(const std::vector<SceneResult>& scenes, const ProgramFigures& program, const BenchOptions& options,
                 const std::string& rendererDescription) {
-    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs (%s)\n",
+    std::printf("glint bench: %dx%d, median of %d frames per scene, interleaved with the floor pass, %s programs, %s (%s)\n",
                 options.width, options.height, options.framesPerScene(), options.generic ? "generic" : "specialised",
-                rendererDescription.c_str());
+                options.radiance ? "8-bit and float images" : "8-bit image only", rendererDescription.c_str());
     std::printf("%-27s %-15s %9s %9s %9s %9s %9s %-9s %7s %9s %9s %9s %10s %5s\n", "scene", "family", "frame ms", "IQR ms",
                 "radiance", "display", "floor ms", "floor", "ratio", "rad.ratio", "readback", "first ms", "triangles", "maps");
     for (const SceneResult& scene : scenes)
@@ -353,7 +338,7 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
                              {"triangles", scene.triangles}, {"shadow_maps_per_frame", scene.shadowMapsPerFrame}});
     json figures = {{"format", "glint-bench"}, {"version", 1}, {"renderer", rendererDescription},
                     {"width", options.width}, {"height", options.height}, {"frames", options.framesPerScene()},
-                    {"quick", options.quick}, {"generic_programs", options.generic},
+                    {"quick", options.quick}, {"generic_programs", options.generic}, {"float_radiance", options.radiance},
                     {"scenes", sceneRows}};
     if (options.scenesOnly()) return figures;  // --scene, --scene-file: the scenes only
     figures.update(json{{"cold_start_ms", toJson(program.coldStart)}, {"cold_start_runs", options.coldStarts()},
@@ -365,52 +350,10 @@ json toJson(const std::vector<SceneResult>& scenes, const ProgramFigures& progra
     return figures;
 }
 
-}  // namespace
-
 // --- the command --------------------------------------------------------------------------------
 
-int runBenchCommand(const std::vector<std::string>& arguments) {
-    BenchOptions options;
-    std::vector<BenchScene> fileScenes;  // --scene-file, in the order given
-    const std::vector<CommandOption> known = {
-        {{"--frames"}, "a number", wholeNumberOption(options.frames, 1, 1000, "--frames needs a number from 1 to 1000")},
-        {{"--quick"}, "", [&](const std::string&) { options.quick = true; return std::string(); }},
-        {{"--json"}, "a file",
-         [&](const std::string& value) {
-             std::error_code error;  // the non-throwing forms: no exception escapes
-             const fs::path folder = value.empty() ? fs::path() : fs::absolute(value, error).parent_path();
-             if (value.empty() || error || fs::is_directory(value, error) || !fs::is_directory(folder, error))
-                 return "--json needs a file in an existing folder (got \"" + value + "\")";
-             options.jsonPath = value;
-             return std::string();
-         }},
-        {{"--scene"}, "a scene name",
-         [&](const std::string& value) {
-             const auto& all = benchScenes();
-             const bool exists = std::any_of(all.begin(), all.end(), [&](const BenchScene& scene) { return scene.name == value; });
-             if (value != "list" && !exists) return "--scene: no standard scene is named \"" + value + "\" (`--scene list` lists them)";
-             options.sceneNames.push_back(value);
-             return std::string();
-         }},
-        {{"--scene-file"}, "a scene file",
-         [&](const std::string& value) {
-             auto scene = loadScene(value);  // a malformed file: its located message
-             if (!scene) return "--scene-file: " + scene.error().format();
-             fileScenes.push_back({fs::path(value).stem().string(), "file", [scene = *scene] { return scene; }});
-             options.sceneFiles.push_back(value);
-             return std::string();
-         }},
-        {{"--size"}, "WIDTHxHEIGHT",
-         pixelSizeOption(options.width, options.height, 1, 8192, "--size needs WIDTHxHEIGHT from 1x1 to 8192x8192, e.g. 1280x720")},
-        {{"--generic"}, "", [&](const std::string&) { options.generic = true; return std::string(); }},
-    };
-    auto parsed = parseCommandOptions(arguments, known, "argument");
-    if (!parsed) return usageError(parsed.error().message);
-    if (parsed->help) {
-        std::printf("%s", kUsage);
-        return 0;
-    }
-    if (!parsed->positionals.empty()) return usageError("takes no arguments (got " + parsed->positionals[0] + ")");
+int runBench(const BenchOptions& options) {
+    const std::vector<BenchScene>& fileScenes = options.fileScenes;
     if (std::find(options.sceneNames.begin(), options.sceneNames.end(), "list") != options.sceneNames.end()) {
         for (const BenchScene& scene : benchScenes()) std::printf("%-27s %s\n", scene.name.c_str(), scene.family.c_str());
         return 0;
@@ -422,6 +365,7 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     (*headless)->renderer().setSpecialisedPrograms(!options.generic);
+    (*headless)->renderer().setRadianceKept(options.radiance);
     std::vector<const BenchScene*> timed;
     for (const BenchScene& benchScene : benchScenes()) {
         const auto& only = options.sceneNames;
@@ -463,6 +407,53 @@ int runBenchCommand(const std::vector<std::string>& arguments) {
         std::printf("figures written to %s\n", options.jsonPath.c_str());
     }
     return 0;
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& glint) {
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* command = addCommand(glint, "bench", "time the standard scenes against the bare shading pass",
+                                   [options] { return runBench(*options); });
+    command->add_option("--frames", options->frames, "frames timed per scene, interleaved with the floor pass (default 11; --quick: 1)")
+        ->check(needsWholeNumber("a number from 1 to 1000", 1, 1000))
+        ->type_name("N");
+    command->add_flag("--quick", options->quick, "fewer frames, cold starts and thumbnails: a smoke run, its ratios are noisy");
+    command->add_option("--json", options->jsonPath, "also write the figures as JSON (\"format\": \"glint-bench\")")
+        ->check(needs("a file in an existing folder", [](const std::string& value) {
+            std::error_code error;  // the non-throwing forms: no exception escapes
+            const fs::path folder = value.empty() ? fs::path() : fs::absolute(value, error).parent_path();
+            return !value.empty() && !error && !fs::is_directory(value, error) && fs::is_directory(folder, error);
+        }))
+        ->type_name("FILE");
+    command
+        ->add_option("--scene", options->sceneNames,
+                     "time only this standard scene, no program figures (repeatable; e.g. lambert/4; `--scene list` lists them)")
+        ->allow_extra_args(false)  // one name per --scene
+        ->each([](const std::string& value) {
+            const auto& all = benchScenes();
+            if (value != "list" && std::none_of(all.begin(), all.end(), [&](const BenchScene& scene) { return scene.name == value; }))
+                refuse("no standard scene is named \"" + value + "\" (`--scene list` lists them)");
+        })
+        ->type_name("NAME");
+    command
+        ->add_option_function<std::vector<std::string>>(
+            "--scene-file",
+            [options](const std::vector<std::string>& paths) {
+                for (const std::string& path : paths) {
+                    auto scene = loadScene(path);  // a malformed file: its located message
+                    if (!scene) refuse("--scene-file: " + scene.error().format());
+                    options->fileScenes.push_back({fs::path(path).stem().string(), "file", [scene = *scene] { return scene; }});
+                    options->sceneFiles.push_back(path);
+                }
+            },
+            "time this scene file (repeatable), no program figures")
+        ->allow_extra_args(false)
+        ->type_name("FILE");
+    addPixelSize(*command, options->width, options->height, 1, 8192, "frame size (default 1280x720)");
+    command->add_flag("--generic", options->generic, "draw with the generic programs, not the specialised ones (for comparison)");
+    command->add_flag("--radiance", options->radiance,
+                      "also write the float radiance image, as an EXR render does (default: the 8-bit picture only)");
 }
 
 }  // namespace glint

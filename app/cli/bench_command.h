@@ -4,13 +4,14 @@
 // Prints an aligned table; --json writes the same figures for comparison over time.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the exit code: 0 measured, 1 a scene or child process failed, 2 bad arguments or no
+// Adds the command to `glint`; its exit code: 0 measured, 1 a scene or child process failed, 2 bad arguments or no
 // context.
-int runBenchCommand(const std::vector<std::string>& arguments);
+void addBenchCommand(CLI::App& glint);
 
 }  // namespace glint

@@ -1,4 +1,4 @@
-// Parsing and applying `glint render`'s classroom options (see classroom_options.h).
+// Declaring and applying `glint render`'s classroom options (see classroom_options.h).
 #include "cli/classroom_options.h"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include "brdf/model_registry.h"
 #include "brdf/presets.h"
+#include "cli/command_line.h"
 #include "display/quantisation.h"
 #include "scene/scene_json.h"
 
@@ -30,64 +31,79 @@ std::optional<float> classroomNumber(const std::string& text) {
     return value;
 }
 
-ClassroomOptions::Parsed classroomRefuse(std::string& error, std::string message) {
-    error = std::move(message);
-    return ClassroomOptions::Parsed::Refused;
+// A number in [low, high].
+CLI::Validator numberIn(const std::string& what, float low, float high) {
+    return needs(what, [low, high](const std::string& value) {
+        const auto number = classroomNumber(value);
+        return number && *number >= low && *number <= high;
+    });
 }
+
+// One of `names`, stored as the enum `Choice` of the same order.
+template <typename Choice, size_t N>
+void addChoice(CLI::App& command, const std::string& name, std::optional<Choice>& out, const char* const (&names)[N],
+               const std::string& what, const std::string& description) {
+    command
+        .add_option_function<std::string>(
+            name, [&out, &names](const std::string& value) { out = static_cast<Choice>(classroomChoice(value, names)); }, description)
+        ->check(needs(what, [&names](const std::string& value) { return classroomChoice(value, names) >= 0; }));
+}
+
+std::vector<std::string> commaSeparated(const std::string& value) {
+    std::vector<std::string> items;
+    std::stringstream list(value);
+    for (std::string item; std::getline(list, item, ',');) items.push_back(item);
+    return items;
+}
+
+const std::regex kTessellationPattern(R"(([0-9]{1,4})x([0-9]{1,3}))");
 
 constexpr const char* kClassroomTransfers[] = {"srgb", "gamma", "linear"};  // order of enum Transfer
 constexpr const char* kClassroomLayouts[] = {"split", "grid"};
 
 }  // namespace
 
-ClassroomOptions::Parsed ClassroomOptions::parse(const std::vector<std::string>& arguments, size_t& i, std::string& error) {
-    const std::string& option = arguments[i];
-    static const char* const withValue[] = {"--transfer", "--gamma", "--levels", "--dither", "--compare", "--layout", "--divider", "--tessellation"};
-    if (option == "--levels-ramp" || option == "--compare-interpolation") {
-        (option == "--levels-ramp" ? levelsRamp : compareInterpolation) = true;
-        return Parsed::Taken;
-    }
-    if (classroomChoice(option, withValue) < 0) return Parsed::NotClassroom;
-    if (i + 1 >= arguments.size()) return classroomRefuse(error, option + " needs a value");
-    const std::string& value = arguments[++i];
-    if (option == "--transfer") {
-        const int index = classroomChoice(value, kClassroomTransfers);
-        if (index < 0) return classroomRefuse(error, "--transfer needs srgb, gamma or linear (got " + value + ")");
-        transfer = static_cast<Transfer>(index);
-    } else if (option == "--gamma") {
-        const auto number = classroomNumber(value);
-        if (!number || *number < 0.1f || *number > 10.0f) return classroomRefuse(error, "--gamma needs a number in [0.1, 10] (got " + value + ")");
-        gamma = *number;
-    } else if (option == "--levels") {
-        if (!std::regex_match(value, std::regex("[0-9]{1,3}")) || std::stoi(value) < 2 || std::stoi(value) > 256)
-            return classroomRefuse(error, "--levels needs a whole number in [2, 256] (got " + value + ")");
-        levels = std::stoi(value);
-    } else if (option == "--dither") {
-        const int index = classroomChoice(value, kDitherIds);
-        if (index < 0) return classroomRefuse(error, "--dither needs none, bayer2, bayer4 or halftone (got " + value + ")");
-        dither = static_cast<Dither>(index);
-    } else if (option == "--compare") {
-        std::stringstream list(value);
-        for (std::string item; std::getline(list, item, ',');) compare.push_back(item);
-        if (compare.size() < 2 || compare.size() > 4 || std::find(compare.begin(), compare.end(), "") != compare.end())
-            return classroomRefuse(error, "--compare needs 2 to 4 comma-separated materials (got " + value + ")");
-    } else if (option == "--layout") {
-        const int index = classroomChoice(value, kClassroomLayouts);
-        if (index < 0) return classroomRefuse(error, "--layout needs split or grid (got " + value + ")");
-        layout = static_cast<CompareLayout>(index);
-    } else if (option == "--divider") {
-        const auto number = classroomNumber(value);
-        if (!number || *number < 0.0f || *number > 1.0f) return classroomRefuse(error, "--divider needs a number in [0, 1] (got " + value + ")");
-        divider = *number;
-    } else {  // --tessellation
-        std::smatch match;
-        static const std::regex pattern(R"(([0-9]{1,4})x([0-9]{1,3}))");
-        if (!std::regex_match(value, match, pattern) || std::stoi(match[1]) < 3 || std::stoi(match[1]) > 1024 ||
-            std::stoi(match[2]) < 3 || std::stoi(match[2]) > 512)
-            return classroomRefuse(error, "--tessellation needs SEGMENTSxRINGS, 3..1024 x 3..512 (got " + value + ")");
-        tessellation = Tessellation{std::stoi(match[1]), std::stoi(match[2])};
-    }
-    return Parsed::Taken;
+void ClassroomOptions::addTo(CLI::App& command) {
+    addChoice(command, "--transfer", transfer, kClassroomTransfers, "srgb, gamma or linear", "the display encoding (linear: gamma off)");
+    command.add_option("--gamma", gamma, "encode with value^(1/G), G in [0.1, 10] (sets --transfer gamma)")
+        ->check(numberIn("a number in [0.1, 10]", 0.1f, 10.0f))
+        ->type_name("G");
+    command.add_option("--levels", levels, "quantise each channel to N intensity levels, 2..256 (256: plain 8-bit)")
+        ->check(needsWholeNumber("a whole number in [2, 256]", 2, 256))
+        ->type_name("N");
+    addChoice(command, "--dither", dither, kDitherIds, "none, bayer2, bayer4 or halftone", "ordered dither before quantising to the levels");
+    command.add_flag("--levels-ramp", levelsRamp, "draw a grey radiance ramp 0..1 through the display chain along the bottom");
+    command
+        .add_option_function<std::string>(
+            "--compare", [this](const std::string& value) { compare = commaSeparated(value); },
+            "panes of the same scene whose subject (first non-plane object) wears the material file A, B, ... or "
+            "preset:NAME (see glint presets) or model:ID (the subject's own material under another model)")
+        ->check(needs("2 to 4 comma-separated materials", [](const std::string& value) {
+            const std::vector<std::string> items = commaSeparated(value);
+            return items.size() >= 2 && items.size() <= 4 && std::find(items.begin(), items.end(), "") == items.end();
+        }))
+        ->type_name("A,B[,C,D]");
+    addChoice(command, "--layout", layout, kClassroomLayouts, "split or grid",
+              "split: two panes and a divider (default for 2); grid: 2x2 (default for 3, 4)");
+    command.add_option("--divider", divider, "the split's divider as a fraction of the width (default 0.5)")
+        ->check(numberIn("a number in [0, 1]", 0.0f, 1.0f))
+        ->type_name("F");
+    command.add_flag("--compare-interpolation", compareInterpolation, "flat, Gouraud and Phong side by side on the subject");
+    command
+        .add_option_function<std::string>(
+            "--tessellation",
+            [this](const std::string& value) {
+                std::smatch match;
+                std::regex_match(value, match, kTessellationPattern);
+                tessellation = Tessellation{std::stoi(match[1]), std::stoi(match[2])};
+            },
+            "the subject's segments x rings for --compare-interpolation (sphere or torus)")
+        ->check(needs("SEGMENTSxRINGS, 3..1024 x 3..512", [](const std::string& value) {
+            std::smatch match;
+            return std::regex_match(value, match, kTessellationPattern) && std::stoi(match[1]) >= 3 && std::stoi(match[1]) <= 1024 &&
+                   std::stoi(match[2]) >= 3 && std::stoi(match[2]) <= 512;
+        }))
+        ->type_name("SxR");
 }
 
 std::string ClassroomOptions::check() const {

@@ -6,39 +6,20 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
+#include <string>
+#include <utility>
 
 #include "classroom/cmf_plot.h"
 #include "classroom/overlay_canvas.h"
-#include "cli/command_options.h"
-#include "cli/headless.h"
+#include "cli/command_line.h"
+#include "runtime/headless.h"
 #include "image/image_io.h"
 
 namespace glint {
 namespace {
 
-constexpr const char* kCmfUsage =
-    "usage: glint cmf -o OUT.png [--size WxH]\n"
-    "  the CIE 1931 2° colour matching functions x̄, ȳ, z̄ (Wyman, Sloan & Shirley 2013 fit) over 380-780 nm\n"
-    "  --size WxH   image size in pixels (default 640x400)\n";
-
-}  // namespace
-
-int runCmfCommand(const std::vector<std::string>& arguments) {
-    std::string outputPath;
-    int width = 640, height = 400;
-    const std::vector<CommandOption> options = {
-        {{"-o", "--output"}, "a file name", [&](const std::string& value) { outputPath = value; return std::string(); }},
-        {{"--size"}, "WIDTHxHEIGHT", pixelSizeOption(width, height, 128, 4096, "--size needs WIDTHxHEIGHT from 128x128 to 4096x4096")},
-    };
-    auto parsed = parseCommandOptions(arguments, options, "argument");
-    if (!parsed || (!parsed->help && (outputPath.empty() || !parsed->positionals.empty()))) {
-        std::fprintf(stderr, "glint cmf: %s\n%s", parsed ? "needs -o OUT.png and nothing else" : parsed.error().format().c_str(), kCmfUsage);
-        return 2;
-    }
-    if (parsed->help) {
-        std::printf("%s", kCmfUsage);
-        return 0;
-    }
+int plotCmf(const std::string& outputPath, int width, int height) {
     auto headless = HeadlessRenderer::create();  // makes the OSMesa context current
     if (!headless) {
         std::fprintf(stderr, "glint cmf: %s\n", headless.error().format().c_str());
@@ -62,6 +43,18 @@ int runCmfCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     return 0;
+}
+
+}  // namespace
+
+void addCmfCommand(CLI::App& glint) {
+    auto outputPath = std::make_shared<std::string>();
+    auto size = std::make_shared<std::pair<int, int>>(640, 400);
+    CLI::App* command = addCommand(glint, "cmf", "plot the CIE 1931 colour matching functions headless",
+                                   [=] { return plotCmf(*outputPath, size->first, size->second); });
+    command->footer("The CIE 1931 2° colour matching functions x̄, ȳ, z̄ (Wyman, Sloan & Shirley 2013 fit) over 380-780 nm.");
+    command->add_option("-o,--output", *outputPath, "the PNG to write")->required()->type_name("OUT.png");
+    addPixelSize(*command, size->first, size->second, 128, 4096, "image size in pixels (default 640x400)");
 }
 
 }  // namespace glint

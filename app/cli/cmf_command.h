@@ -3,12 +3,13 @@
 // View ▸ Colour matching functions window shows it. Arguments and output only.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 written, 2 bad arguments, no GL context or failure to write.
-int runCmfCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code: 0 written, 2 bad arguments, no GL context or failure to write.
+void addCmfCommand(CLI::App& glint);
 
 }  // namespace glint

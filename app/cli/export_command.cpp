@@ -2,7 +2,10 @@
 #include "cli/export_command.h"
 
 #include <cstdio>
+#include <memory>
+#include <string>
 
+#include "cli/command_line.h"
 #include "interchange/export_formats.h"
 #include "interchange/import_formats.h"
 #include "scene/scene_json.h"
@@ -10,14 +13,6 @@
 
 namespace glint {
 namespace {
-
-constexpr const char* kUsage =
-    "usage: glint export IN -o OUT.mtl|OUT.gltf [--material NAME|INDEX]\n"
-    "  IN     a material file, a scene (its materials; for glTF the first object's material and\n"
-    "         the scene's lights), or a .mtl / .gltf file\n"
-    "  OUT    .mtl: every material as a Wavefront library; .gltf: a UV sphere carrying the\n"
-    "         material, the lights as KHR_lights_punctual, the buffer embedded (base64)\n"
-    "  --material NAME|INDEX  only that material of IN (`glint info IN` lists them), with its warnings\n";
 
 int fail(const std::string& message) {
     std::fprintf(stderr, "glint export: %s\n", message.c_str());
@@ -47,25 +42,18 @@ Result<ImportedFile> readInput(const std::string& path) {
     return file;
 }
 
-}  // namespace
+struct ExportOptions {
+    std::string input, output, material;  // IN, -o OUT, --material NAME|INDEX
+};
 
-int runExportCommand(const std::vector<std::string>& arguments) {
-    if (arguments.size() == 1 && (arguments[0] == "-h" || arguments[0] == "--help")) {
-        std::printf("%s", kUsage);
-        return 0;
-    }
-    const bool chooses = arguments.size() == 5 && arguments[3] == "--material";
-    if ((arguments.size() != 3 && !chooses) || (arguments[1] != "-o" && arguments[1] != "--output")) {
-        std::fprintf(stderr, "glint export: expected IN -o OUT.mtl|OUT.gltf [--material NAME|INDEX]\n%s", kUsage);
-        return 2;
-    }
-    const std::string& input = arguments[0];
-    const std::string& output = arguments[2];
-    if (!isExportPath(output)) return fail("the output must end in .mtl or .gltf (got '" + output + "')");
+int runExport(const ExportOptions& options) {
+    const std::string& input = options.input;
+    const std::string& output = options.output;
+    if (!isExportPath(output)) return fail("the output must end in .mtl, .gltf or .mtlx (got '" + output + "')");
     auto file = readInput(input);
     if (!file) return fail(file.error().format());
-    if (chooses) {
-        auto chosen = chooseMaterial(*file, arguments[4], input);
+    if (!options.material.empty()) {
+        auto chosen = chooseMaterial(*file, options.material, input);
         if (!chosen) return fail(chosen.error().format());
         for (const Diagnostic& warning : warningsFor(*file, *chosen)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
         file->materials = {file->materials[*chosen]};
@@ -79,6 +67,26 @@ int runExportCommand(const std::vector<std::string>& arguments) {
     if (Status saved = writeFileAtomically(output, written->text); !saved) return fail(saved.error().format());
     std::printf("glint: wrote %s\n", output.c_str());
     return 0;
+}
+
+}  // namespace
+
+void addExportCommand(CLI::App& glint) {
+    auto options = std::make_shared<ExportOptions>();
+    CLI::App* command = addCommand(glint, "export", "write a material (file, scene, .mtl, .gltf or .mtlx) as .mtl, glTF or MaterialX",
+                                   [options] { return runExport(*options); });
+    command->add_option("IN", options->input,
+                        "a material file, a scene (its materials; for glTF the first object's material and the scene's "
+                        "lights), or a .mtl / .gltf / .mtlx file")
+        ->required();
+    command->add_option("-o,--output", options->output,
+                        ".mtl: every material as a Wavefront library; .gltf: a UV sphere carrying the material, the "
+                        "lights as KHR_lights_punctual, the buffer embedded (base64); .mtlx: every material as a MaterialX 1.39 "
+                        "open_pbr_surface")
+        ->required()
+        ->type_name("OUT.mtl|OUT.gltf|OUT.mtlx");
+    command->add_option("--material", options->material, "only that material of IN (`glint info IN` lists them), with its warnings")
+        ->type_name("NAME|INDEX");
 }
 
 }  // namespace glint

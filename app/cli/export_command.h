@@ -3,12 +3,13 @@
 // Conversion only; nothing is rendered.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 written, 2 bad arguments or input, or failure to write.
-int runExportCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code: 0 written, 2 bad arguments or input, or failure to write.
+void addExportCommand(CLI::App& glint);
 
 }  // namespace glint

@@ -2,8 +2,11 @@
 #include "cli/info_command.h"
 
 #include <cstdio>
+#include <memory>
+#include <string>
 
 #include "brdf/model_registry.h"
+#include "cli/command_line.h"
 #include "cli/render_input.h"
 #include "geometry/mesh_import.h"
 #include "interchange/bparam_file.h"
@@ -16,13 +19,6 @@
 
 namespace glint {
 namespace {
-
-constexpr const char* kUsage =
-    "usage: glint info FILE\n"
-    "  lists what FILE holds, by its type: a .mtl, .gltf or .glb (materials, lights, meshes, by index and\n"
-    "  name: `glint render --material NAME|INDEX` chooses one), a MERL .binary, a mesh .obj|.ply|.stl|.fbx\n"
-    "  (vertices, triangles, what was dropped), a BRDF Explorer .brdf or .bparam (parameters), or a scene\n"
-    "  or material .json; then the warnings opening it gives. Exit 0 when it loads, 2 when not.\n";
 
 void printMaterials(const std::vector<const Material*>& materials) {
     std::printf("materials (%zu):\n", materials.size());
@@ -56,18 +52,8 @@ int fail(const Diagnostic& error) {
     return 2;
 }
 
-}  // namespace
-
-int runInfoCommand(const std::vector<std::string>& arguments) {
-    if (arguments.size() == 1 && (arguments[0] == "-h" || arguments[0] == "--help")) {
-        std::printf("%s", kUsage);
-        return 0;
-    }
-    if (arguments.size() != 1 || arguments[0].empty() || arguments[0][0] == '-') {
-        std::fprintf(stderr, "glint info: expected one FILE\n%s", kUsage);
-        return 2;
-    }
-    const std::string& path = arguments[0];
+// Lists what `path` holds; the exit code.
+int describeFile(const std::string& path) {
     if (isBrdfFilePath(path)) {
         auto file = loadBrdfFile(path);
         if (!file) return fail(file.error());
@@ -137,6 +123,20 @@ int runInfoCommand(const std::vector<std::string>& arguments) {
         std::printf("  %zu '%s' (material %d)\n", i, scene->objects[i].name.c_str(), scene->objects[i].materialIndex);
     printLights(scene->lights);
     return 0;
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& glint) {
+    auto path = std::make_shared<std::string>();
+    addCommand(glint, "info", "list what a file holds (materials, meshes, lights, parameters) and its warnings",
+               [path] { return describeFile(*path); })
+        ->add_option("FILE", *path,
+                     "a .mtl, .gltf or .glb (materials, lights, meshes, by index and name: `glint render --material "
+                     "NAME|INDEX` chooses one), a MERL .binary, a mesh .obj|.ply|.stl|.fbx (vertices, triangles, what was "
+                     "dropped), a BRDF Explorer .brdf or .bparam (parameters), or a scene or material .json; then the "
+                     "warnings opening it gives. Exit 0 when it loads, 2 when not.")
+        ->required();
 }
 
 }  // namespace glint

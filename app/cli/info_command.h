@@ -4,12 +4,13 @@
 // Reading only; nothing is rendered.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 listed, 2 bad arguments or a file that does not load.
-int runInfoCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code: 0 listed, 2 bad arguments or a file that does not load.
+void addInfoCommand(CLI::App& glint);
 
 }  // namespace glint

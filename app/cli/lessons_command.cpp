@@ -6,43 +6,28 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "classroom/lessons.h"
-#include "cli/command_options.h"
-#include "cli/headless.h"
+#include "cli/command_line.h"
+#include "runtime/headless.h"
 #include "scene/scene_json.h"
 
 namespace glint {
 namespace {
 
-constexpr const char* kLessonsUsage =
-    "usage: glint lessons [LIST.json] [--check] [--render DIR] [--width N]\n"
-    "  LIST.json     a lesson list (default: the lessons shipped with Glint, or $GLINT_LESSONS)\n"
-    "  --check       load every lesson's scene; exit 1 naming each one that fails\n"
-    "  --render DIR  render every lesson headless to DIR/NN_<scene>.png\n"
-    "  --width N     width of the rendered images in pixels (default 320; height keeps the scene's aspect)\n";
-
-}  // namespace
-
-int runLessonsCommand(const std::vector<std::string>& arguments) {
+struct LessonsOptions {
+    std::string listPath = defaultLessonListPath();
     bool check = false;
     std::string renderDirectory;
     int width = 320;
-    const std::vector<CommandOption> options = {
-        {{"--check"}, "", [&](const std::string&) { check = true; return std::string(); }},
-        {{"--render"}, "a directory", [&](const std::string& value) { renderDirectory = value; return std::string(); }},
-        {{"--width"}, "a number of pixels", wholeNumberOption(width, 8, 4096, "--width needs a number of pixels from 8 to 4096")},
-    };
-    auto parsed = parseCommandOptions(arguments, options, "lesson list");
-    if (!parsed) {
-        std::fprintf(stderr, "glint lessons: %s\n%s", parsed.error().format().c_str(), kLessonsUsage);
-        return 2;
-    }
-    if (parsed->help) {
-        std::printf("%s", kLessonsUsage);
-        return 0;
-    }
-    const std::string listPath = parsed->positionals.empty() ? defaultLessonListPath() : parsed->positionals[0];
+};
+
+int runLessons(const LessonsOptions& options) {
+    const bool check = options.check;
+    const std::string& renderDirectory = options.renderDirectory;
+    const int width = options.width;
+    const std::string& listPath = options.listPath;
     auto list = loadLessonList(listPath);
     if (!list) {
         std::fprintf(stderr, "glint lessons: %s\n", list.error().format().c_str());
@@ -87,6 +72,21 @@ int runLessonsCommand(const std::vector<std::string>& arguments) {
         std::printf("%zu lessons, %zu %s, %d failed\n", list->lessons.size(), list->lessons.size() - failures,
                     headless ? "rendered" : "load", failures);
     return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void addLessonsCommand(CLI::App& glint) {
+    auto options = std::make_shared<LessonsOptions>();
+    CLI::App* command = addCommand(glint, "lessons", "list the classroom lessons, check that they load, or render them",
+                                   [options] { return runLessons(*options); });
+    command->add_option("LIST", options->listPath, "a lesson list (default: the lessons shipped with Glint, or $GLINT_LESSONS)")
+        ->type_name("LIST.json");
+    command->add_flag("--check", options->check, "load every lesson's scene; exit 1 naming each one that fails");
+    command->add_option("--render", options->renderDirectory, "render every lesson headless to DIR/NN_<scene>.png")->type_name("DIR");
+    command->add_option("--width", options->width, "width of the rendered images in pixels (default 320; height keeps the scene's aspect)")
+        ->check(needsWholeNumber("a number of pixels from 8 to 4096", 8, 4096))
+        ->type_name("N");
 }
 
 }  // namespace glint

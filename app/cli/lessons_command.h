@@ -3,13 +3,14 @@
 // Stepping through lessons in the editor lives in app/classroom/lessons_view.cpp.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 listed / all loaded / all rendered, 1 some lesson failed to
+// Adds the command to `glint`; its exit code: 0 listed / all loaded / all rendered, 1 some lesson failed to
 // load or render, 2 bad arguments or an unreadable lesson list.
-int runLessonsCommand(const std::vector<std::string>& arguments);
+void addLessonsCommand(CLI::App& glint);
 
 }  // namespace glint

@@ -2,12 +2,13 @@
 // models-and-parameters reference (docs/models.md) as Markdown.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 listed, 2 bad arguments.
-int runModelsCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code is 0.
+void addModelsCommand(CLI::App& glint);
 
 }  // namespace glint

@@ -1,10 +1,9 @@
-// The classroom plots in `glint render` (see plot_overlay.h): option parsing and checks, and
+// The classroom plots in `glint render` (see plot_overlay.h): their options and checks, and
 // drawing on the overlay canvas's ImGui context.
 #include "cli/plot_overlay.h"
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -12,6 +11,7 @@
 
 #include "classroom/brdf_plots.h"
 #include "classroom/plot_materials.h"
+#include "cli/command_line.h"
 
 namespace glint {
 namespace {
@@ -40,27 +40,22 @@ std::vector<PlotMaterial> plotOverlayMaterials(const Scene& scene, BrdfSampler& 
 
 }  // namespace
 
-PlotOptionMatch parsePlotOverlayOption(const std::vector<std::string>& arguments, size_t& i,
-                                       PlotOverlayOptions& options, std::string& error) {
-    const std::string& argument = arguments[i];
-    const bool hasValue = i + 1 < arguments.size();
-    if (argument == "--incidence") {
-        char* end = nullptr;
-        const float degrees = hasValue ? std::strtof(arguments[i + 1].c_str(), &end) : NAN;
-        if (!hasValue || end == arguments[i + 1].c_str() || *end != '\0' || !(degrees >= 0.0f && degrees <= 90.0f)) {
-            error = "--incidence needs an angle in degrees from 0 to 90" + (hasValue ? " (got " + arguments[i + 1] + ")" : std::string());
-            return PlotOptionMatch::Error;
-        }
-        options.incidenceDegrees = degrees;
-        options.incidenceGiven = true;
-        ++i;
-        return PlotOptionMatch::Taken;
-    }
-    if (argument == "--from-inside") {
-        options.fromInside = true;
-        return PlotOptionMatch::Taken;
-    }
-    return PlotOptionMatch::NotMine;
+void addPlotOverlayOptions(CLI::App& command, PlotOverlayOptions& options) {
+    command
+        .add_option_function<std::string>(
+            "--incidence",
+            [&options](const std::string& value) {
+                options.incidenceDegrees = std::strtof(value.c_str(), nullptr);
+                options.incidenceGiven = true;
+            },
+            "incidence angle θ_i of the polar plot, lobe and albedo marker (default 45)")
+        ->check(needs("an angle in degrees from 0 to 90", [](const std::string& value) {
+            char* end = nullptr;
+            const float degrees = std::strtof(value.c_str(), &end);
+            return end != value.c_str() && *end == '\0' && degrees >= 0.0f && degrees <= 90.0f;
+        }))
+        ->type_name("DEG");
+    command.add_flag("--from-inside", options.fromInside, "Fresnel plot with the light inside the material (critical angle)");
 }
 
 std::string plotOverlayConflict(const PlotOverlayOptions& options, std::optional<PlotOverlayKind> plot, bool reference,

@@ -6,10 +6,13 @@
 
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "scene/scene.h"
 #include "util/diagnostic.h"
+
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
@@ -21,13 +24,9 @@ struct PlotOverlayOptions {
     bool fromInside = false;         // Fresnel: light inside the material (shows the critical angle)
 };
 
-// What parsePlotOverlayOption made of arguments[i].
-enum class PlotOptionMatch { NotMine, Taken, Error };
-
-// Takes `--incidence DEG` and `--from-inside` (advancing i past a value); any other argument is
-// NotMine (`--overlay NAME` is the overlay table's). On Error, `error` says why.
-PlotOptionMatch parsePlotOverlayOption(const std::vector<std::string>& arguments, size_t& i,
-                                       PlotOverlayOptions& options, std::string& error);
+// Adds `--incidence DEG` and `--from-inside` to `command`, into `options` (`--overlay NAME` is the
+// overlay table's).
+void addPlotOverlayOptions(CLI::App& command, PlotOverlayOptions& options);
 
 // Why the options cannot be used with the plot chosen (`plot`: none chosen when empty) and the
 // rest of the command, or "" when they can.

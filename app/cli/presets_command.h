@@ -2,12 +2,13 @@
 // source), or writes one as a material file. The table itself lives in core/brdf/presets.h.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 listed or written, 2 unknown preset, bad arguments or write failure.
-int runPresetsCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code: 0 listed or written, 2 unknown preset, bad arguments or write failure.
+void addPresetsCommand(CLI::App& glint);
 
 }  // namespace glint

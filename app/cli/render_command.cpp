@@ -5,10 +5,13 @@
 #include <memory>
 #include <optional>
 #include <regex>
+#include <string>
+#include <vector>
 
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 #include "cli/classroom_options.h"
-#include "cli/headless.h"
+#include "cli/command_line.h"
+#include "runtime/headless.h"
 #include "classroom/probe_text.h"
 #include "classroom/surface_probe.h"
 #include "cli/plot_overlay.h"
@@ -21,27 +24,6 @@
 namespace glint {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: glint render SCENE.json -o OUT.png|OUT.exr [--size WxH] [--msaa N] [--reference [--samples N]] [--wireframe] [--normals]\n"
-    "  SCENE.json         a scene, or a material file (rendered on the preview stage, 256x256);\n"
-    "                     also a Wavefront .mtl, a glTF .gltf|.glb (a material and its lights on the stage),\n"
-    "                     a MERL measured BRDF .binary (preview stage), a BRDF Explorer .brdf or\n"
-    "                     .bparam file (preview stage, GPU only), or a mesh .obj|.ply|.stl|.fbx\n"
-    "                     (on the stage in the sphere's place; what was loaded is printed)\n"
-    "  --material NAME|INDEX  which material of a .mtl, .gltf or .glb (default: the first; `glint info` lists them)\n"
-    "  --up y|z           a mesh file's up axis (default y; z for Z-up files)\n"
-    "  -o, --output FILE  PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))\n"
-    "  --size WxH         output size in pixels (default: the scene's \"output\")\n"
-    "  --msaa N           multisample anti-aliasing with N samples (1 = off)\n"
-    "  --reference        render with the CPU reference ray caster instead of OpenGL\n"
-    "  --samples N        with --reference: integrate the environment light by Monte-Carlo with N samples\n"
-    "                     per pixel (map, cosine and GGX importance sampling, deterministic), not the\n"
-    "                     preview's image-based lighting; progress on stderr\n"
-    "  --wireframe        draw the edges of the drawn triangles over the image (PNG only; not with --reference)\n"
-    "  --normals          draw vertex normals as short lines over the image (PNG only; not with --reference)\n"
-    "  --probe X,Y        print the surface probe at pixel (X, Y): the chain from each light to the pixel\n"
-    "  --overlay NAME     draw a classroom overlay over the PNG (repeatable; one plot per image); NAME is one of:\n";
-
 struct RenderOptions {
     std::string scenePath, outputPath;
     RenderInputOptions input;  // --material, --up
@@ -53,19 +35,8 @@ struct RenderOptions {
     std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order (the plots among them)
     std::optional<PlotOverlayKind> plot;         // the one plot among the overlays
     PlotOverlayOptions plots;                    // --incidence, --from-inside
+    ClassroomOptions classroom;                  // display lessons and compare views (classroom_options.h)
 };
-
-// Classroom plots' options (cli/plot_overlay.h), after the overlay names.
-constexpr const char* kPlotOptionsUsage =
-    "  --incidence DEG    incidence angle θ_i of the polar plot, lobe and albedo marker (default 45)\n"
-    "  --from-inside      Fresnel plot with the light inside the material (critical angle)\n";
-
-void printUsage(std::FILE* stream) {
-    std::fprintf(stream, "%s", kUsage);
-    for (const RenderOverlay& overlay : allRenderOverlays()) std::fprintf(stream, "    %-16s %s\n", overlay.name, overlay.help);
-    std::fprintf(stream, "%s", kPlotOptionsUsage);
-    std::fprintf(stream, "Classroom (README \"Classroom: compare and display chain\"):\n%s", kClassroomUsage);
-}
 
 // The compare panes of `scene` rendered and composited (app/classroom/compare_render.h).
 Result<RenderedImages> renderCompareView(const ClassroomOptions& classroom, const Scene& scene, Renderer& renderer, int width, int height) {
@@ -74,94 +45,10 @@ Result<RenderedImages> renderCompareView(const ClassroomOptions& classroom, cons
     return renderCompare(renderer, *panes, classroom.chosenLayout(), width, height, classroom.divider.value_or(0.5f));
 }
 
-int usageError(const std::string& message) {
-    std::fprintf(stderr, "glint render: %s\n", message.c_str());
-    printUsage(stderr);
-    return 2;
-}
+int usageError(const std::string& message) { return glint::usageError("render", message); }
 
-}  // namespace
-
-int runRenderCommand(const std::vector<std::string>& arguments) {
-    RenderOptions options;
-    ClassroomOptions classroom;  // display lessons and compare views (classroom_options.h)
-    std::string classroomError;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& argument = arguments[i];
-        auto next = [&]() -> const std::string* { return i + 1 < arguments.size() ? &arguments[++i] : nullptr; };
-        std::string plotError;  // classroom plots' options first
-        if (const PlotOptionMatch plot = parsePlotOverlayOption(arguments, i, options.plots, plotError);
-            plot != PlotOptionMatch::NotMine) {
-            if (plot == PlotOptionMatch::Error) return usageError(plotError);
-            continue;
-        }
-        if (argument == "-h" || argument == "--help") {
-            printUsage(stdout);
-            return 0;
-        } else if (argument == "-o" || argument == "--output") {
-            const std::string* value = next();
-            if (!value) return usageError("-o needs a file name");
-            options.outputPath = *value;
-        } else if (argument == "--size") {
-            const std::string* value = next();
-            static const std::regex sizePattern(R"((\d{1,5})x(\d{1,5}))");
-            std::smatch match;
-            if (!value || !std::regex_match(*value, match, sizePattern))
-                return usageError("--size needs WIDTHxHEIGHT, e.g. 512x512");
-            options.width = std::stoi(match[1]);
-            options.height = std::stoi(match[2]);
-            if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
-                return usageError("--size must be between 1x1 and 16384x16384");
-        } else if (argument == "--msaa") {
-            const std::string* value = next();
-            if (!value || !std::regex_match(*value, std::regex("1|2|4|8|16")))
-                return usageError("--msaa needs 1, 2, 4, 8 or 16");
-            options.msaa = std::stoi(*value);
-        } else if (argument == "--material") {
-            const std::string* value = next();
-            if (!value || value->empty()) return usageError("--material needs a material's name or index");
-            options.input.material = *value;
-        } else if (argument == "--up") {
-            const std::string* value = next();
-            if (!value || (*value != "y" && *value != "z")) return usageError("--up needs y or z");
-            options.input.upAxis = *value == "z" ? MeshUpAxis::Z : MeshUpAxis::Y;
-        } else if (argument == "--reference") {
-            options.reference = true;
-        } else if (argument == "--samples") {
-            const std::string* value = next();
-            if (!value || !std::regex_match(*value, std::regex(R"(\d{1,7})")) || std::stoi(*value) < 1)
-                return usageError("--samples needs a positive number of samples per pixel, e.g. 1024");
-            options.environmentSamples = std::stoi(*value);
-        } else if (argument == "--wireframe") {
-            options.wireframe = true;
-        } else if (argument == "--normals") {
-            options.normals = true;
-        } else if (argument == "--probe") {
-            const std::string* value = next();
-            static const std::regex pointPattern(R"((\d{1,5}),(\d{1,5}))");
-            std::smatch match;
-            if (!value || !std::regex_match(*value, match, pointPattern))
-                return usageError("--probe needs a pixel X,Y, e.g. 128,128");
-            options.probePixel = glm::ivec2(std::stoi(match[1]), std::stoi(match[2]));
-        } else if (argument == "--overlay") {
-            const std::string* value = next();
-            const RenderOverlay* overlay = value ? findRenderOverlay(*value) : nullptr;
-            if (!overlay) return usageError(value ? "unknown overlay '" + *value + "'" : "--overlay needs a name");
-            if (overlay->plot && options.plot)
-                return usageError("one plot per image (--overlay " + *value + " given after another plot)");
-            if (overlay->plot) options.plot = overlay->plot;
-            options.overlays.push_back(overlay);
-        } else if (const auto parsed = classroom.parse(arguments, i, classroomError);
-                   parsed != ClassroomOptions::Parsed::NotClassroom) {
-            if (parsed == ClassroomOptions::Parsed::Refused) return usageError(classroomError);
-        } else if (!argument.empty() && argument[0] == '-') {
-            return usageError("unknown option " + argument);
-        } else if (options.scenePath.empty()) {
-            options.scenePath = argument;
-        } else {
-            return usageError("one scene at a time (got " + options.scenePath + " and " + argument + ")");
-        }
-    }
+int render(RenderOptions& options) {
+    ClassroomOptions& classroom = options.classroom;
     if (options.scenePath.empty()) return usageError("no scene file given");
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
     if (options.environmentSamples > 0 && !options.reference)
@@ -239,7 +126,7 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
-                                              : headless->render(*scene, width, height);
+                                              : headless->render(*scene, width, height, isFloatImagePath(options.outputPath));
         if (!rendered) {
             std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
             return 2;
@@ -265,6 +152,82 @@ int runRenderCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     return 0;
+}
+
+// "X,Y" within 0..99999 each, or nothing.
+std::optional<glm::ivec2> pixelPoint(const std::string& value) {
+    static const std::regex pointPattern(R"((\d{1,5}),(\d{1,5}))");
+    std::smatch match;
+    if (!std::regex_match(value, match, pointPattern)) return std::nullopt;
+    return glm::ivec2(std::stoi(match[1]), std::stoi(match[2]));
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& glint) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command = addCommand(glint, "render", "render headless (no display needed)", [options] { return render(*options); });
+    command->footer("Classroom: docs/classroom.md (compare views, display chain, plots, surface probe).");
+    command->add_option("SCENE", options->scenePath,
+                        "a scene, or a material file (rendered on the preview stage, 256x256); also a Wavefront .mtl, a "
+                        "glTF .gltf|.glb (a material and its lights on the stage), a MERL measured BRDF .binary (preview "
+                        "stage), a BRDF Explorer .brdf or .bparam file (preview stage, GPU only), or a mesh "
+                        ".obj|.ply|.stl|.fbx (on the stage in the sphere's place; what was loaded is printed)");
+    command->add_option("--material", options->input.material,
+                        "which material of a .mtl, .gltf or .glb (default: the first; `glint info` lists them)")
+        ->check(needs("a material's name or index", [](const std::string& value) { return !value.empty(); }))
+        ->type_name("NAME|INDEX");
+    command
+        ->add_option_function<std::string>(
+            "--up", [options](const std::string& value) { options->input.upAxis = value == "z" ? MeshUpAxis::Z : MeshUpAxis::Y; },
+            "a mesh file's up axis (default y; z for Z-up files)")
+        ->check(needs("y or z", [](const std::string& value) { return value == "y" || value == "z"; }))
+        ->type_name("y|z");
+    command->add_option("-o,--output", options->outputPath, "PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))")
+        ->type_name("FILE");
+    addPixelSize(*command, options->width, options->height, 1, 16384, "output size in pixels (default: the scene's \"output\")");
+    command->add_option("--msaa", options->msaa, "multisample anti-aliasing with N samples (1 = off)")
+        ->check(needs("1, 2, 4, 8 or 16", [](const std::string& value) { return std::regex_match(value, std::regex("1|2|4|8|16")); }))
+        ->type_name("N");
+    command->add_flag("--reference", options->reference, "render with the CPU reference ray caster instead of OpenGL");
+    command
+        ->add_option("--samples", options->environmentSamples,
+                     "with --reference: integrate the environment light by Monte-Carlo with N samples per pixel (map, "
+                     "cosine and GGX importance sampling, deterministic), not the preview's image-based lighting; progress "
+                     "on stderr")
+        ->check(needs("a positive number of samples per pixel, e.g. 1024",
+                      [](const std::string& value) { return std::regex_match(value, std::regex(R"(\d{1,7})")) && std::stoi(value) >= 1; }))
+        ->type_name("N");
+    command->add_flag("--wireframe", options->wireframe, "draw the edges of the drawn triangles over the image (PNG only; not with --reference)");
+    command->add_flag("--normals", options->normals, "draw vertex normals as short lines over the image (PNG only; not with --reference)");
+    command
+        ->add_option_function<std::string>(
+            "--probe", [options](const std::string& value) { options->probePixel = pixelPoint(value); },
+            "print the surface probe at pixel (X, Y): the chain from each light to the pixel")
+        ->check(needs("a pixel X,Y, e.g. 128,128", [](const std::string& value) { return pixelPoint(value).has_value(); }))
+        ->type_name("X,Y");
+    std::string overlayNames;
+    for (const RenderOverlay& overlay : allRenderOverlays())
+        overlayNames += std::string(overlayNames.empty() ? "" : "; ") + overlay.name + ": " + overlay.help;
+    command
+        ->add_option_function<std::vector<std::string>>(
+            "--overlay",
+            [options](const std::vector<std::string>& names) {
+                for (const std::string& name : names) {
+                    const RenderOverlay* overlay = findRenderOverlay(name);
+                    if (overlay->plot && options->plot) refuse("one plot per image (--overlay " + name + " given after another plot)");
+                    if (overlay->plot) options->plot = overlay->plot;
+                    options->overlays.push_back(overlay);
+                }
+            },
+            "draw a classroom overlay over the PNG (repeatable; one plot per image): " + overlayNames)
+        ->allow_extra_args(false)  // one name per --overlay
+        ->each([](const std::string& value) {
+            if (!findRenderOverlay(value)) refuse("unknown overlay '" + value + "'");
+        })
+        ->type_name("NAME");
+    addPlotOverlayOptions(*command, options->plots);
+    options->classroom.addTo(*command);
 }
 
 }  // namespace glint

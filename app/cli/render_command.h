@@ -4,13 +4,13 @@
 // classroom overlay (cli/render_overlays.h) over the PNG.
 #pragma once
 
-#include <string>
-#include <vector>
-
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 written, 2 bad arguments or input, or failure to render.
-int runRenderCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code: 0 written, 2 bad arguments or input, or failure to render.
+void addRenderCommand(CLI::App& glint);
 
 }  // namespace glint

@@ -28,7 +28,7 @@ struct RenderOverlayInput {
 
 struct RenderOverlay {
     const char* name;      // as typed after --overlay
-    const char* help;      // one line for the usage text
+    const char* help;      // its line in `glint render --help`
     bool needsProbePoint;  // refused without --probe X,Y
     // A classroom plot: it covers the whole image (one per image), its text grows with the image
     // (plotOverlayFontPixels) and it takes the plot options.

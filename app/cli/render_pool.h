@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <functional>
 
-#include "cli/headless.h"
+#include "runtime/headless.h"
 
 namespace glint {
 

@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <regex>
 #include <set>
 
-#include "cli/command_options.h"
+#include "cli/command_line.h"
 #include "cli/render_pool.h"
 #include "image/image_io.h"
 #include "snapshot/case_source.h"
@@ -22,18 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kUsage =
-    "usage: glint snapshot SUITE [--out DIR] [--update] [--update-case NAME]... [--jobs N] [--shard I/N]\n"
-    "  SUITE              a suite directory (scenes and materials *.json, goldens/NAME.png, optional\n"
-    "                     snapshot.json) or its manifest file\n"
-    "  --out DIR          where the report goes (default: snapshot-report): index.html, junit.xml,\n"
-    "                     images/NAME.{actual,expected,diff}.png for each failing case\n"
-    "  --update           write the goldens of failing cases (missing, other size, different)\n"
-    "  --update-case NAME write the golden of case NAME, passing or not (repeatable)\n"
-    "  --jobs N           render on N threads, each with its own OSMesa context (default 1)\n"
-    "  --shard I/N        run only shard I of N (0 <= I < N): case k of the sorted list goes to shard k mod N\n"
-    "exit code: 0 all passed, 1 some case failed or errored, 2 the suite could not be run\n";
-
 // --- options --------------------------------------------------------------------------------
 
 struct SnapshotOptions {
@@ -45,11 +34,6 @@ struct SnapshotOptions {
     Shard shard;
     bool sharded = false;
 };
-
-int usageError(const std::string& message) {
-    std::fprintf(stderr, "glint snapshot: %s\n%s", message.c_str(), kUsage);
-    return 2;
-}
 
 // --- one case -------------------------------------------------------------------------------
 
@@ -145,40 +129,9 @@ int suiteFailure(SnapshotReport& report, const std::string& message, const Snaps
     return 2;
 }
 
-}  // namespace
-
 // --- the command ----------------------------------------------------------------------------
 
-int runSnapshotCommand(const std::vector<std::string>& arguments) {
-    SnapshotOptions options;
-    const std::vector<CommandOption> known = {
-        {{"-o", "--out"}, "a directory", [&](const std::string& value) { options.outputDirectory = value; return std::string(); }},
-        {{"--update"}, "", [&](const std::string&) { options.updateFailing = true; return std::string(); }},
-        {{"--update-case"}, "a case name", [&](const std::string& value) { options.updateNamed.insert(value); return std::string(); }},
-        {{"-j", "--jobs"}, "a number from 1 to 999",
-         [&](const std::string& value) {
-             if (!std::regex_match(value, std::regex("[1-9][0-9]{0,2}"))) return std::string("--jobs needs a number from 1 to 999");
-             options.jobs = std::stoi(value);
-             return std::string();
-         }},
-        {{"--shard"}, "I/N",
-         [&](const std::string& value) {
-             auto shard = parseShard(value);
-             if (!shard) return shard.error().message;
-             options.shard = *shard;
-             options.sharded = true;
-             return std::string();
-         }},
-    };
-    auto parsed = parseCommandOptions(arguments, known, "suite");
-    if (!parsed) return usageError(parsed.error().message);
-    if (parsed->help) {
-        std::printf("%s", kUsage);
-        return 0;
-    }
-    if (!parsed->positionals.empty()) options.suitePath = parsed->positionals[0];
-    if (options.suitePath.empty()) return usageError("no suite directory or manifest given");
-
+int runSnapshot(const SnapshotOptions& options) {
     SnapshotReport report;
     report.suiteName = fs::path(options.suitePath).filename().string();
     auto suite = loadSnapshotSuite(options.suitePath);
@@ -221,6 +174,41 @@ int runSnapshotCommand(const std::vector<std::string>& arguments) {
                  options.outputDirectory.c_str());
     std::printf("%s\n", report.summaryLine().c_str());
     return report.count(CaseOutcome::Passed) == static_cast<int>(report.cases.size()) ? 0 : 1;
+}
+
+}  // namespace
+
+void addSnapshotCommand(CLI::App& glint) {
+    auto options = std::make_shared<SnapshotOptions>();
+    CLI::App* command = addCommand(glint, "snapshot", "compare a suite of scenes and materials with their goldens",
+                                   [options] { return runSnapshot(*options); });
+    command->footer("exit code: 0 all passed, 1 some case failed or errored, 2 the suite could not be run");
+    command->add_option("SUITE", options->suitePath,
+                        "a suite directory (scenes and materials *.json, goldens/NAME.png, optional snapshot.json) or its "
+                        "manifest file")
+        ->required();
+    command->add_option("-o,--out", options->outputDirectory,
+                        "where the report goes (default: snapshot-report): index.html, junit.xml, "
+                        "images/NAME.{actual,expected,diff}.png for each failing case")
+        ->type_name("DIR");
+    command->add_flag("--update", options->updateFailing, "write the goldens of failing cases (missing, other size, different)");
+    command->add_option("--update-case", options->updateNamed, "write the golden of case NAME, passing or not (repeatable)")
+        ->allow_extra_args(false)  // one name per --update-case
+        ->type_name("NAME");
+    command->add_option("-j,--jobs", options->jobs, "render on N threads, each with its own OSMesa context (default 1)")
+        ->check(needsWholeNumber("a number from 1 to 999", 1, 999))
+        ->type_name("N");
+    command
+        ->add_option_function<std::string>(
+            "--shard",
+            [options](const std::string& value) {
+                auto shard = parseShard(value);
+                if (!shard) refuse(shard.error().message);
+                options->shard = *shard;
+                options->sharded = true;
+            },
+            "run only shard I of N (0 <= I < N): case k of the sorted list goes to shard k mod N")
+        ->type_name("I/N");
 }
 
 }  // namespace glint

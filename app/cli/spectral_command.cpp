@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+#include <string>
 
-#include "cli/command_options.h"
-#include "cli/headless.h"
+#include "cli/command_line.h"
+#include "runtime/headless.h"
 #include "colour/spectral_render.h"
 #include "display/display_chain.h"
 #include "interchange/custom_brdf.h"
@@ -16,16 +18,6 @@
 namespace glint {
 namespace {
 
-constexpr const char* kSpectralUsage =
-    "usage: glint spectral SCENE.json -o OUT.png|OUT.exr [--size WxH] [--band NM,FWHM] [--cauchy-b B] [--wavelengths N]\n"
-    "  renders the scene one wavelength at a time (CPU reference renderer) and converts to RGB through the\n"
-    "  CIE 1931 colour matching functions; glass disperses by Cauchy's equation n(λ) = A + B/λ².\n"
-    "  --size WxH        output size in pixels (default: the scene's \"output\")\n"
-    "  --band NM,FWHM    lights emit a narrow band (Gaussian, centre and full width in nm) instead of a flat spectrum\n"
-    "  --cauchy-b B      Cauchy's B in µm² for every glass material (default 0.0042, BK7; dense flint about 0.016);\n"
-    "                    A is chosen so that n(589.3 nm) is the material's own index\n"
-    "  --wavelengths N   wavelengths rendered, 1-256 (default 16)\n";
-
 // A finite number filling the whole of `text`, or NaN.
 double wholeNumber(const std::string& text) {
     char* end = nullptr;
@@ -33,51 +25,20 @@ double wholeNumber(const std::string& text) {
     return (!text.empty() && end == text.c_str() + text.size() && std::isfinite(value)) ? value : std::nan("");
 }
 
-}  // namespace
-
-int runSpectralCommand(const std::vector<std::string>& arguments) {
+struct SpectralOptions {
     SpectralSettings settings;
-    std::string outputPath;
+    std::string scenePath, outputPath;
     int width = 0, height = 0;
-    const std::vector<CommandOption> options = {
-        {{"-o", "--output"}, "a file name", [&](const std::string& value) { outputPath = value; return std::string(); }},
-        {{"--size"}, "WIDTHxHEIGHT", pixelSizeOption(width, height, 1, 16384, "--size needs WIDTHxHEIGHT from 1x1 to 16384x16384")},
-        {{"--band"}, "NM,FWHM", [&](const std::string& value) {
-             const size_t comma = value.find(',');
-             const double centre = wholeNumber(value.substr(0, comma));
-             const double fullWidth = comma == std::string::npos ? std::nan("") : wholeNumber(value.substr(comma + 1));
-             if (std::isnan(centre) || std::isnan(fullWidth)) return std::string("--band needs CENTRE,FWHM in nm, e.g. 555,10");
-             settings.spectrum = EmitterSpectrum::NarrowBand;
-             settings.bandCentreNanometres = static_cast<float>(centre);
-             settings.bandWidthNanometres = static_cast<float>(fullWidth);
-             return std::string();
-         }},
-        {{"--cauchy-b"}, "B in µm²", [&](const std::string& value) {
-             const double coefficient = wholeNumber(value);
-             if (std::isnan(coefficient)) return std::string("--cauchy-b needs a number in µm², e.g. 0.0042");
-             settings.cauchyB = static_cast<float>(coefficient);
-             return std::string();
-         }},
-        {{"--wavelengths"}, "a count", wholeNumberOption(settings.wavelengthSamples, 1, 256, "--wavelengths needs a count from 1 to 256")},
-    };
-    auto parsed = parseCommandOptions(arguments, options, "scene");
-    if (!parsed) {
-        std::fprintf(stderr, "glint spectral: %s\n%s", parsed.error().format().c_str(), kSpectralUsage);
-        return 2;
-    }
-    if (parsed->help) {
-        std::printf("%s", kSpectralUsage);
-        return 0;
-    }
-    if (parsed->positionals.empty() || outputPath.empty()) {
-        std::fprintf(stderr, "glint spectral: needs a scene and -o OUT\n%s", kSpectralUsage);
-        return 2;
-    }
+};
+
+int renderSpectral(SpectralOptions& options) {
+    SpectralSettings& settings = options.settings;
+    const std::string& outputPath = options.outputPath;
     if (Status valid = checkSpectralSettings(settings); !valid) {
         std::fprintf(stderr, "glint spectral: %s\n", valid.error().format().c_str());
         return 2;
     }
-    auto scene = loadRenderable(parsed->positionals[0]);
+    auto scene = loadRenderable(options.scenePath);
     if (!scene) {
         std::fprintf(stderr, "glint spectral: %s\n", scene.error().format().c_str());
         return 2;
@@ -86,7 +47,7 @@ int runSpectralCommand(const std::vector<std::string>& arguments) {
         std::fprintf(stderr, "glint spectral: %s\n", cpu.error().format().c_str());
         return 2;
     }
-    auto xyz = renderSpectralXyz(*scene, settings, width, height);
+    auto xyz = renderSpectralXyz(*scene, settings, options.width, options.height);
     if (!xyz) {
         std::fprintf(stderr, "glint spectral: %s\n", xyz.error().format().c_str());
         return 2;
@@ -101,6 +62,46 @@ int runSpectralCommand(const std::vector<std::string>& arguments) {
     std::printf("glint spectral: %d wavelengths, %dx%d, written to %s\n", settings.wavelengthSamples, images.radiance.width,
                 images.radiance.height, outputPath.c_str());
     return 0;
+}
+
+}  // namespace
+
+void addSpectralCommand(CLI::App& glint) {
+    auto options = std::make_shared<SpectralOptions>();
+    CLI::App* command =
+        addCommand(glint, "spectral", "render per wavelength (CPU) and convert through the CIE 1931 matching functions",
+                   [options] { return renderSpectral(*options); });
+    command->footer("The scene is rendered one wavelength at a time (CPU reference renderer) and converted to RGB through the "
+                    "CIE 1931 colour matching functions; glass disperses by Cauchy's equation n(λ) = A + B/λ².");
+    command->add_option("SCENE", options->scenePath, "the scene or material file")->required();
+    command->add_option("-o,--output", options->outputPath, "PNG (display-encoded) or EXR (linear)")->required()->type_name("OUT.png|OUT.exr");
+    addPixelSize(*command, options->width, options->height, 1, 16384, "output size in pixels (default: the scene's \"output\")");
+    command
+        ->add_option_function<std::string>(
+            "--band",
+            [options](const std::string& value) {
+                const size_t comma = value.find(',');
+                options->settings.spectrum = EmitterSpectrum::NarrowBand;
+                options->settings.bandCentreNanometres = static_cast<float>(wholeNumber(value.substr(0, comma)));
+                options->settings.bandWidthNanometres = static_cast<float>(wholeNumber(value.substr(comma + 1)));
+            },
+            "lights emit a narrow band (Gaussian, centre and full width in nm) instead of a flat spectrum")
+        ->check(needs("CENTRE,FWHM in nm, e.g. 555,10", [](const std::string& value) {
+            const size_t comma = value.find(',');
+            return comma != std::string::npos && !std::isnan(wholeNumber(value.substr(0, comma))) &&
+                   !std::isnan(wholeNumber(value.substr(comma + 1)));
+        }))
+        ->type_name("NM,FWHM");
+    command
+        ->add_option_function<std::string>(
+            "--cauchy-b", [options](const std::string& value) { options->settings.cauchyB = static_cast<float>(wholeNumber(value)); },
+            "Cauchy's B in µm² for every glass material (default 0.0042, BK7; dense flint about 0.016); A is chosen so "
+            "that n(589.3 nm) is the material's own index")
+        ->check(needs("a number in µm², e.g. 0.0042", [](const std::string& value) { return !std::isnan(wholeNumber(value)); }))
+        ->type_name("B");
+    command->add_option("--wavelengths", options->settings.wavelengthSamples, "wavelengths rendered (default 16)")
+        ->check(needsWholeNumber("a count from 1 to 256", 1, 256))
+        ->type_name("N");
 }
 
 }  // namespace glint

@@ -3,12 +3,13 @@
 // the CIE 1931 matching functions (core/colour/spectral_render.h). Arguments only; no rendering here.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the process exit code: 0 written, 2 bad arguments, bad input or failure to write.
-int runSpectralCommand(const std::vector<std::string>& arguments);
+// Adds the command to `glint`; its exit code: 0 written, 2 bad arguments, bad input or failure to write.
+void addSpectralCommand(CLI::App& glint);
 
 }  // namespace glint

@@ -3,9 +3,11 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <string>
 #include <optional>
 
-#include "cli/command_options.h"
+#include "cli/command_line.h"
 #include "cli/render_pool.h"
 #include "image/contact_sheet.h"
 #include "image/image_io.h"
@@ -16,23 +18,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kUsage =
-    "usage: glint thumbnails DIR -o OUTDIR [--size N] [--jobs N] [--columns N]\n"
-    "  DIR          material files (\"format\": \"glint-material\", shown on the preview stage) and scene files\n"
-    "  -o OUTDIR    receives NAME.png for each file and contact_sheet.png with every thumbnail labelled\n"
-    "  --size N     thumbnail size, N×N pixels (default 256)\n"
-    "  --jobs N     render on N threads, each with its own OSMesa context (default 1)\n"
-    "  --columns N  thumbnails per row of the contact sheet (default: about square)\n";
-
 constexpr const char* kContactSheetName = "contact_sheet.png";
 // zlib level 1 for thumbnails and the sheet: about 40% larger files than the default 6, written
 // about 4x faster (compression was most of the time of a 256×256 thumbnail).
 constexpr int kThumbnailPngCompression = 1;
-
-int usageError(const std::string& message) {
-    std::fprintf(stderr, "glint thumbnails: %s\n%s", message.c_str(), kUsage);
-    return 2;
-}
 
 struct Thumbnail {
     std::string name;
@@ -40,27 +29,15 @@ struct Thumbnail {
     std::string error;
 };
 
-}  // namespace
-
-int runThumbnailsCommand(const std::vector<std::string>& arguments) {
+struct ThumbnailsOptions {
     std::string inputDirectory, outputDirectory;
     int size = 256, jobs = 1, columns = 0;
-    const std::vector<CommandOption> known = {
-        {{"-o", "--output"}, "a directory", [&](const std::string& value) { outputDirectory = value; return std::string(); }},
-        {{"--size"}, "a number of pixels", wholeNumberOption(size, 8, 4096, "--size needs a number of pixels from 8 to 4096")},
-        {{"-j", "--jobs"}, "a number", wholeNumberOption(jobs, 1, 999, "--jobs needs a number from 1 to 999")},
-        {{"--columns"}, "a number", wholeNumberOption(columns, 1, 1000, "--columns needs a number from 1 to 1000")},
-    };
-    auto parsed = parseCommandOptions(arguments, known, "directory");
-    if (!parsed) return usageError(parsed.error().message);
-    if (parsed->help) {
-        std::printf("%s", kUsage);
-        return 0;
-    }
-    if (!parsed->positionals.empty()) inputDirectory = parsed->positionals[0];
-    if (inputDirectory.empty()) return usageError("no directory of materials given");
-    if (outputDirectory.empty()) return usageError("no output directory given (-o OUTDIR)");
+};
 
+int renderThumbnails(const ThumbnailsOptions& options) {
+    const std::string& inputDirectory = options.inputDirectory;
+    const std::string& outputDirectory = options.outputDirectory;
+    const int size = options.size, jobs = options.jobs, columns = options.columns;
     auto files = listJsonFiles(inputDirectory);
     if (!files) {
         std::fprintf(stderr, "glint thumbnails: %s\n", files.error().format().c_str());
@@ -129,6 +106,30 @@ int runThumbnailsCommand(const std::vector<std::string>& arguments) {
     std::printf("%zu thumbnails (%dx%d) and %s written to %s; %d files could not be rendered\n", sheetEntries.size(), size, size,
                 sheetEntries.empty() ? "no contact sheet" : kContactSheetName, outputDirectory.c_str(), failed);
     return failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void addThumbnailsCommand(CLI::App& glint) {
+    auto options = std::make_shared<ThumbnailsOptions>();
+    CLI::App* command = addCommand(glint, "thumbnails", "one thumbnail per material and a labelled contact sheet",
+                                   [options] { return renderThumbnails(*options); });
+    command->add_option("DIR", options->inputDirectory,
+                        "material files (\"format\": \"glint-material\", shown on the preview stage) and scene files")
+        ->required();
+    command->add_option("-o,--output", options->outputDirectory,
+                        "receives NAME.png for each file and contact_sheet.png with every thumbnail labelled")
+        ->required()
+        ->type_name("OUTDIR");
+    command->add_option("--size", options->size, "thumbnail size, N×N pixels (default 256)")
+        ->check(needsWholeNumber("a number of pixels from 8 to 4096", 8, 4096))
+        ->type_name("N");
+    command->add_option("-j,--jobs", options->jobs, "render on N threads, each with its own OSMesa context (default 1)")
+        ->check(needsWholeNumber("a number from 1 to 999", 1, 999))
+        ->type_name("N");
+    command->add_option("--columns", options->columns, "thumbnails per row of the contact sheet (default: about square)")
+        ->check(needsWholeNumber("a number from 1 to 1000", 1, 1000))
+        ->type_name("N");
 }
 
 }  // namespace glint

@@ -3,13 +3,14 @@
 // labelled contact sheet, all in one process.
 #pragma once
 
-#include <string>
-#include <vector>
+namespace CLI {
+class App;
+}
 
 namespace glint {
 
-// Returns the exit code: 0 all written, 1 some files could not be rendered (the rest were),
+// Adds the command to `glint`; its exit code: 0 all written, 1 some files could not be rendered (the rest were),
 // 2 nothing could be done (bad arguments, unreadable directory, no context, no font).
-int runThumbnailsCommand(const std::vector<std::string>& arguments);
+void addThumbnailsCommand(CLI::App& glint);
 
 }  // namespace glint

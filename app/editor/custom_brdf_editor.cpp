@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "cli/brdf_probe.h"
+#include "runtime/brdf_probe.h"
 #include "interchange/bparam_file.h"
 #include "util/file_io.h"
 

@@ -1,6 +1,6 @@
 // Editor actions for BRDF Explorer files: open a .brdf into the selected object's material,
 // open and save .bparam values, and hot reload of .brdf files that change on disk. Every new or
-// changed shader is probed in a child process first (cli/brdf_probe.h); until it passes, the
+// changed shader is probed in a child process first (runtime/brdf_probe.h); until it passes, the
 // last good version stays on screen. Errors go to the UI; nothing here draws.
 #pragma once
 

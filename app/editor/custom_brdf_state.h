@@ -1,5 +1,5 @@
 // The editor's custom-BRDF bookkeeping: the one safety probe in flight (a child process checking
-// a new or changed .brdf, see cli/brdf_probe.h) and the modification times of the .brdf files the
+// a new or changed .brdf, see runtime/brdf_probe.h) and the modification times of the .brdf files the
 // scene uses, for hot reload. Plain data; app/editor/custom_brdf_editor.h acts on it.
 #pragma once
 

@@ -6,8 +6,8 @@
 #include <system_error>
 
 #include "classroom/lesson_document.h"
-#include "cli/brdf_probe.h"
-#include "edit/crash_guard.h"
+#include "runtime/brdf_probe.h"
+#include "editor/crash_guard.h"
 #include "editor/mesh_loading.h"
 #include "editor/interchange_open.h"
 #include "editor/custom_brdf_editor.h"

@@ -22,8 +22,8 @@
 #include "classroom/lesson_document.h"
 #include "classroom/presentation.h"
 #include "classroom/compare_view.h"
-#include "cli/headless.h"
-#include "edit/recovery.h"
+#include "runtime/headless.h"
+#include "editor/recovery.h"
 #include "editor/camera_actions.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
@@ -33,10 +33,13 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
+#include "editor/ui_layer_cache.h"
 #include "editor/viewport_refresh.h"
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
+#include "gl/render_target.h"
 #include "gl/renderer.h"
+#include "image/image_io.h"
 
 namespace glint {
 namespace {
@@ -98,9 +101,19 @@ void loadFont(float pixelSize) {
 
 // --- screenshot: the viewport's display-encoded PNG or its linear radiance EXR ---------------
 
-void saveScreenshot(EditorState& state, Renderer& renderer) {
-    renderer.displayOffscreen(state.session.scene().display);
-    const RenderedImages images{renderer.readRadiance(), renderer.readDisplay()};
+// Rendered afresh at the viewport's full size and detail; with the float image only for an EXR.
+void saveScreenshot(EditorState& state, Renderer& renderer, glm::ivec2 size) {
+    const Scene& scene = state.session.scene();
+    const bool floatImage = isFloatImagePath(state.screenshotPath);
+    renderer.setRadianceKept(floatImage);
+    const Status rendered = renderer.renderRadiance(scene, size.x, size.y);
+    renderer.setRadianceKept(false);
+    if (!rendered) {
+        state.errorMessage = "Could not render the screenshot.\n\n" + rendered.error().format();
+        return;
+    }
+    renderer.displayOffscreen(scene.display);
+    const RenderedImages images{floatImage ? renderer.readRadiance() : RadianceImage(), renderer.readDisplay()};
     if (Status written = writeRenderedImage(images, state.screenshotPath); !written)
         state.errorMessage = "Could not save the screenshot.\n\n" + written.error().format();
     else state.statusMessage = "Screenshot " + state.screenshotPath;
@@ -134,8 +147,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     }
     Renderer& renderer = **created;
     // The radiance pass also writes the displayed image, so that putting it on screen is a scaled
-    // copy rather than a display pass over every screen pixel (renderer.h).
+    // copy rather than a display pass over every screen pixel (renderer.h); the float image is not
+    // written (the screenshot renders its own when it saves an EXR).
     renderer.setFusedDisplay(true);
+    renderer.setRadianceKept(false);
     GLFWwindow* window = platform->window();
 
     BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
@@ -174,6 +189,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     int renderedScale = 1;
     std::string shownTitle;
     ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
+    UiLayerCache uiLayers;  // unchanged windows copied, not drawn again (ui_layer_cache.h)
+    RenderTarget reducedFrame{GL_RGBA8, false};  // on screen while the full frame is refined in bands
+    int refinedRows = 0;  // the full frame's rows drawn so far, from the top
+    const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
@@ -257,6 +276,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedSize = {0, 0};
             framesToDraw = std::max(framesToDraw, 2);
         }
+        if (state.screenshotRequested) {  // uses the renderer: the viewport is drawn afresh below
+            state.screenshotRequested = false;
+            saveScreenshot(state, renderer, viewportPixels);
+            renderedSize = {0, 0};
+        }
         const bool changed = state.session.revision() != renderedRevision;
         const RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
                                                state.settings.simplifyMeshesWhileDragging});
@@ -273,7 +297,19 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                 preview.msaaSamples = 1;
                 drawn = &preview;
             }
-            if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail); !status)
+            // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
+            RowBand rows;
+            if (plan.bands > 1) {
+                if (plan.band == 0) {
+                    reducedFrame.ensure(viewportPixels.x, viewportPixels.y, 1);
+                    renderer.displayToScreen(drawn->display, {0, 0}, renderedScale, reducedFrame.framebuffer());
+                }
+                const int top = renderPixels.y - renderPixels.y * plan.band / plan.bands;
+                rows.first = renderPixels.y - renderPixels.y * (plan.band + 1) / plan.bands;
+                rows.count = top - rows.first;
+                refinedRows = renderPixels.y - rows.first;
+            }
+            if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
                 std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
             glFinish();
             state.lastRenderMilliseconds =
@@ -292,20 +328,26 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             renderedScale = plan.pixelScale;
             framesToDraw = std::max(framesToDraw, 2);
         }
-        if (state.screenshotRequested) {
-            state.screenshotRequested = false;
-            saveScreenshot(state, renderer);
-        }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, framebuffer.x, framebuffer.y);
-        glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+        glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
         glClear(GL_COLOR_BUFFER_BIT);
         const auto composeStart = std::chrono::steady_clock::now();
+        if (refresh.refining()) {  // the full frame's bands so far, over the reduced frame
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
+            glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
+                              viewportLowerLeft.x + reducedFrame.width(), viewportLowerLeft.y + reducedFrame.height(),
+                              GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows, renderedSize.x, refinedRows);
+        }
         renderer.displayToScreen(state.session.scene().display, viewportLowerLeft, renderedScale);
+        glDisable(GL_SCISSOR_TEST);
         if (logFrames) glFinish();  // so that the log can tell the phases apart
         const auto displayed = std::chrono::steady_clock::now();
         glViewport(0, 0, framebuffer.x, framebuffer.y);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        uiLayers.draw(ImGui::GetDrawData(), ImVec4(viewport.x, viewport.y, viewport.width, viewport.height), kWindowClearColor);
         if (logFrames) glFinish();
         const auto composed = std::chrono::steady_clock::now();
         platform->present();
@@ -316,10 +358,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, %lld triangles\n",
+                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, state.lastRenderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
-                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), state.triangleCount);
+                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
+                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.triangleCount);
         }
         secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
         // Refusals and status lines written before the scene's last change no longer hold.

@@ -1,5 +1,5 @@
 // EditorState: everything the editor's panels and dialogs work on, in one small struct. The
-// scene itself lives in `session` and changes only through it (core/edit/edit_session.h).
+// scene itself lives in `session` and changes only through it (app/editor/edit_session.h).
 // It holds no GL objects and draws nothing.
 #pragma once
 
@@ -12,9 +12,9 @@
 
 #include "classroom/classroom_state.h"
 #include "classroom/compare_view.h"
-#include "edit/edit_session.h"
-#include "edit/recovery.h"
-#include "edit/scene_message.h"
+#include "editor/edit_session.h"
+#include "editor/recovery.h"
+#include "editor/scene_message.h"
 #include "editor/custom_brdf_state.h"
 #include "editor/panels/file_browser.h"
 #include "editor/panels/plots_window.h"

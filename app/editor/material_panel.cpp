@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "brdf/model_switch.h"
 #include "editor/color_space.h"
 #include "editor/ior_presets.h"
 #include "editor/panels/typed_numbers.h"
@@ -226,12 +227,10 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     if (ImGui::BeginCombo(modelComboLabel.c_str(), modelLabel)) {
         for (const ModelInfo& info : allModels()) {
             if (ImGui::Selectable(info.label, !custom && info.model == material.model) && (custom || info.model != material.model)) {
-                material.model = info.model;
-                material.values = defaultValues(info.params);
-                // Textures follow parameter names; only the normal map means the same in every model.
-                std::erase_if(material.textures, [](const MaterialTexture& t) { return t.parameter != kNormalMapKey; });
-                material.custom = nullptr;
-                material.measured = nullptr;
+                // What the two models share (colour, roughness, index) carries over; the panel says what did not.
+                const ModelSwitch switched = switchModel(material, info.model);
+                material = switched.material;
+                refusal = std::string("Switched to ") + info.label + ": " + switched.summary() + ".";
                 changed = true;
             }
         }

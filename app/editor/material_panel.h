@@ -1,7 +1,8 @@
 // The material panel: a model picker and one widget per entry of the model's parameter table
 // (slider with unit and range, log slider, sRGB colour picker storing linear, checkbox, combo),
 // each with reset-to-default. A free function over a Material; returns true when it changed.
-// A typed value outside the table's valid range is refused and `refusal` says why.
+// A typed value outside the table's valid range is refused and `refusal` says why; a model switch
+// keeps what the two models share (brdf/model_switch.h) and `refusal` says what was kept and dropped.
 #pragma once
 
 #include <string>

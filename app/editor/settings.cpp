@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "edit/recovery.h"
+#include "editor/recovery.h"
 #include "util/file_io.h"
 
 namespace glint {

@@ -1,6 +1,6 @@
 // Editor settings kept between runs: recent files, the UI scale, presentation mode and whether
 // large meshes are simplified while dragging, in
-// stateDirectory()/settings.json (see core/edit/recovery.h for the directory). A damaged or
+// stateDirectory()/settings.json (see app/editor/recovery.h for the directory). A damaged or
 // missing file gives the defaults; writes are atomic.
 #pragma once
 

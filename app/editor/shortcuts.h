@@ -1,4 +1,4 @@
-// Keyboard shortcuts: the table the help window (F1) and the README list, and the handler that
+// Keyboard shortcuts: the table the help window (F1) and docs/editor.md list, and the handler that
 // runs them. Text fields keep their own keys (ImGui's undo inside a field, typing letters).
 #pragma once
 

@@ -7,6 +7,15 @@
 namespace glint {
 
 RefreshPlan ViewportRefresh::plan(const Input& input) {
+    // A full frame being refined goes on band by band while nothing changes; a change abandons it.
+    if (nextBand_ > 0 && !input.sceneChanged && !input.sizeChanged && !input.dragging) {
+        RefreshPlan plan;
+        plan.render = true;
+        plan.band = nextBand_;
+        plan.bands = bands_;
+        return plan;
+    }
+    nextBand_ = 0;
     if (input.sceneChanged && !input.dragging) lastChangeSeconds_ = input.nowSeconds;
     dragging_ = input.dragging;
     // A drag ends its interaction at once (the release is the last input); other changes after
@@ -14,6 +23,9 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
     const bool interacting = input.dragging || input.nowSeconds - lastChangeSeconds_ < kSettleSeconds;
     RefreshPlan plan;
     plan.render = input.sceneChanged || input.sizeChanged || (shownReduced_ && !interacting);
+    if (plan.render && !interacting && shownReduced_ && !input.sizeChanged && fullFramesAreSlow())
+        plan.bands = std::min(kMostRefineBands, static_cast<int>(std::ceil(fullFrameMilliseconds_ / kFrameBudgetMilliseconds)));
+    bands_ = plan.bands;
     if (!plan.render || !interacting || !fullFramesAreSlow()) return plan;
     if (input.simplifyWhileDragging) plan.detail = MeshDetail::Simplified;
     if (input.dragging) {
@@ -30,6 +42,12 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
 }
 
 void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewSimplified) {
+    if (plan.bands > 1) {
+        bandsMilliseconds_ = (plan.band == 0 ? 0.0 : bandsMilliseconds_) + renderMilliseconds;
+        nextBand_ = plan.band + 1 < plan.bands ? plan.band + 1 : 0;
+        if (nextBand_ > 0) return;  // the reduced frame is still partly on screen
+        renderMilliseconds = bandsMilliseconds_;  // the whole frame's
+    }
     shownReduced_ = plan.pixelScale > 1 || drewSimplified;
     if (shownReduced_ || plan.detail == MeshDetail::Simplified) {
         // Drawn for an interaction (with stand-ins or not yet: then it was the full mesh).
@@ -41,6 +59,7 @@ void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMillisecond
 }
 
 double ViewportRefresh::secondsToRefine(double nowSeconds) const {
+    if (nextBand_ > 0) return 0.0;  // the next band
     if (!shownReduced_ || dragging_) return 1e9;  // a drag's end is an input event itself
     return std::max(0.0, lastChangeSeconds_ + kSettleSeconds - nowSeconds);
 }

@@ -3,7 +3,9 @@
 // full frame takes longer than the frame budget, each frame is drawn at reduced resolution and at
 // MeshDetail::Simplified (large meshes' stand-ins, changed shadow maps coarser: gl/renderer.h);
 // a change outside a drag (a wheel zoom, a key) is first drawn simplified at full resolution. The full frame follows by
-// itself: on the first frame after the drag ends, or once no change came for kSettleSeconds.
+// itself: on the first frame after the drag ends, or once no change came for kSettleSeconds; when
+// full frames are slow, in horizontal bands, top first, one a loop iteration, so that input
+// arriving meanwhile waits for one band, not the whole frame (and a change abandons the rest).
 // Pure bookkeeping: it renders nothing and reads no input (tests/editor_refresh_test.cpp).
 #pragma once
 
@@ -16,6 +18,8 @@ struct RefreshPlan {
     bool render = false;
     int pixelScale = 1;  // each rendered pixel covers pixelScale² screen pixels
     MeshDetail detail = MeshDetail::Full;
+    int band = 0;   // the band this plan draws, of
+    int bands = 1;  // the bands its full frame is drawn in (1: the whole frame at once)
 };
 
 class ViewportRefresh {
@@ -29,6 +33,8 @@ public:
     // A change outside a drag counts as part of an interaction for this long [s]: wheel ticks and
     // key repeats come faster.
     static constexpr double kSettleSeconds = 0.25;
+    // A slow full frame after reduced ones is split into about one band per frame budget, at most this many.
+    static constexpr int kMostRefineBands = 8;
 
     struct Input {
         double nowSeconds = 0.0;
@@ -46,6 +52,8 @@ public:
     double secondsToRefine(double nowSeconds) const;
     // Whether full frames are slow enough that the stand-ins are worth making ahead of a drag.
     bool fullFramesAreSlow() const { return fullFrameMilliseconds_ > kFrameBudgetMilliseconds; }
+    // Whether a full frame is part drawn: its bands so far are shown over the reduced frame.
+    bool refining() const { return nextBand_ > 0; }
 
 private:
     double fullFrameMilliseconds_ = 0.0;  // the last full-detail, full-resolution frame
@@ -56,6 +64,9 @@ private:
     double lastChangeSeconds_ = -1e9;  // the last change outside a drag
     bool dragging_ = false;
     bool shownReduced_ = false;  // the frame on screen is not the full one
+    int nextBand_ = 0;  // of the full frame being refined (0: none)
+    int bands_ = 1;     // its bands
+    double bandsMilliseconds_ = 0.0;  // its bands' render times so far
 };
 
 }  // namespace glint

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "edit/recovery.h"
+#include "editor/recovery.h"
 
 namespace glint {
 

@@ -1,6 +1,7 @@
 // Microfacet terms shared by the Cook-Torrance, anisotropic GGX models: normal distributions D
 // (Beckmann, GGX, anisotropic GGX), masking-shadowing G (Cook-Torrance's V-cavity, height-
-// correlated Smith) and the Fresnel choice. No BRDF here; GLSL twin: shaders/brdf/microfacet.glsl.
+// correlated Smith) and the Fresnel choice. No BRDF here; GLSL twins: shaders/brdf/microfacet.glsl
+// and microfacet_fresnel.glsl.
 #pragma once
 
 #include <algorithm>

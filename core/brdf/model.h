@@ -14,6 +14,8 @@
 //   tracesDeltaLobes             GLSL transport<Name> traces its delta lobes (C++ twin in
 //                                render/specular_transport.cpp)
 //   isReciprocal(Params)         a form that breaks the model's reciprocity claim
+//   glslTables()                 GLSL the twin needs before its file, computed on the C++ side
+//                                (constant tables), so that both twins read the same numbers
 // GLSL names follow from the id by convention: "cook_torrance" -> CookTorrance -> evalCookTorrance.
 #pragma once
 
@@ -56,6 +58,8 @@ template <class M>
 concept HasEnvironment = requires { { M::environmentResponse } -> std::convertible_to<const char*>; };
 template <class M>
 concept TracesDeltaLobes = requires { requires M::tracesDeltaLobes; };
+template <class M>
+concept HasGlslTables = requires { { M::glslTables() } -> std::same_as<std::string>; };
 template <class M>
 concept HasFormReciprocity = requires(const typename M::Params& p) { { M::isReciprocal(p) } -> std::same_as<bool>; };
 
@@ -160,7 +164,14 @@ struct ModelInfo {
     // vec3 wo, ShadingFrame)`, at the end of the model's GLSL file (common/environment.glsl).
     const char* glslEnvironment;
     const char* environmentResponse;  // how the environment lights the model, in words
+    std::string (*glslTables)();      // GLSL put before the model's file (nullptr: none)
 };
+
+template <class M>
+constexpr auto glslTablesOf() -> std::string (*)() {
+    if constexpr (HasGlslTables<M>) return &M::glslTables;
+    else return nullptr;
+}
 
 template <class M>
 ModelInfo describeModel(BrdfModel position) {
@@ -178,7 +189,8 @@ ModelInfo describeModel(BrdfModel position) {
     return {position, M::id, M::label, names.file.c_str(), names.eval.c_str(), M::params, M::reciprocal,
             M::energyConserving, M::citation, HasAmbient<M> ? names.ambient.c_str() : nullptr,
             TracesDeltaLobes<M> ? names.transport.c_str() : nullptr,
-            HasEnvironment<M> ? names.environment.c_str() : nullptr, response};
+            HasEnvironment<M> ? names.environment.c_str() : nullptr, response,
+            glslTablesOf<M>()};
 }
 
 }  // namespace glint

@@ -18,6 +18,7 @@
 #include "brdf/lambert.h"
 #include "brdf/mirror.h"
 #include "brdf/model.h"
+#include "brdf/openpbr.h"
 #include "brdf/oren_nayar.h"
 #include "brdf/phong.h"
 #include "brdf/retroreflective.h"
@@ -28,7 +29,7 @@ namespace glint {
 
 #define GLINT_BRDF_MODELS(X)                                                                              \
     X(Lambert), X(BlinnPhong), X(OrenNayar), X(Phong), X(CookTorrance), X(GgxAnisotropic), X(Ward), \
-        X(Retroreflective), X(Mirror), X(Glass)
+        X(Retroreflective), X(Mirror), X(Glass), X(OpenPbr)
 #define GLINT_MODEL_NAME(Model) Model
 enum class BrdfModel : int { GLINT_BRDF_MODELS(GLINT_MODEL_NAME) };
 using Models = ModelList<GLINT_BRDF_MODELS(GLINT_MODEL_NAME)>;

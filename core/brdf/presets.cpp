@@ -1,7 +1,7 @@
 // The preset table (see presets.h). Metals: per-channel n + iκ fitted to measured spectra
 // (colour/metal_index_fit.h; tests/metal_spectra_test.cpp recomputes them); dielectrics: κ = 0
 // and n at 589 nm (the clear ones refract: the `glass` model); natural surfaces: broadband
-// albedo as Lambert.
+// albedo as Lambert; layered materials: the OpenPBR model's coat, fuzz, thin film and transmission.
 #include "brdf/presets.h"
 
 #include "brdf/cook_torrance.h"
@@ -74,6 +74,32 @@ constexpr Preset kPresets[] = {
     lambertian("old_snow", 0.4f, kOkeAlbedo),
     lambertian("grass", 0.25f, kOkeAlbedo),
     lambertian("soil", 0.15f, kOkeAlbedo),
+    // Layered (OpenPBR): illustrative artist materials, each showing one layer; indices sourced.
+    {"car_paint", "layered", BrdfModel::OpenPbr,
+     {{"base_color", {0.45f, 0.02f, 0.03f}}, {"base_metalness", glm::vec3(0.4f)}, {"specular_roughness", glm::vec3(0.4f)},
+      {"coat_weight", glm::vec3(1.0f)}, {"coat_roughness", glm::vec3(0.05f)}, {"coat_ior", glm::vec3(1.5f)}},
+     "metallic red base under a clear coat of n = 1.5 (acrylic/polyurethane clear coats); colours illustrative"},
+    {"velvet", "layered", BrdfModel::OpenPbr,
+     {{"base_color", {0.2f, 0.01f, 0.05f}}, {"specular_roughness", glm::vec3(0.8f)}, {"fuzz_weight", glm::vec3(1.0f)},
+      {"fuzz_color", {0.9f, 0.35f, 0.55f}}, {"fuzz_roughness", glm::vec3(0.5f)}},
+     "dark dyed base under a fuzz of fibres (Charlie sheen); colours illustrative"},
+    {"soap_bubble", "layered", BrdfModel::OpenPbr,
+     {{"base_color", glm::vec3(0.0f)}, {"specular_ior", glm::vec3(1.33f)}, {"specular_roughness", glm::vec3(0.0f)},
+      {"transmission_weight", glm::vec3(1.0f)}, {"geometry_thin_walled", glm::vec3(1.0f)},
+      {"thin_film_weight", glm::vec3(1.0f)}, {"thin_film_thickness", glm::vec3(0.4f)}, {"thin_film_ior", glm::vec3(1.33f)}},
+     "a thin shell of soapy water: n = 1.33 (Hecht, Optics, Table 4.1), film about 0.4 µm thick"},
+    {"frosted_glass", "layered", BrdfModel::OpenPbr,
+     {{"specular_ior", glm::vec3(1.5f)}, {"specular_roughness", glm::vec3(0.35f)}, {"transmission_weight", glm::vec3(1.0f)},
+      {"transmission_color", {0.85f, 0.95f, 0.93f}}, {"transmission_depth", glm::vec3(0.5f)}},
+     "rough (etched) crown glass, n = 1.5 (Hecht, Optics, Table 4.1), faintly green over 0.5 m; roughness illustrative"},
+    {"gold_f82", "layered", BrdfModel::OpenPbr,
+     {{"base_color", {1.0f, 0.785f, 0.343f}}, {"base_metalness", glm::vec3(1.0f)}, {"specular_color", {1.0f, 1.0f, 0.964f}},
+      {"specular_roughness", glm::vec3(0.25f)}},
+     "gold as F0 and F82 tint, computed from the `gold` preset's fitted n + iκ (McPeak et al. 2015), tint clipped at 1"},
+    {"rubber", "layered", BrdfModel::OpenPbr,
+     {{"base_color", glm::vec3(0.04f)}, {"base_diffuse_roughness", glm::vec3(0.5f)}, {"specular_roughness", glm::vec3(0.6f)},
+      {"specular_ior", glm::vec3(1.52f)}},
+     "black natural rubber: n ≈ 1.52 (polyisoprene, Polymer Handbook); albedo and roughness illustrative"},
 };
 #undef GLINT_FITTED_TO
 

@@ -20,9 +20,9 @@ struct PresetSetting {
 
 struct Preset {
     const char* name;      // as typed on the command line: "gold"
-    const char* category;  // "metal", "dielectric", "plastic", "natural"
+    const char* category;  // "metal", "dielectric", "plastic", "natural", "layered"
     BrdfModel model;
-    PresetSetting settings[6];  // over the model's defaults
+    PresetSetting settings[8];  // over the model's defaults
     const char* source;         // where the numbers come from
 
     // The preset as a material named after it, with every other parameter at its default.

@@ -196,10 +196,26 @@ glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingF
            });
 }
 
+// Fuzz and diffuse under the irradiance map, coat and specular each prefiltered at its own
+// roughness along its dominant direction, weighted by the albedos of openPbrResponse (which sum
+// to the directional albedo: exact under a uniform map). Transmission: render/openpbr_transport.h.
+glm::vec3 lightingOf(const OpenPbrParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const OpenPbrView v = openPbrView(p, frame.cosTheta(wo));
+    const OpenPbrResponse r = openPbrResponse(p, v);
+    const float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
+    return r.diffuse * environmentDiffuseRadiance(e, frame.normal) +
+           r.coat * environmentSpecularRadiance(e, dominantDirection(wo, frame, coatAlpha), v.coatRoughness) +
+           r.specular * environmentSpecularRadiance(e, dominantDirection(wo, frame, specularAlpha), v.specularRoughness);
+}
+
 // The GGX α each glossy lobe is prefiltered with: split sum for microfacet lobes, an equivalent
 // roughness along R for the others (see environment_lighting.h).
 float splitSumAlpha(const CookTorranceParams& p) { return p.roughness; }
 float splitSumAlpha(const GgxAnisotropicParams& p) { return std::sqrt(p.roughnessX * p.roughnessY); }
+float splitSumAlpha(const OpenPbrParams& p) {
+    const float roughness = openPbrEquivalentRoughness(openPbrAlphas(p.specularRoughness, p.specularAnisotropy));
+    return roughness * roughness;
+}
 float lobeAlpha(const BlinnPhongParams& p) { return blinnAlpha(p.exponent); }
 float lobeAlpha(const PhongParams& p) { return phongAlpha(p.exponent); }
 float lobeAlpha(const WardParams& p) { return std::sqrt(p.roughnessX * p.roughnessY); }

@@ -1,7 +1,7 @@
 // BrdfSampler: f_r of a custom BRDF (.brdf GLSL) at a list of direction pairs, evaluated by its own
 // shader in one offscreen pass (shaders/brdf_sampler.frag, the wrapper of custom_brdf_program.h)
 // and read back as floats: how the classroom plots see a BRDF that has no CPU twin. It does not
-// prove that the shader finishes (app/cli/brdf_probe.h): hand it only BRDFs that passed the probe.
+// prove that the shader finishes (app/runtime/brdf_probe.h): hand it only BRDFs that passed the probe.
 #pragma once
 
 #include <span>

@@ -2,7 +2,7 @@
 // ShadingFrame to BRDF Explorer's L, V, N, X, Y and declares the parameters as uniforms, the
 // compiled programs (cached per source and MSAA count, failures too; also the sampling program of
 // gl/brdf_sampler.h, the same wrapper in a full-screen pass) and the per-draw uniforms.
-// Proving a shader finishes (no endless loop) is not done here: app/cli/brdf_probe.h does it.
+// Proving a shader finishes (no endless loop) is not done here: app/runtime/brdf_probe.h does it.
 #pragma once
 
 #include <map>

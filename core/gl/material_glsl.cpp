@@ -87,7 +87,7 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
     return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures + constants +
            "struct MaterialParams {\n" + fields + "};\n\n" +
            "MaterialParams loadMaterialParams() {\n    MaterialParams p;\n" + loads + "    return p;\n}\n\n" +
-           "#include \"" + model.glslFile + "\"\n" + "#define GLINT_EVAL_BRDF " + model.glslEval + "\n" +
+           (model.glslTables ? model.glslTables() : std::string()) + "#include \"" + model.glslFile + "\"\n" + "#define GLINT_EVAL_BRDF " + model.glslEval + "\n" +
            hooks(model);
 }
 

@@ -25,6 +25,8 @@ void bindMaterialTextures(const ShaderProgram& program, const Material& material
         glUniform4f(uniform("textureValueB"), texture.valueB.r, texture.valueB.g, texture.valueB.b, 0.0f);
         glUniform4f(uniform("textureScale"), texture.tiling.x, texture.tiling.y, texture.frequency, texture.turbulence);
         glUniform4f(uniform("textureRange"), texture.range.x, texture.range.y, 0.0f, 0.0f);
+        glUniform4f(uniform("textureTransform"), texture.offset.x, texture.offset.y, texture.rotation, texture.normalScale);
+        glUniform3f(uniform("textureColorFactor"), texture.colorFactor.r, texture.colorFactor.g, texture.colorFactor.b);
     }
     glActiveTexture(GL_TEXTURE0);
 }

@@ -259,7 +259,7 @@ FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
 
 // --- drawing --------------------------------------------------------------------------------
 
-Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail) {
+Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail, RowBand rows) {
     platform_.makeCurrent();
     ++framesRendered_;  // programs looked up from here on belong to this frame (makeRoom spares them)
     GLINT_CHECK(width > 0 && height > 0);
@@ -283,22 +283,36 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         displayTarget_.ensure(width, height, 1);
         fusedDisplay_ = scene.display;
     }
+    // The float image is written unless the render is fused and nobody reads it (setRadianceKept).
+    radianceWritten_ = keepRadiance_ || !fusedDisplay_;
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
-    const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    const GLenum drawBuffers[2] = {radianceWritten_ ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE}, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(fusedDisplay_ ? 2 : 1, drawBuffers);
 
     glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
     glViewport(0, 0, width, height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
+    // Clears, draws and the MSAA resolve keep to the band.
+    if (rows.count > 0) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, rows.first, width, rows.count);
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     if (samples > 1) glEnable(GL_MULTISAMPLE);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    // Depth is cleared before the first draw that tests it, not when nothing is drawn (an empty
+    // frame is then one clear of the 8-bit image); only what was drawn reads it (the overlays).
+    bool depthCleared = false;
+    const auto clearDepthOnce = [&depthCleared] {
+        if (!depthCleared) glClear(GL_DEPTH_BUFFER_BIT);
+        depthCleared = true;
+    };
     const FrameUniforms packed = uploadFrame(scene, width, height);
     environment_->prepare(scene.environment);  // uploads only when the map changed
     const std::string frameDefines =
@@ -310,7 +324,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
                                    (!fusedDisplay_ || fusedDisplay_->dither == Dither::None);
     if (uniformBackground) {
         const GLfloat radiance[4] = {scene.background.color.r, scene.background.color.g, scene.background.color.b, 1.0f};
-        glClearBufferfv(GL_COLOR, 0, radiance);
+        if (radianceWritten_) glClearBufferfv(GL_COLOR, 0, radiance);
         if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
             const glm::vec3 encoded = encodeForDisplay(scene.background.color, *fusedDisplay_);
             GLfloat stored[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -387,6 +401,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         setFaceCulling(culledFaces(mesh.closure, beyondNearPlane(scene.camera, bounds)));
         if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
         glBindVertexArray(mesh.vertexArray);
+        clearDepthOnce();
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;
         if (mesh.simplified) ++simplifiedMeshesDrawn_;
@@ -399,7 +414,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and MSAA samples) an
     // object covers are rejected before the background shader runs.
     Result<const ShaderProgram*> background = static_cast<const ShaderProgram*>(nullptr);
-    if (!uniformBackground) background = backgroundProgram(frameDefines);
+    if (!uniformBackground)
+        background = backgroundProgram(specialise_ ? backgroundSpecialisation(packed, scene.environment, fusedDisplay_) : "");
     if (!background) {
         shaderError_ = background.error().format();
         result = background.error();
@@ -407,6 +423,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         glDepthRange(1.0, 1.0);
+        clearDepthOnce();
         glUseProgram((*background)->id());
         setFusedDisplayUniforms(**background, fusedDisplay_);
         glBindVertexArray(emptyVertexArray_);
@@ -422,8 +439,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         // Depth too: the overlay pass hides lines behind the surface with it.
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
+    glDisable(GL_SCISSOR_TEST);
     if (result) shaderError_.clear();
-    else fusedDisplay_.reset();  // an object was left out: the display pass runs again
+    // An object was left out: the display pass runs again, from the float image where there is one.
+    else if (radianceWritten_) fusedDisplay_.reset();
     if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
     return result;
 }
@@ -457,15 +476,17 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
     glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
     // Skipped when the radiance pass already wrote the encoded image with these settings (fused).
-    if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display))
+    if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display)) {
+        GLINT_CHECK(radianceWritten_);  // a render that kept no float image: its display settings only
         runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
+    }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
     fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
 }
 
-void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale) {
+void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale, GLuint framebuffer) {
     platform_.makeCurrent();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     const int width = radianceTarget_.width(), height = radianceTarget_.height();
     glViewport(lowerLeft.x, lowerLeft.y, width * pixelScale, height * pixelScale);
     if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) {
@@ -474,8 +495,9 @@ void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerL
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glBlitFramebuffer(0, 0, width, height, lowerLeft.x, lowerLeft.y, lowerLeft.x + width * pixelScale,
                           lowerLeft.y + height * pixelScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     } else {
+        GLINT_CHECK(radianceWritten_);
         runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
     }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), lowerLeft, pixelScale);
@@ -502,6 +524,7 @@ void readFlipped(GLuint framebuffer, int width, int height, GLenum type, std::ve
 
 RadianceImage Renderer::readRadiance() const {
     platform_.makeCurrent();
+    GLINT_CHECK(radianceWritten_);  // setRadianceKept(false) renders have no float image
     RadianceImage image(radianceTarget_.width(), radianceTarget_.height());
     readFlipped(radianceTarget_.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
     return image;

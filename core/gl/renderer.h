@@ -30,6 +30,12 @@
 
 namespace glint {
 
+// Rows [first, first + count) of a frame, counted from its bottom row; count 0: every row.
+struct RowBand {
+    int first = 0;
+    int count = 0;
+};
+
 class Renderer {
 public:
     // The radiance targets' format (the bare shading pass of `glint bench` writes the same).
@@ -47,7 +53,10 @@ public:
     // MeshDetail::Simplified draws large meshes by simplified stand-ins where they are ready, each
     // with about as many triangles as pixels it may cover (the editor, while the user drags;
     // gl/gpu_mesh_cache.h); headless renders draw every triangle.
-    Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full);
+    // `rows`: only those rows of the width×height frame are drawn (the editor refines a slow full
+    // frame band by band); the others keep what the targets held.
+    Status renderRadiance(const Scene& scene, int width, int height, MeshDetail detail = MeshDetail::Full,
+                          RowBand rows = {});
     // Starts making the simplified stand-ins of the scene's large meshes on worker threads (the
     // editor, once a full frame proved slow), so that the next drag finds them ready; without it
     // Simplified frames draw the full meshes.
@@ -64,6 +73,13 @@ public:
     // settings has nothing left to do but the overlays, and displayToScreen() copies it. The float
     // image is written all the same.
     void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
+    // Whether fused renders also write the float radiance image (on by default). Off for a render
+    // whose float image nobody reads (a PNG render, `glint bench`): a fused render then writes only
+    // the 8-bit image, 4 bytes a pixel instead of 20, and readRadiance() and a display pass with
+    // other settings are refused until a render that kept it. Unfused renders (MSAA, the levels
+    // ramp) always write it.
+    void setRadianceKept(bool kept) { keepRadiance_ = kept; }
+    bool radianceKept() const { return keepRadiance_; }
     // Specialised programs (on by default; gl/shader_specialisation.h): what a frame and a material
     // keep fixed is compiled in as constants, one program per combination, built when first drawn.
     // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
@@ -72,7 +88,9 @@ public:
     // the fused image when the last radiance render fused these settings (the editor fuses).
     // `pixelScale` > 1 enlarges each radiance pixel to pixelScale² screen pixels (the editor's
     // reduced-resolution preview while dragging).
-    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1);
+    // `framebuffer`: another target than the screen (the editor keeps the reduced frame while it
+    // refines the full one).
+    void displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale = 1, GLuint framebuffer = 0);
 
     RadianceImage readRadiance() const;  // top row first
     DisplayImage readDisplay() const;    // top row first
@@ -159,6 +177,8 @@ private:
     int maxSamples_ = 1;
     bool fuseDisplay_ = false;
     bool specialise_ = true;
+    bool keepRadiance_ = true;
+    bool radianceWritten_ = true;  // by the last renderRadiance
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};
     RenderTarget radianceTarget_{kRadianceFormat, true};

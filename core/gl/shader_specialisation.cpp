@@ -34,7 +34,12 @@ std::string lightSum(const FrameUniforms& frame, const ShadowBlockStd140& shadow
 
 std::string frameSpecialisation(const FrameUniforms& frame, const ShadowBlockStd140& shadows, const Environment& environment,
                                 const std::optional<DisplaySettings>& fusedDisplay) {
-    std::string text = lightSum(frame, shadows);
+    return lightSum(frame, shadows) + backgroundSpecialisation(frame, environment, fusedDisplay);
+}
+
+std::string backgroundSpecialisation(const FrameUniforms& frame, const Environment& environment,
+                                     const std::optional<DisplaySettings>& fusedDisplay) {
+    std::string text;
     // As EnvironmentTextures::prepare() sets the block's flags.
     const bool environmentOn = environment.enabled();
     text += define("GLINT_ENVIRONMENT_ENABLED", environmentOn ? "1" : "0");

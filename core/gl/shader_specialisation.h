@@ -23,10 +23,16 @@ namespace glint {
 // Lights beyond this many are looped over generically (an unrolled sum grows the program).
 inline constexpr int kMaxSpecialisedLights = 8;
 
-// The frame's part: lights (as packed, with their shadow-map slots), environment, background and,
-// when the display chain is fused into the radiance pass, its choices.
+// The frame's part: the lights (as packed, with their shadow-map slots) followed by
+// backgroundSpecialisation().
 std::string frameSpecialisation(const FrameUniforms& frame, const ShadowBlockStd140& shadows, const Environment& environment,
                                 const std::optional<DisplaySettings>& fusedDisplay);
+
+// What the background pass reads of the frame: environment, background kind and, when the display
+// chain is fused into the radiance pass, its choices; not the lights, so that moving, adding or
+// shadowing a light reuses the background's program.
+std::string backgroundSpecialisation(const FrameUniforms& frame, const Environment& environment,
+                                     const std::optional<DisplaySettings>& fusedDisplay);
 
 // The display chain's choices (transfer, tone map, dither) for display_encode.glsl: the fused
 // radiance passes' and the display pass's.

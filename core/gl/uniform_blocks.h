@@ -36,11 +36,11 @@ struct LightBlockStd140 {
 };
 static_assert(sizeof(LightBlockStd140) == kMaxLights * 80, "LightBlock std140 layout");
 
-inline constexpr int kMaterialBlockFloats = 32;
+inline constexpr int kMaterialBlockFloats = 48;
 struct MaterialBlockStd140 {
-    float values[kMaterialBlockFloats];  // vec4 materialValues[8]
+    float values[kMaterialBlockFloats];  // vec4 materialValues[12]
 };
-static_assert(sizeof(MaterialBlockStd140) == 128, "MaterialBlock std140 layout");
+static_assert(sizeof(MaterialBlockStd140) == 192, "MaterialBlock std140 layout");
 
 enum UniformBinding { kFrameBinding = 0, kLightBinding = 1, kMaterialBinding = 2 };
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "interchange/gltf.h"
+#include "interchange/materialx.h"
 #include "interchange/mtl.h"
 
 namespace glint {
@@ -27,9 +28,11 @@ bool isExportPath(const std::string& path) {
 
 Result<ExportedText> exportMaterials(std::span<const ImportedMaterial> materials, std::span<const Light> lights,
                                      const std::string& outputPath) {
-    if (!isExportPath(outputPath)) return makeError("the output must end in .mtl or .gltf (got '" + outputPath + "')");
+    if (!isExportPath(outputPath)) return makeError("the output must end in .mtl, .gltf or .mtlx (got '" + outputPath + "')");
     if (materials.empty()) return makeError("no material to export");
-    return lowerCaseExtension(outputPath) == ".mtl" ? writeMtl(materials) : writeGltf(materials.front(), lights);
+    const std::string extension = lowerCaseExtension(outputPath);
+    if (extension == ".mtlx") return writeMaterialX(materials, std::filesystem::absolute(outputPath).parent_path().string());
+    return extension == ".mtl" ? writeMtl(materials) : writeGltf(materials.front(), lights, outputPath);
 }
 
 }  // namespace glint

@@ -1,5 +1,6 @@
 // The formats Glint writes materials to, by the output's extension: .mtl (every material, as a
-// library) and .gltf (the first material on a sphere, plus lights). Used by `glint export` and
+// library), .gltf (the first material on a sphere, plus lights) and .mtlx (every material as a
+// MaterialX open_pbr_surface). Used by `glint export` and
 // File ▸ Export material…; it returns text and warnings and writes no file.
 #pragma once
 
@@ -10,7 +11,7 @@
 
 namespace glint {
 
-inline constexpr const char* kExportExtensions[] = {".mtl", ".gltf"};
+inline constexpr const char* kExportExtensions[] = {".mtl", ".gltf", ".mtlx"};
 bool isExportPath(const std::string& path);  // ends in one of them (any case)
 
 // The text for `outputPath` (its extension, any case, picks the format) and the warnings about

@@ -1,9 +1,7 @@
-// glTF 2.0 materials and lights: importing pbrMetallicRoughness (+ KHR_materials_ior, _specular,
-// _transmission, _volume; _clearcoat and _emissive_strength are read and reported, not rendered)
-// into Glint's Cook-Torrance / glass models and KHR_lights_punctual lights with their photometric
-// units converted; exporting a material on a UV sphere, plus lights, as a self-contained .gltf.
-// A dielectric's baseColorTexture and any normalTexture (image files) become material textures;
-// other textures are kept as references. Meshes, animations and cameras are not read here.
+// glTF 2.0 materials and lights: importing pbrMetallicRoughness with its textures and the
+// KHR_materials_* extensions onto the openpbr model (gltf_openpbr.h), and KHR_lights_punctual
+// lights with their photometric units converted; exporting a material on a UV sphere, plus
+// lights, as a .gltf with the geometry embedded. Meshes, animations and cameras are not read here.
 #pragma once
 
 #include <span>
@@ -18,10 +16,11 @@ namespace glint {
 Result<ImportedFile> parseGltf(const std::string& text, const std::string& file);
 Result<ImportedFile> loadGltf(const std::string& path);
 
-// A .gltf with one node: a UV sphere of radius 1 carrying `material`, the buffer embedded as a
-// base64 data URI, and one node per light (KHR_lights_punctual). Warnings say what glTF cannot
-// hold (e.g. an ambient light, a Beckmann distribution).
-ExportedText writeGltf(const ImportedMaterial& material, std::span<const Light> lights);
+// A .gltf with one node: a UV sphere of radius 1 (with texture coordinates) carrying `material`,
+// the buffer embedded as a base64 data URI, and one node per light (KHR_lights_punctual).
+// Texture images are referenced relative to the folder of `targetFile` (absolute when it is "").
+// Warnings say what glTF cannot hold (e.g. an ambient light, a Beckmann distribution).
+ExportedText writeGltf(const ImportedMaterial& material, std::span<const Light> lights, const std::string& targetFile = "");
 
 // Photometric ↔ radiometric light units at 683 lm/W weighted by the luminance Y of the colour
 // (light/photometry.h): glTF point and spot intensity in cd ↔ Glint's power Φ in W of the

@@ -1,5 +1,6 @@
-// glTF 2.0 export (see gltf.h): one UV sphere carrying the material, the lights as nodes with
-// KHR_lights_punctual, the geometry in one buffer embedded as a base64 data URI.
+// glTF 2.0 export (see gltf.h): one UV sphere carrying the material (openpbr through
+// gltf_openpbr.h, with its textures), the lights as nodes with KHR_lights_punctual, the geometry
+// in one buffer embedded as a base64 data URI.
 // Sections: geometry buffer · material · lights · assembly.
 #include "interchange/gltf.h"
 
@@ -13,6 +14,8 @@
 #include "brdf/fresnel.h"
 #include "geometry/mesh.h"
 #include "interchange/base64.h"
+#include "interchange/gltf_openpbr.h"
+#include "interchange/gltf_textures.h"
 #include "interchange/material_values.h"
 #include "interchange/measured_brdf.h"
 #include "light/photometry.h"
@@ -35,7 +38,8 @@ void append(std::vector<uint8_t>& bytes, const T& value) {
     bytes.insert(bytes.end(), raw, raw + sizeof(T));
 }
 
-// Positions, normals (float VEC3 each) then indices (uint16), with accessors and views.
+// Positions, normals (float VEC3 each), texture coordinates (float VEC2, glTF's v down: 1 − Glint's
+// v) then indices (uint16), with accessors and views.
 void addSphere(json& gltf) {
     const Mesh sphere = makeUvSphere(glm::vec3(0.0f), 1.0f, kSphereSegments, kSphereRings);
     std::vector<uint8_t> bytes;
@@ -48,8 +52,10 @@ void addSphere(json& gltf) {
     const size_t positionBytes = bytes.size();
     for (const Vertex& vertex : sphere.vertices) append(bytes, vertex.normal);
     const size_t normalBytes = bytes.size() - positionBytes;
+    for (const Vertex& vertex : sphere.vertices) append(bytes, glm::vec2(vertex.uv.x, 1.0f - vertex.uv.y));
+    const size_t uvBytes = bytes.size() - positionBytes - normalBytes;
     for (uint32_t index : sphere.indices) append(bytes, static_cast<uint16_t>(index));
-    const size_t indexBytes = bytes.size() - positionBytes - normalBytes;
+    const size_t indexBytes = bytes.size() - positionBytes - normalBytes - uvBytes;
     while (bytes.size() % 4) bytes.push_back(0);  // buffer length a multiple of 4 (§5.9)
     const int vertexCount = static_cast<int>(sphere.vertices.size());
     gltf["buffers"] = json::array({{{"byteLength", bytes.size()},
@@ -57,24 +63,26 @@ void addSphere(json& gltf) {
     gltf["bufferViews"] = json::array({
         {{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positionBytes}, {"target", kArrayBuffer}},
         {{"buffer", 0}, {"byteOffset", positionBytes}, {"byteLength", normalBytes}, {"target", kArrayBuffer}},
-        {{"buffer", 0}, {"byteOffset", positionBytes + normalBytes}, {"byteLength", indexBytes}, {"target", kElementArrayBuffer}},
+        {{"buffer", 0}, {"byteOffset", positionBytes + normalBytes}, {"byteLength", uvBytes}, {"target", kArrayBuffer}},
+        {{"buffer", 0}, {"byteOffset", positionBytes + normalBytes + uvBytes}, {"byteLength", indexBytes}, {"target", kElementArrayBuffer}},
     });
     gltf["accessors"] = json::array({
         {{"bufferView", 0}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"},
          {"min", {low.x, low.y, low.z}}, {"max", {high.x, high.y, high.z}}},
         {{"bufferView", 1}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}},
-        {{"bufferView", 2}, {"componentType", kUnsignedShort}, {"count", sphere.indices.size()}, {"type", "SCALAR"}},
+        {{"bufferView", 2}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC2"}},
+        {{"bufferView", 3}, {"componentType", kUnsignedShort}, {"count", sphere.indices.size()}, {"type", "SCALAR"}},
     });
     gltf["meshes"] = json::array({{{"name", "sphere"},
-                                   {"primitives", json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
-                                                                {"indices", 2},
+                                   {"primitives", json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+                                                                {"indices", 3},
                                                                 {"material", 0}}})}}});
 }
 
 // --- material -------------------------------------------------------------------------------
 
 
-// Glint → glTF: Cook-Torrance with κ = 0 is a dielectric (baseColor = ρ_d, ior = n); with κ > 0
+// Glint → glTF for the models other than openpbr: Cook-Torrance with κ = 0 is a dielectric (baseColor = ρ_d, ior = n); with κ > 0
 // a metal (baseColor = F0 of n + iκ); glass is a transmitting dielectric with volume absorption.
 // Other models go to the nearest metallic-roughness material, with a warning.
 json materialJson(const Material& material, std::set<std::string>& extensionsUsed, std::vector<Diagnostic>& warnings) {
@@ -143,6 +151,9 @@ json materialJson(const Material& material, std::set<std::string>& extensionsUse
         case BrdfModel::Retroreflective:
             dielectric(paramValue(material, "albedo"), glm::vec3(1.5f), 1.0f);
             lost("written as a rough dielectric (roughness 1) with base colour = albedo");
+            break;
+        case BrdfModel::OpenPbr:  // gltfOpenPbrMaterial (gltf_openpbr.h)
+            GLINT_CHECK(false);
             break;
         case BrdfModel::BlinnPhong:
         case BrdfModel::Phong:
@@ -219,15 +230,26 @@ void addLights(json& gltf, std::span<const Light> lights, std::vector<Diagnostic
 
 // --- assembly -------------------------------------------------------------------------------
 
-ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> lights) {
+ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> lights, const std::string& targetFile) {
     ExportedText out;
     std::set<std::string> extensionsUsed;
+    GltfTextureWriter textures(targetFile);
     json gltf = {{"asset", {{"version", "2.0"}, {"generator", "Glint"}}}, {"scene", 0}};
     gltf["scenes"] = json::array({{{"nodes", json::array({0})}}});
     gltf["nodes"] = json::array({{{"name", "sphere"}, {"mesh", 0}}});
     addSphere(gltf);
-    gltf["materials"] = json::array({materialJson(imported.material, extensionsUsed, out.warnings)});
-    if (!imported.textures.empty())
+    const bool openPbr = imported.material.model == BrdfModel::OpenPbr && !imported.material.measured;
+    if (openPbr) {
+        std::vector<std::string> used;
+        gltf["materials"] = json::array({gltfOpenPbrMaterial(imported, textures, used, out.warnings)});
+        extensionsUsed.insert(used.begin(), used.end());
+        textures.writeInto(gltf);
+    } else {
+        gltf["materials"] = json::array({materialJson(imported.material, extensionsUsed, out.warnings)});
+        if (!imported.material.textures.empty())
+            out.warnings.push_back(makeError("warning: material textures are written to glTF for the openpbr model only"));
+    }
+    if (!imported.textures.empty() && imported.gltfKept.empty())
         out.warnings.push_back(makeError("warning: texture references are not written to glTF (Glint does not render them)"));
     addLights(gltf, lights, out.warnings);
     if (gltf.contains("extensions")) extensionsUsed.insert("KHR_lights_punctual");

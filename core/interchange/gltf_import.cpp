@@ -1,20 +1,16 @@
-// glTF 2.0 material and light import (see gltf.h). Mapping after the glTF 2.0 specification,
-// Appendix B (BRDF implementation), and the KHR_materials_* / KHR_lights_punctual extension specs.
-// Sections: units · materials · extensions · lights and nodes · entry points.
+// glTF 2.0 material and light import (see gltf.h): materials through gltf_openpbr.h, lights
+// after KHR_lights_punctual. Sections: units · materials · lights and nodes · entry points.
 #include "interchange/gltf.h"
 
 #include <cmath>
 #include <filesystem>
-#include <set>
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "interchange/material_values.h"
+#include "interchange/gltf_openpbr.h"
 #include "light/photometry.h"
 #include "math/constants.h"
 #include "scene/json_object_reader.h"
-#include "texture/material_texture.h"
-#include "texture/texture_image.h"
 #include "util/file_io.h"
 
 namespace glint {
@@ -37,12 +33,12 @@ float luxFromIrradiance(float irradiance, glm::vec3 color) { return kLumensPerWa
 
 namespace {
 
-// --- materials ------------------------------------------------------------------------------
+// --- materials (gltf_openpbr.h) ---------------------------------------------------------------
 
-// Extensions whose absence from Glint does not change what the file means to a viewer.
-const std::set<std::string> kKnownExtensions = {
-    "KHR_materials_ior", "KHR_materials_specular", "KHR_materials_transmission", "KHR_materials_volume",
-    "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_lights_punctual"};
+// Extensions a file may require: those whose absence from Glint does not change what it means.
+bool isKnownExtension(const std::string& name) {
+    return isGltfMaterialExtension(name) || name == "KHR_lights_punctual" || name == "KHR_texture_transform";
+}
 
 struct Context {
     const JsonDocument& document;
@@ -52,235 +48,6 @@ struct Context {
         warnings.push_back(makeError("warning: " + pointer + ": " + message, document.locate(pointer)));
     }
 };
-
-glm::vec4 readVec4(ObjectReader& reader, const std::string& key, glm::vec4 fallback, Bounds bounds) {
-    if (!reader.has(key)) return fallback;
-    const nlohmann::json& value = reader.take(key);
-    const std::string pointer = appendPointer(reader.pointer(), key);
-    if (!value.is_array() || value.size() != 4) reader.fail(key, "expected an array of 4 numbers");
-    glm::vec4 result;
-    for (int i = 0; i < 4; ++i)
-        result[i] = static_cast<float>(reader.checkedNumber(value[i], appendPointer(pointer, std::to_string(i)),
-                                                            key + "[" + std::to_string(i) + "]", bounds));
-    return result;
-}
-
-// A texture slot ({"index": n, ...}) kept as a reference to the image's URI.
-void readTexture(const Context& context, ObjectReader& reader, const std::string& key, const nlohmann::json& root,
-                 ImportedMaterial& imported) {
-    if (!reader.has(key)) return;
-    ObjectReader texture = reader.object(key);
-    const int index = texture.integer("index", -1, 0, 1'000'000);
-    if (index < 0) texture.failHere("a texture needs an \"index\"");
-    std::string path = "(texture " + std::to_string(index) + ")";
-    const auto& textures = root.contains("textures") ? root["textures"] : nlohmann::json();
-    if (!textures.is_array() || index >= static_cast<int>(textures.size()))
-        texture.fail("index", "texture " + std::to_string(index) + " does not exist");
-    const auto& entry = textures[index];
-    if (entry.is_object() && entry.contains("source") && entry["source"].is_number_unsigned() && root.contains("images") &&
-        root["images"].is_array() && entry["source"].get<size_t>() < root["images"].size()) {
-        const auto& image = root["images"][entry["source"].get<size_t>()];
-        if (image.is_object() && image.contains("uri") && image["uri"].is_string()) {
-            const std::string uri = image["uri"].get<std::string>();
-            path = uri.rfind("data:", 0) == 0 ? "(embedded data URI)" : uri;
-        }
-    }
-    imported.textures.push_back({key, path, ""});
-}
-
-// The textures Glint's material textures (texture/material_texture.h) carry: baseColorTexture as
-// the diffuse albedo of a dielectric (metallicFactor 0) and normalTexture as the normal map, from
-// image files beside the glTF. The others stay references, with a warning each: they belong to a
-// standard surface Glint does not have yet.
-void useTextures(const Context& context, const std::string& pointer, ImportedMaterial& imported, glm::vec4 baseColor,
-                 float metallic) {
-    for (const TextureReference& reference : imported.textures) {
-        const bool baseColorSlot = reference.slot == "baseColorTexture";
-        const std::string where = pointer + (baseColorSlot || reference.slot == "metallicRoughnessTexture"
-                                                 ? "/pbrMetallicRoughness/" + reference.slot
-                                                 : "/" + reference.slot);
-        const bool carried = (baseColorSlot && imported.material.model == BrdfModel::CookTorrance && metallic == 0.0f) ||
-                             reference.slot == "normalTexture";
-        if (!carried) {
-            context.warn(where, "texture kept as a reference (" + reference.path + ") but not rendered: Glint's textures carry " +
-                                    "baseColorTexture on a dielectric (metallicFactor 0) and normalTexture only");
-            continue;
-        }
-        if (reference.path.empty() || reference.path[0] == '(') {
-            context.warn(where, "texture " + reference.path + " not rendered: Glint reads texture images from files only");
-            continue;
-        }
-        MaterialTexture texture;
-        texture.parameter = baseColorSlot ? "diffuse_albedo" : kNormalMapKey;
-        texture.kind = TextureKind::Image;
-        texture.file = (context.folder / reference.path).lexically_normal().string();
-        texture.colorSpace = baseColorSlot ? TextureColorSpace::Srgb : TextureColorSpace::Linear;  // glTF 2.0 §3.9.3, §3.9.4
-        auto image = loadTextureImage(texture.file, texture.colorSpace);
-        if (!image) {
-            context.warn(where, "texture not rendered: " + image.error().format());
-            continue;
-        }
-        texture.image = *image;
-        imported.material.textures.push_back(std::move(texture));
-        if (baseColorSlot && glm::vec3(baseColor) != glm::vec3(1.0f))
-            context.warn(where, "the texture is used as the albedo; baseColorFactor is not multiplied into it");
-    }
-}
-
-// F0 → index: a dielectric n = (1 + √F0)/(1 − √F0) (inverting F0 = ((n−1)/(n+1))²); a conductor
-// with n = 1 and κ = 2√(F0/(1 − F0)) (inverting F0 = κ²/(4 + κ²)).
-float dielectricIorForF0(float f0) { return (1.0f + std::sqrt(f0)) / (1.0f - std::sqrt(f0)); }
-float conductorExtinctionForF0(float f0) { return 2.0f * std::sqrt(f0 / (1.0f - f0)); }
-
-ImportedMaterial readMaterial(const Context& fileContext, ObjectReader& reader, const nlohmann::json& root, int index) {
-    ImportedMaterial imported;
-    const Context context{fileContext.document, imported.warnings, fileContext.folder};  // this material's warnings stay with it
-    const std::string name = reader.string("name", "gltf material " + std::to_string(index));
-    glm::vec4 baseColor(1.0f);
-    float metallic = 1.0f, roughness = 1.0f;
-    if (reader.has("pbrMetallicRoughness")) {
-        ObjectReader pbr = reader.object("pbrMetallicRoughness");
-        baseColor = readVec4(pbr, "baseColorFactor", baseColor, Bounds::between(0, 1));
-        metallic = static_cast<float>(pbr.number("metallicFactor", metallic, Bounds::between(0, 1)));
-        roughness = static_cast<float>(pbr.number("roughnessFactor", roughness, Bounds::between(0, 1)));
-        readTexture(context, pbr, "baseColorTexture", root, imported);
-        readTexture(context, pbr, "metallicRoughnessTexture", root, imported);
-        pbr.expect({"extensions", "extras"});
-        pbr.rejectUnknownKeys();
-    }
-    for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"}) readTexture(context, reader, key, root, imported);
-    const glm::vec3 emissive = reader.vec3("emissiveFactor", glm::vec3(0.0f), Bounds::between(0, 1));
-    const std::string alphaMode = reader.string("alphaMode", "OPAQUE");
-    if (alphaMode != "OPAQUE" && alphaMode != "MASK" && alphaMode != "BLEND")
-        reader.fail("alphaMode", "expected \"OPAQUE\", \"MASK\" or \"BLEND\"");
-    if (alphaMode != "OPAQUE" || baseColor.a < 1.0f)
-        context.warn(reader.pointer(), "alpha (alphaMode " + alphaMode + ", alpha " + std::to_string(baseColor.a) +
-                                           ") is ignored: Glint draws opaque surfaces");
-    reader.number("alphaCutoff", 0.5, Bounds::nonNegative());
-    reader.boolean("doubleSided", false);
-    reader.expect({"extras"});
-
-    // Extensions (each optional).
-    float ior = 1.5f, specularFactor = 1.0f, transmission = 0.0f, emissiveStrength = 1.0f;
-    glm::vec3 specularColor(1.0f), attenuationColor(1.0f);
-    float attenuationDistance = std::numeric_limits<float>::infinity();
-    if (reader.has("extensions")) {
-        ObjectReader extensions = reader.object("extensions");
-        if (extensions.has("KHR_materials_ior")) {
-            ObjectReader extension = extensions.object("KHR_materials_ior");
-            ior = static_cast<float>(extension.number("ior", ior, Bounds::between(1, 1e6)));
-            extension.expect({"extras"});
-            extension.rejectUnknownKeys();
-        }
-        if (extensions.has("KHR_materials_specular")) {
-            ObjectReader extension = extensions.object("KHR_materials_specular");
-            specularFactor = static_cast<float>(extension.number("specularFactor", 1.0, Bounds::between(0, 1)));
-            specularColor = extension.vec3("specularColorFactor", specularColor, Bounds::nonNegative());
-            readTexture(context, extension, "specularTexture", root, imported);
-            readTexture(context, extension, "specularColorTexture", root, imported);
-            extension.expect({"extras"});
-            extension.rejectUnknownKeys();
-        }
-        if (extensions.has("KHR_materials_transmission")) {
-            ObjectReader extension = extensions.object("KHR_materials_transmission");
-            transmission = static_cast<float>(extension.number("transmissionFactor", 0.0, Bounds::between(0, 1)));
-            readTexture(context, extension, "transmissionTexture", root, imported);
-            extension.expect({"extras"});
-            extension.rejectUnknownKeys();
-        }
-        if (extensions.has("KHR_materials_volume")) {
-            ObjectReader extension = extensions.object("KHR_materials_volume");
-            extension.number("thicknessFactor", 0.0, Bounds::nonNegative());
-            attenuationDistance = static_cast<float>(
-                extension.number("attenuationDistance", std::numeric_limits<double>::max(), Bounds::positive()));
-            attenuationColor = extension.vec3("attenuationColor", attenuationColor, Bounds::between(0, 1));
-            readTexture(context, extension, "thicknessTexture", root, imported);
-            extension.expect({"extras"});
-            extension.rejectUnknownKeys();
-        }
-        if (extensions.has("KHR_materials_clearcoat")) {
-            ObjectReader extension = extensions.object("KHR_materials_clearcoat");
-            const double clearcoat = extension.number("clearcoatFactor", 0.0, Bounds::between(0, 1));
-            extension.number("clearcoatRoughnessFactor", 0.0, Bounds::between(0, 1));
-            for (const char* key : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
-                readTexture(context, extension, key, root, imported);
-            extension.expect({"extras"});
-            extension.rejectUnknownKeys();
-            if (clearcoat > 0)
-                context.warn(appendPointer(extensions.pointer(), "KHR_materials_clearcoat"),
-                             "Glint's Cook-Torrance has no clear-coat layer; the coat is ignored (the base layer is imported)");
-        }
-        if (extensions.has("KHR_materials_emissive_strength")) {
-            ObjectReader extension = extensions.object("KHR_materials_emissive_strength");
-            emissiveStrength = static_cast<float>(extension.number("emissiveStrength", 1.0, Bounds::nonNegative()));
-            extension.expect({"extras"});
-            extension.rejectUnknownKeys();
-        }
-        for (const auto& [key, value] : reader.take("extensions").items())
-            if (!kKnownExtensions.count(key))
-                context.warn(appendPointer(extensions.pointer(), key), "extension not supported by Glint; ignored");
-    }
-    if (emissive != glm::vec3(0.0f) && emissiveStrength > 0.0f)
-        context.warn(reader.pointer(), "emission (emissiveFactor × strength " + std::to_string(emissiveStrength) +
-                                           ") is ignored: Glint's materials do not emit light");
-    reader.rejectUnknownKeys();
-
-    Material& material = imported.material;
-    if (transmission > 0.0f) {
-        material = Material::withDefaults(name, BrdfModel::Glass);
-        if (ior > 4.0f) reader.fail("extensions", "KHR_materials_ior: ior " + std::to_string(ior) + " is above glass's limit 4");
-        setParam(material, "ior", ior);
-        glm::vec3 absorption(0.0f);  // KHR_materials_volume: σ = −ln(attenuationColor) / attenuationDistance
-        if (std::isfinite(attenuationDistance) && attenuationDistance < 1e30f) {
-            for (int c = 0; c < 3; ++c) {
-                if (attenuationColor[c] <= 0.0f)
-                    reader.fail("extensions", "KHR_materials_volume: attenuationColor 0 means infinite absorption, which Glint refuses");
-                absorption[c] = -std::log(attenuationColor[c]) / attenuationDistance;
-            }
-        }
-        setParam(material, "absorption", absorption);
-        if (transmission < 1.0f)
-            context.warn(reader.pointer(), "transmissionFactor " + std::to_string(transmission) +
-                                               " imported as a fully transmitting Glint glass (exact Fresnel)");
-        if (roughness > 0.0f)
-            context.warn(reader.pointer(), "Glint's glass is smooth: roughness " + std::to_string(roughness) + " is ignored");
-        if (glm::vec3(baseColor) != glm::vec3(1.0f))
-            context.warn(reader.pointer(), "a transmitting material's base colour is ignored (use KHR_materials_volume attenuation)");
-    } else {
-        material = Material::withDefaults(name, BrdfModel::CookTorrance);
-        // glTF Appendix B: dielectric F0 = min(((n−1)/(n+1))² · specularColor, 1) · specularFactor;
-        // mix(dielectric, metal, metallic) with metal F0 = baseColor, diffuse = baseColor·(1 − metallic).
-        const float dielectricF0 = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
-        const glm::vec3 specularF0 = glm::min(glm::vec3(dielectricF0) * specularColor, glm::vec3(1.0f)) * specularFactor;
-        const glm::vec3 f0 = glm::mix(specularF0, glm::vec3(baseColor), metallic);
-        setParam(material, "diffuse_albedo", glm::vec3(baseColor) * (1.0f - metallic));
-        glm::vec3 iorRgb(1.0f), extinction(0.0f);
-        const bool plainDielectric = metallic == 0.0f && specularColor == glm::vec3(1.0f) && specularFactor == 1.0f;
-        for (int c = 0; c < 3; ++c) {
-            const float limited = std::min(f0[c], 0.999f);
-            if (plainDielectric) iorRgb[c] = ior;
-            else if (metallic == 0.0f && limited > 0.0f) iorRgb[c] = dielectricIorForF0(limited);
-            else extinction[c] = conductorExtinctionForF0(limited);
-        }
-        if (glm::any(glm::greaterThan(f0, glm::vec3(0.999f))))
-            context.warn(reader.pointer(), "a normal-incidence reflectance of 1 is imported as 0.999");
-        if (metallic > 0.0f && metallic < 1.0f)
-            context.warn(reader.pointer(), "metallicFactor " + std::to_string(metallic) +
-                                               " is imported as one lobe with F0 = mix(dielectric F0, baseColor, metallic)");
-        setParam(material, "ior", iorRgb);
-        setParam(material, "extinction", extinction);
-        const float alpha = roughness * roughness;  // glTF's roughness is perceptual: α = r²
-        if (alpha < 0.001f)
-            context.warn(reader.pointer(), "roughness " + std::to_string(roughness) + " is below Glint's α ≥ 0.001; imported as α = 0.001");
-        setParam(material, "roughness", std::max(alpha, 0.001f));
-        setParam(material, "distribution", 1.0f);  // GGX
-        setParam(material, "geometry", 1.0f);      // height-correlated Smith
-        setParam(material, "fresnel", 0.0f);       // Schlick, as glTF's reference BRDF
-    }
-    if (auto problem = findOutOfRange(material)) reader.failHere(*problem);
-    useTextures(context, reader.pointer(), imported, baseColor, metallic);
-    return imported;
-}
 
 // --- lights and nodes -----------------------------------------------------------------------
 
@@ -295,7 +62,7 @@ glm::mat4 localTransform(ObjectReader& node) {
         return matrix;  // column-major, as glTF stores it
     }
     const glm::vec3 translation = node.vec3("translation", glm::vec3(0.0f));
-    const glm::vec4 rotation = readVec4(node, "rotation", {0, 0, 0, 1}, Bounds::between(-1, 1));
+    const glm::vec4 rotation = node.vec4("rotation", {0, 0, 0, 1}, Bounds::between(-1, 1));
     const glm::vec3 scale = node.vec3("scale", glm::vec3(1.0f));
     const glm::quat quaternion(rotation.w, rotation.x, rotation.y, rotation.z);  // glTF stores x, y, z, w
     if (glm::length(rotation) < 1e-6f) node.fail("rotation", "must be a unit quaternion");
@@ -435,13 +202,13 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
             const nlohmann::json& required = root.take("extensionsRequired");
             if (!required.is_array()) root.fail("extensionsRequired", "expected an array of names");
             for (const auto& name : required)
-                if (!name.is_string() || !kKnownExtensions.count(name.get<std::string>()))
+                if (!name.is_string() || !isKnownExtension(name.get<std::string>()))
                     root.fail("extensionsRequired", "the file requires " + name.dump() + ", which Glint does not support");
         }
         if (root.has("materials")) {
             int index = 0;
             for (ObjectReader& material : root.objectArray("materials"))
-                result.materials.push_back(readMaterial(context, material, document->root(), index++));
+                result.materials.push_back(readGltfMaterial(material, document->root(), *document, context.folder.string(), index++));
         }
         readLights(context, root, result);
         const nlohmann::json& meshes = document->root().contains("meshes") ? document->root()["meshes"] : nlohmann::json();

@@ -7,6 +7,7 @@
 
 #include "interchange/glb.h"
 #include "interchange/gltf.h"
+#include "interchange/materialx.h"
 #include "interchange/measured_brdf.h"
 #include "interchange/mtl.h"
 
@@ -18,6 +19,7 @@ constexpr ImportFormat kFormats[] = {
     {".gltf", "glTF 2.0 (materials and KHR_lights_punctual lights)", loadGltf},
     {".glb", "binary glTF 2.0 (materials and KHR_lights_punctual lights)", loadGlb},
     {".binary", "MERL measured BRDF", importMerl},
+    {".mtlx", "MaterialX document (open_pbr_surface, standard_surface, gltf_pbr)", loadMaterialX},
 };
 
 }  // namespace

@@ -12,9 +12,8 @@
 
 namespace glint {
 
-// A texture the source file names, kept for the user and written back on export. Those Glint's
-// material textures carry (a glTF's base colour on a dielectric, its normal map) are also in the
-// material's `textures`; for the rest the material uses its constant values.
+// A texture the source file names that Glint's material textures do not carry (an MTL map, a
+// glTF occlusion map), kept for the user and written back on export.
 struct TextureReference {
     std::string slot;     // the source's name for it: "map_Kd", "baseColorTexture", ...
     std::string path;     // as written in the file (relative to it)
@@ -25,6 +24,11 @@ struct ImportedMaterial {
     Material material;
     std::vector<TextureReference> textures;
     std::vector<Diagnostic> warnings;  // about this material only, located where the source allows
+    // glTF values read but not rendered (occlusionTexture, the volume's thickness, the coat's normal
+    // map, dispersion), as JSON text merged back into the material by writeGltf so that glTF →
+    // Glint → glTF keeps them; a kept texture names its image by "uri" (absolute path or data
+    // URI) instead of "index". Empty when none; not kept once the material is in a scene.
+    std::string gltfKept;
 };
 
 struct ImportedFile {

@@ -234,7 +234,7 @@ ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file) {
     auto warn = [&](const std::string& message) { imported.warnings.push_back(makeError("warning: " + message, where)); };
     imported.textures = block.textures;
     if (!block.textures.empty())
-        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint renders a glTF's base colour and normal textures only)");
+        warn("'" + block.name + "': texture maps are kept as file references but not rendered (Glint renders a glTF's textures, not an MTL's)");
     const bool reflective = block.illum == 3 || block.illum == 5 || block.illum == 8;
     const bool refractive = block.illum == 4 || block.illum == 6 || block.illum == 7 || block.illum == 9;
     if (block.dissolve < 1.0f && !refractive)
@@ -415,6 +415,21 @@ ExportedText writeMtl(std::span<const ImportedMaterial> materials) {
                 exponent = 2.0f / (alpha * alpha) - 2.0f;  // Walter et al. 2007, eq. 33: Phong n ≈ 2/α² − 2
                 if (exponent < 0.0f) exponent = 0.0f;
                 lost("the microfacet lobe is approximated by Blinn-Phong (Ks = F(0°), Ns = 2/α² − 2)");
+                break;
+            }
+            case BrdfModel::OpenPbr: {
+                // The base only: Kd = weight·colour·(1 − metalness); Ks = the specular F0 mixed with the metal's colour.
+                illum = 2;
+                const float metalness = paramScalar(material, "base_metalness");
+                const glm::vec3 color = paramValue(material, "base_color");
+                const float n = paramScalar(material, "specular_ior");
+                const float dielectricF0 = std::min((n - 1.0f) * (n - 1.0f) / ((n + 1.0f) * (n + 1.0f)) * paramScalar(material, "specular_weight"), 1.0f);
+                diffuse = paramScalar(material, "base_weight") * color * (1.0f - metalness);
+                specular = glm::mix(glm::vec3(dielectricF0) * paramValue(material, "specular_color"), color, metalness);
+                const float alpha = std::max(paramScalar(material, "specular_roughness"), 0.03f);
+                exponent = 2.0f / (alpha * alpha * alpha * alpha) - 2.0f;  // α = r², Walter et al. 2007, eq. 33
+                lost("OpenPBR is written as its base with a Blinn-Phong highlight (Ks = F0, Ns = 2/α² − 2); coat, fuzz, "
+                     "transmission, thin film and emission are not kept");
                 break;
             }
             case BrdfModel::Ward:

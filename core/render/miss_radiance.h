@@ -22,6 +22,12 @@ public:
     glm::vec3 operator()(glm::vec3 direction) const {
         return environment_ ? environmentRadiance(*environment_, direction) : backgroundRadiance(background_, direction);
     }
+    // A secondary ray leaving a rough interface: the environment prefiltered for perceptual
+    // roughness r (its GGX lobe around `direction`), else the background unblurred.
+    glm::vec3 rough(glm::vec3 direction, float perceptualRoughness) const {
+        return environment_ ? environmentSpecularRadiance(*environment_, direction, perceptualRoughness)
+                            : backgroundRadiance(background_, direction);
+    }
     // A primary ray: the environment only where it is shown as the background.
     glm::vec3 primary(glm::vec3 direction) const {
         return environment_ && environment_->showAsBackground ? environmentRadiance(*environment_, direction)

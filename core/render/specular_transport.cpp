@@ -4,6 +4,7 @@
 
 #include "brdf/glass.h"
 #include "brdf/mirror.h"
+#include "render/openpbr_transport.h"
 
 namespace glint {
 namespace {
@@ -24,6 +25,10 @@ glm::vec3 traceDeltaLobes(const GlassParams& glass, const TracedRay& ray) {
     const GlassInterface glassInterface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
     return traceGlass(glassInterface, glass.absorption, ray.miss, ray.sphere, ray.position, ray.normal,
                       ray.towardsViewer, ray.viewerDistance);
+}
+
+glm::vec3 traceDeltaLobes(const OpenPbrParams& p, const TracedRay& ray) {
+    return transportOpenpbr(p, ray.miss, ray.sphere, ray.position, ray.normal, ray.towardsViewer);
 }
 
 }  // namespace

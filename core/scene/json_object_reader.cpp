@@ -136,6 +136,13 @@ glm::vec2 ObjectReader::vec2(const std::string& key, glm::vec2 fallback, Bounds 
     return {n[0], n[1]};
 }
 
+glm::vec4 ObjectReader::vec4(const std::string& key, glm::vec4 fallback, Bounds bounds) {
+    known_.insert(key);
+    if (!has(key)) return fallback;
+    const auto n = numberArray(key, 4, bounds);
+    return {n[0], n[1], n[2], n[3]};
+}
+
 int ObjectReader::choice(const std::string& key, std::span<const char* const> ids, int fallback) {
     if (!has(key)) {
         known_.insert(key);

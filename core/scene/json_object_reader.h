@@ -52,6 +52,7 @@ public:
     std::string requiredString(const std::string& key);
     glm::vec3 vec3(const std::string& key, glm::vec3 fallback, Bounds bounds = Bounds::any());
     glm::vec2 vec2(const std::string& key, glm::vec2 fallback, Bounds bounds = Bounds::any());
+    glm::vec4 vec4(const std::string& key, glm::vec4 fallback, Bounds bounds = Bounds::any());
     // A string that must be one of `ids`; returns its index.
     int choice(const std::string& key, std::span<const char* const> ids, int fallback);
 

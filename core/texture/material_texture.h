@@ -45,8 +45,16 @@ struct MaterialTexture {
     TextureFilter filter = TextureFilter::Trilinear;
     glm::vec2 range{0.0f, 1.0f};  // scalar parameters: value = mix(range.x, range.y, texel)
     std::shared_ptr<const TextureImage> image;  // decoded when the material is read
-    // Image and checker: repetitions of the texture across the shape's UV square.
+    // Image and checker: the UV transform uv' = R(rotation)·(tiling ⊙ uv) + offset, in Glint's UV
+    // (v up), R turning counter-clockwise; tiling is the repetitions across the shape's UV square
+    // (negative mirrors). glTF's KHR_texture_transform converts to it (interchange/gltf_textures.h).
     glm::vec2 tiling{1.0f, 1.0f};
+    glm::vec2 offset{0.0f, 0.0f};
+    float rotation = 0.0f;  // radians
+    // Colour parameters: multiplies the texture's value (glTF's baseColorFactor, emissiveFactor).
+    glm::vec3 colorFactor{1.0f};
+    // Normal map: scales the tangent-space x and y before normalising (glTF's normalTexture.scale).
+    float normalScale = 1.0f;
     // Checker, marble, wood: the two values (scalars use .x), in the parameter's unit.
     glm::vec3 valueA{0.0f}, valueB{1.0f};
     // Marble and wood: spatial frequency [1/m] of the object-space position, and turbulence.

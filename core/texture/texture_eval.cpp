@@ -37,6 +37,12 @@ TexturePoint texturePointOn(const Shape& shape, glm::vec3 position, std::optiona
     return point;
 }
 
+glm::vec2 transformedUv(const MaterialTexture& texture, glm::vec2 uv) {
+    const glm::vec2 scaled = uv * texture.tiling;
+    const float c = std::cos(texture.rotation), s = std::sin(texture.rotation);
+    return glm::vec2(c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y) + texture.offset;
+}
+
 glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear) {
     const float x = uv.x * image.width, y = uv.y * image.height;
     if (!bilinear)
@@ -54,8 +60,8 @@ glm::vec4 evaluateTexture(const MaterialTexture& texture, const TexturePoint& po
     float weight = 0.0f;
     switch (texture.kind) {
         case TextureKind::Image:
-            return sampleImage(*texture.image, point.uv * texture.tiling, texture.filter != TextureFilter::Nearest);
-        case TextureKind::Checker: weight = checkerWeight(point.uv * texture.tiling); break;
+            return sampleImage(*texture.image, transformedUv(texture, point.uv), texture.filter != TextureFilter::Nearest);
+        case TextureKind::Checker: weight = checkerWeight(transformedUv(texture, point.uv)); break;
         case TextureKind::Marble:
             weight = marbleWeight(point.objectPosition, texture.frequency, texture.turbulence, texture.octaves);
             break;
@@ -76,7 +82,8 @@ std::vector<float> texturedValues(const Material& material, const TexturePoint& 
         float* value = values.data() + packedOffset(table, index);
         const glm::vec4 sampled = evaluateTexture(texture, point);
         if (table[index].kind == ParamKind::Color) {
-            value[0] = sampled.r, value[1] = sampled.g, value[2] = sampled.b;
+            const glm::vec3 color = glm::vec3(sampled) * texture.colorFactor;
+            value[0] = color.r, value[1] = color.g, value[2] = color.b;
         } else if (texture.kind == TextureKind::Image) {
             value[0] = glm::mix(texture.range.x, texture.range.y, channelOf(sampled, texture.channel));
         } else {
@@ -89,7 +96,8 @@ std::vector<float> texturedValues(const Material& material, const TexturePoint& 
 ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame) {
     for (const MaterialTexture& texture : material.textures) {
         if (texture.parameter != kNormalMapKey) continue;
-        const glm::vec3 tangentSpace = 2.0f * glm::vec3(evaluateTexture(texture, point)) - 1.0f;
+        const glm::vec3 tangentSpace =
+            (2.0f * glm::vec3(evaluateTexture(texture, point)) - 1.0f) * glm::vec3(texture.normalScale, texture.normalScale, 1.0f);
         const glm::vec3 normal = frame.toWorld(tangentSpace);
         const float length = glm::length(normal);
         if (length < 1e-6f) return frame;  // a (½, ½, ½) texel: no direction; keep the surface's

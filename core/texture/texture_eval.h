@@ -26,6 +26,8 @@ glm::vec3 shapeCenter(const Shape& shape);
 // corner −tangent −bitangent.
 TexturePoint texturePointOn(const Shape& shape, glm::vec3 position, std::optional<glm::vec2> triangleUv = std::nullopt);
 
+// The texture's UV transform applied to the shape's uv (material_texture.h).
+glm::vec2 transformedUv(const MaterialTexture& texture, glm::vec2 uv);
 // OpenGL-style sampling of level 0: texel centres at (i + ½)/size, coordinates wrap (REPEAT).
 glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear);
 // The texture's raw value: an image's texel (linear RGBA), or mix(A, B, weight) of a procedural one.

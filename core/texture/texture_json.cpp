@@ -1,6 +1,7 @@
 // The "textures" object of a material (see texture_json.h).
 #include "texture/texture_json.h"
 
+#include "scene/json_vectors.h"
 #include "texture/texture_edit.h"
 #include "texture/texture_image.h"
 #include "util/referenced_path.h"
@@ -40,7 +41,11 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
         texture.file = resolveReferencedPath(file, referencingFile).string();
         texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(texture.colorSpace)));
         texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(texture.filter)));
-        texture.tiling = reader.vec2("tiling", texture.tiling, Bounds::positive());
+        texture.tiling = reader.vec2("tiling", texture.tiling);  // negative mirrors (glTF's texture transform allows it)
+        texture.offset = reader.vec2("offset", texture.offset);
+        texture.rotation = static_cast<float>(reader.number("rotation", texture.rotation));
+        if (spec && spec->kind == ParamKind::Color) texture.colorFactor = reader.vec3("factor", texture.colorFactor, Bounds::nonNegative());
+        if (!spec) texture.normalScale = static_cast<float>(reader.number("scale", texture.normalScale));
         if (spec && spec->kind == ParamKind::Scalar) {
             // value = mix(min, max, texel)
             texture.channel = static_cast<TextureChannel>(reader.choice("channel", kChannels, 0));
@@ -103,6 +108,10 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
                 entry["color_space"] = kColorSpaces[static_cast<int>(texture.colorSpace)];
                 entry["filter"] = kFilters[static_cast<int>(texture.filter)];
                 entry["tiling"] = {texture.tiling.x, texture.tiling.y};
+                if (texture.offset != glm::vec2(0.0f)) entry["offset"] = {texture.offset.x, texture.offset.y};
+                if (texture.rotation != 0.0f) entry["rotation"] = texture.rotation;
+                if (color && texture.colorFactor != glm::vec3(1.0f)) entry["factor"] = vec3Json(texture.colorFactor);
+                if (index < 0 && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
                 if (index >= 0 && !color) {
                     entry["channel"] = kChannels[static_cast<int>(texture.channel)];
                     entry["min"] = texture.range.x;

@@ -1,5 +1,5 @@
 // Small text helpers shared by Glint's line-based parsers (.brdf, .bparam, .mtl, .obj) and its
-// file-type checks, and identifiers shown as words. Nothing here knows any file format.
+// file-type checks, identifiers shown as words, and markup escaping. Nothing here knows any file format.
 #pragma once
 
 #include <algorithm>
@@ -32,6 +32,26 @@ inline std::string readableName(std::string_view identifier) {
     std::replace(words.begin(), words.end(), '_', ' ');
     if (!words.empty()) words[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(words[0])));
     return words;
+}
+
+// Escapes &, <, >, " and ' for HTML and XML text and attributes; drops control characters
+// that XML 1.0 cannot carry.
+inline std::string escapeMarkup(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&#39;"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') break;
+                out += c;
+        }
+    }
+    return out;
 }
 
 }  // namespace glint

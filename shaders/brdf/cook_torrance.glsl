@@ -2,6 +2,7 @@
 // core/brdf/cook_torrance.h; MaterialParams is generated from its parameter table (fields:
 // diffuse_albedo, ior, extinction, roughness, distribution, geometry, fresnel).
 #include "brdf/microfacet.glsl"
+#include "brdf/microfacet_fresnel.glsl"
 
 float cookTorranceSpecular(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     float cosIn = cosTheta(frame, wi), cosOut = cosTheta(frame, wo);

@@ -2,6 +2,7 @@
 // twin of core/brdf/ggx_anisotropic.h (fields: diffuse_albedo, ior, extinction, roughness_x,
 // roughness_y, fresnel).
 #include "brdf/microfacet.glsl"
+#include "brdf/microfacet_fresnel.glsl"
 
 float ggxAnisotropicSpecular(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     vec3 inLocal = toLocal(frame, wi), outLocal = toLocal(frame, wo);

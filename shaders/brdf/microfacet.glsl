@@ -1,11 +1,5 @@
-// Microfacet terms: D (Beckmann, GGX, anisotropic GGX), G (V-cavity, height-correlated Smith) and
-// the Fresnel choice. GLSL twin of core/brdf/microfacet.h; no BRDF here.
-#include "brdf/fresnel.glsl"
-
-vec3 microfacetFresnel(int mode, float cosDifference, vec3 ior, vec3 extinction) {
-    if (mode == FRESNEL_SCHLICK) return fresnelSchlick(fresnelF0(ior, extinction), cosDifference);
-    return fresnelComplexIndex(cosDifference, ior, extinction);
-}
+// Microfacet terms: D (Beckmann, GGX, anisotropic GGX) and G (V-cavity, height-correlated Smith).
+// GLSL twin of core/brdf/microfacet.h (its Fresnel choice: microfacet_fresnel.glsl); no BRDF here.
 
 float sinSquared(vec3 normal, vec3 halfway) {
     vec3 crossed = cross(normal, halfway);

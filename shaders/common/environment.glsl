@@ -170,6 +170,11 @@ vec3 missRadiance(vec3 direction) {
     return environmentEnabled() ? environmentRadiance(direction) : backgroundRadiance(direction);
 }
 
+// What a ray leaving a rough interface sees (twin of MissRadiance::rough).
+vec3 missRadianceRough(vec3 direction, float perceptualRoughness) {
+    return environmentEnabled() ? environmentSpecularRadiance(direction, perceptualRoughness) : backgroundRadiance(direction);
+}
+
 vec3 primaryMissRadiance(vec3 direction) {
     return environmentShown() ? environmentRadiance(direction) : backgroundRadiance(direction);
 }

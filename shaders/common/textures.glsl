@@ -17,6 +17,8 @@ uniform vec4 textureValueA[MAX_MATERIAL_TEXTURES];     // rgb: procedural value 
 uniform vec4 textureValueB[MAX_MATERIAL_TEXTURES];     // rgb: procedural value B
 uniform vec4 textureScale[MAX_MATERIAL_TEXTURES];      // xy: tiling; z: frequency [1/m]; w: turbulence
 uniform vec4 textureRange[MAX_MATERIAL_TEXTURES];      // xy: scalar images map texel t to mix(x, y, t)
+uniform vec4 textureTransform[MAX_MATERIAL_TEXTURES];  // xy: UV offset; z: UV rotation [rad]; w: normal-map scale
+uniform vec3 textureColorFactor[MAX_MATERIAL_TEXTURES];  // colour parameters: multiplies the value
 
 uniform vec3 objectCenter;  // [m] origin of the object-space position (the shape's centre)
 
@@ -78,24 +80,31 @@ float checkerWeight(vec2 tiledUv) {
 
 // --- evaluation ------------------------------------------------------------------------------
 
+// The linear part of the texture's UV transform, R(rotation)·diag(tiling) (twin of transformedUv()).
+mat2 uvTransform(int slot) {
+    float c = cos(textureTransform[slot].z), s = sin(textureTransform[slot].z);
+    return mat2(c, s, -s, c) * mat2(textureScale[slot].x, 0.0, 0.0, textureScale[slot].y);
+}
+
 // The texture's raw value at textureCoordinates: an image's filtered texel (linear RGBA) or
 // mix(A, B, weight) of a procedural one.
 vec4 evaluateTexture(int slot) {
     int kind = textureSettings[slot].x;
-    vec2 tiling = textureScale[slot].xy;
+    mat2 linear = uvTransform(slot);
+    vec2 uv = linear * textureCoordinates.uv + textureTransform[slot].xy;
     if (kind == TEXTURE_IMAGE) {
         TextureCoordinates c = textureCoordinates;
-        return textureGrad(textureImages[slot], c.uv * tiling, c.uvDx * tiling, c.uvDy * tiling);
+        return textureGrad(textureImages[slot], uv, linear * c.uvDx, linear * c.uvDy);
     }
     float weight;
-    if (kind == TEXTURE_CHECKER) weight = checkerWeight(textureCoordinates.uv * tiling);
+    if (kind == TEXTURE_CHECKER) weight = checkerWeight(uv);
     else if (kind == TEXTURE_MARBLE)
         weight = marbleWeight(textureCoordinates.objectPosition, textureScale[slot].z, textureScale[slot].w, textureSettings[slot].z);
     else weight = woodWeight(textureCoordinates.objectPosition, textureScale[slot].z, textureScale[slot].w, textureSettings[slot].z);
     return vec4(mix(textureValueA[slot].rgb, textureValueB[slot].rgb, weight), 1.0);
 }
 
-vec3 textureColor(int slot) { return evaluateTexture(slot).rgb; }
+vec3 textureColor(int slot) { return evaluateTexture(slot).rgb * textureColorFactor[slot]; }
 
 float textureScalar(int slot) {
     vec4 value = evaluateTexture(slot);
@@ -105,7 +114,8 @@ float textureScalar(int slot) {
 
 // Tangent-space normal map: n = 2·rgb − 1 along (tangent, bitangent, normal).
 ShadingFrame normalMappedFrame(int slot, ShadingFrame frame) {
-    vec3 tangentSpace = 2.0 * evaluateTexture(slot).rgb - 1.0;
+    float scale = textureTransform[slot].w;
+    vec3 tangentSpace = (2.0 * evaluateTexture(slot).rgb - 1.0) * vec3(scale, scale, 1.0);
     vec3 normal = frame.tangent * tangentSpace.x + frame.bitangent * tangentSpace.y + frame.normal * tangentSpace.z;
     float normalLength = length(normal);
     if (normalLength < 1e-6) return frame;

@@ -31,7 +31,7 @@ layout(std140) uniform LightBlock {
 };
 
 layout(std140) uniform MaterialBlock {
-    vec4 materialValues[8];  // the model's parameter table, packed in table order
+    vec4 materialValues[12];  // the model's parameter table, packed in table order
 };
 
 float materialValue(int index) { return materialValues[index / 4][index % 4]; }

@@ -1,4 +1,4 @@
-"""Editor figures under Xvfb (not a test; numbers for the README and reports):
+"""Editor figures under Xvfb (not a test; numbers for docs/performance.md and reports):
   1. idle CPU: utime+stime of the editor process over 10 s with nothing happening;
   2. edit-to-frame while dragging a material slider with 4 lights (1280×800 window), from the
      editor's GLINT_LOG_FRAMES log: time from the frame's input arriving to the frame presented,
@@ -6,8 +6,10 @@
      the release;
   3. frame time with both side columns closed (viewport 1280 × ~750), from mouse-wheel zooms.
 --size WxH (e.g. 1920x1080) runs the same on a screen of that size with the window resized to
-fill it (the right column's slider moves with the window's right edge).
-usage: /usr/bin/python3 tests/bench/editor_figures.py build/app/glint [--size WxH]"""
+fill it (the right column's slider moves with the window's right edge). --motion-ms N sends the
+drag's pointer motion from one xdotool process, one event every N ms (default: one process per
+event, about 20 a second at most), so that the editor, not xdotool, bounds the frames per second.
+usage: /usr/bin/python3 tests/bench/editor_figures.py build/app/glint [--size WxH] [--motion-ms N]"""
 import argparse
 import os
 import statistics
@@ -40,6 +42,17 @@ def frames(log_path, start_line):
     return parsed
 
 
+def fast_drag(x, start, end, steps, step_seconds):
+    """A drag whose motion events come from one chained xdotool command, step_seconds apart."""
+    x.move(*start)
+    time.sleep(0.1)
+    chain = ["xdotool", "mousedown", "1"]
+    for i in range(1, steps + 1):
+        chain += ["sleep", f"{step_seconds:.3f}", "mousemove",
+                  str(start[0] + (end[0] - start[0]) * i // steps), str(start[1] + (end[1] - start[1]) * i // steps)]
+    x.run(*chain, "sleep", "0.1", "mouseup", "1")
+
+
 def summary(name, values):
     if not values:
         return f"{name}: no frames"
@@ -50,6 +63,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("glint")
     parser.add_argument("--size", default="1280x800")
+    parser.add_argument("--motion-ms", type=float, default=0.0)
     args = parser.parse_args()
     glint = args.glint
     width, height = (int(v) for v in args.size.split("x"))
@@ -79,7 +93,10 @@ def main():
             time.sleep(1.5)
             mark = len(frames(log_path, 0))
             start = time.time()
-            x.drag(slider, (slider[0] - 80, slider[1]), steps=40, step_seconds=0.05)
+            if args.motion_ms > 0:
+                fast_drag(x, slider, (slider[0] - 80, slider[1]), steps=80, step_seconds=args.motion_ms / 1000)
+            else:
+                x.drag(slider, (slider[0] - 80, slider[1]), steps=40, step_seconds=0.05)
             drag_seconds = time.time() - start
             time.sleep(1.5)
             dragged = frames(log_path, mark)

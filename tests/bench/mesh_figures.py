@@ -1,4 +1,4 @@
-"""Large-mesh editor figures under Xvfb (not a test; numbers for the README and reports): the
+"""Large-mesh editor figures under Xvfb (not a test; numbers for docs/performance.md and reports): the
 editor (1280×800 window) opens the default stage with its sphere replaced by a 1,000,000-triangle
 mesh (a binary PLY of a 1000 × 500 UV sphere, positions only, written here) and both lights
 casting shadows (the key light a 2D map, the fill light a cube map), then drags the key light's

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "cli/headless.h"
+#include "runtime/headless.h"
 
 namespace glint {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "cli/headless.h"
+#include "runtime/headless.h"
 #include "frame_timing.h"
 #include "image/image_io.h"
 #include "scene/scene_json.h"

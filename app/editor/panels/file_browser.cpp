@@ -30,7 +30,7 @@ const char* titleFor(FilePurpose purpose) {
         case FilePurpose::OpenBrdf: return "Open BRDF Explorer file (.brdf, .bparam)###FileBrowser";
         case FilePurpose::SaveBparamAs: return "Save parameter values as (.bparam)###FileBrowser";
         case FilePurpose::OpenEnvironment: return "Open environment (.hdr or .exr)###FileBrowser";
-        case FilePurpose::ExportMaterial: return "Export material as (.gltf or .mtl)###FileBrowser";
+        case FilePurpose::ExportMaterial: return "Export material as (.gltf, .mtl or .mtlx)###FileBrowser";
     }
     return "###FileBrowser";
 }
@@ -106,7 +106,7 @@ void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::st
                          : purpose == FilePurpose::OpenEnvironment ? std::vector<std::string>{".hdr", ".exr"}
                          : purpose == FilePurpose::OpenBrdf     ? std::vector<std::string>{".brdf", ".bparam"}
                          : purpose == FilePurpose::SaveBparamAs ? std::vector<std::string>{".bparam"}
-                         : purpose == FilePurpose::ExportMaterial ? std::vector<std::string>{".gltf", ".mtl"}
+                         : purpose == FilePurpose::ExportMaterial ? std::vector<std::string>{".gltf", ".mtl", ".mtlx"}
                                                                 : std::vector<std::string>{".json"};
     if (purpose == FilePurpose::OpenMesh) {
         browser.extensions.clear();

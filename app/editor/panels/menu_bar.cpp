@@ -38,7 +38,7 @@ void drawFileMenu(EditorState& state) {
         requestFileBrowser(state.fileBrowser, FilePurpose::OpenMaterial, "");
     if (ImGui::MenuItem("Save material as…", nullptr, false, hasObject))
         requestFileBrowser(state.fileBrowser, FilePurpose::SaveMaterialAs, "material.json");
-    if (ImGui::MenuItem("Export material (.gltf, .mtl)…", nullptr, false, hasObject))  // editor/interchange_export.h
+    if (ImGui::MenuItem("Export material (.gltf, .mtl, .mtlx)…", nullptr, false, hasObject))  // editor/interchange_export.h
         requestFileBrowser(state.fileBrowser, FilePurpose::ExportMaterial, "material.gltf");
     if (advancedPanelsVisible(state.settings)) {  // presentation mode hides the BRDF Explorer file actions
         if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))

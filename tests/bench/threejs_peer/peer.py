@@ -60,9 +60,10 @@ def serve(three_dir, results):
     return server
 
 
-def run_three(chromium, port, results, scene, width, height, frames, timeout=300):
-    profile = tempfile.mkdtemp(prefix="glint-peer-chromium-")  # a fresh profile each run
-    url = f"http://127.0.0.1:{port}/peer.html?scene={scene}&width={width}&height={height}&frames={frames}&warmup=3"
+def open_page(chromium, url, results, width, height, failure, timeout=300):
+    """Opens url in a fresh headless Chromium profile and returns what the page posts back;
+    exits with `failure` when nothing comes within timeout seconds."""
+    profile = tempfile.mkdtemp(prefix="glint-peer-chromium-")
     with results.condition:
         results.latest = None
     browser = subprocess.Popen([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", f"--window-size={width},{height}", url],
@@ -70,12 +71,17 @@ def run_three(chromium, port, results, scene, width, height, frames, timeout=300
     try:
         with results.condition:
             if not results.condition.wait_for(lambda: results.latest is not None, timeout):
-                sys.exit(f"threejs_peer: no result from Chromium for {scene} within {timeout} s")
+                sys.exit(f"{failure} within {timeout} s")
             return results.latest
     finally:
         browser.kill()
         browser.wait()
         shutil.rmtree(profile, ignore_errors=True)
+
+
+def run_three(chromium, port, results, scene, width, height, frames):
+    url = f"http://127.0.0.1:{port}/peer.html?scene={scene}&width={width}&height={height}&frames={frames}&warmup=3"
+    return open_page(chromium, url, results, width, height, f"threejs_peer: no result from Chromium for {scene}")
 
 
 def run_glint(glint, scene, width, height, frames):

@@ -1,0 +1,85 @@
+// EditSession's steps, undo and redo (see edit_session.h). Whether a step changed anything is
+// decided on the scenes' JSON form, so a new scene field needs no change here.
+#include "editor/edit_session.h"
+
+#include "scene/scene_json.h"
+
+namespace glint {
+
+EditSession::EditSession(Scene scene, std::string path) : scene_(std::move(scene)), path_(std::move(path)) {}
+
+Scene& EditSession::change(std::string_view label) {
+    if (!open_) {
+        open_ = true;
+        openLabel_ = std::string(label);
+        openBefore_ = scene_;
+    }
+    ++revision_;
+    return scene_;
+}
+
+bool EditSession::settle(bool gestureInProgress) {
+    if (!open_ || gestureInProgress) return false;
+    open_ = false;
+    if (sceneToJson(openBefore_) == sceneToJson(scene_)) return false;  // e.g. dragged and put back
+    undo_.push_back(Step{std::move(openLabel_), std::move(openBefore_), scene_, nextStepId_++});
+    if (undo_.size() > kMaxUndoSteps) {
+        baseStep_ = undo_.front().id;
+        undo_.pop_front();
+    }
+    redo_.clear();
+    ++settledRevision_;
+    return true;
+}
+
+std::string EditSession::undoLabel() const {
+    if (open_) return openLabel_;
+    return undo_.empty() ? std::string() : undo_.back().label;
+}
+
+std::string EditSession::redoLabel() const { return canRedo() ? redo_.back().label : std::string(); }
+
+bool EditSession::undo() {
+    settle(false);
+    if (undo_.empty()) return false;
+    redo_.push_back(std::move(undo_.back()));
+    undo_.pop_back();
+    scene_ = redo_.back().before;
+    ++revision_;
+    ++settledRevision_;
+    return true;
+}
+
+bool EditSession::redo() {
+    if (!canRedo()) return false;
+    undo_.push_back(std::move(redo_.back()));
+    redo_.pop_back();
+    scene_ = undo_.back().after;
+    ++revision_;
+    ++settledRevision_;
+    return true;
+}
+
+void EditSession::markSaved(std::string path) {
+    settle(false);
+    path_ = std::move(path);
+    savedStep_ = currentStep();
+    ++documentGeneration_;
+    ++settledRevision_;  // dirty changed: autosave drops the recovery file, the crash copy empties
+}
+
+void EditSession::replace(Scene scene, std::string path, bool dirty) {
+    scene_ = std::move(scene);
+    path_ = std::move(path);
+    open_ = false;
+    undo_.clear();
+    redo_.clear();
+    baseStep_ = nextStepId_++;
+    // Recovered work counts as unsaved: its saved state is one no step can reach.
+    savedStep_ = dirty ? nextStepId_++ : baseStep_;
+    ++documentGeneration_;
+    ++revision_;
+    ++settledRevision_;
+}
+
+}  // namespace glint

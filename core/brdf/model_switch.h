@@ -1,0 +1,36 @@
+// Switching a material from one BRDF model to another while keeping what the two share:
+// diffuse colour (albedo, base colour), roughness (linear α, perceptual r = √α, Blinn-Phong
+// exponents, Ward slopes), the complex index n + iκ, metalness ↔ a conductor's n and κ, and
+// glass's index and absorption; and saying what was dropped. Pure data: the editor makes the
+// switch one undo step, the MaterialX writer uses it to convert to OpenPBR.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace glint {
+
+struct ModelSwitch {
+    Material material;                  // in the target model; untouched parameters at their defaults
+    std::vector<std::string> kept;      // "albedo → base_color", "roughness α → specular_roughness r = √α"
+    std::vector<std::string> dropped;   // source parameters (away from their defaults) with no counterpart
+    // "kept …; dropped …" for the editor and the exporters' warnings.
+    std::string summary() const;
+};
+
+// `source` in `target`'s model, keeping its name, its normal map and the textures of parameters
+// copied unchanged. A .brdf (custom) material keeps nothing; a measured one its Lambert stand-in.
+ModelSwitch switchModel(const Material& source, BrdfModel target);
+
+// Conversions the switch uses, each exact at normal incidence. A dielectric's index from its
+// reflectance F0 = ((n−1)/(n+1))²; a conductor with n = 1 and κ = 2√(F0/(1 − F0)) (so that
+// F0 = κ²/(4 + κ²)); Blinn-Phong's exponent ↔ Beckmann/GGX α, n = 2/α² − 2 (Walter et al.,
+// "Microfacet Models for Refraction", EGSR 2007, eq. 30).
+float dielectricIorFromF0(float f0);
+float conductorExtinctionFromF0(float f0);
+float blinnPhongExponentFromAlpha(float alpha);
+float alphaFromBlinnPhongExponent(float exponent);
+
+}  // namespace glint

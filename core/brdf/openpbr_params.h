@@ -1,0 +1,143 @@
+// The parameters of OpenPBR Surface 1.1 (ASWF / MaterialX `open_pbr_surface`): names, defaults
+// and ranges as the specification's node definition, so that a file from another tool means the
+// same here. Only the table and the struct it unpacks to (in table order); the model is
+// core/brdf/openpbr.h.
+// Left out (Glint has no subsurface or volume scattering, dispersion or cut-outs): subsurface_*,
+// transmission_scatter*, transmission_dispersion_*, geometry_opacity, and the normal/tangent
+// inputs (Glint's shading frame and normal maps give them). Added: geometry_tangent_rotation, the
+// anisotropy direction's angle in the tangent plane (glTF's anisotropyRotation).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "brdf/param_table.h"
+
+namespace glint {
+
+struct OpenPbrParams {
+    float baseWeight;
+    glm::vec3 baseColor;           // linear RGB reflectance
+    float baseMetalness;
+    float baseDiffuseRoughness;    // Oren-Nayar σ-like roughness in [0, 1]
+    float specularWeight;
+    glm::vec3 specularColor;       // dielectric tint; the metal's F82 edge tint
+    float specularRoughness;       // perceptual: α = r²
+    float specularAnisotropy;
+    float specularIor;
+    float transmissionWeight;
+    glm::vec3 transmissionColor;
+    float transmissionDepth;       // m: the distance after which light is exactly transmission_color
+    float fuzzWeight;
+    glm::vec3 fuzzColor;
+    float fuzzRoughness;
+    float coatWeight;
+    glm::vec3 coatColor;
+    float coatRoughness;           // perceptual
+    float coatAnisotropy;
+    float coatIor;
+    float coatDarkening;
+    float thinFilmWeight;
+    float thinFilmThickness;       // µm
+    float thinFilmIor;
+    float emissionLuminance;       // nits (cd/m²)
+    glm::vec3 emissionColor;
+    bool thinWalled;
+    float tangentRotation;         // degrees, counter-clockwise from the tangent towards the bitangent
+};
+
+inline constexpr ParamSpec kOpenPbrTable[] = {
+    // Base
+    {.name = "base_weight", .label = "Base weight", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 0, 0},
+     .help = "Multiplier on the diffuse and metallic base"},
+    {.name = "base_color", .label = "Base colour", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.8f, 0.8f, 0.8f},
+     .help = "Albedo of the diffuse base; a metal's reflectance at normal incidence (F0)"},
+    {.name = "base_metalness", .label = "Base metalness", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Mix from a dielectric base (0) to a metal (1)"},
+    {.name = "base_diffuse_roughness", .label = "Base diffuse roughness", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Roughness of the diffuse base (0: Lambert; towards 1: flatter, Oren-Nayar)"},
+    // Specular
+    {.name = "specular_weight", .label = "Specular weight", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {1.0f, 0, 0},
+     .help = "Multiplies the dielectric's F0 (capped at 1)"},
+    {.name = "specular_color", .label = "Specular colour", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 1.0f, 1.0f},
+     .help = "Tint of the dielectric reflection; the metal's edge tint (F82)"},
+    {.name = "specular_roughness", .label = "Specular roughness", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.3f, 0, 0},
+     .help = "Perceptual roughness r of the specular lobe (GGX α = r²)"},
+    {.name = "specular_roughness_anisotropy", .label = "Specular anisotropy", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Stretches the highlight along the tangent (0: isotropic)"},
+    {.name = "specular_ior", .label = "Specular IOR", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 3, .validMin = 1, .validMax = kUnbounded, .defaultValue = {1.5f, 0, 0},
+     .help = "Index of refraction of the dielectric base (glass 1.5, water 1.33)"},
+    // Transmission
+    {.name = "transmission_weight", .label = "Transmission weight", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Mix from an opaque dielectric base (0) to a transparent one (1)"},
+    {.name = "transmission_color", .label = "Transmission colour", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 1.0f, 1.0f},
+     .help = "Colour after transmission_depth inside (Beer-Lambert); a plain tint when the depth is 0"},
+    {.name = "transmission_depth", .label = "Transmission depth", .unit = "m", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
+     .help = "Distance inside after which the light is exactly transmission_color"},
+    // Fuzz
+    {.name = "fuzz_weight", .label = "Fuzz weight", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Presence of a fuzz (sheen) layer on top: velvet, satin, dust"},
+    {.name = "fuzz_color", .label = "Fuzz colour", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 1.0f, 1.0f},
+     .help = "Colour of the fuzz layer"},
+    {.name = "fuzz_roughness", .label = "Fuzz roughness", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.5f, 0, 0},
+     .help = "Roughness of the fuzz fibres (Charlie sheen α = r²)"},
+    // Coat
+    {.name = "coat_weight", .label = "Coat weight", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Presence of a clear coat on top: car paint, lacquer, an oily film"},
+    {.name = "coat_color", .label = "Coat colour", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 1.0f, 1.0f},
+     .help = "Transmittance of the coat at normal incidence (absorption in the coat)"},
+    {.name = "coat_roughness", .label = "Coat roughness", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Perceptual roughness of the coat's reflection (GGX α = r²)"},
+    {.name = "coat_roughness_anisotropy", .label = "Coat anisotropy", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Stretches the coat's highlight along the tangent"},
+    {.name = "coat_ior", .label = "Coat IOR", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 3, .validMin = 1, .validMax = kUnbounded, .defaultValue = {1.6f, 0, 0},
+     .help = "Index of refraction of the coat"},
+    {.name = "coat_darkening", .label = "Coat darkening", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 0, 0},
+     .help = "How much light trapped under the coat darkens and saturates the base (1: physical)"},
+    // Thin film
+    {.name = "thin_film_weight", .label = "Thin-film weight", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "Coverage of an iridescent thin film on the base: soap bubbles, oil, anodised metal"},
+    {.name = "thin_film_thickness", .label = "Thin-film thickness", .unit = "µm", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.5f, 0, 0},
+     .help = "Thickness of the film in micrometres"},
+    {.name = "thin_film_ior", .label = "Thin-film IOR", .unit = "", .kind = ParamKind::Scalar,
+     .sliderMin = 1, .sliderMax = 3, .validMin = 1, .validMax = kUnbounded, .defaultValue = {1.4f, 0, 0},
+     .help = "Index of refraction of the film"},
+    // Emission
+    {.name = "emission_luminance", .label = "Emission luminance", .unit = "nit", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1000, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
+     .help = "Emitted luminance in cd/m² (radiance = nits / 683 lm/W, for a colour of luminance 1)"},
+    {.name = "emission_color", .label = "Emission colour", .unit = "", .kind = ParamKind::Color,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1.0f, 1.0f, 1.0f},
+     .help = "Colour of the emitted light"},
+    // Geometry
+    {.name = "geometry_thin_walled", .label = "Thin walled", .unit = "", .kind = ParamKind::Bool,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0, 0},
+     .help = "An infinitesimally thin shell (a bubble, a leaf): light passes without refracting"},
+    {.name = "geometry_tangent_rotation", .label = "Tangent rotation", .unit = "deg", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 360, .validMin = -kUnbounded, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
+     .help = "Turns the anisotropy direction from the tangent towards the bitangent (Glint addition; glTF's anisotropyRotation)"},
+};
+
+}  // namespace glint

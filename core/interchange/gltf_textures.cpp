@@ -1,0 +1,193 @@
+// glTF textures ↔ material textures (see gltf_textures.h).
+#include "interchange/gltf_textures.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "texture/texture_image.h"
+#include "util/referenced_path.h"
+
+namespace glint {
+namespace {
+
+using nlohmann::json;
+
+// OpenGL enums as glTF samplers write them (glTF 2.0 §5.26).
+constexpr int kNearest = 9728, kLinear = 9729, kLinearMipmapLinear = 9987, kRepeat = 10497;
+
+// RFC 3986 percent-encoding of a relative URI path, and its decoding.
+std::string percentEncoded(const std::string& path) {
+    static const char* hex = "0123456789ABCDEF";
+    std::string out;
+    for (unsigned char c : path) {
+        if (std::isalnum(c) || std::string_view("-._~/").find(static_cast<char>(c)) != std::string_view::npos) out += static_cast<char>(c);
+        else out += {'%', hex[c >> 4], hex[c & 15]};
+    }
+    return out;
+}
+
+std::string percentDecoded(const std::string& uri) {
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+TextureFilter filterOf(const json& sampler) {
+    const int magnification = sampler.value("magFilter", kLinear);
+    const int minification = sampler.value("minFilter", kLinearMipmapLinear);
+    if (magnification == kNearest) return TextureFilter::Nearest;
+    if (minification == kNearest || minification == kLinear) return TextureFilter::Bilinear;
+    return TextureFilter::Trilinear;
+}
+
+// The entry `index` of the root array `name`, or a located error at `reader`'s `key`.
+const json& entryOf(const ObjectReader& reader, const std::string& key, const json& root, const char* name, size_t index) {
+    if (!root.contains(name) || !root[name].is_array() || index >= root[name].size() || !root[name][index].is_object())
+        reader.fail(key, std::string(name) + "[" + std::to_string(index) + "] does not exist");
+    return root[name][index];
+}
+
+}  // namespace
+
+// glTF: uv'_g = T(b)·R(θ)·S(s)·uv_g with R(θ) = [[c, s], [−s, c]] (the KHR_texture_transform
+// matrix), uv_g = F(uv) with F(u, v) = (u, 1 − v). Glint: uv' = F(uv'_g) = D·R(θ)·D·S·uv + D·(R·S·e + b) + e
+// with D = diag(1, −1), e = (0, 1); D·R(θ)·D is the counter-clockwise rotation by θ.
+void applyGltfUvTransform(MaterialTexture& texture, const GltfUvTransform& transform) {
+    const float c = std::cos(transform.rotation), s = std::sin(transform.rotation);
+    texture.tiling = transform.scale;
+    texture.rotation = transform.rotation;
+    texture.offset = {transform.offset.x + s * transform.scale.y, 1.0f - transform.offset.y - c * transform.scale.y};
+}
+
+GltfUvTransform gltfUvTransformOf(const MaterialTexture& texture) {
+    const float c = std::cos(texture.rotation), s = std::sin(texture.rotation);
+    GltfUvTransform transform;
+    transform.scale = texture.tiling;
+    transform.rotation = texture.rotation;
+    transform.offset = {texture.offset.x - s * texture.tiling.y, 1.0f - texture.offset.y - c * texture.tiling.y};
+    return transform;
+}
+
+std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const std::string& key, const json& root,
+                                                   const std::string& folder) {
+    if (!parent.has(key)) return std::nullopt;
+    ObjectReader reader = parent.object(key);
+    GltfTextureInfo info;
+    info.pointer = reader.pointer();
+    if (!reader.has("index")) reader.failHere("a texture needs an \"index\"");
+    const int index = reader.integer("index", 0, 0, 1'000'000);
+    const json& texture = entryOf(reader, "index", root, "textures", static_cast<size_t>(index));
+    if (!texture.contains("source") || !texture["source"].is_number_unsigned())
+        reader.fail("index", "texture " + std::to_string(index) + " has no image (\"source\")");
+    const json& image = entryOf(reader, "index", root, "images", texture["source"].get<size_t>());
+    if (image.contains("uri")) {
+        if (!image["uri"].is_string()) reader.fail("index", "the image's \"uri\" is not a string");
+        info.uri = percentDecoded(image["uri"].get<std::string>());
+        if (info.uri.rfind("data:", 0) != 0) info.file = (std::filesystem::path(folder) / info.uri).lexically_normal().string();
+    }
+    if (texture.contains("sampler")) {
+        if (!texture["sampler"].is_number_unsigned()) reader.fail("index", "texture " + std::to_string(index) + ": \"sampler\" is not an index");
+        const json& sampler = entryOf(reader, "index", root, "samplers", texture["sampler"].get<size_t>());
+        info.filter = filterOf(sampler);
+        info.repeats = sampler.value("wrapS", kRepeat) == kRepeat && sampler.value("wrapT", kRepeat) == kRepeat;
+    }
+    info.texCoord = reader.integer("texCoord", 0, 0, 1'000'000);
+    if (reader.has("scale")) info.scale = static_cast<float>(reader.number("scale", 1.0));
+    if (reader.has("strength")) info.scale = static_cast<float>(reader.number("strength", 1.0, Bounds::between(0, 1)));
+    if (reader.has("extensions")) {
+        ObjectReader extensions = reader.object("extensions");
+        if (extensions.has("KHR_texture_transform")) {
+            ObjectReader transform = extensions.object("KHR_texture_transform");
+            info.transform.offset = transform.vec2("offset", info.transform.offset);
+            info.transform.scale = transform.vec2("scale", info.transform.scale);
+            info.transform.rotation = static_cast<float>(transform.number("rotation", 0.0));
+            info.texCoord = transform.integer("texCoord", info.texCoord, 0, 1'000'000);
+            transform.expect({"extras"});
+            transform.rejectUnknownKeys();
+        }
+        extensions.expect({"extras"});
+        extensions.rejectUnknownKeys();
+    }
+    reader.expect({"extras"});
+    reader.rejectUnknownKeys();
+    return info;
+}
+
+Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std::string& parameter, TextureColorSpace colorSpace) {
+    if (info.file.empty())
+        return makeError(info.pointer + ": the image is " + (info.uri.empty() ? "in a buffer view" : "a data URI") +
+                         "; Glint reads texture images from files beside the glTF");
+    MaterialTexture texture;
+    texture.parameter = parameter;
+    texture.kind = TextureKind::Image;
+    texture.file = info.file;
+    texture.colorSpace = colorSpace;
+    texture.filter = info.filter;
+    applyGltfUvTransform(texture, info.transform);
+    auto image = loadTextureImage(texture.file, colorSpace);
+    if (!image) return makeError(info.pointer + ": " + image.error().format());
+    texture.image = *image;
+    return texture;
+}
+
+int GltfTextureWriter::textureIndex(const std::string& uri, TextureFilter filter) {
+    int image = -1;
+    for (size_t i = 0; i < images_.size(); ++i)
+        if (images_[i]["uri"] == uri) image = static_cast<int>(i);
+    if (image < 0) {
+        images_.push_back({{"uri", uri}});
+        image = static_cast<int>(images_.size()) - 1;
+    }
+    const json sampler = filter == TextureFilter::Nearest    ? json{{"magFilter", kNearest}, {"minFilter", kNearest}}
+                         : filter == TextureFilter::Bilinear ? json{{"magFilter", kLinear}, {"minFilter", kLinear}}
+                                                             : json{{"magFilter", kLinear}, {"minFilter", kLinearMipmapLinear}};
+    int samplerIndex = -1;
+    for (size_t i = 0; i < samplers_.size(); ++i)
+        if (samplers_[i] == sampler) samplerIndex = static_cast<int>(i);
+    if (samplerIndex < 0) {
+        samplers_.push_back(sampler);
+        samplerIndex = static_cast<int>(samplers_.size()) - 1;
+    }
+    const json entry = {{"source", image}, {"sampler", samplerIndex}};
+    for (size_t i = 0; i < textures_.size(); ++i)
+        if (textures_[i] == entry) return static_cast<int>(i);
+    textures_.push_back(entry);
+    return static_cast<int>(textures_.size()) - 1;
+}
+
+json GltfTextureWriter::textureInfo(const MaterialTexture& texture, std::vector<std::string>& extensionsUsed) {
+    json info = {{"index", textureIndex(percentEncoded(referencedPathFor(texture.file, targetFile_)), texture.filter)}};
+    if (texture.tiling != glm::vec2(1.0f) || texture.rotation != 0.0f || texture.offset != glm::vec2(0.0f)) {
+        const GltfUvTransform transform = gltfUvTransformOf(texture);
+        json values = json::object();
+        if (transform.offset != glm::vec2(0.0f)) values["offset"] = {transform.offset.x, transform.offset.y};
+        if (transform.rotation != 0.0f) values["rotation"] = transform.rotation;
+        if (transform.scale != glm::vec2(1.0f)) values["scale"] = {transform.scale.x, transform.scale.y};
+        info["extensions"] = {{"KHR_texture_transform", values}};
+        extensionsUsed.push_back("KHR_texture_transform");
+    }
+    return info;
+}
+
+json GltfTextureWriter::keptTextureInfo(const std::string& fileOrUri, json members) {
+    const std::string uri = fileOrUri.rfind("data:", 0) == 0 ? fileOrUri : percentEncoded(referencedPathFor(fileOrUri, targetFile_));
+    members["index"] = textureIndex(uri, TextureFilter::Trilinear);
+    return members;
+}
+
+void GltfTextureWriter::writeInto(json& gltf) const {
+    if (textures_.empty()) return;
+    gltf["images"] = images_;
+    gltf["samplers"] = samplers_;
+    gltf["textures"] = textures_;
+}
+
+}  // namespace glint

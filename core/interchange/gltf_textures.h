@@ -1,0 +1,70 @@
+// glTF 2.0 textures ↔ Glint's material textures (texture/material_texture.h): reading a
+// textureInfo ({"index", "texCoord", "scale"/"strength", KHR_texture_transform}) through
+// textures → images/samplers to an image file, and writing images, textures and samplers back.
+// glTF's UV has v down (the image's top row at v = 0), Glint's v up: KHR_texture_transform's
+// uv' = T·R·S·uv is converted to MaterialTexture's tiling, rotation and offset exactly.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/json_object_reader.h"
+#include "texture/material_texture.h"
+#include "util/diagnostic.h"
+
+namespace glint {
+
+// KHR_texture_transform's values (glTF UV, v down; rotation in radians).
+struct GltfUvTransform {
+    glm::vec2 offset{0.0f}, scale{1.0f};
+    float rotation = 0.0f;
+};
+// Sets `texture`'s tiling, rotation and offset to the same mapping in Glint's UV (v up).
+void applyGltfUvTransform(MaterialTexture& texture, const GltfUvTransform& transform);
+GltfUvTransform gltfUvTransformOf(const MaterialTexture& texture);
+
+// A textureInfo read from a material: where its image is and how it is sampled.
+struct GltfTextureInfo {
+    std::string pointer;    // JSON pointer of the textureInfo, for messages
+    std::string uri;        // the image's URI as written (percent-decoded); empty for a bufferView image
+    std::string file;       // absolute path of a file URI; empty for data URIs and bufferViews
+    TextureFilter filter = TextureFilter::Trilinear;
+    bool repeats = true;    // both wrap modes REPEAT (Glint's only addressing)
+    int texCoord = 0;
+    GltfUvTransform transform;
+    float scale = 1.0f;     // normalTexture.scale / occlusionTexture.strength
+};
+
+// Reads the textureInfo at `key` of `parent` (nothing when absent). `root` is the whole glTF,
+// `folder` the file's folder. Malformed indices and values throw a located JsonReadError.
+std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const std::string& key, const nlohmann::json& root,
+                                                   const std::string& folder);
+
+// A MaterialTexture on `parameter` from the texture's image (decoded; an error names the file
+// and the textureInfo), with its filter and UV transform.
+Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std::string& parameter, TextureColorSpace colorSpace);
+
+// Collects a written glTF's images, samplers and textures (one each per distinct image and
+// sampler state) and writes textureInfo objects that use them.
+class GltfTextureWriter {
+public:
+    // `targetFile`: where the .gltf goes; image URIs are written relative to its folder.
+    explicit GltfTextureWriter(std::string targetFile) : targetFile_(std::move(targetFile)) {}
+    // A textureInfo for a Glint image texture: {"index"} plus KHR_texture_transform when it is not
+    // the identity (and `extensionsUsed` then names it).
+    nlohmann::json textureInfo(const MaterialTexture& texture, std::vector<std::string>& extensionsUsed);
+    // A textureInfo for an image URI or absolute file kept from an import, with its other members.
+    nlohmann::json keptTextureInfo(const std::string& fileOrUri, nlohmann::json members);
+    // Puts "images", "samplers" and "textures" into `gltf` when any were used.
+    void writeInto(nlohmann::json& gltf) const;
+
+private:
+    int textureIndex(const std::string& uri, TextureFilter filter);
+    std::string targetFile_;
+    nlohmann::json images_ = nlohmann::json::array(), samplers_ = nlohmann::json::array(), textures_ = nlohmann::json::array();
+};
+
+}  // namespace glint

@@ -1,0 +1,19 @@
+// libFuzzer target: MaterialX (.mtlx) parsing must never crash or hang on any bytes; it returns
+// materials (which must then write back and read again) or a Diagnostic with a message.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "interchange/materialx.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    auto file = glint::parseMaterialX(text, "fuzz.mtlx");
+    if (!file) {
+        if (file.error().message.empty()) __builtin_trap();  // every error says why
+        return 0;
+    }
+    // What Glint writes it must read back.
+    if (!glint::parseMaterialX(glint::writeMaterialX(file->materials, "").text, "fuzz-out.mtlx")) __builtin_trap();
+    return 0;
+}
