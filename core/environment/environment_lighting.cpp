@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "brdf/fresnel.h"
 #include "environment/environment_map.h"
 #include "math/constants.h"
 
@@ -39,7 +40,7 @@ glm::vec3 environmentWorldDirection(const Environment& environment, glm::vec3 d)
 }
 
 bool environmentUsesPeaks(const Environment& environment, float alpha) {
-    return alpha >= kPeakMinimumAlpha && !environment.map->peaks.empty();
+    return alpha >= environment.map->peakMinimumAlpha && !environment.map->peaks.empty();
 }
 
 glm::vec3 environmentPeakDirection(const Environment& environment, int k) {
@@ -48,6 +49,11 @@ glm::vec3 environmentPeakDirection(const Environment& environment, int k) {
 
 glm::vec3 environmentPeakIrradiance(const Environment& environment, int k) {
     return environment.intensity * environment.map->peaks[k].irradiance;
+}
+
+float environmentPeakAlpha(const Environment& environment, int k, float alpha) {
+    const float spread = kPeakWidening * environment.map->peaks[k].sinRadius;
+    return std::min(1.0f, std::sqrt(alpha * alpha + spread * spread));
 }
 
 glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, glm::vec3 worldDirection,
@@ -87,17 +93,37 @@ glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float a
                                           : environmentSpecularRadiance(e, worldDirection, std::sqrt(alpha));
 }
 
-// The peaks as directional lights: Σ_k f_r(ω_k, ω_o) cos θ_k E_k, `reflectedCos` giving the glossy
-// lobe's f_r cos θ_i (Fresnel included); zero where the lobe does not take them.
+// The peaks as lights: Σ_k f_r(ω_k, ω_o; α_k) cos θ_k E_k, `reflectedCos(ω_i, α_k)` giving the
+// glossy lobe's f_r cos θ_i (Fresnel included) widened to GGX roughness α_k for light k's extent;
+// zero where the lobe does not take them. The microfacet lobes take Schlick's Fresnel with the
+// material's exact F0, as the split sum's F0·A + B does (the exact complex-index equations per
+// light cost a quarter of a studio frame on llvmpipe).
 template <class ReflectedCos>
 glm::vec3 peakSpecular(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
     glm::vec3 sum(0.0f);
     if (!environmentUsesPeaks(e, alpha) || frame.cosTheta(wo) <= 0.0f) return sum;
     for (int k = 0; k < static_cast<int>(e.map->peaks.size()); ++k) {
         const glm::vec3 wi = environmentPeakDirection(e, k);
-        if (frame.cosTheta(wi) > 0.0f) sum += reflectedCos(wi) * environmentPeakIrradiance(e, k);
+        if (frame.cosTheta(wi) > 0.0f) sum += reflectedCos(wi, environmentPeakAlpha(e, k, alpha)) * environmentPeakIrradiance(e, k);
     }
     return sum;
+}
+
+// A Blinn-Phong or Phong exponent for GGX roughness α (the inverses of blinnAlpha and phongAlpha).
+float blinnExponent(float alpha) { return 2.0f / (alpha * alpha) - 2.0f; }
+float phongExponent(float alpha) { return blinnExponent(alpha) / 4.0f; }
+
+// A Blinn-Phong or Phong specular lobe's f_r cos θ_i with its exponent lowered to `exponent`,
+// keeping the lobe's energy: the normalised form carries its factor (n + c)/(cπ) itself, the other
+// forms take the ratio (n' + c)/(n + c).
+template <class Params, class Evaluate>
+glm::vec3 widenedExponentLobe(Params lobe, float exponent, float c, bool normalisedForm, Evaluate&& evaluate, glm::vec3 wi,
+                              glm::vec3 wo, const ShadingFrame& frame) {
+    const float original = lobe.exponent;
+    lobe.diffuseAlbedo = glm::vec3(0.0f);
+    lobe.exponent = std::min(original, exponent);
+    const float keep = normalisedForm ? 1.0f : (lobe.exponent + c) / (original + c);
+    return keep * evaluate(lobe, wi, wo, frame) * frame.cosTheta(wi);
 }
 
 // --- per-model hooks ------------------------------------------------------------------------
@@ -127,31 +153,34 @@ glm::vec3 lightingOf(const MirrorParams& p, glm::vec3, const ShadingFrame& frame
 glm::vec3 lightingOf(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = blinnAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 8.0f) / (8.0f * kPi));
-    BlinnPhongParams lobe = p;
-    lobe.diffuseAlbedo = glm::vec3(0.0f);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
-           peakSpecular(e, alpha, wo, frame,
-                        [&](glm::vec3 wi) { return evalBlinnPhong(lobe, wi, wo, frame) * frame.cosTheta(wi); });
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+               return widenedExponentLobe(p, blinnExponent(widened), 8.0f, p.form == BlinnForm::Normalized, evalBlinnPhong, wi,
+                                          wo, frame);
+           });
 }
 
 glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = phongAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 2.0f) / (2.0f * kPi));
-    PhongParams lobe = p;
-    lobe.diffuseAlbedo = glm::vec3(0.0f);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
-           peakSpecular(e, alpha, wo, frame,
-                        [&](glm::vec3 wi) { return evalPhong(lobe, wi, wo, frame) * frame.cosTheta(wi); });
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+               return widenedExponentLobe(p, phongExponent(widened), 2.0f, p.form == PhongForm::Normalized, evalPhong, wi, wo,
+                                          frame);
+           });
 }
 
 glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
-           peakSpecular(e, alpha, wo, frame,
-                        [&](glm::vec3 wi) { return p.specular * (wardSpecular(p, wi, wo, frame) * frame.cosTheta(wi)); });
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+               WardParams lobe = p;
+               lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
+               return p.specular * (wardSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
+           });
 }
 
 // The direction the GGX lobe's reflected light mostly comes from: the mirror direction bent
@@ -177,10 +206,11 @@ glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFra
                                           const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e) +
-           peakSpecular(e, p.roughness, wo, frame, [&](glm::vec3 wi) {
-               const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
-               return microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction) *
-                      (cookTorranceSpecular(p, wi, wo, frame) * frame.cosTheta(wi));
+           peakSpecular(e, p.roughness, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+               CookTorranceParams lobe = p;
+               lobe.roughness = widened;
+               return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
+                      (cookTorranceSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
            });
 }
 
@@ -189,10 +219,11 @@ glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingF
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            splitSumSpecular(p.ior, p.extinction, alpha, wo, frame, e) +
-           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi) {
-               const float cosDifference = glm::dot(wi, glm::normalize(wi + wo));
-               return microfacetFresnel(p.fresnel, cosDifference, p.ior, p.extinction) *
-                      (ggxAnisotropicSpecular(p, wi, wo, frame) * frame.cosTheta(wi));
+           peakSpecular(e, alpha, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+               GgxAnisotropicParams lobe = p;
+               lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
+               return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
+                      (ggxAnisotropicSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
            });
 }
 

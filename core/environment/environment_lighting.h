@@ -26,14 +26,16 @@ glm::vec3 environmentDiffuseRadiance(const Environment& environment, glm::vec3 n
 // Prefiltered radiance along a world direction for perceptual roughness r = √α.
 glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 worldDirection, float perceptualRoughness);
 
-// Glossy lobes from GGX roughness kPeakMinimumAlpha on take the map's peaks as directional lights
-// through their own BRDF and the prefiltered rest (environment_map.h); sharper lobes, which would
-// show the lights' cells as separate highlights, the prefiltered map as a whole.
-inline constexpr float kPeakMinimumAlpha = 0.04f;
+// Glossy lobes from GGX roughness EnvironmentMap::peakMinimumAlpha on take the map's peaks as
+// lights through their own BRDF and the prefiltered rest (environment_map.h); sharper lobes, which
+// would show a light's widened disc where the map has a shape, the prefiltered map as a whole.
 bool environmentUsesPeaks(const Environment& environment, float alpha);
 // Peak k's world direction and irradiance [W/m²] at normal incidence (× the intensity).
 glm::vec3 environmentPeakDirection(const Environment& environment, int k);
 glm::vec3 environmentPeakIrradiance(const Environment& environment, int k);
+// The GGX roughness a lobe of roughness α takes for peak k, widened for the light's extent:
+// √(α² + (kPeakWidening sin ρ)²), at most 1.
+float environmentPeakAlpha(const Environment& environment, int k, float alpha);
 // The prefiltered radiance of the map less its peaks (r clamped to ≥ 1/kPrefilteredLevels).
 glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, glm::vec3 worldDirection,
                                               float perceptualRoughness);

@@ -97,32 +97,64 @@ EquirectImage peakRadiance(const EquirectImage& radiance) {
     return peak;
 }
 
-// The peaks as directional lights: the peak image's texels binned into the cells of the finest
-// grid (64 cells wide at most, halving) with at most kMaxPeakLights occupied cells; each occupied
-// cell a light with the cell's ∫ L_peak dω and its luminance-weighted mean direction (exact for
-// the peaks' power; a 4° light is one or a few lights, a studio's soft boxes a few dozen).
-std::vector<EnvironmentPeakLight> peakLights(const EquirectImage& peak) {
-    for (int shift = 0; (peak.width >> shift) >= 1; ++shift) {
-        const int columns = std::max(1, peak.width >> shift), rows = std::max(1, peak.height >> shift);
-        if (columns > 64) continue;
-        std::vector<glm::vec3> power(static_cast<size_t>(columns) * rows, glm::vec3(0.0f)), moment(power.size(), glm::vec3(0.0f));
-        for (int y = 0; y < peak.height; ++y) {
-            const float solidAngle = texelSolidAngle(y, peak.width, peak.height);
-            for (int x = 0; x < peak.width; ++x) {
-                const glm::vec3 radiance = peak.at(x, y);
-                if (relativeLuminance(radiance) <= 0.0f) continue;
-                const size_t cell = static_cast<size_t>(std::min(y >> shift, rows - 1)) * columns + std::min(x >> shift, columns - 1);
-                const glm::vec3 direction = equirectDirection({(x + 0.5f) / peak.width, (y + 0.5f) / peak.height});
-                power[cell] += radiance * solidAngle;
-                moment[cell] += relativeLuminance(radiance) * solidAngle * direction;
+// The peaks as a few lights: the peak image's texels joined into connected regions (8-neighbours,
+// wrapping in longitude), the kMaxPeakLights regions of most luminous power each a light with the
+// region's exact ∫ L_peak dω, its luminance-weighted mean direction and the radius of the disc of
+// the same mean cosine to it (a studio's soft box is one light). The peaks of the other regions go
+// back to the rest: their texels are zeroed in `peak`.
+std::vector<EnvironmentPeakLight> peakLights(EquirectImage& peak) {
+    const int width = peak.width, height = peak.height;
+    std::vector<int> parent(peak.texels.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+    const auto root = [&](int i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    const auto lit = [&](int x, int y) { return relativeLuminance(peak.at((x + width) % width, y)) > 0.0f; };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (!lit(x, y)) continue;
+            // The neighbours already visited: left, and the three above.
+            const int neighbours[4][2] = {{x - 1, y}, {x - 1, y - 1}, {x, y - 1}, {x + 1, y - 1}};
+            for (const auto& [nx, ny] : neighbours) {
+                if (ny < 0 || !lit(nx, ny)) continue;
+                const int a = root(y * width + x), b = root(ny * width + (nx + width) % width);
+                parent[std::max(a, b)] = std::min(a, b);
             }
         }
-        std::vector<EnvironmentPeakLight> lights;
-        for (size_t cell = 0; cell < power.size(); ++cell)
-            if (relativeLuminance(power[cell]) > 0.0f) lights.push_back({glm::normalize(moment[cell]), power[cell]});
-        if (static_cast<int>(lights.size()) <= kMaxPeakLights) return lights;
+    struct Region {
+        glm::vec3 power{0.0f}, moment{0.0f};
+        float luminousPower = 0.0f;
+    };
+    std::vector<Region> regions(peak.texels.size());
+    for (int y = 0; y < height; ++y) {
+        const float solidAngle = texelSolidAngle(y, width, height);
+        for (int x = 0; x < width; ++x) {
+            if (!lit(x, y)) continue;
+            Region& region = regions[root(y * width + x)];
+            const float luminousPower = relativeLuminance(peak.at(x, y)) * solidAngle;
+            region.power += peak.at(x, y) * solidAngle;
+            region.luminousPower += luminousPower;
+            region.moment += luminousPower * equirectDirection({(x + 0.5f) / width, (y + 0.5f) / height});
+        }
     }
-    return {};
+    std::vector<int> order;
+    for (size_t i = 0; i < regions.size(); ++i)
+        if (regions[i].luminousPower > 0.0f) order.push_back(static_cast<int>(i));
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return regions[a].luminousPower > regions[b].luminousPower; });
+    order.resize(std::min(order.size(), static_cast<size_t>(kMaxPeakLights)));
+    std::vector<bool> kept(regions.size(), false);
+    std::vector<EnvironmentPeakLight> lights;
+    for (int index : order) {
+        const Region& region = regions[index];
+        kept[index] = true;
+        // A uniform disc of radius ρ has mean cosine (1 + cos ρ)/2 to its centre.
+        const float cosRadius = std::clamp(2.0f * glm::length(region.moment) / region.luminousPower - 1.0f, 0.0f, 1.0f);
+        lights.push_back({glm::normalize(region.moment), region.power, std::sqrt(1.0f - cosRadius * cosRadius)});
+    }
+    for (size_t i = 0; i < peak.texels.size(); ++i)
+        if (!kept[root(static_cast<int>(i))]) peak.texels[i] = glm::vec3(0.0f);
+    return lights;
 }
 
 std::vector<EquirectImage> pyramidOf(EquirectImage image) {
@@ -181,8 +213,10 @@ std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance)
     auto map = std::make_shared<EnvironmentMap>();
     const std::vector<EquirectImage> pyramid = pyramidOf(radiance);
     map->irradiance = irradianceMap(pyramid);
-    const EquirectImage peak = peakRadiance(radiance);
+    EquirectImage peak = peakRadiance(radiance);
     map->peaks = peakLights(peak);
+    for (const EnvironmentPeakLight& light : map->peaks)
+        map->peakMinimumAlpha = std::max(map->peakMinimumAlpha, kPeakLobeToLight * kPeakWidening * light.sinRadius);
     EquirectImage residual = radiance;
     for (size_t i = 0; i < residual.texels.size(); ++i) residual.texels[i] -= peak.texels[i];
     const std::vector<EquirectImage> residualPyramid = pyramidOf(std::move(residual));

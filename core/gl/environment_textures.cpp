@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "environment/environment_lighting.h"
 #include "environment/environment_map.h"
 #include "math/constants.h"
 
@@ -88,15 +89,15 @@ void EnvironmentTextures::prepare(const Environment& environment) {
     }
     EnvironmentBlockStd140 block{};
     const float angle = environment.rotationDegrees * (kPi / 180.0f);
-    block.transform = {std::cos(angle), std::sin(angle), environment.intensity, 0.0f};
+    block.transform = {std::cos(angle), std::sin(angle), environment.intensity, map ? map->peakMinimumAlpha : 0.0f};
     const int peaks = map ? static_cast<int>(map->peaks.size()) : 0;
     block.flags = {map ? 1 : 0, map && environment.showAsBackground ? 1 : 0, peaks, 0};
     if (map) {
         block.sizes = {map->radiance.width, map->radiance.height, kPrefilteredWidth, kPrefilteredHeight};
     }
     for (int k = 0; k < peaks; ++k) {
-        block.peakDirections[k] = glm::vec4(map->peaks[k].direction, 0.0f);
-        block.peakIrradiances[k] = glm::vec4(map->peaks[k].irradiance, 0.0f);
+        block.peakDirections[k] = glm::vec4(environmentPeakDirection(environment, k), map->peaks[k].sinRadius);
+        block.peakIrradiances[k] = glm::vec4(environmentPeakIrradiance(environment, k), 0.0f);
     }
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);

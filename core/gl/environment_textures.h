@@ -16,11 +16,11 @@
 namespace glint {
 
 struct alignas(16) EnvironmentBlockStd140 {
-    glm::vec4 transform;  // x: cos(rotation), y: sin(rotation), z: intensity
+    glm::vec4 transform;  // x: cos(rotation), y: sin(rotation), z: intensity, w: peaks' minimum α
     glm::ivec4 flags;     // x: enabled, y: shown as background, z: peak lights
     glm::ivec4 sizes;     // x, y: base size; z, w: prefiltered size
-    glm::vec4 peakDirections[kMaxPeakLights];   // xyz: map space
-    glm::vec4 peakIrradiances[kMaxPeakLights];  // rgb [W/m²]
+    glm::vec4 peakDirections[kMaxPeakLights];   // xyz: world space (turned by the rotation); w: sine of its radius
+    glm::vec4 peakIrradiances[kMaxPeakLights];  // rgb [W/m²], × the intensity
 };
 static_assert(sizeof(EnvironmentBlockStd140) == (3 + 2 * kMaxPeakLights) * 16, "EnvironmentBlock std140 layout");
 

@@ -8,16 +8,15 @@
 
 const int PREFILTERED_LEVELS = 5;  // kPrefilteredLevels
 const int SPLIT_SUM_SIZE = 32;     // kSplitSumLutSize
-const int MAX_PEAK_LIGHTS = 64;    // kMaxPeakLights
-const float PEAK_MINIMUM_ALPHA = 0.04;  // kPeakMinimumAlpha
+const int MAX_PEAK_LIGHTS = 8;     // kMaxPeakLights
 
 layout(std140) uniform EnvironmentBlock {
-    vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity
+    vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity, w: peaks' minimum α
     ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background;
                                 // z: the map's peak lights
     ivec4 environmentSizes;     // x, y: base level size; z, w: prefiltered level size
-    vec4 environmentPeakDirections[MAX_PEAK_LIGHTS];  // xyz: map space
-    vec4 environmentPeakIrradiances[MAX_PEAK_LIGHTS]; // rgb [W/m²]
+    vec4 environmentPeakDirections[MAX_PEAK_LIGHTS];  // xyz: world space; w: sine of its radius
+    vec4 environmentPeakIrradiances[MAX_PEAK_LIGHTS]; // rgb [W/m²], × the intensity
 };
 uniform sampler2D environmentBase;             // the radiance image
 uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
@@ -85,43 +84,53 @@ vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness)
                                      sampleEnvironmentLevel(lower + 1, d) * t);
 }
 
-// Twin of residualPrefilteredRadiance() (environment_map.cpp) with the intensity.
-vec3 environmentResidualSpecularRadiance(vec3 worldDirection, float perceptualRoughness) {
-    vec3 d = environmentMapDirection(worldDirection);
-    float level = clamp(perceptualRoughness * float(PREFILTERED_LEVELS), 1.0, float(PREFILTERED_LEVELS));
-    int lower = min(int(level), PREFILTERED_LEVELS - 1);
-    float t = level - float(lower);
-    return environmentTransform.z * (sampleEnvironmentLevel(PREFILTERED_LEVELS + 1 + lower, d) * (1.0 - t) +
-                                     sampleEnvironmentLevel(PREFILTERED_LEVELS + 2 + lower, d) * t);
-}
-
 // The map's peak lights (twins of environmentUsesPeaks, environmentPeakDirection and
-// environmentPeakIrradiance in environment_lighting.cpp).
-bool environmentUsesPeaks(float alpha) { return alpha >= PEAK_MINIMUM_ALPHA && environmentFlags.z > 0; }
+// environmentPeakIrradiance in environment_lighting.cpp, which fill the block): their count a
+// compile-time constant in a specialised program (the sum unrolled), else the block's.
+#ifdef GLINT_ENVIRONMENT_PEAKS
+int environmentPeakCount() { return GLINT_ENVIRONMENT_PEAKS; }
+#else
+int environmentPeakCount() { return environmentFlags.z; }
+#endif
 
-vec3 environmentPeakDirection(int k) {
-    vec3 d = environmentPeakDirections[k].xyz;
-    float c = environmentTransform.x, s = environmentTransform.y;
-    return vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+bool environmentUsesPeaks(float alpha) { return alpha >= environmentTransform.w && environmentPeakCount() > 0; }
+
+vec3 environmentPeakDirection(int k) { return environmentPeakDirections[k].xyz; }
+
+vec3 environmentPeakIrradiance(int k) { return environmentPeakIrradiances[k].rgb; }
+
+const float PEAK_WIDENING = 0.5;  // kPeakWidening
+
+// Twin of environmentPeakAlpha().
+float environmentPeakAlpha(int k, float alpha) {
+    float spread = PEAK_WIDENING * environmentPeakDirections[k].w;
+    return min(1.0, sqrt(alpha * alpha + spread * spread));
 }
 
-vec3 environmentPeakIrradiance(int k) { return environmentTransform.z * environmentPeakIrradiances[k].rgb; }
-
-// Twin of peakSpecular() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k) cos θ_k E_k over
-// the peak lights where a lobe of roughness ALPHA takes them, LOBE being the glossy lobe's
-// f_r cos θ_i (Fresnel included) for the light direction `wi` (a macro: GLSL has no callbacks).
+// Twin of peakSpecular() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k
+// over the peak lights where a lobe of roughness ALPHA takes them, LOBE being the glossy lobe's
+// f_r cos θ_i (Fresnel included) for the light direction `wi` at the widened roughness `widened`
+// (a macro: GLSL has no callbacks).
 #define ENVIRONMENT_ADD_PEAKS(SUM, ALPHA, WO, FRAME, LOBE)                          \
     if (environmentUsesPeaks(ALPHA) && cosTheta(FRAME, WO) > 0.0) {                 \
-        for (int k = 0; k < environmentFlags.z; ++k) {                              \
+        for (int k = 0; k < environmentPeakCount(); ++k) {                          \
             vec3 wi = environmentPeakDirection(k);                                  \
+            float widened = environmentPeakAlpha(k, ALPHA);                         \
             if (cosTheta(FRAME, wi) > 0.0) SUM += (LOBE) * environmentPeakIrradiance(k); \
         }                                                                           \
     }
 
-// Twin of glossyRadiance(): the prefiltered map, less its peaks where the lobe takes them.
+// Twin of glossyRadiance(): the prefiltered map (environmentSpecularRadiance), less its peaks where
+// the lobe takes them (residualPrefilteredRadiance(), environment_map.cpp: r clamped to ≥ 1/L), as
+// one pair of lookups whose levels are picked (llvmpipe would run both arms of a choice of calls).
 vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
-    return environmentUsesPeaks(alpha) ? environmentResidualSpecularRadiance(worldDirection, sqrt(alpha))
-                                       : environmentSpecularRadiance(worldDirection, sqrt(alpha));
+    bool residual = environmentUsesPeaks(alpha);
+    vec3 d = environmentMapDirection(worldDirection);
+    float level = clamp(sqrt(alpha) * float(PREFILTERED_LEVELS), residual ? 1.0 : 0.0, float(PREFILTERED_LEVELS));
+    int lower = min(int(level), PREFILTERED_LEVELS - 1);
+    float t = level - float(lower);
+    int first = residual ? PREFILTERED_LEVELS + 1 + lower : lower;
+    return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + sampleEnvironmentLevel(first + 1, d) * t);
 }
 
 // Split-sum (A, B): twin of sampleSplitSum() in environment_map.cpp.
