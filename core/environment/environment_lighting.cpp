@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "brdf/fresnel.h"
 #include "environment/environment_map.h"
@@ -266,17 +268,25 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
     });
 }
 
-const char* environmentApproximation(BrdfModel model) {
-    return dispatch(model, []<class M>(M) {
-        if constexpr (!HasEnvironment<M>) return "none (traced)";
-        else if constexpr (SplitSum<M>)
-            return "irradiance map + GGX split sum along the dominant direction; from α 0.04 of the map less its "
-                   "peaks, which light the model's own lobe as directional lights";
-        else if constexpr (EquivalentLobe<M>)
-            return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R; from α 0.04 of the map "
-                   "less its peaks, which light the model's own lobe as directional lights";
-        else return "irradiance map";
+std::string environmentApproximation(BrdfModel model, std::span<const float> values, const Environment& environment) {
+    const char* lobe = dispatch(model, []<class M>(M) -> const char* {
+        if constexpr (!HasEnvironment<M>) return nullptr;
+        else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction";
+        else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R";
+        else return "";
     });
+    if (!lobe) return "none (traced)";
+    if (!*lobe) return "irradiance map";
+    const float alpha = environmentRoughness(model, values);
+    const size_t lights = environment.enabled() ? environment.map->peaks.size() : 0;
+    if (lights == 0) return std::string("irradiance map + ") + lobe + " (the map has no peaks)";
+    char threshold[96];
+    std::snprintf(threshold, sizeof threshold, "α %.3g %s the map's peak-light α %.3g", alpha,
+                  environmentUsesPeaks(environment, alpha) ? "≥" : "<", environment.map->peakMinimumAlpha);
+    if (!environmentUsesPeaks(environment, alpha))
+        return std::string("irradiance map + ") + lobe + " of the whole map (" + threshold + ")";
+    return std::string("irradiance map + ") + lobe + " of the map less its peaks + " + std::to_string(lights) +
+           " peak light" + (lights == 1 ? "" : "s") + " through the model's own lobe, widened for their extent (" + threshold + ")";
 }
 
 // --- dispatch -------------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -48,8 +49,9 @@ glm::vec3 environmentWorldDirection(const Environment& environment, glm::vec3 ma
 // around R of exponent n is about a Blinn lobe of exponent 4n, since θ_h ≈ δ/2).
 float environmentRoughness(BrdfModel model, std::span<const float> values);
 
-// How the preview approximates a model's environment light, in a few words (for the probe).
-const char* environmentApproximation(BrdfModel model);
+// How the preview approximates a material's environment light on this map, in a few words (for the
+// probe): the diffuse and glossy methods, and whether the map's peak lights are in use.
+std::string environmentApproximation(BrdfModel model, std::span<const float> values, const Environment& environment);
 
 // The model's environment hook (ModelInfo::glslEnvironment): radiance reflected towards wo
 // from the environment by the model's non-delta lobes. Zero for models without one (glass).
