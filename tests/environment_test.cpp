@@ -233,6 +233,23 @@ TEST(EnvironmentMap, EachBrightRegionIsOnePeakLightWithItsPowerDirectionAndExten
     EXPECT_GT(glm::dot(ten->peaks.back().direction, glm::vec3(1, 0, 0)), 0.99f);  // 150: the eighth
 }
 
+TEST(EnvironmentMap, TheProbesMethodSaysWhetherThePeakLightsAreInUse) {
+    Environment studio;
+    studio.kind = EnvironmentKind::Studio;
+    ASSERT_TRUE(loadEnvironment(studio).ok());
+    ASSERT_EQ(studio.map->peaks.size(), 3u);  // key, rim and strip; the fill is below 4× the mean
+    const auto method = [&](float alpha) {
+        return environmentApproximation(BrdfModel::CookTorrance, test::glossyMaterial(BrdfModel::CookTorrance, alpha).values,
+                                        studio);
+    };
+    EXPECT_NE(method(0.5f).find("less its peaks + 3 peak lights"), std::string::npos) << method(0.5f);
+    EXPECT_NE(method(0.1f).find("of the whole map (α 0.1 < the map's peak-light α"), std::string::npos) << method(0.1f);
+    EXPECT_EQ(environmentApproximation(BrdfModel::Lambert, Material::withDefaults("m", BrdfModel::Lambert).values, studio),
+              "irradiance map");
+    EXPECT_EQ(environmentApproximation(BrdfModel::Glass, Material::withDefaults("m", BrdfModel::Glass).values, studio),
+              "none (traced)");
+}
+
 TEST(EnvironmentMap, RotationTurnsTheMapAboutY) {
     Environment environment;
     environment.kind = EnvironmentKind::Studio;
