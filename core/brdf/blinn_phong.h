@@ -83,9 +83,7 @@ struct BlinnPhong {
     using Params = BlinnPhongParams;
     static constexpr auto eval = evalBlinnPhong;
     static constexpr auto ambientReflectance = ambientReflectanceBlinnPhong;
-    static constexpr const char* environmentResponse =
-        "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(n+2)) (w = 1 for the normalized form); from α 0.04 "
-        "the map's peaks as directional lights through the BRDF";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(n+2)) (w = 1 for the normalized form)";
     static bool isReciprocal(const Params& p) { return p.form != BlinnForm::Lecture; }  // the lecture form is not
 };
 

@@ -103,9 +103,7 @@ struct CookTorrance {
     using Params = CookTorranceParams;
     static constexpr auto eval = evalCookTorrance;
     static constexpr auto ambientReflectance = ambientReflectanceCookTorrance;
-    static constexpr const char* environmentResponse =
-        "ρ_d·E(n)/π + prefiltered radiance at α × (F0·A + B), split sum (GGX table for both distributions); "
-        "from α 0.04 the map's peaks as directional lights through the BRDF, the rest split-summed";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + prefiltered radiance at α × (F0·A + B), split sum (GGX table for both distributions)";
 };
 
 }  // namespace glint

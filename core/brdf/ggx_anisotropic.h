@@ -80,9 +80,7 @@ struct GgxAnisotropic {
     using Params = GgxAnisotropicParams;
     static constexpr auto eval = evalGgxAnisotropic;
     static constexpr auto ambientReflectance = ambientReflectanceGgxAnisotropic;
-    static constexpr const char* environmentResponse =
-        "ρ_d·E(n)/π + split sum at the isotropic α = √(α_x α_y); from α 0.04 the map's peaks as directional "
-        "lights through the BRDF, the rest split-summed";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + split sum at the isotropic α = √(α_x α_y)";
 };
 
 }  // namespace glint

@@ -88,9 +88,7 @@ struct Phong {
     using Params = PhongParams;
     static constexpr auto eval = evalPhong;
     static constexpr auto ambientReflectance = ambientReflectancePhong;
-    static constexpr const char* environmentResponse =
-        "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(4n+2)) (w = 1 for the normalized form); from "
-        "α 0.04 the map's peaks as directional lights through the BRDF";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(4n+2)) (w = 1 for the normalized form)";
     static bool isReciprocal(const Params& p) { return p.form != PhongForm::Lecture; }  // the lecture form is not
 };
 

@@ -82,9 +82,7 @@ struct Ward {
     using Params = WardParams;
     static constexpr auto eval = evalWard;
     static constexpr auto ambientReflectance = ambientReflectanceWard;
-    static constexpr const char* environmentResponse =
-        "ρ_d·E(n)/π + ρ_s·prefiltered radiance at α = √(α_x α_y); from α 0.04 the map's peaks as directional "
-        "lights through the BRDF";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + ρ_s·prefiltered radiance at α = √(α_x α_y)";
 };
 
 }  // namespace glint
