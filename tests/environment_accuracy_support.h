@@ -61,6 +61,7 @@ inline std::vector<AccuracyMap> accuracyMaps(const std::string& studioFile) {
 struct AccuracyMaterial {
     std::string name;
     Material material;
+    float alpha = 0.0f;  // the glossy lobe's GGX roughness (0: a diffuse model)
 };
 
 inline void setParam(Material& material, const char* name, std::initializer_list<float> values) {
@@ -113,7 +114,7 @@ inline std::vector<AccuracyMaterial> accuracyMaterials() {
             for (float alpha : kAccuracyAlphas) {
                 char name[64];
                 std::snprintf(name, sizeof name, "%s α %.2g", info.id, alpha);
-                materials.push_back({name, glossyMaterial(info.model, alpha)});
+                materials.push_back({name, glossyMaterial(info.model, alpha), alpha});
             }
         } else {
             Material material = Material::withDefaults("m", info.model);

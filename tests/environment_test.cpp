@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 
 #include "brdf/cook_torrance.h"
 #include "brdf/oren_nayar.h"
@@ -185,6 +186,68 @@ TEST(EnvironmentMap, TheIrradianceMapMatchesQuadratureOnSmoothAndPeakyMaps) {
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(mapped[c], exact[c], tolerance * exact[c]) << c;
         }
     }
+}
+
+// A map of dim fill with bright discs (radius [°], radiance, centre).
+struct Disc {
+    float radiusDegrees, radiance;
+    glm::vec3 centre;
+};
+EquirectImage discsImage(std::initializer_list<Disc> discs) {
+    EquirectImage image(256, 128);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 d = equirectDirection({(x + 0.5f) / image.width, (y + 0.5f) / image.height});
+            image.at(x, y) = glm::vec3(0.1f);
+            for (const Disc& disc : discs)
+                if (glm::dot(d, glm::normalize(disc.centre)) >= std::cos(disc.radiusDegrees * kPi / 180.0f))
+                    image.at(x, y) += glm::vec3(disc.radiance);
+        }
+    return image;
+}
+
+TEST(EnvironmentMap, EachBrightRegionIsOnePeakLightWithItsPowerDirectionAndExtent) {
+    // A 4° disc, and a 10° disc across the map's seam (+z, u = 0 and 1): two lights.
+    const auto map = makeEnvironmentMap(discsImage({{4.0f, 300.0f, {0.3f, 0.8f, 0.5f}}, {10.0f, 50.0f, {0, 0, 1}}}));
+    ASSERT_EQ(map->peaks.size(), 2u);
+    const auto solidAngle = [](float degrees) { return 2.0f * kPi * (1.0f - std::cos(degrees * kPi / 180.0f)); };
+    const float mean = (0.1f * 4.0f * kPi + 300.0f * solidAngle(4.0f) + 50.0f * solidAngle(10.0f)) / (4.0f * kPi);
+    const float threshold = kPeakThreshold * mean;  // each disc's peak is its radiance above it
+    const Disc expected[] = {{10.0f, 50.1f, {0, 0, 1}}, {4.0f, 300.1f, {0.3f, 0.8f, 0.5f}}};  // with the fill
+    for (int k = 0; k < 2; ++k) {
+        const EnvironmentPeakLight& light = map->peaks[k];  // most power first: the wide disc
+        const float power = (expected[k].radiance - threshold) * solidAngle(expected[k].radiusDegrees);
+        EXPECT_NEAR(light.irradiance.g, power, 0.06f * power) << k;
+        EXPECT_GT(glm::dot(light.direction, glm::normalize(expected[k].centre)), std::cos(kPi / 180.0f)) << k;
+        // A uniform disc's equivalent radius is its own.
+        EXPECT_NEAR(light.sinRadius, std::sin(expected[k].radiusDegrees * kPi / 180.0f), 0.012f) << k;
+    }
+    // Sharper lobes than 3/4 of the widest light's widening take the whole map prefiltered.
+    EXPECT_FLOAT_EQ(map->peakMinimumAlpha, kPeakLobeToLight * kPeakWidening * map->peaks[0].sinRadius);
+    // Ten regions: the eight brightest are lights.
+    const auto ten = makeEnvironmentMap(discsImage({{3, 100, {0, 1, 0}}, {3, 100, {0, -1, 0}}, {3, 150, {1, 0, 0}},
+                                                   {3, 160, {-1, 0, 0}}, {3, 170, {0, 0, 1}}, {3, 180, {0, 0, -1}},
+                                                   {3, 190, {1, 1, 1}}, {3, 200, {-1, 1, 1}}, {3, 210, {1, -1, 1}},
+                                                   {3, 220, {1, 1, -1}}}));
+    ASSERT_EQ(ten->peaks.size(), static_cast<size_t>(kMaxPeakLights));
+    EXPECT_GT(glm::dot(ten->peaks.back().direction, glm::vec3(1, 0, 0)), 0.99f);  // 150: the eighth
+}
+
+TEST(EnvironmentMap, TheProbesMethodSaysWhetherThePeakLightsAreInUse) {
+    Environment studio;
+    studio.kind = EnvironmentKind::Studio;
+    ASSERT_TRUE(loadEnvironment(studio).ok());
+    ASSERT_EQ(studio.map->peaks.size(), 3u);  // key, rim and strip; the fill is below 4× the mean
+    const auto method = [&](float alpha) {
+        return environmentApproximation(BrdfModel::CookTorrance, test::glossyMaterial(BrdfModel::CookTorrance, alpha).values,
+                                        studio);
+    };
+    EXPECT_NE(method(0.5f).find("less its peaks + 3 peak lights"), std::string::npos) << method(0.5f);
+    EXPECT_NE(method(0.1f).find("of the whole map (α 0.1 < the map's peak-light α"), std::string::npos) << method(0.1f);
+    EXPECT_EQ(environmentApproximation(BrdfModel::Lambert, Material::withDefaults("m", BrdfModel::Lambert).values, studio),
+              "irradiance map");
+    EXPECT_EQ(environmentApproximation(BrdfModel::Glass, Material::withDefaults("m", BrdfModel::Glass).values, studio),
+              "none (traced)");
 }
 
 TEST(EnvironmentMap, RotationTurnsTheMapAboutY) {

@@ -39,7 +39,7 @@ run_suite() {  # run_suite NAME DIR [CTEST ARGS…]
 }
 # Two at a time (most tests spend their time compiling shaders on one core), but the GUI tests
 # alone afterwards: they drive a real X server and wait for frames.
-run_suite tests "$build" -j2 -LE gui
+run_suite tests "$build" -j2 -LE "gui|heavy"
 run_suite gui "$build" -L gui
 
 # One clang-14 build runs the headless suite under AddressSanitizer + UndefinedBehaviorSanitizer and

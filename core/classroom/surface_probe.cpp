@@ -146,7 +146,7 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         result.ambientRadiance = breakdown.ambientRadiance;
         result.environment = breakdown.environment;
         if (scene.environment.enabled() && !material.measured && modelInfo(material.model).glslEnvironment) {
-            result.environmentMethod = environmentApproximation(material.model);
+            result.environmentMethod = environmentApproximation(material.model, breakdown.values, scene.environment);
             result.environmentTruth = sampleEnvironmentLighting(material.model, breakdown.values, towardsViewer,
                                                                 breakdown.frame, scene.environment, pixelSeed,
                                                                 kProbeEnvironmentSamples);

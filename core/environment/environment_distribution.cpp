@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "light/photometry.h"
 #include "math/constants.h"
 
 namespace glint {
@@ -16,8 +17,6 @@ int findInterval(const float* cdf, int count, float u) {
     return std::clamp(static_cast<int>(upper - cdf) - 1, 0, count - 1);
 }
 
-float luminance(glm::vec3 radiance) { return 0.2126f * radiance.r + 0.7152f * radiance.g + 0.0722f * radiance.b; }
-
 // The mean luminance over texel (x, y) of the bilinearly interpolated image (the radiance the
 // integrand sees): per axis 1/8 of each neighbour and 3/4 of the texel itself (wrapping in x,
 // clamped in y). Drawing in proportion to it keeps a bright texel's bilinear skirt in the
@@ -29,7 +28,7 @@ float bilinearMeanLuminance(const EquirectImage& radiance, int x, int y) {
         const int row = std::clamp(y + j, 0, radiance.height - 1);
         for (int i = -1; i <= 1; ++i) {
             const int column = (x + i + radiance.width) % radiance.width;
-            sum += kWeights[i + 1] * kWeights[j + 1] * luminance(radiance.at(column, row));
+            sum += kWeights[i + 1] * kWeights[j + 1] * relativeLuminance(radiance.at(column, row));
         }
     }
     return std::max(0.0f, sum);

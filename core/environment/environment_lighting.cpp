@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
+#include "brdf/fresnel.h"
 #include "environment/environment_map.h"
 #include "math/constants.h"
 
@@ -30,6 +33,35 @@ glm::vec3 environmentDiffuseRadiance(const Environment& environment, glm::vec3 n
 glm::vec3 environmentSpecularRadiance(const Environment& environment, glm::vec3 worldDirection, float perceptualRoughness) {
     return environment.intensity *
            prefilteredRadiance(*environment.map, environmentMapDirection(environment, worldDirection), perceptualRoughness);
+}
+
+glm::vec3 environmentWorldDirection(const Environment& environment, glm::vec3 d) {
+    const float angle = environment.rotationDegrees * (kPi / 180.0f);
+    const float cosAngle = std::cos(angle), sinAngle = std::sin(angle);
+    return {cosAngle * d.x + sinAngle * d.z, d.y, -sinAngle * d.x + cosAngle * d.z};
+}
+
+bool environmentUsesPeaks(const Environment& environment, float alpha) {
+    return alpha >= environment.map->peakMinimumAlpha && !environment.map->peaks.empty();
+}
+
+glm::vec3 environmentPeakDirection(const Environment& environment, int k) {
+    return environmentWorldDirection(environment, environment.map->peaks[k].direction);
+}
+
+glm::vec3 environmentPeakIrradiance(const Environment& environment, int k) {
+    return environment.intensity * environment.map->peaks[k].irradiance;
+}
+
+float environmentPeakAlpha(const Environment& environment, int k, float alpha) {
+    const float spread = kPeakWidening * environment.map->peaks[k].sinRadius;
+    return std::min(1.0f, std::sqrt(alpha * alpha + spread * spread));
+}
+
+glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, glm::vec3 worldDirection,
+                                              float perceptualRoughness) {
+    return environment.intensity * residualPrefilteredRadiance(*environment.map, environmentMapDirection(environment, worldDirection),
+                                                               perceptualRoughness);
 }
 
 // --- roughness mapping ----------------------------------------------------------------------
@@ -57,6 +89,45 @@ float formWeight(int form, float cosOut, float normalization) {
     }
 }
 
+// The prefiltered radiance for GGX roughness α, of the map less its peaks where the lobe takes them.
+glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha) {
+    return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, std::sqrt(alpha))
+                                          : environmentSpecularRadiance(e, worldDirection, std::sqrt(alpha));
+}
+
+// The peaks as lights: Σ_k f_r(ω_k, ω_o; α_k) cos θ_k E_k, `reflectedCos(ω_i, α_k)` giving the
+// glossy lobe's f_r cos θ_i (Fresnel included) widened to GGX roughness α_k for light k's extent;
+// zero where the lobe does not take them. The microfacet lobes take Schlick's Fresnel with the
+// material's exact F0, as the split sum's F0·A + B does (the exact complex-index equations per
+// light cost a quarter of a studio frame on llvmpipe).
+template <class ReflectedCos>
+glm::vec3 peakSpecular(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
+    glm::vec3 sum(0.0f);
+    if (!environmentUsesPeaks(e, alpha) || frame.cosTheta(wo) <= 0.0f) return sum;
+    for (int k = 0; k < static_cast<int>(e.map->peaks.size()); ++k) {
+        const glm::vec3 wi = environmentPeakDirection(e, k);
+        if (frame.cosTheta(wi) > 0.0f) sum += reflectedCos(wi, environmentPeakAlpha(e, k, alpha)) * environmentPeakIrradiance(e, k);
+    }
+    return sum;
+}
+
+// A Blinn-Phong or Phong exponent for GGX roughness α (the inverses of blinnAlpha and phongAlpha).
+float blinnExponent(float alpha) { return 2.0f / (alpha * alpha) - 2.0f; }
+float phongExponent(float alpha) { return blinnExponent(alpha) / 4.0f; }
+
+// A Blinn-Phong or Phong specular lobe's f_r cos θ_i with its exponent lowered to `exponent`,
+// keeping the lobe's energy: the normalised form carries its factor (n + c)/(cπ) itself, the other
+// forms take the ratio (n' + c)/(n + c).
+template <class Params, class Evaluate>
+glm::vec3 widenedExponentLobe(Params lobe, float exponent, float c, bool normalisedForm, Evaluate&& evaluate, glm::vec3 wi,
+                              glm::vec3 wo, const ShadingFrame& frame) {
+    const float original = lobe.exponent;
+    lobe.diffuseAlbedo = glm::vec3(0.0f);
+    lobe.exponent = std::min(original, exponent);
+    const float keep = normalisedForm ? 1.0f : (lobe.exponent + c) / (original + c);
+    return keep * evaluate(lobe, wi, wo, frame) * frame.cosTheta(wi);
+}
+
 // --- per-model hooks ------------------------------------------------------------------------
 
 glm::vec3 lightingOf(const LambertParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
@@ -79,25 +150,39 @@ glm::vec3 lightingOf(const MirrorParams& p, glm::vec3, const ShadingFrame& frame
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
-glm::vec3 lightingOf(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame,
-                                        const Environment& e) {
+// Blinn-Phong, Phong, Ward: a GGX-prefiltered lobe of equivalent α for the map (less its peaks),
+// their own lobe for the peaks.
+glm::vec3 lightingOf(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const float alpha = blinnAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 8.0f) / (8.0f * kPi));
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(e, mirrorDirection(wo, frame), std::sqrt(blinnAlpha(p.exponent)));
+           p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+               return widenedExponentLobe(p, blinnExponent(widened), 8.0f, p.form == BlinnForm::Normalized, evalBlinnPhong, wi,
+                                          wo, frame);
+           });
 }
 
 glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const float alpha = phongAlpha(p.exponent);
     const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 2.0f) / (2.0f * kPi));
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(e, mirrorDirection(wo, frame), std::sqrt(phongAlpha(p.exponent)));
+           p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+               return widenedExponentLobe(p, phongExponent(widened), 2.0f, p.form == PhongForm::Normalized, evalPhong, wi, wo,
+                                          frame);
+           });
 }
 
 glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
-    const float perceptual = std::sqrt(std::sqrt(p.roughnessX * p.roughnessY));
+    const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * environmentSpecularRadiance(e, mirrorDirection(wo, frame), perceptual);
+           p.specular * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+               WardParams lobe = p;
+               lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
+               return p.specular * (wardSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
+           });
 }
 
 // The direction the GGX lobe's reflected light mostly comes from: the mirror direction bent
@@ -109,25 +194,39 @@ glm::vec3 dominantDirection(glm::vec3 wo, const ShadingFrame& frame, float alpha
     return glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * factor);
 }
 
-// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B) with F0 from n + iκ.
+// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B) with F0
+// from n + iκ; of the map less its peaks where the lobe takes them as directions.
 glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm::vec3 wo, const ShadingFrame& frame,
                            const Environment& e) {
     const float perceptual = std::sqrt(alpha);
     const glm::vec2 scaleBias = sampleSplitSum(splitSumLut(), std::max(frame.cosTheta(wo), 0.0f), perceptual);
-    return environmentSpecularRadiance(e, dominantDirection(wo, frame, alpha), perceptual) *
+    return glossyRadiance(e, dominantDirection(wo, frame, alpha), alpha) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 
 glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                           const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e);
+           splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e) +
+           peakSpecular(e, p.roughness, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+               CookTorranceParams lobe = p;
+               lobe.roughness = widened;
+               return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
+                      (cookTorranceSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
+           });
 }
 
 glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                             const Environment& e) {
+    const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           splitSumSpecular(p.ior, p.extinction, std::sqrt(p.roughnessX * p.roughnessY), wo, frame, e);
+           splitSumSpecular(p.ior, p.extinction, alpha, wo, frame, e) +
+           peakSpecular(e, alpha, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+               GgxAnisotropicParams lobe = p;
+               lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
+               return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
+                      (ggxAnisotropicSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
+           });
 }
 
 // Fuzz and diffuse under the irradiance map, coat and specular each prefiltered at its own
@@ -169,13 +268,25 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
     });
 }
 
-const char* environmentApproximation(BrdfModel model) {
-    return dispatch(model, []<class M>(M) {
-        if constexpr (!HasEnvironment<M>) return "none (traced)";
-        else if constexpr (SplitSum<M>) return "irradiance map + GGX split sum (prefiltered along the dominant direction)";
-        else if constexpr (EquivalentLobe<M>) return "irradiance map + GGX-prefiltered lobe of equivalent roughness along R";
-        else return "irradiance map";
+std::string environmentApproximation(BrdfModel model, std::span<const float> values, const Environment& environment) {
+    const char* lobe = dispatch(model, []<class M>(M) -> const char* {
+        if constexpr (!HasEnvironment<M>) return nullptr;
+        else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction";
+        else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R";
+        else return "";
     });
+    if (!lobe) return "none (traced)";
+    if (!*lobe) return "irradiance map";
+    const float alpha = environmentRoughness(model, values);
+    const size_t lights = environment.enabled() ? environment.map->peaks.size() : 0;
+    if (lights == 0) return std::string("irradiance map + ") + lobe + " (the map has no peaks)";
+    char threshold[96];
+    std::snprintf(threshold, sizeof threshold, "α %.3g %s the map's peak-light α %.3g", alpha,
+                  environmentUsesPeaks(environment, alpha) ? "≥" : "<", environment.map->peakMinimumAlpha);
+    if (!environmentUsesPeaks(environment, alpha))
+        return std::string("irradiance map + ") + lobe + " of the whole map (" + threshold + ")";
+    return std::string("irradiance map + ") + lobe + " of the map less its peaks + " + std::to_string(lights) +
+           " peak light" + (lights == 1 ? "" : "s") + " through the model's own lobe, widened for their extent (" + threshold + ")";
 }
 
 // --- dispatch -------------------------------------------------------------------------------

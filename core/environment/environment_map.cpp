@@ -8,6 +8,7 @@
 
 #include "brdf/microfacet.h"
 #include "environment/ggx_sampling.h"
+#include "light/photometry.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -77,6 +78,91 @@ EquirectImage irradianceMap(const std::vector<EquirectImage>& pyramid) {
     return irradiance;
 }
 
+// --- peaks --------------------------------------------------------------------------------
+
+// Each texel's radiance above the threshold T = kPeakThreshold × the mean luminance over the
+// sphere, as a share of its luminance Y: L·max(0, 1 − T/Y), so that the peak keeps its colour.
+EquirectImage peakRadiance(const EquirectImage& radiance) {
+    double power = 0.0;
+    for (int y = 0; y < radiance.height; ++y) {
+        const float solidAngle = texelSolidAngle(y, radiance.width, radiance.height);
+        for (int x = 0; x < radiance.width; ++x) power += relativeLuminance(radiance.at(x, y)) * solidAngle;
+    }
+    const float threshold = kPeakThreshold * static_cast<float>(power / (4.0 * kPi));
+    EquirectImage peak(radiance.width, radiance.height);
+    for (size_t i = 0; i < peak.texels.size(); ++i) {
+        const float y = relativeLuminance(radiance.texels[i]);
+        if (y > threshold) peak.texels[i] = radiance.texels[i] * (1.0f - threshold / y);
+    }
+    return peak;
+}
+
+// The peaks as a few lights: the peak image's texels joined into connected regions (8-neighbours,
+// wrapping in longitude), the kMaxPeakLights regions of most luminous power each a light with the
+// region's exact ∫ L_peak dω, its luminance-weighted mean direction and the radius of the disc of
+// the same mean cosine to it (a studio's soft box is one light). The peaks of the other regions go
+// back to the rest: their texels are zeroed in `peak`.
+std::vector<EnvironmentPeakLight> peakLights(EquirectImage& peak) {
+    const int width = peak.width, height = peak.height;
+    std::vector<int> parent(peak.texels.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+    const auto root = [&](int i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    const auto lit = [&](int x, int y) { return relativeLuminance(peak.at((x + width) % width, y)) > 0.0f; };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (!lit(x, y)) continue;
+            // The neighbours already visited: left, and the three above.
+            const int neighbours[4][2] = {{x - 1, y}, {x - 1, y - 1}, {x, y - 1}, {x + 1, y - 1}};
+            for (const auto& [nx, ny] : neighbours) {
+                if (ny < 0 || !lit(nx, ny)) continue;
+                const int a = root(y * width + x), b = root(ny * width + (nx + width) % width);
+                parent[std::max(a, b)] = std::min(a, b);
+            }
+        }
+    struct Region {
+        glm::vec3 power{0.0f}, moment{0.0f};
+        float luminousPower = 0.0f;
+    };
+    std::vector<Region> regions(peak.texels.size());
+    for (int y = 0; y < height; ++y) {
+        const float solidAngle = texelSolidAngle(y, width, height);
+        for (int x = 0; x < width; ++x) {
+            if (!lit(x, y)) continue;
+            Region& region = regions[root(y * width + x)];
+            const float luminousPower = relativeLuminance(peak.at(x, y)) * solidAngle;
+            region.power += peak.at(x, y) * solidAngle;
+            region.luminousPower += luminousPower;
+            region.moment += luminousPower * equirectDirection({(x + 0.5f) / width, (y + 0.5f) / height});
+        }
+    }
+    std::vector<int> order;
+    for (size_t i = 0; i < regions.size(); ++i)
+        if (regions[i].luminousPower > 0.0f) order.push_back(static_cast<int>(i));
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return regions[a].luminousPower > regions[b].luminousPower; });
+    order.resize(std::min(order.size(), static_cast<size_t>(kMaxPeakLights)));
+    std::vector<bool> kept(regions.size(), false);
+    std::vector<EnvironmentPeakLight> lights;
+    for (int index : order) {
+        const Region& region = regions[index];
+        kept[index] = true;
+        // A uniform disc of radius ρ has mean cosine (1 + cos ρ)/2 to its centre.
+        const float cosRadius = std::clamp(2.0f * glm::length(region.moment) / region.luminousPower - 1.0f, 0.0f, 1.0f);
+        lights.push_back({glm::normalize(region.moment), region.power, std::sqrt(1.0f - cosRadius * cosRadius)});
+    }
+    for (size_t i = 0; i < peak.texels.size(); ++i)
+        if (!kept[root(static_cast<int>(i))]) peak.texels[i] = glm::vec3(0.0f);
+    return lights;
+}
+
+std::vector<EquirectImage> pyramidOf(EquirectImage image) {
+    std::vector<EquirectImage> pyramid{std::move(image)};
+    while (pyramid.back().width > 8 && pyramid.back().height > 4) pyramid.push_back(downsampleEquirect(pyramid.back()));
+    return pyramid;
+}
+
 // --- GGX prefiltering -----------------------------------------------------------------------
 
 // Trilinear lookup in a mip pyramid (level 0 the full image) at a fractional level.
@@ -125,12 +211,19 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float al
 
 std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance) {
     auto map = std::make_shared<EnvironmentMap>();
-    std::vector<EquirectImage> pyramid{radiance};
-    while (pyramid.back().width > 8 && pyramid.back().height > 4) pyramid.push_back(downsampleEquirect(pyramid.back()));
+    const std::vector<EquirectImage> pyramid = pyramidOf(radiance);
     map->irradiance = irradianceMap(pyramid);
+    EquirectImage peak = peakRadiance(radiance);
+    map->peaks = peakLights(peak);
+    for (const EnvironmentPeakLight& light : map->peaks)
+        map->peakMinimumAlpha = std::max(map->peakMinimumAlpha, kPeakLobeToLight * kPeakWidening * light.sinRadius);
+    EquirectImage residual = radiance;
+    for (size_t i = 0; i < residual.texels.size(); ++i) residual.texels[i] -= peak.texels[i];
+    const std::vector<EquirectImage> residualPyramid = pyramidOf(std::move(residual));
     for (int k = 1; k <= kPrefilteredLevels; ++k) {
         const float perceptual = static_cast<float>(k) / kPrefilteredLevels;
         map->prefiltered.push_back(prefilterLevel(pyramid, perceptual * perceptual));
+        map->residualPrefiltered.push_back(prefilterLevel(residualPyramid, perceptual * perceptual));
     }
     map->distribution = EnvironmentDistribution(radiance);
     map->radiance = std::move(radiance);
@@ -194,6 +287,14 @@ glm::vec3 prefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, fl
         sampleEquirect(lower == 0 ? map.radiance : map.prefiltered[lower - 1], direction);
     const glm::vec3 upperRadiance = sampleEquirect(map.prefiltered[lower], direction);
     return lowerRadiance * (1.0f - t) + upperRadiance * t;
+}
+
+glm::vec3 residualPrefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, float perceptualRoughness) {
+    const float level = std::clamp(perceptualRoughness * kPrefilteredLevels, 1.0f, static_cast<float>(kPrefilteredLevels));
+    const int lower = std::min(static_cast<int>(level), kPrefilteredLevels - 1);
+    const float t = level - lower;
+    return sampleEquirect(map.residualPrefiltered[lower - 1], direction) * (1.0f - t) +
+           sampleEquirect(map.residualPrefiltered[lower], direction) * t;
 }
 
 }  // namespace glint

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "environment/environment_lighting.h"
 #include "environment/environment_map.h"
 #include "math/constants.h"
 
@@ -70,24 +71,33 @@ void EnvironmentTextures::prepare(const Environment& environment) {
         glBindTexture(GL_TEXTURE_2D, baseTexture_);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, map->radiance.width, map->radiance.height, 0, GL_RGBA, GL_FLOAT,
                      rgba(map->radiance).data());
-        // The prefiltered levels, then the irradiance map as the last layer.
+        // The prefiltered levels, the irradiance map, the residual's prefiltered levels.
+        std::vector<const EquirectImage*> images;
+        for (const EquirectImage& level : map->prefiltered) images.push_back(&level);
+        images.push_back(&map->irradiance);
+        for (const EquirectImage& level : map->residualPrefiltered) images.push_back(&level);
         std::vector<float> layers;
-        for (size_t layer = 0; layer <= map->prefiltered.size(); ++layer) {
-            const std::vector<float> texels = rgba(layer < map->prefiltered.size() ? map->prefiltered[layer] : map->irradiance);
+        for (const EquirectImage* image : images) {
+            const std::vector<float> texels = rgba(*image);
             layers.insert(layers.end(), texels.begin(), texels.end());
         }
         glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, kPrefilteredWidth, kPrefilteredHeight, kPrefilteredLevels + 1, 0,
-                     GL_RGBA, GL_FLOAT, layers.data());
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, kPrefilteredWidth, kPrefilteredHeight,
+                     static_cast<GLsizei>(images.size()), 0, GL_RGBA, GL_FLOAT, layers.data());
         uploadedMap_ = map;
         keepAlive_ = environment.map;
     }
     EnvironmentBlockStd140 block{};
     const float angle = environment.rotationDegrees * (kPi / 180.0f);
-    block.transform = {std::cos(angle), std::sin(angle), environment.intensity, 0.0f};
-    block.flags = {map ? 1 : 0, map && environment.showAsBackground ? 1 : 0, 0, 0};
+    block.transform = {std::cos(angle), std::sin(angle), environment.intensity, map ? map->peakMinimumAlpha : 0.0f};
+    const int peaks = map ? static_cast<int>(map->peaks.size()) : 0;
+    block.flags = {map ? 1 : 0, map && environment.showAsBackground ? 1 : 0, peaks, 0};
     if (map) {
         block.sizes = {map->radiance.width, map->radiance.height, kPrefilteredWidth, kPrefilteredHeight};
+    }
+    for (int k = 0; k < peaks; ++k) {
+        block.peakDirections[k] = glm::vec4(environmentPeakDirection(environment, k), map->peaks[k].sinRadius);
+        block.peakIrradiances[k] = glm::vec4(environmentPeakIrradiance(environment, k), 0.0f);
     }
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);

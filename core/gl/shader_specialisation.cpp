@@ -5,6 +5,7 @@
 
 #include "brdf/model_registry.h"
 #include "brdf/param_table.h"
+#include "environment/environment_map.h"
 #include "gl/material_glsl.h"
 
 namespace glint {
@@ -53,6 +54,7 @@ std::string backgroundSpecialisation(const FrameUniforms& frame, const Environme
     const bool environmentOn = environment.enabled();
     text += define("GLINT_ENVIRONMENT_ENABLED", environmentOn ? "1" : "0");
     text += define("GLINT_ENVIRONMENT_SHOWN", environmentOn && environment.showAsBackground ? "1" : "0");
+    text += define("GLINT_ENVIRONMENT_PEAKS", std::to_string(environmentOn ? environment.map->peaks.size() : 0));
     text += define("GLINT_BACKGROUND_KIND", std::to_string(frame.frame.backgroundKind.x));
     text += define("GLINT_FUSED_DISPLAY", fusedDisplay ? "1" : "0");
     if (fusedDisplay) text += displaySpecialisation(*fusedDisplay);

@@ -1,8 +1,8 @@
 // Program specialisation: the #define prelude that makes what a frame keeps fixed compile-time
 // constants of the programs that draw it — the lights' count and kinds (unrolled, with no shadow
-// lookup for a light without a map), whether there is an environment and whether it is shown, the
-// background's kind, the fused display's choices (transfer, tone map, dither) and a built-in
-// material's enum and bool parameters. The GLSL compiler then drops the branches, loops and
+// lookup for a light without a map), whether there is an environment, whether it is shown and its
+// peak lights' count, the background's kind, the fused display's choices (transfer, tone map,
+// dither) and a built-in material's enum and bool parameters. The GLSL compiler then drops the branches, loops and
 // uniform reads a generic program runs at every pixel (llvmpipe runs shaders on the CPU, so that
 // code costs as much as the shading itself). A symbol left undefined keeps the generic,
 // uniform-driven code (shaders/common/*.glsl read both ways), so a new fixed choice is one more

@@ -33,13 +33,6 @@ float visibleNormalPdf(glm::vec3 view, glm::vec3 light, float alpha) {
     return maskingView * distributionGgx(halfway.z, sin2Half, alpha) / (4.0f * view.z);
 }
 
-// The inverse of environmentMapDirection: a map-space direction turned back into the world.
-glm::vec3 worldFromMap(const Environment& environment, glm::vec3 d) {
-    const float angle = environment.rotationDegrees * (kPi / 180.0f);
-    const float cosAngle = std::cos(angle), sinAngle = std::sin(angle);
-    return {cosAngle * d.x + sinAngle * d.z, d.y, -sinAngle * d.x + cosAngle * d.z};
-}
-
 enum Strategy { kEnvironment, kCosine, kGgx, kStrategyCount };
 
 }  // namespace
@@ -66,7 +59,7 @@ glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> valu
             const glm::vec2 u = glm::fract(hammersley(i, perStrategy) + shift);
             glm::vec3 lightWorld;
             if (strategy == kEnvironment) {
-                lightWorld = worldFromMap(environment, distribution.sample(u).direction);
+                lightWorld = environmentWorldDirection(environment, distribution.sample(u).direction);
             } else if (strategy == kCosine) {
                 lightWorld = frame.toWorld(cosineDirection(u));
             } else {

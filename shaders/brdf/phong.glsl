@@ -22,11 +22,22 @@ vec3 ambientReflectancePhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
+// The specular lobe's f_r cos θ_i widened to GGX roughness `widened`, keeping its energy.
+vec3 phongPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float widened) {
+    float exponent = p.exponent;
+    p.diffuse_albedo = vec3(0.0);
+    p.exponent = min(exponent, (2.0 / (widened * widened) - 2.0) / 4.0);
+    float keep = p.form == FORM_NORMALIZED ? 1.0 : (p.exponent + 2.0) / (exponent + 2.0);
+    return keep * evalPhong(p, wi, wo, frame) * cosTheta(frame, wi);
+}
+
 // Environment hook: twin of environmentLightingPhong in core/environment/environment_lighting.cpp.
 vec3 environmentLightingPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
+    float alpha = sqrt(2.0 / (4.0 * p.exponent + 2.0));
     float weight = environmentFormWeight(p.form, cosTheta(frame, wo), (p.exponent + 2.0) / (2.0 * PI));
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, phongPeakLobe(p, wi, wo, frame, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           p.specular * weight *
-               environmentSpecularRadiance(environmentMirrorDirection(wo, frame), sqrt(sqrt(2.0 / (4.0 * p.exponent + 2.0))));
+           p.specular * weight * environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
 }
 #endif

@@ -24,10 +24,19 @@ vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
+// The specular lobe's f_r cos θ_i widened from roughness `alpha` to `widened`.
+vec3 wardPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float alpha, float widened) {
+    p.roughness_x *= widened / alpha;
+    p.roughness_y *= widened / alpha;
+    return p.specular * (wardSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
+}
+
 // Environment hook: twin of environmentLightingWard in core/environment/environment_lighting.cpp.
 vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
-    float perceptual = sqrt(sqrt(p.roughness_x * p.roughness_y));
+    float alpha = sqrt(p.roughness_x * p.roughness_y);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, wardPeakLobe(p, wi, wo, frame, alpha, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           p.specular * environmentSpecularRadiance(environmentMirrorDirection(wo, frame), perceptual);
+           p.specular * environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
 }
 #endif

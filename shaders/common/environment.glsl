@@ -8,14 +8,19 @@
 
 const int PREFILTERED_LEVELS = 5;  // kPrefilteredLevels
 const int SPLIT_SUM_SIZE = 32;     // kSplitSumLutSize
+const int MAX_PEAK_LIGHTS = 8;     // kMaxPeakLights
 
 layout(std140) uniform EnvironmentBlock {
-    vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity
-    ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background
+    vec4 environmentTransform;  // x: cos(rotation), y: sin(rotation), z: intensity, w: peaks' minimum α
+    ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background;
+                                // z: the map's peak lights
     ivec4 environmentSizes;     // x, y: base level size; z, w: prefiltered level size
+    vec4 environmentPeakDirections[MAX_PEAK_LIGHTS];  // xyz: world space; w: sine of its radius
+    vec4 environmentPeakIrradiances[MAX_PEAK_LIGHTS]; // rgb [W/m²], × the intensity
 };
 uniform sampler2D environmentBase;             // the radiance image
-uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π
+uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
+                                               // layer L + k: roughness k/L of the map less its peaks
 uniform sampler2D environmentSplitSum;         // rg: split-sum scale A and bias B
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
@@ -38,7 +43,8 @@ vec3 fetchEnvironmentLevel(int level, ivec2 texel) {
     return texelFetch(environmentPrefiltered, ivec3(texel, level - 1), 0).rgb;
 }
 
-// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance): twin of sampleEquirect().
+// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance, L + 1 + k: residual k):
+// twin of sampleEquirect().
 vec3 sampleEnvironmentLevel(int level, vec3 d) {
     ivec2 size = level == 0 ? environmentSizes.xy : environmentSizes.zw;
     float u = 0.5 + atan(d.x, -d.z) * (0.5 * INV_PI);
@@ -78,6 +84,55 @@ vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness)
                                      sampleEnvironmentLevel(lower + 1, d) * t);
 }
 
+// The map's peak lights (twins of environmentUsesPeaks, environmentPeakDirection and
+// environmentPeakIrradiance in environment_lighting.cpp, which fill the block): their count a
+// compile-time constant in a specialised program (the sum unrolled), else the block's.
+#ifdef GLINT_ENVIRONMENT_PEAKS
+int environmentPeakCount() { return GLINT_ENVIRONMENT_PEAKS; }
+#else
+int environmentPeakCount() { return environmentFlags.z; }
+#endif
+
+bool environmentUsesPeaks(float alpha) { return alpha >= environmentTransform.w && environmentPeakCount() > 0; }
+
+vec3 environmentPeakDirection(int k) { return environmentPeakDirections[k].xyz; }
+
+vec3 environmentPeakIrradiance(int k) { return environmentPeakIrradiances[k].rgb; }
+
+const float PEAK_WIDENING = 0.5;  // kPeakWidening
+
+// Twin of environmentPeakAlpha().
+float environmentPeakAlpha(int k, float alpha) {
+    float spread = PEAK_WIDENING * environmentPeakDirections[k].w;
+    return min(1.0, sqrt(alpha * alpha + spread * spread));
+}
+
+// Twin of peakSpecular() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k
+// over the peak lights where a lobe of roughness ALPHA takes them, LOBE being the glossy lobe's
+// f_r cos θ_i (Fresnel included) for the light direction `wi` at the widened roughness `widened`
+// (a macro: GLSL has no callbacks).
+#define ENVIRONMENT_ADD_PEAKS(SUM, ALPHA, WO, FRAME, LOBE)                          \
+    if (environmentUsesPeaks(ALPHA) && cosTheta(FRAME, WO) > 0.0) {                 \
+        for (int k = 0; k < environmentPeakCount(); ++k) {                          \
+            vec3 wi = environmentPeakDirection(k);                                  \
+            float widened = environmentPeakAlpha(k, ALPHA);                         \
+            if (cosTheta(FRAME, wi) > 0.0) SUM += (LOBE) * environmentPeakIrradiance(k); \
+        }                                                                           \
+    }
+
+// Twin of glossyRadiance(): the prefiltered map (environmentSpecularRadiance), less its peaks where
+// the lobe takes them (residualPrefilteredRadiance(), environment_map.cpp: r clamped to ≥ 1/L), as
+// one pair of lookups whose levels are picked (llvmpipe would run both arms of a choice of calls).
+vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
+    bool residual = environmentUsesPeaks(alpha);
+    vec3 d = environmentMapDirection(worldDirection);
+    float level = clamp(sqrt(alpha) * float(PREFILTERED_LEVELS), residual ? 1.0 : 0.0, float(PREFILTERED_LEVELS));
+    int lower = min(int(level), PREFILTERED_LEVELS - 1);
+    float t = level - float(lower);
+    int first = residual ? PREFILTERED_LEVELS + 1 + lower : lower;
+    return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + sampleEnvironmentLevel(first + 1, d) * t);
+}
+
 // Split-sum (A, B): twin of sampleSplitSum() in environment_map.cpp.
 vec2 sampleSplitSum(float cosOut, float perceptualRoughness) {
     float last = float(SPLIT_SUM_SIZE - 1);
@@ -115,7 +170,7 @@ vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
 vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
     float perceptual = sqrt(alpha);
     vec2 scaleBias = sampleSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
-    return environmentSpecularRadiance(environmentDominantDirection(wo, frame, alpha), perceptual) *
+    return environmentGlossyRadiance(environmentDominantDirection(wo, frame, alpha), alpha) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
 
