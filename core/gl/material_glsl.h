@@ -15,11 +15,12 @@
 
 namespace glint {
 
-// Which parameters of a material are textured: bit i for the table's parameter i, bit 30 for
-// the occlusion map, bit 31 for the normal map, and bit 29 (no slot) when any texture is procedural, so that a program of image
+// Which parameters of a material are textured: bit i for the table's parameter i, bit 28 for the
+// coat normal map, bit 30 for the occlusion map, bit 31 for the normal map, and bit 29 (no slot) when any texture is procedural, so that a program of image
 // textures alone carries no Perlin noise (llvmpipe compiles such a program about five times
 // faster). Programs are built per model, MSAA samples and this mask.
 struct TexturedParams {
+    static constexpr int kCoatNormalMapBit = 28;
     static constexpr int kProceduralBit = 29;
     static constexpr int kOcclusionMapBit = 30;
     static constexpr int kNormalMapBit = 31;

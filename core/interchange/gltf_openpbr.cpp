@@ -23,7 +23,7 @@ using nlohmann::json;
 struct TextureSlot {
     const char* extension;  // "" for the core material; "pbrMetallicRoughness" for its object
     const char* key;        // the textureInfo's key
-    const char* parameter;  // openpbr parameter, or kNormalMapKey
+    const char* parameter;  // openpbr parameter, or a surface map's key (texture/material_texture.h)
     TextureChannel channel = TextureChannel::R;  // scalars
     bool srgb = false;      // colour textures are sRGB-encoded (glTF 2.0 §3.9.2)
 };
@@ -39,6 +39,7 @@ constexpr TextureSlot kTextureSlots[] = {
     {"KHR_materials_specular", "specularColorTexture", "specular_color", TextureChannel::R, true},
     {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", TextureChannel::R},
     {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", TextureChannel::G},
+    {"KHR_materials_clearcoat", "clearcoatNormalTexture", kCoatNormalMapKey},
     {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", TextureChannel::R, true},
     {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", TextureChannel::A},
     {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", TextureChannel::R},
@@ -49,7 +50,6 @@ constexpr TextureSlot kTextureSlots[] = {
 
 // Read and kept for export, not rendered: {extension ("" core), key}.
 constexpr std::pair<const char*, const char*> kKeptTextures[] = {
-    {"KHR_materials_clearcoat", "clearcoatNormalTexture"},
     {"KHR_materials_volume", "thicknessTexture"},
 };
 
@@ -102,7 +102,7 @@ struct Reading {
             texture->channel = slot.channel;
             if (auto range = ranges.find(slot.parameter); range != ranges.end()) texture->range = range->second;
             if (auto factor = colorFactors.find(slot.parameter); factor != colorFactors.end()) texture->colorFactor = factor->second;
-            if (std::string(slot.parameter) == kNormalMapKey) texture->normalScale = info.scale;
+            if (isNormalMapKey(slot.parameter)) texture->normalScale = info.scale;
             // glTF: occlusion = 1 + strength·(texel − 1) = mix(1 − strength, 1, texel).
             if (std::string(slot.parameter) == kOcclusionMapKey) texture->range = {1.0f - info.scale, 1.0f};
             textures.push_back(std::move(*texture));
@@ -211,10 +211,6 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         ranges["coat_weight"] = {0.0f, weight};
         ranges["coat_roughness"] = {0.0f, coatRoughness};
         reading.readSlots(*coat, "KHR_materials_clearcoat", ranges, colorFactors);
-        reading.keepTextures(*coat, "KHR_materials_clearcoat");
-        if (reading.kept.contains("extensions") && reading.kept["extensions"].contains("KHR_materials_clearcoat"))
-            reading.note(pointerOf("KHR_materials_clearcoat"),
-                         "clearcoatNormalTexture is kept for export, not rendered: Glint's coat shares the base's normal");
         finish(*coat);
     }
     if (auto sheen = extension("KHR_materials_sheen")) {
@@ -471,7 +467,7 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
             if (metallicRoughness[0]->file != texture.file || metallicRoughness[0]->tiling != texture.tiling ||
                 metallicRoughness[0]->offset != texture.offset || metallicRoughness[0]->rotation != texture.rotation)
                 w.lost("metalness and roughness textures differ: glTF holds one metallicRoughnessTexture; the roughness one is written");
-        } else if (parameter == kNormalMapKey) {
+        } else if (isNormalMapKey(parameter)) {
             object[slot->key] = textures.textureInfo(texture, extensionsUsed);
             if (texture.normalScale != 1.0f) object[slot->key]["scale"] = texture.normalScale;
         } else {

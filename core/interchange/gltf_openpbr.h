@@ -29,7 +29,7 @@ bool isGltfMaterialExtension(const std::string& name);
 
 // One entry of "materials" onto an openpbr material: what does not map exactly is a warning
 // located at its JSON pointer; what Glint reads but does not render (the volume's
-// thickness, the coat's normal map, dispersion) is kept in ImportedMaterial::gltfKept for export.
+// thickness and its texture, dispersion) is kept in ImportedMaterial::gltfKept for export.
 ImportedMaterial readGltfMaterial(ObjectReader& reader, const nlohmann::json& root, const JsonDocument& document,
                                   const std::string& folder, int index);
 

@@ -131,6 +131,11 @@ void writeTextures(const Material& material, const std::string& graphName, const
                                          "': the occlusion map is not written (open_pbr_surface has no ambient-occlusion input)"));
             continue;
         }
+        if (texture.parameter == kCoatNormalMapKey) {
+            warnings.push_back(makeError("warning: material '" + material.name +
+                                         "': the coat normal map is not written (geometry_coat_normal is left to the base's normal)"));
+            continue;
+        }
         if (texture.kind != TextureKind::Image) {
             warnings.push_back(makeError("warning: material '" + material.name + "': the procedural texture on '" + texture.parameter +
                                          "' is not written (MaterialX would need its own node graph); the constant is"));
