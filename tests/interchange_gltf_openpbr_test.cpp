@@ -341,6 +341,13 @@ TEST(GltfOpenPbr, TexturesDriveTheirParametersWithFactorsChannelsAndTransforms) 
     EXPECT_EQ(coatNormal->colorSpace, TextureColorSpace::Linear);
     EXPECT_FLOAT_EQ(coatNormal->normalScale, 0.5f);
     EXPECT_TRUE(file.materials[2].textures.empty());
+    // The volume's thickness: thicknessFactor × G [m], rendered (nothing left only for export).
+    EXPECT_FLOAT_EQ(paramScalar(file.materials[4].material, "geometry_thickness"), 0.3f);
+    const MaterialTexture* volumeThickness = findTexture(file.materials[4].material, "geometry_thickness");
+    ASSERT_NE(volumeThickness, nullptr);
+    EXPECT_EQ(volumeThickness->channel, TextureChannel::G);
+    EXPECT_EQ(volumeThickness->range, glm::vec2(0.0f, 0.3f));
+    EXPECT_TRUE(file.materials[4].textures.empty());
     // Iridescence thickness: mix(minimum, maximum, G) in µm.
     const MaterialTexture* thickness = findTexture(file.materials[6].material, "thin_film_thickness");
     ASSERT_NE(thickness, nullptr);
@@ -475,9 +482,14 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     setParam(glass, "transmission_weight", 1.0f);
     setParam(glass, "transmission_color", glm::vec3(0.7f, 0.9f, 0.8f));
     setParam(glass, "transmission_depth", 0.05f);
+    setParam(glass, "geometry_thickness", 0.02f);  // glTF's volume needs one (0 is written as the sphere's diameter)
     MaterialTexture transmission = image("transmission_weight", "data.png", TextureColorSpace::Linear);
     transmission.range = {0.0f, 1.0f};
     putTexture(glass, transmission);
+    MaterialTexture thickness = image("geometry_thickness", "data.png", TextureColorSpace::Linear);
+    thickness.channel = TextureChannel::G;
+    thickness.range = {0.0f, 0.02f};
+    putTexture(glass, thickness);
     materials.push_back(glass);
 
     Material brushed = test::materialWith("brushed steel", BrdfModel::OpenPbr,

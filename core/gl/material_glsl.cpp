@@ -45,8 +45,8 @@ TexturedParams TexturedParams::of(const Material& material) {
                         : texture.parameter == kNormalMapKey      ? kNormalMapBit
                         : texture.parameter == kCoatNormalMapKey  ? kCoatNormalMapBit
                                                                   : kOcclusionMapBit;
-        textured.mask |= 1u << bit;
-        if (texture.kind != TextureKind::Image) textured.mask |= 1u << kProceduralBit;
+        textured.mask |= std::uint64_t{1} << bit;
+        if (texture.kind != TextureKind::Image) textured.mask |= std::uint64_t{1} << kProceduralBit;
     }
     return textured;
 }

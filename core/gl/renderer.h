@@ -163,7 +163,7 @@ private:
     std::string shaderError_;
     // Keyed by model, variant (MSAA, Gouraud, ray-cast sphere) and which parameters are textured
     // (TexturedParams::mask).
-    std::map<std::tuple<BrdfModel, SurfaceVariant, std::uint32_t>, SurfaceProgram> surfacePrograms_;
+    std::map<std::tuple<BrdfModel, SurfaceVariant, std::uint64_t>, SurfaceProgram> surfacePrograms_;
     CustomBrdfPrograms customPrograms_;  // materials with a .brdf file
     MeasuredBrdfGpu measured_;  // materials with a MERL table
     std::map<std::string, ShaderProgram> displayPrograms_;  // by specialisation prelude

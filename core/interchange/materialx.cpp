@@ -278,6 +278,13 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
         for (size_t i = 0; i < table.size(); ++i) {
             const ParamSpec& spec = table[i];
             const glm::vec3 value = paramValue(material, spec.name);
+            if (std::string_view(spec.name) == "geometry_thickness") {
+                if (value.x != 0.0f)
+                    out.warnings.push_back(makeError("warning: material '" + material.name + "': geometry_thickness (" +
+                                                     shortestDecimal(value.x) + " m) is Glint's own; open_pbr_surface's volume is "
+                                                     "the geometry, and it is not written"));
+                continue;
+            }
             if (std::string_view(spec.name) == "geometry_tangent_rotation") {
                 if (value.x != 0.0f)
                     out.warnings.push_back(makeError("warning: material '" + material.name + "': geometry_tangent_rotation (" +

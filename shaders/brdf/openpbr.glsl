@@ -172,6 +172,11 @@ vec3 transportOpenpbr(MaterialParams p, vec3 position, ShadingFrame frame, vec3 
     vec3 weight = openPbrResponse(p, v).transmission;
     vec3 incoming = -towardsViewer;
     bool outsideSphere = shapeKind == SHAPE_SPHERE && dot(normal, position - sphere.xyz) > 0.0;
+    if (!p.geometry_thin_walled && shapeKind != SHAPE_SPHERE && p.geometry_thickness > 0.0) {
+        vec3 exitPoint = position + p.geometry_thickness * refractDirection(incoming, normal, 1.0 / p.specular_ior);
+        return emission + weight * openPbrVolumeTransmittance(p, p.geometry_thickness) *
+                              transmittedRadianceRough(exitPoint, incoming, incoming, v.specularRoughness, p.specular_ior);
+    }
     if (p.geometry_thin_walled || !outsideSphere)
         return emission + weight * p.transmission_color *
                               transmittedRadianceRough(position, incoming, incoming, v.specularRoughness, p.specular_ior);
