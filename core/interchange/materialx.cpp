@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "brdf/model_switch.h"
 #include "interchange/material_values.h"
@@ -278,18 +279,14 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
         for (size_t i = 0; i < table.size(); ++i) {
             const ParamSpec& spec = table[i];
             const glm::vec3 value = paramValue(material, spec.name);
-            if (std::string_view(spec.name) == "geometry_thickness") {
+            // Glint's own parameters are no inputs of open_pbr_surface: not written, a warning when set.
+            static const std::map<std::string_view, const char*> kGlintOwn = {
+                {"geometry_tangent_rotation", "°) is Glint's own; open_pbr_surface turns the tangent through geometry_tangent, which is not written"},
+                {"geometry_thickness", " m) is Glint's own; open_pbr_surface's volume is the geometry, and it is not written"}};
+            if (const auto own = kGlintOwn.find(spec.name); own != kGlintOwn.end()) {
                 if (value.x != 0.0f)
-                    out.warnings.push_back(makeError("warning: material '" + material.name + "': geometry_thickness (" +
-                                                     shortestDecimal(value.x) + " m) is Glint's own; open_pbr_surface's volume is "
-                                                     "the geometry, and it is not written"));
-                continue;
-            }
-            if (std::string_view(spec.name) == "geometry_tangent_rotation") {
-                if (value.x != 0.0f)
-                    out.warnings.push_back(makeError("warning: material '" + material.name + "': geometry_tangent_rotation (" +
-                                                     shortestDecimal(value.x) + "°) is Glint's own; open_pbr_surface turns the tangent "
-                                                     "through geometry_tangent, which is not written"));
+                    out.warnings.push_back(makeError("warning: material '" + material.name + "': " + spec.name + " (" +
+                                                     shortestDecimal(value.x) + own->second));
                 continue;
             }
             const char* type = spec.kind == ParamKind::Bool ? "boolean" : componentCount(spec.kind) == 3 ? "color3" : "float";
