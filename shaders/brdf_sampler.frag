@@ -25,5 +25,6 @@ void main() {
     frame.tangent = vec3(1.0, 0.0, 0.0);
     frame.bitangent = vec3(0.0, 1.0, 0.0);
     frame.normal = vec3(0.0, 0.0, 1.0);
+    frame.coatNormal = vec3(0.0);
     reflectance = vec4(GLINT_EVAL_BRDF(loadMaterialParams(), wi, wo, frame), 1.0);
 }

@@ -87,8 +87,15 @@ void main() {
     return;
 #endif
     ShadingFrame frame = frameFromNormalAndTangent(normalize(normal), tangent);
+    // Twin of normalMappedFrame in core/texture/texture_eval.cpp: both maps read in this frame.
+#ifdef GLINT_COAT_NORMAL_SLOT
+    vec3 coatNormal = normalMappedFrame(GLINT_COAT_NORMAL_SLOT, frame).normal;
+#endif
 #ifdef GLINT_NORMAL_MAP_SLOT
     frame = normalMappedFrame(GLINT_NORMAL_MAP_SLOT, frame);
+#endif
+#ifdef GLINT_COAT_NORMAL_SLOT
+    frame.coatNormal = coatNormal;
 #endif
     writeRadiance(fadeIntoBackground(shadeSurface(position, frame, -ray.direction), position, ray.direction));
 }

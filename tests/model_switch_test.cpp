@@ -148,6 +148,13 @@ TEST(ModelSwitch, DiffuseTextureFollowsTheColourAndOthersAreReported) {
     ASSERT_EQ(toOpenPbr.material.textures.size(), 2u);
     EXPECT_EQ(toOpenPbr.material.textures[0].parameter, "base_color");
     EXPECT_EQ(toOpenPbr.material.textures[1].parameter, kNormalMapKey);
+    Material coated = toOpenPbr.material;
+    MaterialTexture coatNormal;
+    coatNormal.parameter = kCoatNormalMapKey;
+    coated.textures.insert(coated.textures.begin() + 1, coatNormal);
+    const ModelSwitch back = switchModel(switchModel(coated, BrdfModel::CookTorrance).material, BrdfModel::OpenPbr);
+    ASSERT_EQ(back.material.textures.size(), 3u);  // the coat normal map survives a model without a coat
+    EXPECT_EQ(back.material.textures[1].parameter, kCoatNormalMapKey);
     const ModelSwitch toGlass = switchModel(lambert, BrdfModel::Glass);
     ASSERT_EQ(toGlass.material.textures.size(), 1u);
     EXPECT_NE(toGlass.summary().find("dropped the texture on albedo"), std::string::npos) << toGlass.summary();

@@ -168,6 +168,7 @@ TEST(OpenPbrParameters, NamesAndDefaultsFollowTheSpecification) {
         {"thin_film_thickness", glm::vec3(0.5f, 0, 0)}, {"thin_film_ior", glm::vec3(1.4f, 0, 0)},
         {"emission_luminance", glm::vec3(0)},         {"emission_color", glm::vec3(1)},
         {"geometry_thin_walled", glm::vec3(0)},       {"geometry_tangent_rotation", glm::vec3(0)},
+        {"geometry_thickness", glm::vec3(0)},
     };
     EXPECT_EQ(std::size(kOpenPbrTable), std::size(defaults));
     for (const auto& [name, value] : defaults) {

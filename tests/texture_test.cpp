@@ -221,6 +221,23 @@ TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
     EXPECT_FLOAT_EQ(ambientOcclusion(*occluded, bottomLeft), 0.25f);
     EXPECT_FLOAT_EQ(ambientOcclusion(*material, bottomLeft), 1.0f);  // none: unoccluded
 
+    // The coat normal map: its scale saved, slot before the occlusion map; it sets the frame's coat normal and leaves the surface's normal to the normal map.
+    auto coated = parseMaterial(materialJson(R"({"normal": {"type": "image", "file": "maps/colour.png"},
+        "occlusion": {"type": "image", "file": "maps/colour.png"},
+        "coat_normal": {"type": "image", "file": "maps/colour.png", "scale": 0.5}})", "openpbr"), directory + "/c.json");
+    ASSERT_TRUE(coated.ok()) << coated.error().format();
+    ASSERT_EQ(coated->textures.size(), 3u);
+    EXPECT_EQ(coated->textures[0].parameter, kCoatNormalMapKey);
+    EXPECT_EQ(materialToJson(*coated, directory + "/c.json")["textures"]["coat_normal"]["scale"], 0.5);
+    auto recoated = parseMaterial(materialToJson(*coated, directory + "/c.json").dump(), directory + "/c.json");
+    ASSERT_TRUE(recoated.ok()) << recoated.error().format();
+    EXPECT_EQ(materialToJson(*recoated), materialToJson(*coated));
+    const ShadingFrame flat;
+    const ShadingFrame mapped = normalMappedFrame(*coated, bottomLeft, flat);
+    EXPECT_NE(mapped.coatNormal, glm::vec3(0.0f));
+    EXPECT_NE(mapped.coatNormal, mapped.normal);  // coat scale 0.5, base scale 1
+    EXPECT_EQ(normalMappedFrame(*occluded, bottomLeft, flat).coatNormal, glm::vec3(0.0f));  // none: the coat shares the normal
+
     const std::string saved = directory + "/maps/b.material.json";  // another folder
     ASSERT_TRUE(saveMaterial(*material, saved).ok());
     EXPECT_EQ(materialToJson(*material, saved)["textures"]["albedo"]["file"], "colour.png");

@@ -1,6 +1,7 @@
 // Screen-space transmission (render/transmission_backdrop.h, gl/transmission_pass.h): a glass ball
 // and an openpbr transmission ball in front of an orange wall show the wall, on the GPU and in
-// the CPU reference given the GPU's opaque pass, pixel by pixel; bands and MSAA see it too.
+// the CPU reference given the GPU's opaque pass, pixel by pixel; bands and MSAA see it too; a
+// tilted openpbr slab with a thickness absorbs over it (Beer-Lambert) on both.
 #include <gtest/gtest.h>
 
 #include "brdf/param_table.h"
@@ -95,6 +96,27 @@ TEST(GpuTransmission, BandsAndMsaaSeeTheWallToo) {
     EXPECT_LT(worst, 1e-6f);
     scene.msaaSamples = 4;
     expectTheWallSeenThrough(scene, test::renderGpu(scene, kWidth, kHeight));
+}
+
+// A plane with geometry_thickness d (glTF's thicknessFactor) is a slab: the wall seen through it is
+// absorbed over d, transmission_color^(d/depth) (here the square of the tint, where thickness 0
+// tints once), and shifted by the refraction over d; GPU = CPU per pixel.
+TEST(GpuTransmission, ASlabAbsorbsOverItsThickness) {
+    Scene scene = glassBeforeAWall();
+    Material& slab = scene.materials[2];
+    setParam(slab, "geometry_thickness", {0.4f});
+    setParam(slab, "transmission_depth", {0.2f});
+    setParam(slab, "specular_roughness", {0.0f});
+    scene.objects.resize(1);
+    scene.objects.push_back({"slab", PlaneShape{{0.0f, 0.0f, 0.0f}, glm::normalize(glm::vec3(0.4f, 0.2f, 1.0f)), {1.6f, 1.6f}}, 2});
+    const RadianceImage gpu = test::renderGpu(scene, kWidth, kHeight);
+    const auto agreement = test::compareWithReference(scene, gpu);
+    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement << " (worst relative " << agreement.worstRelative << ")";
+    EXPECT_GT(agreement.compared, kWidth * kHeight / 2);
+    const glm::vec3 wall = gpu.at(4, kHeight / 2);
+    const glm::vec3 through = ballCentre(scene, gpu, {0.0f, 0.0f, 0.0f});
+    // Green passes (tint 1), red is absorbed to 0.5² of it: the ratio of red to green says which.
+    EXPECT_NEAR((through.r / through.g) / (wall.r / wall.g), kTint.r * kTint.r, 0.02f);
 }
 
 }  // namespace

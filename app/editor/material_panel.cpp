@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "brdf/model_switch.h"
+#include "brdf/param_table.h"
 #include "editor/color_space.h"
 #include "editor/ior_presets.h"
 #include "editor/panels/typed_numbers.h"
@@ -282,6 +283,11 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     ImGui::TextUnformatted("Normal map");
     ImGui::SameLine();
     changed |= drawTextureControls(material, kNormalMapKey, nullptr, textureFileRequest, refusal);
+    if (findParam(modelInfo(material.model).params, "coat_weight") >= 0) {
+        ImGui::TextUnformatted("Coat normal map");
+        ImGui::SameLine();
+        changed |= drawTextureControls(material, kCoatNormalMapKey, nullptr, textureFileRequest, refusal);
+    }
     if (material.model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
         ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,

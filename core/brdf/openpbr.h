@@ -149,7 +149,11 @@ inline glm::vec3 evalOpenpbr(const OpenPbrParams& p, glm::vec3 wi, glm::vec3 wo,
             eonLobe(p.baseWeight * p.baseColor, p.baseDiffuseRoughness, in, out);
     const glm::vec3 base = glm::mix(dielectric, metal, p.baseMetalness);
     const float coatFresnel = schlickF90(glm::vec3(v.coatF0), glm::vec3(1.0f), cosDifference).x;
-    const float coat = p.coatWeight * v.coatCompensation * coatFresnel * ggxLobe(in, out, v.coatAlphas);
+    // The coat lobe about the coat's own normal (a coat normal map tilts it: frame.coatFrame()).
+    const ShadingFrame coatFrame = frame.coatFrame();
+    const glm::vec3 coatIn = openPbrLocal(p, coatFrame, wi), coatOut = openPbrLocal(p, coatFrame, wo);
+    const float coatLobe = coatIn.z > 0.0f && coatOut.z > 0.0f ? ggxLobe(coatIn, coatOut, v.coatAlphas) : 0.0f;
+    const float coat = p.coatWeight * v.coatCompensation * coatFresnel * coatLobe;
     const glm::vec3 fuzz = p.fuzzWeight * p.fuzzColor * v.sheenScale * sheenLobe(in, out, p.fuzzRoughness);
     return fuzz + v.underFuzz * (coat + v.underCoat * coatAbsorption(p, in.z, out.z) * base);
 }

@@ -5,7 +5,9 @@
 // Left out (Glint has no subsurface or volume scattering, dispersion or cut-outs): subsurface_*,
 // transmission_scatter*, transmission_dispersion_*, geometry_opacity, and the normal/tangent
 // inputs (Glint's shading frame and normal maps give them). Added: geometry_tangent_rotation, the
-// anisotropy direction's angle in the tangent plane (glTF's anisotropyRotation).
+// anisotropy direction's angle in the tangent plane (glTF's anisotropyRotation), and
+// geometry_thickness, the path length through the volume of a shape that has no chord of its own
+// (glTF's thicknessFactor × thicknessTexture).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -43,6 +45,7 @@ struct OpenPbrParams {
     glm::vec3 emissionColor;
     bool thinWalled;
     float tangentRotation;         // degrees, counter-clockwise from the tangent towards the bitangent
+    float thickness;               // m: the volume's path length on a plane or mesh (0: a tint only)
 };
 
 inline constexpr ParamSpec kOpenPbrTable[] = {
@@ -138,6 +141,10 @@ inline constexpr ParamSpec kOpenPbrTable[] = {
     {.name = "geometry_tangent_rotation", .label = "Tangent rotation", .unit = "deg", .kind = ParamKind::Scalar,
      .sliderMin = 0, .sliderMax = 360, .validMin = -kUnbounded, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
      .help = "Turns the anisotropy direction from the tangent towards the bitangent (Glint addition; glTF's anisotropyRotation)"},
+    {.name = "geometry_thickness", .label = "Thickness", .unit = "m", .kind = ParamKind::Scalar,
+     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
+     .help = "Path length through the volume of a plane or mesh, for its absorption and refraction offset (Glint addition; "
+             "glTF's thicknessFactor); 0 tints by transmission_color only; a sphere uses its exact chord"},
 };
 
 }  // namespace glint

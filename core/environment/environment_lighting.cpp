@@ -237,7 +237,7 @@ glm::vec3 lightingOf(const OpenPbrParams& p, glm::vec3 wo, const ShadingFrame& f
     const OpenPbrResponse r = openPbrResponse(p, v);
     const float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
     return r.diffuse * environmentDiffuseRadiance(e, frame.normal) +
-           r.coat * environmentSpecularRadiance(e, dominantDirection(wo, frame, coatAlpha), v.coatRoughness) +
+           r.coat * environmentSpecularRadiance(e, dominantDirection(wo, frame.coatFrame(), coatAlpha), v.coatRoughness) +
            r.specular * environmentSpecularRadiance(e, dominantDirection(wo, frame, specularAlpha), v.specularRoughness);
 }
 

@@ -40,9 +40,13 @@ TexturedParams TexturedParams::of(const Material& material) {
     const auto table = modelInfo(material.model).params;
     for (const MaterialTexture& texture : material.textures) {
         const int index = findParam(table, texture.parameter);
-        GLINT_CHECK(index < kProceduralBit);  // the bits above the table's are the maps' and the procedural flag
-        textured.mask |= 1u << (index >= 0 ? index : texture.parameter == kNormalMapKey ? kNormalMapBit : kOcclusionMapBit);
-        if (texture.kind != TextureKind::Image) textured.mask |= 1u << kProceduralBit;
+        GLINT_CHECK(index < kCoatNormalMapBit);  // the bits above the table's are the maps' and the procedural flag
+        const int bit = index >= 0                                ? index
+                        : texture.parameter == kNormalMapKey      ? kNormalMapBit
+                        : texture.parameter == kCoatNormalMapKey  ? kCoatNormalMapBit
+                                                                  : kOcclusionMapBit;
+        textured.mask |= std::uint64_t{1} << bit;
+        if (texture.kind != TextureKind::Image) textured.mask |= std::uint64_t{1} << kProceduralBit;
     }
     return textured;
 }
@@ -90,6 +94,8 @@ std::string generateMaterialGlsl(const ModelInfo& model, TexturedParams textured
         if (textured.hasNormalMap()) textures += "#define GLINT_NORMAL_MAP_SLOT " + std::to_string(textured.normalMapSlot()) + "\n";
         if (textured.hasOcclusionMap())
             textures += "#define GLINT_OCCLUSION_SLOT " + std::to_string(textured.slotOf(TexturedParams::kOcclusionMapBit)) + "\n";
+        if (textured.has(TexturedParams::kCoatNormalMapBit))
+            textures += "#define GLINT_COAT_NORMAL_SLOT " + std::to_string(textured.slotOf(TexturedParams::kCoatNormalMapBit)) + "\n";
     }
     return "// Generated from the parameter table of '" + std::string(model.id) + "'.\n" + textures + constants +
            "struct MaterialParams {\n" + fields + "};\n\n" +

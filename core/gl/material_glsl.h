@@ -15,15 +15,16 @@
 
 namespace glint {
 
-// Which parameters of a material are textured: bit i for the table's parameter i, bit 30 for
-// the occlusion map, bit 31 for the normal map, and bit 29 (no slot) when any texture is procedural, so that a program of image
+// Which parameters of a material are textured: bit i for the table's parameter i, bit 60 for the
+// coat normal map, bit 62 for the occlusion map, bit 63 for the normal map, and bit 61 (no slot) when any texture is procedural, so that a program of image
 // textures alone carries no Perlin noise (llvmpipe compiles such a program about five times
 // faster). Programs are built per model, MSAA samples and this mask.
 struct TexturedParams {
-    static constexpr int kProceduralBit = 29;
-    static constexpr int kOcclusionMapBit = 30;
-    static constexpr int kNormalMapBit = 31;
-    std::uint32_t mask = 0;
+    static constexpr int kCoatNormalMapBit = 60;
+    static constexpr int kProceduralBit = 61;
+    static constexpr int kOcclusionMapBit = 62;
+    static constexpr int kNormalMapBit = 63;
+    std::uint64_t mask = 0;
 
     static TexturedParams of(const Material& material);
     bool has(int paramIndex) const { return (mask >> paramIndex) & 1u; }
@@ -32,7 +33,7 @@ struct TexturedParams {
     bool hasProcedural() const { return has(kProceduralBit); }
     // Slot = number of textured parameters before it in table order.
     int slotOf(int paramIndex) const {
-        return std::popcount(mask & ((1u << paramIndex) - 1u) & ~(1u << kProceduralBit));
+        return std::popcount(mask & ((std::uint64_t{1} << paramIndex) - 1u) & ~(std::uint64_t{1} << kProceduralBit));
     }
     int normalMapSlot() const { return slotOf(kNormalMapBit); }
 };

@@ -181,7 +181,7 @@ private:
     const ShaderProgram& displayProgram(const DisplaySettings& display);
     // Keyed by model, variant (MSAA, Gouraud, ray-cast sphere, specialisation) and which
     // parameters are textured (TexturedParams::mask).
-    using SurfaceKey = std::tuple<BrdfModel, SurfaceVariant, std::uint32_t>;
+    using SurfaceKey = std::tuple<BrdfModel, SurfaceVariant, std::uint64_t>;
     // A program the background compiler builds: `result` is set before `done`.
     struct PendingSurfaceProgram {
         std::atomic<bool> done{false};

@@ -23,7 +23,7 @@ using nlohmann::json;
 struct TextureSlot {
     const char* extension;  // "" for the core material; "pbrMetallicRoughness" for its object
     const char* key;        // the textureInfo's key
-    const char* parameter;  // openpbr parameter, or kNormalMapKey
+    const char* parameter;  // openpbr parameter, or a surface map's key (texture/material_texture.h)
     TextureChannel channel = TextureChannel::R;  // scalars
     bool srgb = false;      // colour textures are sRGB-encoded (glTF 2.0 §3.9.2)
 };
@@ -39,18 +39,14 @@ constexpr TextureSlot kTextureSlots[] = {
     {"KHR_materials_specular", "specularColorTexture", "specular_color", TextureChannel::R, true},
     {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", TextureChannel::R},
     {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", TextureChannel::G},
+    {"KHR_materials_clearcoat", "clearcoatNormalTexture", kCoatNormalMapKey},
     {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", TextureChannel::R, true},
     {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", TextureChannel::A},
     {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", TextureChannel::R},
+    {"KHR_materials_volume", "thicknessTexture", "geometry_thickness", TextureChannel::G},
     {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", TextureChannel::R},
     {"KHR_materials_iridescence", "iridescenceThicknessTexture", "thin_film_thickness", TextureChannel::G},
     {"KHR_materials_anisotropy", "anisotropyTexture", "specular_roughness_anisotropy", TextureChannel::B},
-};
-
-// Read and kept for export, not rendered: {extension ("" core), key}.
-constexpr std::pair<const char*, const char*> kKeptTextures[] = {
-    {"KHR_materials_clearcoat", "clearcoatNormalTexture"},
-    {"KHR_materials_volume", "thicknessTexture"},
 };
 
 const std::set<std::string> kMaterialExtensions = {
@@ -102,26 +98,13 @@ struct Reading {
             texture->channel = slot.channel;
             if (auto range = ranges.find(slot.parameter); range != ranges.end()) texture->range = range->second;
             if (auto factor = colorFactors.find(slot.parameter); factor != colorFactors.end()) texture->colorFactor = factor->second;
-            if (std::string(slot.parameter) == kNormalMapKey) texture->normalScale = info.scale;
+            if (isNormalMapKey(slot.parameter)) texture->normalScale = info.scale;
             // glTF: occlusion = 1 + strength·(texel − 1) = mix(1 − strength, 1, texel).
             if (std::string(slot.parameter) == kOcclusionMapKey) texture->range = {1.0f - info.scale, 1.0f};
             textures.push_back(std::move(*texture));
         }
     }
 
-    // The kept (not rendered) textures under `object`: their textureInfo with "uri" for "index".
-    void keepTextures(ObjectReader& object, const std::string& extension) {
-        for (const auto& [slotExtension, key] : kKeptTextures) {
-            if (slotExtension != extension || !object.has(key)) continue;
-            const json members = object.take(key);
-            auto info = readGltfTextureInfo(object, key, root, folder);
-            json entry = members;
-            entry.erase("index");
-            entry["uri"] = info->file.empty() ? info->uri : info->file;
-            keptAt(extension)[key] = entry;
-            imported.textures.push_back({std::string(key), info->file.empty() ? info->uri : info->file, ""});
-        }
-    }
 };
 
 float number(ObjectReader& reader, const char* key, double fallback, Bounds bounds) {
@@ -211,10 +194,6 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         ranges["coat_weight"] = {0.0f, weight};
         ranges["coat_roughness"] = {0.0f, coatRoughness};
         reading.readSlots(*coat, "KHR_materials_clearcoat", ranges, colorFactors);
-        reading.keepTextures(*coat, "KHR_materials_clearcoat");
-        if (reading.kept.contains("extensions") && reading.kept["extensions"].contains("KHR_materials_clearcoat"))
-            reading.note(pointerOf("KHR_materials_clearcoat"),
-                         "clearcoatNormalTexture is kept for export, not rendered: Glint's coat shares the base's normal");
         finish(*coat);
     }
     if (auto sheen = extension("KHR_materials_sheen")) {
@@ -244,8 +223,9 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         const float thickness = number(*volume, "thicknessFactor", 0.0, Bounds::nonNegative());
         const float distance = number(*volume, "attenuationDistance", std::numeric_limits<double>::max(), Bounds::positive());
         const glm::vec3 color = volume->vec3("attenuationColor", glm::vec3(1.0f), Bounds::between(0, 1));
-        if (volume->has("thicknessFactor")) reading.keptAt("KHR_materials_volume")["thicknessFactor"] = thickness;
-        reading.keepTextures(*volume, "KHR_materials_volume");
+        setParam(m, "geometry_thickness", thickness);  // in the mesh's units, taken as metres
+        ranges["geometry_thickness"] = {0.0f, thickness};
+        reading.readSlots(*volume, "KHR_materials_volume", ranges, colorFactors);
         finish(*volume);
         if (thickness > 0.0f) setParam(m, "geometry_thin_walled", 0.0f);
         if (std::isfinite(distance) && distance < std::numeric_limits<float>::max()) {
@@ -319,7 +299,6 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
             if (texture.parameter == "base_color") texture.parameter = "emission_color";
     }
     reading.readSlots(reader, "", ranges, colorFactors);
-    reading.keepTextures(reader, "");
     if (extensions) {
         for (const auto& [key, value] : reader.take("extensions").items())
             if (!isGltfMaterialExtension(key)) reading.warn(appendPointer(extensions->pointer(), key), "extension not supported by Glint; ignored");
@@ -403,7 +382,9 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
         if (depth == 0.0f && w.color("transmission_color") != baseColor)
             w.lost("glTF tints transmitted light by the base colour: transmission_color (depth 0) is not written");
         if (!thin || depth > 0.0f) {
-            json volume = {{"thicknessFactor", 2.0}};  // the exported sphere's diameter [m]
+            // The thickness, or the exported sphere's diameter [m] when it has none (a sphere uses its chord).
+            const float thickness = w.scalar("geometry_thickness");
+            json volume = {{"thicknessFactor", thickness > 0.0f ? thickness : 2.0f}};
             if (depth > 0.0f) {
                 volume["attenuationDistance"] = depth;
                 volume["attenuationColor"] = vec3Json(w.color("transmission_color"));
@@ -471,7 +452,7 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
             if (metallicRoughness[0]->file != texture.file || metallicRoughness[0]->tiling != texture.tiling ||
                 metallicRoughness[0]->offset != texture.offset || metallicRoughness[0]->rotation != texture.rotation)
                 w.lost("metalness and roughness textures differ: glTF holds one metallicRoughnessTexture; the roughness one is written");
-        } else if (parameter == kNormalMapKey) {
+        } else if (isNormalMapKey(parameter)) {
             object[slot->key] = textures.textureInfo(texture, extensionsUsed);
             if (texture.normalScale != 1.0f) object[slot->key]["scale"] = texture.normalScale;
         } else {
@@ -503,7 +484,7 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
             {"specular_roughness", "roughnessFactor"}, {"base_metalness", "metallicFactor"}, {"specular_weight", "specularFactor"},
             {"coat_weight", "clearcoatFactor"}, {"coat_roughness", "clearcoatRoughnessFactor"}, {"fuzz_roughness", "sheenRoughnessFactor"},
             {"transmission_weight", "transmissionFactor"}, {"thin_film_weight", "iridescenceFactor"},
-            {"specular_roughness_anisotropy", "anisotropyStrength"}};
+            {"specular_roughness_anisotropy", "anisotropyStrength"}, {"geometry_thickness", "thicknessFactor"}};
         object[kFactorKeys.at(parameter)] = texture.range.y;
     }
     if (!imported.gltfKept.empty()) {

@@ -28,8 +28,8 @@ inline constexpr float kGltfEmissionNits = kLumensPerWatt;
 bool isGltfMaterialExtension(const std::string& name);
 
 // One entry of "materials" onto an openpbr material: what does not map exactly is a warning
-// located at its JSON pointer; what Glint reads but does not render (the volume's
-// thickness, the coat's normal map, dispersion) is kept in ImportedMaterial::gltfKept for export.
+// located at its JSON pointer; what Glint reads but does not render (dispersion, the iridescence
+// minimum) is kept in ImportedMaterial::gltfKept for export.
 ImportedMaterial readGltfMaterial(ObjectReader& reader, const nlohmann::json& root, const JsonDocument& document,
                                   const std::string& folder, int index);
 

@@ -12,8 +12,8 @@
 
 namespace glint {
 
-// A texture the source file names that Glint's material textures do not carry (an MTL map, a
-// glTF coat normal map), kept for the user and written back on export.
+// A texture the source file names that Glint's material textures do not carry (an MTL map), kept
+// for the user and written back on export.
 struct TextureReference {
     std::string slot;     // the source's name for it: "map_Kd", "baseColorTexture", ...
     std::string path;     // as written in the file (relative to it)
@@ -24,8 +24,7 @@ struct ImportedMaterial {
     Material material;
     std::vector<TextureReference> textures;
     std::vector<Diagnostic> warnings;  // about this material only, located where the source allows
-    // glTF values read but not rendered (the volume's thickness and its texture, the coat's normal
-    // map, dispersion), as JSON text merged back into the material by writeGltf so that glTF →
+    // glTF values read but not rendered (dispersion, the iridescence minimum), as JSON text merged back into the material by writeGltf so that glTF →
     // Glint → glTF keeps them; a kept texture names its image by "uri" (absolute path or data
     // URI) instead of "index". Empty when none; not kept once the material is in a scene.
     std::string gltfKept;

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "brdf/model_switch.h"
 #include "interchange/material_values.h"
@@ -129,6 +130,11 @@ void writeTextures(const Material& material, const std::string& graphName, const
         if (texture.parameter == kOcclusionMapKey) {
             warnings.push_back(makeError("warning: material '" + material.name +
                                          "': the occlusion map is not written (open_pbr_surface has no ambient-occlusion input)"));
+            continue;
+        }
+        if (texture.parameter == kCoatNormalMapKey) {
+            warnings.push_back(makeError("warning: material '" + material.name +
+                                         "': the coat normal map is not written (geometry_coat_normal is left to the base's normal)"));
             continue;
         }
         if (texture.kind != TextureKind::Image) {
@@ -273,11 +279,14 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
         for (size_t i = 0; i < table.size(); ++i) {
             const ParamSpec& spec = table[i];
             const glm::vec3 value = paramValue(material, spec.name);
-            if (std::string_view(spec.name) == "geometry_tangent_rotation") {
+            // Glint's own parameters are no inputs of open_pbr_surface: not written, a warning when set.
+            static const std::map<std::string_view, const char*> kGlintOwn = {
+                {"geometry_tangent_rotation", "°) is Glint's own; open_pbr_surface turns the tangent through geometry_tangent, which is not written"},
+                {"geometry_thickness", " m) is Glint's own; open_pbr_surface's volume is the geometry, and it is not written"}};
+            if (const auto own = kGlintOwn.find(spec.name); own != kGlintOwn.end()) {
                 if (value.x != 0.0f)
-                    out.warnings.push_back(makeError("warning: material '" + material.name + "': geometry_tangent_rotation (" +
-                                                     shortestDecimal(value.x) + "°) is Glint's own; open_pbr_surface turns the tangent "
-                                                     "through geometry_tangent, which is not written"));
+                    out.warnings.push_back(makeError("warning: material '" + material.name + "': " + spec.name + " (" +
+                                                     shortestDecimal(value.x) + own->second));
                 continue;
             }
             const char* type = spec.kind == ParamKind::Bool ? "boolean" : componentCount(spec.kind) == 3 ? "color3" : "float";

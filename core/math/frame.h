@@ -11,6 +11,9 @@ struct ShadingFrame {
     glm::vec3 tangent{1, 0, 0};
     glm::vec3 bitangent{0, 1, 0};
     glm::vec3 normal{0, 0, 1};
+    // The coat's normal where a coat normal map tilts it (openpbr's geometry_coat_normal), zero
+    // when the coat shares `normal`; only the openpbr coat lobe reads it (through coatFrame).
+    glm::vec3 coatNormal{0, 0, 0};
 
     // A frame around a unit normal with no preferred tangent: the branchless construction of
     // Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017.
@@ -45,6 +48,10 @@ struct ShadingFrame {
         return tangent * local.x + bitangent * local.y + normal * local.z;
     }
     float cosTheta(glm::vec3 world) const { return glm::dot(world, normal); }
+    // The frame of the coat: around coatNormal with the same tangent, or this frame.
+    ShadingFrame coatFrame() const {
+        return coatNormal == glm::vec3(0.0f) ? *this : fromNormalAndTangent(coatNormal, tangent);
+    }
 };
 
 }  // namespace glint

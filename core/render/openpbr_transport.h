@@ -4,8 +4,9 @@
 // the specular roughness), else the environment's prefiltered level at that roughness;
 // a thin-walled surface, a plane or a mesh lets it pass straight on, tinted by
 // transmission_color; a volume sphere refracts it in and out (Snell) and absorbs it on the chord
-// by Beer-Lambert, transmission_color being the transmittance after transmission_depth. No
-// internal reflections. GLSL twin: transportOpenpbr in shaders/brdf/openpbr.glsl.
+// by Beer-Lambert, transmission_color being the transmittance after transmission_depth; a volume
+// plane or mesh with a geometry_thickness d does as three.js does with glTF's thickness: the light
+// seen is the backdrop where the refracted ray has gone d, absorbed over d. No internal reflections. GLSL twin: transportOpenpbr in shaders/brdf/openpbr.glsl.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -31,6 +32,11 @@ inline glm::vec3 transportOpenpbr(const OpenPbrParams& p, const MissRadiance& mi
     const glm::vec3 weight = openPbrResponse(p, view).transmission;
     const glm::vec3 incoming = -towardsViewer;
     const bool outsideSphere = sphere && glm::dot(normal, position - sphere->center) > 0.0f;
+    if (!p.thinWalled && !sphere && p.thickness > 0.0f) {
+        const glm::vec3 exitPoint = position + p.thickness * refractDirection(incoming, normal, 1.0f / p.specularIor);
+        return emission + weight * openPbrVolumeTransmittance(p, p.thickness) *
+                              miss.transmittedRough(exitPoint, incoming, incoming, view.specularRoughness, p.specularIor);
+    }
     if (p.thinWalled || !outsideSphere)
         return emission + weight * p.transmissionColor *
                               miss.transmittedRough(position, incoming, incoming, view.specularRoughness, p.specularIor);

@@ -16,8 +16,14 @@ inline constexpr const char* kNormalMapKey = "normal";
 // The key of the ambient-occlusion map (glTF's occlusionTexture; not a table parameter): a scalar
 // in [0, 1] by which only the ambient and environment light are scaled, never the lights'.
 inline constexpr const char* kOcclusionMapKey = "occlusion";
+// The key of the coat's tangent-space normal map (OpenPBR's geometry_coat_normal, glTF's
+// clearcoatNormalTexture; not a table parameter): tilts the openpbr coat lobe's normal only, in
+// the tangent frame of the surface before the normal map.
+inline constexpr const char* kCoatNormalMapKey = "coat_normal";
+// Whether a "textures" key is a tangent-space normal map (the surface's or the coat's).
+inline bool isNormalMapKey(const std::string& key) { return key == kNormalMapKey || key == kCoatNormalMapKey; }
 // Whether a "textures" key is one of these maps rather than a parameter of the model's table.
-inline bool isSurfaceMapKey(const std::string& key) { return key == kNormalMapKey || key == kOcclusionMapKey; }
+inline bool isSurfaceMapKey(const std::string& key) { return isNormalMapKey(key) || key == kOcclusionMapKey; }
 // Textures per material: each takes one texture unit and one slot of uniforms in the shader.
 inline constexpr int kMaxMaterialTextures = 8;
 
@@ -46,7 +52,7 @@ struct TextureImage {
 };
 
 struct MaterialTexture {
-    std::string parameter;  // a Scalar or Color name of the model's table, kOcclusionMapKey or kNormalMapKey
+    std::string parameter;  // a Scalar or Color name of the model's table, or a surface map's key (above)
     TextureKind kind = TextureKind::Checker;
     // Image
     std::string file;  // absolute path of the image (written relative to the scene file)
@@ -65,7 +71,8 @@ struct MaterialTexture {
     float rotation = 0.0f;  // radians
     // Colour parameters: multiplies the texture's value (glTF's baseColorFactor, emissiveFactor).
     glm::vec3 colorFactor{1.0f};
-    // Normal map: scales the tangent-space x and y before normalising (glTF's normalTexture.scale).
+    // Normal maps: scale the tangent-space x and y before normalising (glTF's normalTexture.scale,
+    // clearcoatNormalTexture.scale).
     float normalScale = 1.0f;
     // Checker, marble, wood: the two values (scalars use .x), in the parameter's unit.
     glm::vec3 valueA{0.0f}, valueB{1.0f};

@@ -20,7 +20,7 @@ constexpr ParamSpec kOcclusionSpec{.name = kOcclusionMapKey, .label = "Ambient o
 
 const ParamSpec* texturableParam(BrdfModel model, const std::string& parameter, std::string& error) {
     error.clear();
-    if (parameter == kNormalMapKey) return nullptr;
+    if (isNormalMapKey(parameter)) return nullptr;  // the coat's is read by models with a coat only
     if (parameter == kOcclusionMapKey) return &kOcclusionSpec;
     const auto table = modelInfo(model).params;
     const int index = findParam(table, parameter);
@@ -30,7 +30,7 @@ const ParamSpec* texturableParam(BrdfModel model, const std::string& parameter, 
             if (candidate.kind == ParamKind::Scalar || candidate.kind == ParamKind::Color)
                 list += std::string(list.empty() ? "" : ", ") + candidate.name;
         error = "'" + parameter + "' is not a parameter of the model '" + modelInfo(model).id +
-                "' (textures can drive: " + list + (list.empty() ? "" : ", ") + kOcclusionMapKey + ", " + kNormalMapKey + ")";
+                "' (textures can drive: " + list + (list.empty() ? "" : ", ") + kOcclusionMapKey + ", " + kNormalMapKey + ", " + kCoatNormalMapKey + ")";
         return nullptr;
     }
     const ParamSpec& spec = table[index];
@@ -77,7 +77,8 @@ void putTexture(Material& material, MaterialTexture texture) {
     const auto order = [&](const MaterialTexture& t) {
         const int index = findParam(table, t.parameter);
         if (index >= 0) return index;
-        return static_cast<int>(table.size()) + (t.parameter == kNormalMapKey ? 1 : 0);
+        // After the table: the coat normal map, the occlusion map, the normal map (material_glsl.h's bits).
+        return static_cast<int>(table.size()) + (t.parameter == kCoatNormalMapKey ? 0 : t.parameter == kOcclusionMapKey ? 1 : 2);
     };
     const auto at = std::upper_bound(material.textures.begin(), material.textures.end(), texture,
                                      [&](const auto& a, const auto& b) { return order(a) < order(b); });

@@ -11,7 +11,7 @@
 namespace glint {
 
 // The table entry of a texturable parameter (for the occlusion map a scalar in [0, 1] of its own),
-// nullptr for the normal map; `error` says why neither (unknown name, or a kind that cannot be
+// nullptr for the normal maps; `error` says why neither (unknown name, or a kind that cannot be
 // textured).
 const ParamSpec* texturableParam(BrdfModel model, const std::string& parameter, std::string& error);
 
@@ -22,8 +22,8 @@ MaterialTexture defaultTexture(const std::string& parameter, const ParamSpec* sp
 // The texture on `parameter`, or nullptr.
 MaterialTexture* findTexture(Material& material, const std::string& parameter);
 const MaterialTexture* findTexture(const Material& material, const std::string& parameter);
-// Puts `texture` on its parameter (replacing one there), keeping table order (then the occlusion
-// map, the normal map last).
+// Puts `texture` on its parameter (replacing one there), keeping table order (then the coat
+// normal map, the occlusion map, the normal map last).
 void putTexture(Material& material, MaterialTexture texture);
 void removeTexture(Material& material, const std::string& parameter);
 

@@ -116,17 +116,28 @@ float ambientOcclusion(const Material& material, const TexturePoint& point) {
     return 1.0f;
 }
 
+namespace {
+
+// The normal that the normal map `texture` gives in `frame` (tangent space: n = 2·rgb − 1 with x
+// and y scaled), or the frame's normal for a (½, ½, ½) texel, which has no direction.
+glm::vec3 mappedNormal(const MaterialTexture& texture, const TexturePoint& point, const ShadingFrame& frame) {
+    const glm::vec3 tangentSpace =
+        (2.0f * glm::vec3(evaluateTexture(texture, point)) - 1.0f) * glm::vec3(texture.normalScale, texture.normalScale, 1.0f);
+    const glm::vec3 normal = frame.toWorld(tangentSpace);
+    const float length = glm::length(normal);
+    return length < 1e-6f ? frame.normal : normal / length;
+}
+
+}  // namespace
+
 ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame) {
-    for (const MaterialTexture& texture : material.textures) {
-        if (texture.parameter != kNormalMapKey) continue;
-        const glm::vec3 tangentSpace =
-            (2.0f * glm::vec3(evaluateTexture(texture, point)) - 1.0f) * glm::vec3(texture.normalScale, texture.normalScale, 1.0f);
-        const glm::vec3 normal = frame.toWorld(tangentSpace);
-        const float length = glm::length(normal);
-        if (length < 1e-6f) return frame;  // a (½, ½, ½) texel: no direction; keep the surface's
-        return ShadingFrame::fromNormalAndTangent(normal / length, frame.tangent);
-    }
-    return frame;
+    ShadingFrame mapped = frame;
+    for (const MaterialTexture& texture : material.textures)
+        if (texture.parameter == kNormalMapKey)
+            mapped = ShadingFrame::fromNormalAndTangent(mappedNormal(texture, point, frame), frame.tangent);
+    for (const MaterialTexture& texture : material.textures)
+        if (texture.parameter == kCoatNormalMapKey) mapped.coatNormal = mappedNormal(texture, point, frame);
+    return mapped;
 }
 
 }  // namespace glint

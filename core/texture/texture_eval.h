@@ -42,7 +42,8 @@ std::vector<float> texturedValues(const Material& material, const TexturePoint& 
 // The occlusion map's value at the point (1 without one): what scales ambient and environment light.
 float ambientOcclusion(const Material& material, const TexturePoint& point);
 // The frame whose normal is the normal map's (tangent space: n = 2·rgb − 1 along tangent,
-// bitangent, normal), or `frame` itself when the material has no normal map.
+// bitangent, normal), or `frame` itself when the material has no normal map; its coatNormal is
+// the coat normal map's, read in `frame` too (zero without one).
 ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame);
 
 }  // namespace glint

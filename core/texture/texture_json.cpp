@@ -122,7 +122,7 @@ json materialTexturesToJson(const Material& material, const std::string& targetF
                 if (texture.offset != glm::vec2(0.0f)) entry["offset"] = {texture.offset.x, texture.offset.y};
                 if (texture.rotation != 0.0f) entry["rotation"] = texture.rotation;
                 if (color && texture.colorFactor != glm::vec3(1.0f)) entry["factor"] = vec3Json(texture.colorFactor);
-                if (texture.parameter == kNormalMapKey && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
+                if (isNormalMapKey(texture.parameter) && texture.normalScale != 1.0f) entry["scale"] = texture.normalScale;
                 if (scalar) {
                     entry["channel"] = kChannels[static_cast<int>(texture.channel)];
                     entry["min"] = texture.range.x;

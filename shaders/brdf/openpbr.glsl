@@ -108,7 +108,10 @@ vec3 evalOpenpbr(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
                           eonLobe(p.base_weight * p.base_color, p.base_diffuse_roughness, inLocal, outLocal);
     vec3 base = mix(dielectric, metal, p.base_metalness);
     float coatFresnel = schlickF90(vec3(v.coatF0), vec3(1.0), cosDifference).x;
-    float coat = p.coat_weight * v.coatCompensation * coatFresnel * ggxLobe(inLocal, outLocal, v.coatAlphas);
+    ShadingFrame coatFrame = coatFrameOf(frame);
+    vec3 coatIn = openPbrLocal(p, coatFrame, wi), coatOut = openPbrLocal(p, coatFrame, wo);
+    float coatLobe = coatIn.z > 0.0 && coatOut.z > 0.0 ? ggxLobe(coatIn, coatOut, v.coatAlphas) : 0.0;
+    float coat = p.coat_weight * v.coatCompensation * coatFresnel * coatLobe;
     vec3 fuzz = p.fuzz_weight * p.fuzz_color * v.sheenScale * sheenLobe(inLocal, outLocal, p.fuzz_roughness);
     return fuzz + v.underFuzz * (coat + v.underCoat * coatAbsorption(p, inLocal.z, outLocal.z) * base);
 }
@@ -148,7 +151,8 @@ vec3 environmentLightingOpenpbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
     OpenPbrResponse r = openPbrResponse(p, v);
     float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
     return r.diffuse * environmentDiffuseRadiance(frame.normal) +
-           r.coat * environmentSpecularRadiance(environmentDominantDirection(wo, frame, coatAlpha), v.coatRoughness) +
+           r.coat * environmentSpecularRadiance(environmentDominantDirection(wo, coatFrameOf(frame), coatAlpha),
+                                                v.coatRoughness) +
            r.specular *
                environmentSpecularRadiance(environmentDominantDirection(wo, frame, specularAlpha), v.specularRoughness);
 }
@@ -168,6 +172,11 @@ vec3 transportOpenpbr(MaterialParams p, vec3 position, ShadingFrame frame, vec3 
     vec3 weight = openPbrResponse(p, v).transmission;
     vec3 incoming = -towardsViewer;
     bool outsideSphere = shapeKind == SHAPE_SPHERE && dot(normal, position - sphere.xyz) > 0.0;
+    if (!p.geometry_thin_walled && shapeKind != SHAPE_SPHERE && p.geometry_thickness > 0.0) {
+        vec3 exitPoint = position + p.geometry_thickness * refractDirection(incoming, normal, 1.0 / p.specular_ior);
+        return emission + weight * openPbrVolumeTransmittance(p, p.geometry_thickness) *
+                              transmittedRadianceRough(exitPoint, incoming, incoming, v.specularRoughness, p.specular_ior);
+    }
     if (p.geometry_thin_walled || !outsideSphere)
         return emission + weight * p.transmission_color *
                               transmittedRadianceRough(position, incoming, incoming, v.specularRoughness, p.specular_ior);

@@ -13,6 +13,7 @@ struct ShadingFrame {
     vec3 tangent;
     vec3 bitangent;
     vec3 normal;
+    vec3 coatNormal;  // the coat normal map's normal, zero when the coat shares `normal`
 };
 
 // Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017.
@@ -24,6 +25,7 @@ ShadingFrame frameFromNormal(vec3 n) {
     frame.tangent = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
     frame.bitangent = vec3(b, s + n.y * n.y * a, -n.y);
     frame.normal = n;
+    frame.coatNormal = vec3(0.0);
     return frame;
 }
 
@@ -37,7 +39,13 @@ ShadingFrame frameFromNormalAndTangent(vec3 n, vec3 tangentHint) {
     frame.normal = n;
     frame.tangent = t / tangentLength;
     frame.bitangent = cross(n, frame.tangent);
+    frame.coatNormal = vec3(0.0);
     return frame;
+}
+
+// Twin of ShadingFrame::coatFrame: the coat's frame around coatNormal, or the frame itself.
+ShadingFrame coatFrameOf(ShadingFrame frame) {
+    return frame.coatNormal == vec3(0.0) ? frame : frameFromNormalAndTangent(frame.coatNormal, frame.tangent);
 }
 
 float cosTheta(ShadingFrame frame, vec3 w) { return dot(w, frame.normal); }
