@@ -57,7 +57,7 @@ CC=clang-14 CXX=clang++-14 configure_and_build "$sanitize" -DCMAKE_BUILD_TYPE=De
 # GUI tests need a window manager's timing, and the benchmark's timings mean nothing under ASan
 # (its code paths are the renderer's, which the GPU tests cover there).
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$root/tests/sanitizer/lsan.supp" \
-UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_suite sanitizers "$sanitize" -j2 -LE "gui|bench"
+UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 run_suite sanitizers "$sanitize" -j2 -LE "gui|bench|heavy"
 
 total_passed=0 total_failed=0
 for log in "$logs"/*.log; do

@@ -365,7 +365,7 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
     warmUpScene->objects.clear();
     // As renderRadiance decides: transmissive objects see a backdrop when an opaque object is drawn.
     const auto transmissive = [&](const SceneObject& object) { return transmitsLight(scene.materials.at(object.materialIndex)); };
-    const bool backdropShown = std::any_of(scene.objects.begin(), scene.objects.end(), transmissive) &&
+    const bool backdropShown = transmissionBackdrop_ && std::any_of(scene.objects.begin(), scene.objects.end(), transmissive) &&
                                !std::all_of(scene.objects.begin(), scene.objects.end(), transmissive);
     for (const SceneObject& object : scene.objects) {
         const Material& material = scene.materials.at(object.materialIndex);
@@ -410,7 +410,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     const auto firstTransmissive = std::stable_partition(drawOrder.begin(), drawOrder.end(), [&](size_t i) { return !transmissive(i); });
     // With no opaque object the backdrop would hold nothing: transmissive surfaces see the
     // environment or background directly, and the frame costs no more than before.
-    const bool backdropNeeded = firstTransmissive != drawOrder.end() && firstTransmissive != drawOrder.begin();
+    const bool backdropNeeded =
+        transmissionBackdrop_ && firstTransmissive != drawOrder.end() && firstTransmissive != drawOrder.begin();
     const bool capturesBackdrop = backdropNeeded && (rows.count == 0 || rows.first + rows.count >= height);
     if (!backdropNeeded || (!capturesBackdrop && !transmission_->holds(width, height))) transmission_->forget();
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.

@@ -93,6 +93,9 @@ public:
     // keep fixed is compiled in as constants, one program per combination, built when first drawn.
     // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
     void setSpecialisedPrograms(bool enabled) { specialise_ = enabled; }
+    // The transmission backdrop (on by default; gl/transmission_pass.h). Off: transmissive
+    // surfaces see only the environment or background, as a frame with no opaque object does.
+    void setTransmissionBackdrop(bool enabled) { transmissionBackdrop_ = enabled; }
     // Specialised programs built in the background (the editor; gl/program_compiler.h): a
     // built-in model's program that programsReady() finds missing is built on the compiler's
     // worker, which then draws the objects that need it with a renderer of its own, so that
@@ -233,6 +236,7 @@ private:
     int maxSamples_ = 1;
     bool fuseDisplay_ = false;
     bool specialise_ = true;
+    bool transmissionBackdrop_ = true;
     bool keepRadiance_ = true;
     bool radianceWritten_ = true;  // by the last renderRadiance
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
