@@ -21,7 +21,7 @@ from gui_test_support import region_difference, run_scenario_from_arguments  # n
 # The object section of the material column on the default scene (1280×800 window). The "Add…"
 # button sits below the material panel, so it moves with the selected object's material: the
 # default sphere's Blinn-Phong, or the Lambert material every added object gets (and selects).
-ADD_BUTTON = {"blinn_phong": (953, 494), "lambert": (953, 303)}
+ADD_BUTTON = {"blinn_phong": (953, 515), "lambert": (953, 324)}
 ADD_MENU_OFFSET = {"Sphere": 16, "Plane": 37, "Cube": 58, "Torus": 79}  # below the button [px]
 
 
@@ -113,9 +113,9 @@ def scenario_add_object(x, glint, output, state):
         editor.kill()
 
 
-SHADING_COMBO = (1018, 569)
-SEGMENTS_SLIDER = (1018, 650)
-SHADING_ITEM = {"exact": (975, 596), "flat": (975, 617)}
+SHADING_COMBO = (1018, 590)
+SEGMENTS_SLIDER = (1018, 671)
+SHADING_ITEM = {"exact": (975, 617), "flat": (975, 638)}
 
 
 def scenario_shading(x, glint, output, state):

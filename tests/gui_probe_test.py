@@ -39,7 +39,7 @@ def scenario_probe(x, glint, output, state):
                             probe_pixels(shot, PROBE_LIGHT, PROBE_POINT) > 10,
                             "Shift+click to draw the probe's N (white) and L (yellow) arrows on the sphere")
         save(probed, output, "probe_1_on")
-        x.move(1100, 600)
+        x.move(1100, 745)
         x.key("i")
         x.wait_for(matches(base), "I to hide the probe (and the click must not have moved the camera)")
         x.key("i")  # armed: the next plain click sets the point
