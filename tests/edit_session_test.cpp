@@ -191,13 +191,14 @@ TEST(Recovery, DamagedFileGivesADiagnosticNamingIt) {
 TEST(Recovery, LocationFollowsTheEnvironment) {
     const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
     ::setenv("GLINT_STATE_DIR", "/tmp/glint-state-test", 1);
-    EXPECT_EQ(recoveryFilePath(), "/tmp/glint-state-test/recovery.json");
+    const std::string file = "/recovery-" + std::to_string(::getpid()) + ".json";  // one per running editor
+    EXPECT_EQ(recoveryFilePath(), "/tmp/glint-state-test" + file);
     ::unsetenv("GLINT_STATE_DIR");
     ::setenv("XDG_STATE_HOME", "/tmp/xdg-state", 1);
-    EXPECT_EQ(recoveryFilePath(), "/tmp/xdg-state/glint/recovery.json");
+    EXPECT_EQ(recoveryFilePath(), "/tmp/xdg-state/glint" + file);
     ::unsetenv("XDG_STATE_HOME");
     ::setenv("HOME", "/home/artist", 1);
-    EXPECT_EQ(recoveryFilePath(), "/home/artist/.local/state/glint/recovery.json");
+    EXPECT_EQ(recoveryFilePath(), "/home/artist/.local/state/glint" + file);
     ::setenv("HOME", home.c_str(), 1);
 }
 

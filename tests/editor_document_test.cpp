@@ -8,6 +8,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include "runtime/brdf_probe.h"
 #include "editor/recovery.h"
 #include "editor/mesh_loading.h"
@@ -18,6 +22,7 @@
 #include "image/image_io.h"
 #include "interchange/merl.h"
 #include "scene/scene_json.h"
+#include "util/file_io.h"
 #include "editor_test_support.h"
 #include "environment_test_support.h"
 #include "test_support.h"
@@ -83,15 +88,46 @@ TEST_F(EditorDocument, CorruptFilesAreRefusedWithTheirLineAndTheWorkIsKept) {
 }
 
 TEST_F(EditorDocument, AnUnreadableRecoveryFileIsReportedAndKept) {
-    ASSERT_TRUE(ensureParentDirectory(recoveryFilePath()).ok());
-    std::ofstream(recoveryFilePath()) << "{ not json";
+    const std::string damaged = stateDirectory() + "/recovery.json";  // as Glint wrote it before per-editor files
+    ASSERT_TRUE(ensureParentDirectory(damaged).ok());
+    std::ofstream(damaged) << "{ not json";
     EditorState state;
     startRecovery(state);
     EXPECT_NE(state.errorMessage.find("recovery.json"), std::string::npos) << state.errorMessage;
     EXPECT_TRUE(state.recoveryOffer.empty());
     autosave(state, 100.0, 5.0);
     finishRecovery(state);
-    EXPECT_TRUE(std::filesystem::exists(recoveryFilePath())) << "kept for the user to inspect";
+    EXPECT_TRUE(std::filesystem::exists(damaged)) << "kept for the user to inspect";
+}
+
+// Two editors open at once: neither is offered the other's work while it runs; once one dies
+// without a clean exit, the next start offers its file.
+TEST_F(EditorDocument, OnlyTheRecoveryFilesOfEditorsNoLongerRunningAreOffered) {
+    Scene otherWork = defaultScene();
+    otherWork.lights[0].irradiance = 6.0f;
+    const std::string other = stateDirectory() + "/recovery-999999.json";
+    ASSERT_TRUE(ensureParentDirectory(other).ok());
+    ASSERT_TRUE(writeFileAtomically(other, recoveryDocument(otherWork, "")).ok());
+    const int otherLock = ::open((stateDirectory() + "/recovery-999999.lock").c_str(), O_RDWR | O_CREAT, 0644);
+    ASSERT_EQ(::flock(otherLock, LOCK_EX), 0);
+
+    EditorState running;
+    startRecovery(running);
+    EXPECT_TRUE(running.recoveryOffer.empty()) << "the other editor still runs";
+    running.session.change("Edit").lights[0].irradiance = 2.0f;
+    running.session.settle(false);
+    autosave(running, 100.0, 5.0);
+    EXPECT_FLOAT_EQ(loadRecovery(other)->scene.lights[0].irradiance, 6.0f) << "its file is untouched";
+    finishRecovery(running);
+    EXPECT_TRUE(std::filesystem::exists(other)) << "a clean exit removes only the editor's own file";
+
+    ::close(otherLock);  // the other editor is killed
+    EditorState next;
+    startRecovery(next);
+    ASSERT_EQ(next.recoveryOffer.size(), 1u);
+    EXPECT_EQ(next.recoveryOffer[0].recoveryPath, other);
+    EXPECT_FLOAT_EQ(next.recoveryOffer[0].scene.lights[0].irradiance, 6.0f);
+    finishRecovery(next);
 }
 
 TEST_F(EditorDocument, QuitWithoutChangesNeedsNoPromptAndWithChangesWaitsForOne) {

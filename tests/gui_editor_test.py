@@ -31,6 +31,7 @@ screenshots. One scenario per ctest entry:
                albedo carries over) and loses its highlight, the panel says what was kept; one
                Ctrl+Z brings the Blinn-Phong material back
 usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
+import glob
 import json
 import os
 import signal
@@ -224,8 +225,12 @@ def scenario_save_reopen(x, glint, output, state):
         editor.kill()
 
 
+def recovery_files(state):
+    """The editors' recovery files (one per running editor, recovery-PID.json)."""
+    return glob.glob(os.path.join(state, "recovery*.json"))
+
+
 def scenario_recovery(x, glint, output, state):
-    recovery = os.path.join(state, "recovery.json")
     editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"})
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
@@ -233,9 +238,9 @@ def scenario_recovery(x, glint, output, state):
         x.wait_for(differs(base), "the slider drag to show")
         edited = x.wait_stable(VIEWPORT)
         deadline = time.time() + 15
-        while not os.path.exists(recovery) and time.time() < deadline:
+        while not recovery_files(state) and time.time() < deadline:
             time.sleep(0.2)
-        assert os.path.exists(recovery), "autosave wrote no recovery file"
+        assert recovery_files(state), "autosave wrote no recovery file"
         editor.process.send_signal(signal.SIGKILL)
         editor.process.wait(timeout=10)
     finally:
@@ -253,7 +258,7 @@ def scenario_recovery(x, glint, output, state):
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt for recovered work")
         x.key("n")
         assert editor.wait_exit() == 0
-        assert not os.path.exists(recovery), "a clean exit must remove the recovery file"
+        assert not recovery_files(state), "a clean exit must remove the recovery file"
         print("ok: kill -9 after an edit, the next start offered the work and restored the edit")
     finally:
         editor.kill()
@@ -261,7 +266,6 @@ def scenario_recovery(x, glint, output, state):
 
 def scenario_crash_signal(x, glint, output, state):
     """SIGSEGV right after an edit, with autosave far off: the crash guard writes the copy."""
-    recovery = os.path.join(state, "recovery.json")
     editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"})
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
@@ -269,12 +273,12 @@ def scenario_crash_signal(x, glint, output, state):
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
         edited = x.wait_stable(VIEWPORT)
-        assert not os.path.exists(recovery), "autosave should not have run yet (30 s interval)"
+        assert not recovery_files(state), "autosave should not have run yet (30 s interval)"
         editor.process.send_signal(signal.SIGSEGV)
         code = editor.process.wait(timeout=10)
         assert code == -signal.SIGSEGV, f"the editor should still die of SIGSEGV, exit status {code}"
-        assert os.path.exists(recovery), "the crash guard wrote no recovery file"
-        with open(recovery) as saved:
+        assert recovery_files(state), "the crash guard wrote no recovery file"
+        with open(recovery_files(state)[0]) as saved:
             exponent = json.load(saved)["scene"]["materials"][0]["exponent"]
         assert exponent < 60, f"the recovery file lacks the edit (exponent {exponent})"
     finally:

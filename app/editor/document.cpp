@@ -146,21 +146,19 @@ void requestQuit(EditorState& state) {
 // --- recovery and autosave ------------------------------------------------------------------
 
 void startRecovery(EditorState& state) {
+    const std::vector<std::string> orphans = orphanedRecoveryFiles();  // before this editor's own lock
     const std::string path = recoveryFilePath();
     // The crash handler cannot create directories: the state directory must exist beforehand.
-    if (Status created = ensureParentDirectory(path); !created)
-        state.statusMessage = "No crash recovery: " + created.error().format();
+    if (Status locked = lockRecoveryFile(); !locked)
+        state.statusMessage = "No crash recovery: " + locked.error().format();
     installCrashGuard(path);
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) return;
-    auto recovered = loadRecovery(path);
-    if (!recovered) {
-        state.errorMessage = "A recovery file was found but cannot be read; it is kept for you to inspect.\n\n" +
-                             recovered.error().format();
-        return;
+    for (const std::string& orphan : orphans) {
+        auto recovered = loadRecovery(orphan);
+        if (recovered) state.recoveryOffer.push_back(std::move(*recovered));
+        else
+            state.errorMessage = "A recovery file was found but cannot be read; it is kept for you to inspect.\n\n" +
+                                 recovered.error().format();
     }
-    state.recoveryOffer.push_back(std::move(*recovered));
-    state.recoveryOfferPath = path;
 }
 
 double autosave(EditorState& state, double nowSeconds, double autosaveIntervalSeconds) {
@@ -192,11 +190,13 @@ double autosave(EditorState& state, double nowSeconds, double autosaveIntervalSe
 
 void finishRecovery(EditorState& state) {
     uninstallCrashGuard();
-    // Only a file this editor wrote goes: one the user never answered, or one that could not
-    // be read, stays for the next start or for inspection.
-    if (!state.wroteRecovery) return;
-    std::error_code error;
-    std::filesystem::remove(recoveryFilePath(), error);
+    // Only a file this editor wrote goes: one the user never answered, or one that could not be
+    // read, stays for the next start or for inspection.
+    if (state.wroteRecovery) {
+        std::error_code error;
+        std::filesystem::remove(recoveryFilePath(), error);
+    }
+    unlockRecoveryFile();
 }
 
 }  // namespace glint

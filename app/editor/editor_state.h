@@ -72,8 +72,7 @@ struct EditorState {
     bool unsavedPromptRequested = false;
     bool continueAfterSaveAs = false;   // Save chosen in the prompt for a scene with no file yet
     std::string errorMessage;
-    std::vector<RecoveredWork> recoveryOffer;  // at most one; a modal at start
-    std::string recoveryOfferPath;
+    std::vector<RecoveredWork> recoveryOffer;  // crashed editors' work, newest first; a modal at start
     FileBrowser fileBrowser;
     int textureMaterialIndex = -1;  // the material and parameter an image file is being chosen for
     std::string textureParameter;

@@ -1,9 +1,16 @@
 // The recovery file's location, writer and reader (see recovery.h).
 #include "editor/recovery.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +26,64 @@ std::string stateDirectory() {
     return ".glint-state";
 }
 
-std::string recoveryFilePath() { return stateDirectory() + "/recovery.json"; }
+namespace {
+
+std::string lockPathOf(const std::string& recoveryPath) {
+    return std::filesystem::path(recoveryPath).replace_extension(".lock").string();
+}
+
+int gLockDescriptor = -1;
+
+bool lockedByARunningEditor(const std::string& recoveryPath) {
+    const int descriptor = ::open(lockPathOf(recoveryPath).c_str(), O_RDWR | O_CLOEXEC);
+    if (descriptor < 0) return false;
+    const bool held = ::flock(descriptor, LOCK_EX | LOCK_NB) != 0;
+    ::close(descriptor);
+    return held;
+}
+
+}  // namespace
+
+std::string recoveryFilePath() { return stateDirectory() + "/recovery-" + std::to_string(::getpid()) + ".json"; }
+
+std::vector<std::string> orphanedRecoveryFiles() {
+    std::vector<std::pair<std::filesystem::file_time_type, std::string>> found;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(stateDirectory(), error)) {
+        const std::string name = entry.path().filename().string();
+        const bool recovery = name == "recovery.json" || (name.starts_with("recovery-") && name.ends_with(".json"));
+        if (recovery && !lockedByARunningEditor(entry.path().string()))
+            found.emplace_back(entry.last_write_time(error), entry.path().string());
+    }
+    std::sort(found.rbegin(), found.rend());
+    std::vector<std::string> paths;
+    for (auto& [time, path] : found) paths.push_back(std::move(path));
+    return paths;
+}
+
+Status lockRecoveryFile() {
+    unlockRecoveryFile();
+    const std::string path = lockPathOf(recoveryFilePath());
+    if (Status made = ensureParentDirectory(path); !made) return made;
+    gLockDescriptor = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (gLockDescriptor < 0 || ::flock(gLockDescriptor, LOCK_EX | LOCK_NB) != 0)
+        return makeError(std::string("cannot lock: ") + std::strerror(errno), {path});
+    return success();
+}
+
+void unlockRecoveryFile() {
+    if (gLockDescriptor < 0) return;
+    std::error_code error;
+    std::filesystem::remove(lockPathOf(recoveryFilePath()), error);
+    ::close(gLockDescriptor);
+    gLockDescriptor = -1;
+}
+
+void removeRecoveryFile(const std::string& path) {
+    std::error_code error;
+    std::filesystem::remove(path, error);
+    if (path != recoveryFilePath()) std::filesystem::remove(lockPathOf(path), error);  // never this editor's lock
+}
 
 std::string recoveryDocument(const Scene& scene, const std::string& scenePath) {
     nlohmann::json document = {{"format", "glint-recovery"}, {"version", 1}, {"scene_path", scenePath},
@@ -37,7 +101,7 @@ Result<RecoveredWork> loadRecovery(const std::string& path) {
         return makeError("not a Glint recovery file (damaged or from another program)", {path});
     auto scene = parseScene(document["scene"].dump(2), path + " (scene)");
     if (!scene) return scene.error();
-    return RecoveredWork{std::move(*scene), document["scene_path"].get<std::string>()};
+    return RecoveredWork{std::move(*scene), document["scene_path"].get<std::string>(), path};
 }
 
 Status ensureParentDirectory(const std::string& path) {

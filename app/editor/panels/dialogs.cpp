@@ -95,26 +95,35 @@ void drawRecoveryOffer(EditorState& state) {
     centreNextWindow();
     if (!ImGui::BeginPopupModal("Recover unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     const RecoveredWork& work = state.recoveryOffer.front();
-    ImGui::Text("Glint did not close cleanly last time. Unsaved work was kept:");
+    ImGui::Text("A Glint editor did not close cleanly. Unsaved work was kept:");
     ImGui::BulletText("scene: %s", work.scenePath.empty() ? "(never saved)" : work.scenePath.c_str());
     ImGui::BulletText("%zu objects, %zu lights", work.scene.objects.size(), work.scene.lights.size());
-    ImGui::TextDisabled("from %s", state.recoveryOfferPath.c_str());
+    ImGui::TextDisabled("from %s", work.recoveryPath.c_str());
+    if (state.recoveryOffer.size() > 1)
+        ImGui::TextDisabled("%zu more recovery files follow", state.recoveryOffer.size() - 1);
     ImGui::Spacing();
     if (ImGui::Button("Recover (Enter)") || takeKeyPress(GLFW_KEY_ENTER)) {
         state.session.replace(work.scene, work.scenePath, /*dirty=*/true);
         state.selectedObject = 0;
         state.selectedLight = 0;
-        state.statusMessage = "Recovered unsaved work: save it to keep it";
+        // The file becomes this editor's: autosave updates it, a clean exit removes it. Other
+        // offers stay on disk for the next start.
+        std::error_code error;
+        if (work.recoveryPath != recoveryFilePath()) {
+            std::filesystem::rename(work.recoveryPath, recoveryFilePath(), error);
+            if (!error) removeRecoveryFile(work.recoveryPath);  // what is left: its lock file
+        }
+        state.wroteRecovery = !error;
+        const size_t kept = state.recoveryOffer.size() - 1;
+        state.statusMessage = "Recovered unsaved work: save it to keep it" +
+                              (kept ? " (" + std::to_string(kept) + " more recovery files are kept for the next start)" : "");
         state.recoveryOffer.clear();
-        // The file holds this editor's unsaved work now: autosave updates it, a clean exit removes it.
-        state.wroteRecovery = true;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard")) {
-        std::error_code error;
-        std::filesystem::remove(state.recoveryOfferPath, error);
-        state.recoveryOffer.clear();
+        removeRecoveryFile(work.recoveryPath);
+        state.recoveryOffer.erase(state.recoveryOffer.begin());
         ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
