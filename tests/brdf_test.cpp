@@ -120,8 +120,12 @@ TEST(BrdfRegistry, TablesAreConsistent) {
             EXPECT_LE(spec.validMin, spec.sliderMin);
             EXPECT_GE(spec.validMax, spec.sliderMax);
             EXPECT_LT(spec.sliderMin, spec.sliderMax);
-            if (spec.scale == ParamScale::Log) EXPECT_GT(spec.sliderMin, 0.0f);
-            if (spec.kind == ParamKind::Enum) EXPECT_EQ(spec.sliderMax + 1, static_cast<float>(spec.options.size()));
+            if (spec.scale == ParamScale::Log) {
+                EXPECT_GT(spec.sliderMin, 0.0f);
+            }
+            if (spec.kind == ParamKind::Enum) {
+                EXPECT_EQ(spec.sliderMax + 1, static_cast<float>(spec.options.size()));
+            }
             for (int c = 0; c < componentCount(spec.kind); ++c) {
                 EXPECT_GE(spec.defaultValue[c], spec.validMin);
                 EXPECT_LE(spec.defaultValue[c], spec.validMax);

@@ -151,7 +151,7 @@ TEST_F(EnvironmentHdrTest, EveryLayeredPresetAgreesWithTheReference) {
         scene.environment.rotationDegrees = 40.0f;
         const RadianceImage gpu = renderGpu(scene, 96, 96);
         const test::PixelAgreement agreement = test::compareWithReference(scene, gpu, 1e-3f, 1e-4f);
-        std::printf("%s: worst relative GPU-CPU difference %.2e over %d pixels\n", preset.name, agreement.worstRelative,
+        std::printf("%s: worst relative GPU-CPU difference %.2e over %ld pixels\n", preset.name, agreement.worstRelative,
                     agreement.compared);
         EXPECT_GT(agreement.compared, 96 * 96 / 4) << preset.name;
         EXPECT_EQ(agreement.disagreeing, 0) << preset.name << ": " << agreement.firstDisagreement;

@@ -81,8 +81,9 @@ TEST(ModelSwitch, EveryPairIsValidAndKeepsColourAndRoughness) {
                 EXPECT_EQ(paramValue(switched.material, diffuseName(to.model)), paramValue(source, diffuseName(from.model)))
                     << switched.summary();
             }
-            if (holdsRoughness(from.model) && holdsRoughness(to.model))
+            if (holdsRoughness(from.model) && holdsRoughness(to.model)) {
                 EXPECT_NEAR(roughnessAlpha(switched.material), 0.25f, 1e-4f) << switched.summary();
+            }
             EXPECT_FALSE(switched.kept.empty() && from.model != to.model && holdsDiffuse(from.model) && holdsDiffuse(to.model))
                 << switched.summary();
         }

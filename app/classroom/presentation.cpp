@@ -76,7 +76,7 @@ float columnWidthLimit(const Settings& settings) {
 }
 
 void keepPresentationColumns(EditorState& state) {
-    static bool presenting = false, leftBefore = true, rightBefore = true, leftShown = false, rightShown = false;
+    static bool presenting = false, leftBefore = true, rightBefore = true, leftShown = false;
     if (state.settings.presentationMode != presenting) {
         presenting = state.settings.presentationMode;
         if (presenting) {
@@ -93,7 +93,6 @@ void keepPresentationColumns(EditorState& state) {
         else state.showRightPanel = false;
     }
     leftShown = state.showLeftPanel;
-    rightShown = state.showRightPanel;
 }
 
 float collapsedColumnStripWidth(const Settings& settings) {
