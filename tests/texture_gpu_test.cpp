@@ -59,6 +59,24 @@ void writeCheckerTexture() {
 
 using test::expectMatchesGolden;
 
+// Renders `scene` at size × size, writes the picture as NAME.png, and expects every pixel but the
+// silhouettes within `relativeTolerance` of the CPU reference, at least `minimumCompared` of them.
+RenderedImages expectAgreesWithCpu(const Scene& scene, int size, const std::string& name, float relativeTolerance,
+                                   long minimumCompared) {
+    auto images = test::sharedHeadless().render(scene, size, size);
+    if (!images) {
+        ADD_FAILURE() << images.error().format();
+        return {};
+    }
+    (void)writeDisplayImage(images->display, textureDirectory() + "/" + name + ".png");
+    const auto agreement = test::compareWithReference(scene, images->radiance, relativeTolerance);
+    std::printf("%s: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", name.c_str(), agreement.compared,
+                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
+    EXPECT_EQ(agreement.disagreeing, 0) << name << ": " << agreement.firstDisagreement;
+    EXPECT_GT(agreement.compared, minimumCompared) << name;
+    return std::move(*images);
+}
+
 TEST(TextureGpu, TexturedQuadMatchesGoldenAndCpu) {
     writeColourTexture();
     // The quad fills the 88×88 frame: 11 pixels a texel, so pixel (5, 5) sits on the centre of
@@ -137,14 +155,7 @@ TEST(TextureGpu, MarbleSphereMatchesCpuReference) {
         "diffuse_albedo": {"type": "marble", "a": [0.9, 0.88, 0.8], "b": [0.15, 0.12, 0.1], "frequency": 3, "turbulence": 5, "octaves": 5},
         "roughness": {"type": "wood", "a": 0.15, "b": 0.6, "frequency": 2, "turbulence": 2}}})",
                                   kSphere);
-    auto images = test::sharedHeadless().render(scene, 128, 128);
-    ASSERT_TRUE(images.ok()) << images.error().format();
-    (void)writeDisplayImage(images->display, textureDirectory() + "/marble_sphere.png");
-    const auto agreement = test::compareWithReference(scene, images->radiance);
-    std::printf("marble sphere: %ld compared, %ld excluded, worst relative %.2e\n", agreement.compared, agreement.excluded,
-                agreement.worstRelative);
-    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
-    EXPECT_GT(agreement.compared, 8000);
+    expectAgreesWithCpu(scene, 128, "marble_sphere", 1e-3f, 8000);
 }
 
 TEST(TextureGpu, ImageSphereMatchesCpuReferenceAtMagnification) {
@@ -154,14 +165,7 @@ TEST(TextureGpu, ImageSphereMatchesCpuReferenceAtMagnification) {
         "diffuse_albedo": {"type": "image", "file": "colour.png", "tiling": [2, 1]},
         "roughness": {"type": "image", "file": "colour.png", "channel": "g", "min": 0.1, "max": 0.6, "filter": "bilinear"}}})",
                                   kSphere);
-    auto images = test::sharedHeadless().render(scene, 128, 128);
-    ASSERT_TRUE(images.ok()) << images.error().format();
-    (void)writeDisplayImage(images->display, textureDirectory() + "/image_sphere.png");
-    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
-    std::printf("image sphere: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
-                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
-    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
-    EXPECT_GT(agreement.compared, 8000);
+    expectAgreesWithCpu(scene, 128, "image_sphere", 5e-3f, 8000);
 }
 
 // The UV transform (offset, rotation, a mirroring tiling), a colour factor and a scaled normal map
@@ -182,14 +186,7 @@ TEST(TextureGpu, TransformedFactoredImageMatchesCpuReference) {
                            "factor": [0.9, 0.5, 0.7], "filter": "bilinear"},
         "normal": {"type": "image", "file": "bumps.png", "scale": 1.5, "rotation": -0.3, "filter": "bilinear"}}})",
                                   R"({"shape": "plane", "center": [0, 0, 0], "normal": [0.2, 0.3, 1], "size": [2, 2], "material": "m"})");
-    auto images = test::sharedHeadless().render(scene, 128, 128);
-    ASSERT_TRUE(images.ok()) << images.error().format();
-    (void)writeDisplayImage(images->display, textureDirectory() + "/transformed_plane.png");
-    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
-    std::printf("transformed plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
-                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
-    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
-    EXPECT_GT(agreement.compared, 8000);
+    expectAgreesWithCpu(scene, 128, "transformed_plane", 5e-3f, 8000);
 }
 
 // Wrap modes (glTF samplers' wrapS/wrapT): a plane whose UV runs from −1 to 2 clamps along u and
@@ -204,14 +201,7 @@ TEST(TextureGpu, ClampedAndMirroredImagesMatchCpuReference) {
         "roughness": {"type": "image", "file": "colour.png", "channel": "r", "min": 0.1, "max": 0.6, "tiling": [3, 3],
                       "offset": [-1, -1], "filter": "bilinear", "min_filter": "nearest_mipmap_linear", "wrap_u": "mirrored_repeat"}}})",
                                   R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})");
-    auto images = test::sharedHeadless().render(scene, 128, 128);
-    ASSERT_TRUE(images.ok()) << images.error().format();
-    (void)writeDisplayImage(images->display, textureDirectory() + "/wrapped_plane.png");
-    const auto agreement = test::compareWithReference(scene, images->radiance, 5e-3f);
-    std::printf("wrapped plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
-                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
-    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
-    EXPECT_GT(agreement.compared, 8000);
+    expectAgreesWithCpu(scene, 128, "wrapped_plane", 5e-3f, 8000);
 }
 
 // The occlusion map (glTF's occlusionTexture) scales the ambient light and no other: under a sun
@@ -223,16 +213,12 @@ TEST(TextureGpu, OcclusionMapDarkensOnlyTheAmbientLight) {
     const char* plane = R"({"shape": "plane", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [2, 2], "material": "m"})";
     const char* ambient = R"({"type": "ambient", "radiance": 0.5}, {"type": "directional", "direction": [0.3, 0, -1], "irradiance": 2})";
     const Scene lit = sceneFrom(kFrontOrtho, ambient, occluded, plane);
-    auto images = test::sharedHeadless().render(lit, 64, 64);
-    ASSERT_TRUE(images.ok()) << images.error().format();
-    const auto agreement = test::compareWithReference(lit, images->radiance, 5e-3f);
-    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
-    EXPECT_GT(agreement.compared, 3000);
+    const RenderedImages images = expectAgreesWithCpu(lit, 64, "occluded_plane", 5e-3f, 3000);
     // The colour texture's green falls from 1 at the top to 0.03 at the bottom: so does the ambient part.
     auto unoccluded = test::sharedHeadless().render(sceneFrom(kFrontOrtho, ambient, R"({"name": "m", "model": "lambert"})", plane), 64, 64);
     ASSERT_TRUE(unoccluded.ok());
-    EXPECT_LT(images->radiance.at(32, 56).g, unoccluded->radiance.at(32, 56).g - 0.05f);
-    EXPECT_NEAR(images->radiance.at(32, 6).g, unoccluded->radiance.at(32, 6).g, 0.02f);
+    EXPECT_LT(images.radiance.at(32, 56).g, unoccluded->radiance.at(32, 56).g - 0.05f);
+    EXPECT_NEAR(images.radiance.at(32, 6).g, unoccluded->radiance.at(32, 6).g, 0.02f);
     auto sunOnly = test::sharedHeadless().render(sceneFrom(kFrontOrtho, kSun, occluded, plane), 64, 64);
     auto plain = test::sharedHeadless().render(sceneFrom(kFrontOrtho, kSun, R"({"name": "m", "model": "lambert"})", plane), 64, 64);
     ASSERT_TRUE(sunOnly.ok() && plain.ok());
@@ -291,18 +277,11 @@ TEST(TextureGpu, CoatNormalMapTiltsTheCoatOnly) {
     const char* plane = R"({"shape": "plane", "center": [0, 0, 0], "normal": [0.1, -0.2, 1], "size": [2, 2], "material": "m"})";
     const char* lights = R"({"type": "point", "position": [1.5, 1, 2], "power": 200}, {"type": "ambient", "radiance": 0.1})";
     const Scene scene = sceneFrom(kFrontOrtho, lights, material(true), plane);
-    auto images = test::sharedHeadless().render(scene, 64, 64);
-    ASSERT_TRUE(images.ok()) << images.error().format();
-    (void)writeDisplayImage(images->display, textureDirectory() + "/coat_normal_plane.png");
-    const auto agreement = test::compareWithReference(scene, images->radiance, 1e-3f);
-    std::printf("coat normal plane: %ld compared, %ld excluded, %ld disagreeing, worst relative %.2e\n", agreement.compared,
-                agreement.excluded, agreement.disagreeing, agreement.worstRelative);
-    EXPECT_EQ(agreement.disagreeing, 0) << agreement.firstDisagreement;
-    EXPECT_GT(agreement.compared, 3000);
+    const RenderedImages images = expectAgreesWithCpu(scene, 64, "coat_normal_plane", 1e-3f, 3000);
     const RadianceImage unmapped = renderReference(sceneFrom(kFrontOrtho, lights, material(false), plane), 64, 64);
     float largest = 0.0f;
     for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) largest = std::max(largest, glm::length(images->radiance.at(x, y) - unmapped.at(x, y)));
+        for (int x = 0; x < 64; ++x) largest = std::max(largest, glm::length(images.radiance.at(x, y) - unmapped.at(x, y)));
     std::printf("coat normal plane: largest change by the coat normal map %.3f\n", largest);
     EXPECT_GT(largest, 0.05f) << "the coat normal map changes nothing";
 }
