@@ -3,6 +3,7 @@
 // CPU reference, both its GPU twin and its Monte-Carlo sampling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -148,6 +149,26 @@ TEST(EnvironmentJson, MistakesAreLocated) {
 }
 
 // --- precomputed lighting -------------------------------------------------------------------
+
+TEST(EnvironmentMap, ThePrecomputeOffersRisingProgressToOneAndCanBeCancelled) {
+    std::vector<float> offered;
+    const auto map = makeEnvironmentMap(test::smallLightImage(), [&](float fraction) {
+        offered.push_back(fraction);
+        return true;
+    });
+    ASSERT_TRUE(map);
+    ASSERT_GT(offered.size(), 20u);  // rows within stages, not only the stages
+    EXPECT_TRUE(std::is_sorted(offered.begin(), offered.end()));
+    EXPECT_EQ(offered.front(), 0.0f);
+    EXPECT_NEAR(offered.back(), 1.0f, 1e-6f);
+    int offers = 0;
+    EXPECT_FALSE(makeEnvironmentMap(test::smallLightImage(), [&](float) { return ++offers < 5; }));
+    EXPECT_EQ(offers, 5) << "offers after the cancel";
+    auto cancelled = loadEnvironmentMap(EnvironmentKind::File, test::dataPath("environments/studio_small_01_256.exr"),
+                                        [](float) { return false; });
+    ASSERT_FALSE(cancelled.ok());
+    EXPECT_TRUE(isEnvironmentCancellation(cancelled.error()));
+}
 
 TEST(EnvironmentMap, UniformWhiteIsUniformAtEveryLevel) {
     auto map = loadEnvironmentMap(EnvironmentKind::White, "");

@@ -10,8 +10,11 @@
 #include "brdf/fresnel.h"
 #include "brdf/glass.h"
 #include "brdf/mirror.h"
+#include "classroom/surface_probe.h"
+#include "environment/environment_lighting.h"
 #include "interchange/measured_brdf.h"
 #include "math/constants.h"
+#include "render/environment_sampling.h"
 #include "util/diagnostic.h"
 
 namespace glint {
@@ -83,6 +86,23 @@ glm::vec3 plotOutgoingDirection(float outgoingRadians) {
 }
 
 float plotLuminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
+
+// ---- environment -------------------------------------------------------------------------
+
+std::optional<PlotEnvironmentAccuracy> plotEnvironmentAccuracy(const PlotMaterial& material, const Environment& environment,
+                                                               float incidenceDegrees) {
+    if (!environment.enabled() || material.measured || material.sampler || !modelInfo(material.model).glslEnvironment)
+        return std::nullopt;
+    // The plot's frame turned so that its normal is +y and its +x (the mirror side) is +z.
+    const ShadingFrame frame{glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+    const glm::vec3 wo = frame.toWorld(plotOutgoingDirection(incidenceDegrees * kPlotDegrees));
+    PlotEnvironmentAccuracy accuracy;
+    accuracy.method = environmentApproximation(material.model, material.values, environment);
+    accuracy.preview = environmentLighting(material.model, material.values, wo, frame, environment);
+    accuracy.truth = sampleEnvironmentLighting(material.model, material.values, wo, frame, environment, 1u,
+                                               kProbeEnvironmentSamples);
+    return accuracy;
+}
 
 // ---- polar plot ----------------------------------------------------------------------------
 

@@ -56,6 +56,18 @@ glm::vec3 plotOutgoingDirection(float outgoingRadians);
 // Photometric weight of an RGB triple (Rec. 709 luminance) used as the radius of single curves.
 float plotLuminance(glm::vec3 rgb);
 
+// ---- environment -------------------------------------------------------------------------
+// The plotted material's environment term as the preview computes it, how (environmentApproximation)
+// and its Monte-Carlo integral (kProbeEnvironmentSamples samples): for a surface facing up (+y),
+// seen from θ_o = θ_i towards +z (the default camera's side). Nullopt without an environment, for a
+// measured or sampled material, or a model with no environment hook.
+struct PlotEnvironmentAccuracy {
+    std::string method;
+    glm::vec3 preview{0.0f}, truth{0.0f};  // [W/(sr·m²)]
+};
+std::optional<PlotEnvironmentAccuracy> plotEnvironmentAccuracy(const PlotMaterial& material, const Environment& environment,
+                                                               float incidenceDegrees);
+
 // ---- polar plot ----------------------------------------------------------------------------
 // f_r and f_r·cos θ_o [1/sr] for θ_o from −90° to +90° in the plane of incidence.
 struct PolarPlotData {

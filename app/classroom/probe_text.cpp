@@ -118,14 +118,17 @@ std::string probeTotalEquation(const ProbeResult& result) {
 
 // --- environment ---
 
+std::string environmentAccuracyText(const std::string& method, glm::vec3 preview, glm::vec3 truth) {
+    const float truthSum = glm::dot(truth, glm::vec3(1.0f));
+    const float previewSum = glm::dot(preview, glm::vec3(1.0f));
+    std::string error = truthSum > 0.0f ? probeTextPrintf("%+.1f%%", 100.0f * (previewSum / truthSum - 1.0f)) : "n/a";
+    return "L_environment by " + method + ": " + formatProbeRgb(preview) + "; Monte-Carlo (" +
+           std::to_string(kProbeEnvironmentSamples) + " samples) " + formatProbeRgb(truth) + " W/(sr·m²): error " + error;
+}
+
 std::string probeEnvironmentLine(const ProbeResult& result) {
     if (result.environmentMethod.empty()) return {};
-    const float truth = glm::dot(result.environmentTruth, glm::vec3(1.0f));
-    const float preview = glm::dot(result.environment, glm::vec3(1.0f));
-    std::string error = truth > 0.0f ? probeTextPrintf("%+.1f%%", 100.0f * (preview / truth - 1.0f)) : "n/a";
-    return "L_environment by " + result.environmentMethod + ": " + formatProbeRgb(result.environment) +
-           "; Monte-Carlo (" + std::to_string(kProbeEnvironmentSamples) + " samples) " +
-           formatProbeRgb(result.environmentTruth) + " W/(sr·m²): error " + error;
+    return environmentAccuracyText(result.environmentMethod, result.environment, result.environmentTruth);
 }
 
 // --- display chain ---

@@ -21,8 +21,10 @@ std::string formatProbeRgb(glm::vec3 value);
 std::vector<std::string> probeLightEquation(const ProbeLight& light);
 // The total: L = Σ f_r·E (+ k_a·L_a, environment, traced delta lobes) with the numbers.
 std::string probeTotalEquation(const ProbeResult& result);
-// The environment term's approximation and its error against the Monte-Carlo integral at this
-// point; empty when there is no environment term.
+// The environment term's approximation, its value and its error against the Monte-Carlo integral
+// (kProbeEnvironmentSamples samples): the probe's line and the plots' note say it alike.
+std::string environmentAccuracyText(const std::string& method, glm::vec3 preview, glm::vec3 truth);
+// That text at the probed point; empty when there is no environment term.
 std::string probeEnvironmentLine(const ProbeResult& result);
 // Radiance → exposure → tone map → clamp → encoding → 8-bit, per channel (one line when equal).
 std::vector<std::string> probeDisplayEquation(const ProbeResult& result);

@@ -29,6 +29,7 @@
 #include "editor/document.h"
 #include "editor/key_events.h"
 #include "editor/light_handles.h"
+#include "editor/environment_loading.h"
 #include "editor/mesh_loading.h"
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
@@ -208,6 +209,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         const double secondsToWake = std::min(
             {secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
         if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
+        else if (state.environmentLoad) glfwWaitEventsTimeout(0.25);  // its progress; the precompute keeps the cores
         else if (framesToDraw > 0) glfwPollEvents();
         else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
         else glfwWaitEvents();
@@ -220,6 +222,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             requestQuit(state);
         }
         if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
+        if (pollEnvironmentLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
         gDroppedPaths.clear();
         keepPresentationColumns(state);  // collapsed on entering presentation mode, one open at a time
@@ -402,6 +405,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                          ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
                          uiLayers.listsCopied(), plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
         }
+        if (logFrames && !plan.render && !waitedForPrograms)  // the UI alone (a progress bar, a menu)
+            std::fprintf(stderr, "glint ui frame: input to presented %.1f ms\n",
+                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
         if (logFrames && waitedForPrograms)
             std::fprintf(stderr, "glint programs: the frame waits for programs compiling in the background; input to presented %.1f ms\n",
                          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());

@@ -25,6 +25,7 @@
 namespace glint {
 
 class MeshLoadJob;  // editor/mesh_loading.h
+class EnvironmentLoadJob;  // editor/environment_loading.h
 
 // An interchange file that holds several materials, read and waiting while a modal asks which
 // one to use (editor/interchange_open.h).
@@ -81,6 +82,7 @@ struct EditorState {
     bool quitNow = false;
     std::optional<MaterialChoice> materialChoice;  // a file asking which of its materials to use
     std::shared_ptr<MeshLoadJob> meshLoad;  // the mesh file loading on a worker thread, if any
+    std::shared_ptr<EnvironmentLoadJob> environmentLoad;  // the environment map being made, if any
 
     // Autosave: the recovery file and the crash copy follow session.settledRevision().
     std::uint64_t autosavedRevision = 0;

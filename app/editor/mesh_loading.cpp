@@ -7,39 +7,13 @@
 
 namespace glint {
 
-MeshLoadJob::MeshLoadJob(std::string path) : path_(std::move(path)) {
-    thread_ = std::thread([this] {
-        auto imported = importMesh(path_, MeshImportOptions{}, [this](float fraction) {
-            progress_.store(fraction);
-            return !cancelRequested_.load();
-        });
-        ObjMaterial material;
-        if (imported) material = readObjMaterial(path_);  // an .obj's mtllib and usemtl
-        {
-            std::lock_guard lock(resultMutex_);
-            result_.emplace(std::move(imported));
-            material_ = std::move(material);
-        }
-        finished_.store(true);
-    });
-}
-
-MeshLoadJob::~MeshLoadJob() {
-    cancel();
-    if (thread_.joinable()) thread_.join();
-}
-
-std::optional<Result<ImportedMesh>> MeshLoadJob::takeResult() {
-    std::lock_guard lock(resultMutex_);
-    std::optional<Result<ImportedMesh>> taken = std::move(result_);
-    result_.reset();
-    return taken;
-}
-
-ObjMaterial MeshLoadJob::takeMaterial() {
-    std::lock_guard lock(resultMutex_);
-    return std::move(material_);
-}
+MeshLoadJob::MeshLoadJob(std::string path)
+    : WorkerJob([path](const Progress& progress) {
+          MeshLoadOutcome outcome{importMesh(path, MeshImportOptions{}, progress), {}};
+          if (outcome.mesh) outcome.material = readObjMaterial(path);  // an .obj's mtllib and usemtl
+          return outcome;
+      }),
+      path_(std::move(path)) {}
 
 void startMeshLoad(EditorState& state, const std::string& path) {
     if (state.meshLoad) {
@@ -53,13 +27,13 @@ bool pollMeshLoad(EditorState& state) {
     if (!state.meshLoad) return false;
     if (!state.meshLoad->finished()) return true;
     const std::string path = state.meshLoad->path();
-    auto result = state.meshLoad->takeResult();
-    ObjMaterial material = state.meshLoad->takeMaterial();
+    auto outcome = state.meshLoad->takeResult();
     state.meshLoad.reset();
-    if (!result) return false;
-    if (result->ok()) addMeshObject(state, path, std::move(**result), std::move(material));
-    else if (isImportCancellation(result->error())) state.statusMessage = "Cancelled loading " + path;
-    else state.errorMessage = "Could not load the mesh; the scene is unchanged.\n\n" + result->error().format();
+    if (!outcome) return false;
+    Result<ImportedMesh>& result = outcome->mesh;
+    if (result.ok()) addMeshObject(state, path, std::move(*result), std::move(outcome->material));
+    else if (isImportCancellation(result.error())) state.statusMessage = "Cancelled loading " + path;
+    else state.errorMessage = "Could not load the mesh; the scene is unchanged.\n\n" + result.error().format();
     return false;
 }
 

@@ -5,45 +5,30 @@
 // lives in panels/mesh_load_dialog.cpp; importing itself in core/geometry/mesh_import.h.
 #pragma once
 
-#include <atomic>
 #include <memory>
-#include <mutex>
-#include <optional>
 #include <string>
-#include <thread>
 
 #include "editor/editor_state.h"
+#include "editor/worker_job.h"
 #include "geometry/mesh_import.h"
 #include "interchange/obj_material.h"
 
 namespace glint {
 
-class MeshLoadJob {
+// The import's outcome, and the material an .obj names.
+struct MeshLoadOutcome {
+    Result<ImportedMesh> mesh;
+    ObjMaterial material;
+};
+
+class MeshLoadJob : public WorkerJob<MeshLoadOutcome> {
 public:
     // Starts importing `path` on a new thread.
     explicit MeshLoadJob(std::string path);
-    ~MeshLoadJob();  // cancels and waits for the thread
-    MeshLoadJob(const MeshLoadJob&) = delete;
-    MeshLoadJob& operator=(const MeshLoadJob&) = delete;
-
     const std::string& path() const { return path_; }
-    float progress() const { return progress_.load(); }  // [0, 1]
-    void cancel() { cancelRequested_.store(true); }
-    bool cancelRequested() const { return cancelRequested_.load(); }
-    bool finished() const { return finished_.load(); }
-    // The import's outcome once finished() (taken once), and the material an .obj names.
-    std::optional<Result<ImportedMesh>> takeResult();
-    ObjMaterial takeMaterial();
 
 private:
     std::string path_;
-    std::atomic<float> progress_{0.0f};
-    std::atomic<bool> cancelRequested_{false};
-    std::atomic<bool> finished_{false};
-    std::mutex resultMutex_;
-    std::optional<Result<ImportedMesh>> result_;
-    ObjMaterial material_;
-    std::thread thread_;
 };
 
 // Starts loading a mesh unless one is loading already (then the status line says so).

@@ -3,6 +3,7 @@
 #include "environment/environment_map.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <thread>
 
@@ -15,13 +16,42 @@
 namespace glint {
 namespace {
 
-// --- parallel rows --------------------------------------------------------------------------
+// --- progress and parallel rows ------------------------------------------------------------
 
+// The precompute's progress: each stage a share of [0, 1] (stage() moves on), rows within it. Once
+// the callback declines, every later offer is declined and the stages left skip their rows.
+class StagedProgress {
+public:
+    explicit StagedProgress(const EnvironmentProgress& callback) : callback_(callback) {}
+    void stage(float share) {
+        start_ = end_;
+        end_ = std::min(1.0f, start_ + share);
+        offer(0.0f);
+    }
+    bool offer(float withinStage) {
+        if (!cancelled_ && callback_ && !callback_(std::min(end_, start_ + (end_ - start_) * withinStage))) cancelled_ = true;
+        return !cancelled_;
+    }
+    bool cancelled() const { return cancelled_; }
+
+private:
+    const EnvironmentProgress& callback_;
+    float start_ = 0.0f, end_ = 0.0f;
+    bool cancelled_ = false;
+};
+
+// Calls row(y) for every row on all cores; the calling thread offers the rows done to `progress`.
 template <class RowFunction>
-void forEachRow(int rows, RowFunction&& row) {
+void forEachRow(int rows, RowFunction&& row, StagedProgress& progress) {
     const int threadCount = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+    std::atomic<int> done{0};
+    std::atomic<bool> stop{progress.cancelled()};
     auto work = [&](int first) {
-        for (int y = first; y < rows; y += threadCount) row(y);
+        for (int y = first; y < rows && !stop.load(std::memory_order_relaxed); y += threadCount) {
+            row(y);
+            const int rowsDone = done.fetch_add(1) + 1;
+            if (first == 0 && !progress.offer(static_cast<float>(rowsDone) / rows)) stop.store(true);
+        }
     };
     std::vector<std::thread> threads;
     for (int t = 1; t < threadCount; ++t) threads.emplace_back(work, t);
@@ -36,7 +66,7 @@ void forEachRow(int rows, RowFunction&& row) {
 // solid-angle-weighted means keep each source's power, so a light smaller than a texel still
 // counts in full), normalised by the same sum for a uniform map (Σ cos⁺ Ω / π, within 0.4% of 1)
 // so that a uniform map gives E/π = L exactly. Brute force over flat arrays: (64·32)·(128·64) products.
-EquirectImage convolveIrradiance(const EquirectImage& source, int width, int height) {
+EquirectImage convolveIrradiance(const EquirectImage& source, int width, int height, StagedProgress& progress) {
     const size_t count = source.texels.size();
     std::vector<float> dx(count), dy(count), dz(count), red(count), green(count), blue(count), solidAnglesOverPi(count);
     for (int y = 0; y < source.height; ++y) {
@@ -59,17 +89,17 @@ EquirectImage convolveIrradiance(const EquirectImage& source, int width, int hei
             }
             irradiance.at(x, y) = glm::vec3(r, g, b) / kernel;
         }
-    });
+    }, progress);
     return irradiance;
 }
 
 // The irradiance map at the prefiltered size: convolved at half that size from the first pyramid
 // level no wider than the prefiltered levels, then resampled bilinearly (E is smooth: the
 // resampling changes it by < 0.2% where a small light sits at the terminator).
-EquirectImage irradianceMap(const std::vector<EquirectImage>& pyramid) {
+EquirectImage irradianceMap(const std::vector<EquirectImage>& pyramid, StagedProgress& progress) {
     const auto source = std::find_if(pyramid.begin(), pyramid.end(),
                                      [](const EquirectImage& level) { return level.width <= kPrefilteredWidth; });
-    const EquirectImage coarse = convolveIrradiance(*source, kPrefilteredWidth / 2, kPrefilteredHeight / 2);
+    const EquirectImage coarse = convolveIrradiance(*source, kPrefilteredWidth / 2, kPrefilteredHeight / 2, progress);
     EquirectImage irradiance(kPrefilteredWidth, kPrefilteredHeight);
     for (int y = 0; y < irradiance.height; ++y)
         for (int x = 0; x < irradiance.width; ++x)
@@ -178,7 +208,7 @@ glm::vec3 samplePyramid(const std::vector<EquirectImage>& pyramid, glm::vec3 dir
 // the radiance over GGX-sampled light directions weighted by cos θ_i; each sample reads the
 // pyramid level whose texels match the sample's solid angle (Colbert & Křivánek, "GPU-Based
 // Importance Sampling", GPU Gems 3, ch. 20).
-EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float alpha) {
+EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float alpha, StagedProgress& progress) {
     EquirectImage level(kPrefilteredWidth, kPrefilteredHeight);
     const float texelSolidAngleMean = 4.0f * kPi / (pyramid[0].width * pyramid[0].height);
     forEachRow(level.height, [&](int y) {
@@ -201,7 +231,7 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float al
             }
             level.at(x, y) = sum / weightSum;
         }
-    });
+    }, progress);
     return level;
 }
 
@@ -209,10 +239,16 @@ EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float al
 
 // --- making a map ---------------------------------------------------------------------------
 
-std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance) {
+std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance, const EnvironmentProgress& callback) {
+    // Shares of the time each stage takes (1024×512 studio HDRI): the prefiltered levels most.
+    constexpr float kIrradianceShare = 0.1f, kPeaksShare = 0.06f, kDistributionShare = 0.04f;
+    constexpr float kLevelShare = (1.0f - kIrradianceShare - kPeaksShare - kDistributionShare) / (2 * kPrefilteredLevels);
+    StagedProgress progress(callback);
     auto map = std::make_shared<EnvironmentMap>();
+    progress.stage(kIrradianceShare);
     const std::vector<EquirectImage> pyramid = pyramidOf(radiance);
-    map->irradiance = irradianceMap(pyramid);
+    map->irradiance = irradianceMap(pyramid, progress);
+    progress.stage(kPeaksShare);
     EquirectImage peak = peakRadiance(radiance);
     map->peaks = peakLights(peak);
     for (const EnvironmentPeakLight& light : map->peaks)
@@ -222,11 +258,16 @@ std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance)
     const std::vector<EquirectImage> residualPyramid = pyramidOf(std::move(residual));
     for (int k = 1; k <= kPrefilteredLevels; ++k) {
         const float perceptual = static_cast<float>(k) / kPrefilteredLevels;
-        map->prefiltered.push_back(prefilterLevel(pyramid, perceptual * perceptual));
-        map->residualPrefiltered.push_back(prefilterLevel(residualPyramid, perceptual * perceptual));
+        progress.stage(kLevelShare);
+        map->prefiltered.push_back(prefilterLevel(pyramid, perceptual * perceptual, progress));
+        progress.stage(kLevelShare);
+        map->residualPrefiltered.push_back(prefilterLevel(residualPyramid, perceptual * perceptual, progress));
     }
+    progress.stage(kDistributionShare);
+    if (progress.cancelled()) return nullptr;
     map->distribution = EnvironmentDistribution(radiance);
     map->radiance = std::move(radiance);
+    progress.offer(1.0f);
     return map;
 }
 

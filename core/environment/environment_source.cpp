@@ -118,25 +118,39 @@ EquirectImage bakeBuiltinEnvironment(EnvironmentKind kind) {
 
 // --- loading --------------------------------------------------------------------------------
 
-Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file) {
+namespace {
+constexpr const char* kCancelledMessage = "environment precompute cancelled";
+}
+
+Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file,
+                                                                 const EnvironmentProgress& progress) {
     if (kind == EnvironmentKind::None) return std::shared_ptr<const EnvironmentMap>();
+    std::shared_ptr<const EnvironmentMap> map;
     if (kind == EnvironmentKind::File) {
         auto image = readEquirectFile(file);
         if (!image) return image.error();
-        return makeEnvironmentMap(std::move(*image));
+        map = makeEnvironmentMap(std::move(*image), progress);
+    } else {
+        static std::mutex mutex;
+        static std::shared_ptr<const EnvironmentMap> builtins[5];
+        std::lock_guard lock(mutex);
+        auto& cached = builtins[static_cast<int>(kind)];
+        if (!cached) cached = makeEnvironmentMap(bakeBuiltinEnvironment(kind), progress);
+        map = cached;
     }
-    static std::mutex mutex;
-    static std::shared_ptr<const EnvironmentMap> builtins[5];
-    std::lock_guard lock(mutex);
-    auto& cached = builtins[static_cast<int>(kind)];
-    if (!cached) cached = makeEnvironmentMap(bakeBuiltinEnvironment(kind));
-    return cached;
+    if (!map) return makeError(kCancelledMessage, {file});
+    return map;
+}
+
+bool isEnvironmentCancellation(const Diagnostic& diagnostic) { return diagnostic.message == kCancelledMessage; }
+
+std::string absoluteEnvironmentFile(const Environment& environment) {
+    if (environment.kind != EnvironmentKind::File || environment.file.empty()) return environment.file;
+    return std::filesystem::absolute(environment.file).lexically_normal().string();
 }
 
 Status loadEnvironment(Environment& environment) {
-    std::string file = environment.file;
-    if (environment.kind == EnvironmentKind::File && !file.empty())
-        file = std::filesystem::absolute(file).lexically_normal().string();
+    const std::string file = absoluteEnvironmentFile(environment);
     auto map = loadEnvironmentMap(environment.kind, file);
     if (!map) return map.error();
     environment.file = file;

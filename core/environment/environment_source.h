@@ -21,8 +21,14 @@ Result<EquirectImage> readEquirectFile(const std::string& path);
 EquirectImage bakeBuiltinEnvironment(EnvironmentKind kind);
 
 // The map of an environment kind: a file read (and precomputed) each call, a built-in made once
-// and shared. None has no map.
-Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file);
+// and shared. None has no map. `progress` follows the precompute (environment_map.h); when it
+// cancels, the result is an error for which isEnvironmentCancellation() holds.
+Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file,
+                                                                 const EnvironmentProgress& progress = {});
+bool isEnvironmentCancellation(const Diagnostic& diagnostic);
+
+// The file an environment names made absolute (as loadEnvironment stores it); others unchanged.
+std::string absoluteEnvironmentFile(const Environment& environment);
 
 // Fills `environment.map` for its kind and file (making `file` absolute); on failure the
 // environment is left as it was.

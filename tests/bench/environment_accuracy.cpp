@@ -1,5 +1,5 @@
 // Environment light against its Monte-Carlo ground truth, the table of issue 21: for each map
-// (smooth sky, small bright light, the shipped studio HDRI) and material (Lambert ρ 0.8 and an
+// (smooth sky, small bright light, the shipped studio HDRI, the built-in studio) and material (Lambert ρ 0.8 and an
 // F = 1 GGX conductor at α 0.05 … 1; with --all every model with an environment hook), the
 // preview's image-based lighting (the CPU twin of the GPU's, equal to it to 79 dB and better)
 // against the CPU reference's Monte-Carlo integral: PSNR over the sphere's interior and the ratio
@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "environment/environment_source.h"
 #include "environment_accuracy_support.h"
 #include "render/reference_renderer.h"
 
@@ -28,7 +29,10 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    const auto maps = test::accuracyMaps(std::string(GLINT_TEST_DATA_DIR) + "/environments/studio_small_01_256.exr");
+    auto maps = test::accuracyMaps(std::string(GLINT_TEST_DATA_DIR) + "/environments/studio_small_01_256.exr");
+    maps.push_back({"built-in studio", {}});  // the default stage's light (not one of the tests' maps)
+    maps.back().environment.kind = EnvironmentKind::Studio;
+    (void)loadEnvironment(maps.back().environment);
     for (const auto& map : maps)
         if (!map.environment.enabled()) {
             std::fprintf(stderr, "cannot load the map '%s'\n", map.name.c_str());

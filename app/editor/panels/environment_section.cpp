@@ -1,10 +1,11 @@
 // The Environment section of the display panel: none, a built-in (studio, sky, uniform white) or
 // an HDR file picked with the file browser; rotation about +y, intensity and whether the map
-// shows as the background. Each change is one undo step through the edit API; a file that cannot
-// be used is refused with a message and the scene stays as it was.
+// shows as the background. Each change is one undo step through the edit API. A chosen map is
+// made on a worker thread (editor/environment_loading.h): a progress bar with Cancel shows here
+// meanwhile, and a file that cannot be used is refused with a message, the scene as it was.
 #include <imgui.h>
 
-#include "environment/environment_source.h"
+#include "editor/environment_loading.h"
 #include "editor/panels/file_browser.h"
 #include "editor/panels/panels.h"
 #include "editor/panels/typed_numbers.h"
@@ -13,16 +14,15 @@
 namespace glint {
 
 void openEnvironmentFile(EditorState& state, const std::string& path) {
-    Environment environment = state.session.scene().environment;
-    environment.kind = EnvironmentKind::File;
-    environment.file = path;
-    if (Status loaded = loadEnvironment(environment); !loaded) {
-        state.errorMessage = "Could not use the environment image; your scene is unchanged.\n\n" + loaded.error().format();
-        return;
-    }
-    state.session.change("Environment file").environment = std::move(environment);
-    state.session.settle(false);
-    state.statusMessage = "Environment from " + path;
+    startEnvironmentLoad(state, EnvironmentKind::File, path);
+}
+
+// The map being made: its name, a progress bar and Cancel.
+void drawEnvironmentProgress(EditorState& state) {
+    EnvironmentLoadJob& job = *state.environmentLoad;
+    ImGui::ProgressBar(job.progress(), ImVec2(-1.0f, 0.0f), ("Precomputing " + job.name()).c_str());
+    if (job.cancelRequested()) ImGui::TextDisabled("Cancelling…");
+    else if (ImGui::Button("Cancel##environment")) job.cancel();
 }
 
 void drawEnvironmentSection(EditorState& state) {
@@ -35,14 +35,12 @@ void drawEnvironmentSection(EditorState& state) {
         if (kind == static_cast<int>(EnvironmentKind::File)) {
             requestFileBrowser(state.fileBrowser, FilePurpose::OpenEnvironment, current.file);
         } else if (kind != static_cast<int>(current.kind)) {
-            Environment environment = current;
-            environment.kind = static_cast<EnvironmentKind>(kind);
-            if (Status loaded = loadEnvironment(environment); !loaded) state.errorMessage = loaded.error().format();
-            else state.session.change("Environment").environment = std::move(environment);
+            startEnvironmentLoad(state, static_cast<EnvironmentKind>(kind));
         }
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Light from every direction: an equirectangular .hdr/.exr, or a built-in that needs no file");
+    if (state.environmentLoad) drawEnvironmentProgress(state);
     if (current.kind == EnvironmentKind::None) return;
     if (current.kind == EnvironmentKind::File) {
         ImGui::TextWrapped("%s", current.file.c_str());

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "classroom/plot_materials.h"
+#include "classroom/probe_text.h"
 #include "editor/editor_state.h"
 #include "editor/probe_panel.h"
 #include "editor/window_placement.h"
@@ -49,14 +50,22 @@ std::string noFresnelText(const std::vector<PlottedMaterial>& plotted) {
     return "Fresnel: no plotted material has an index n (+ iκ)";
 }
 
-void refreshPlotsCache(PlotsWindowState& plots, std::vector<PlotMaterial> materials) {
+bool sameEnvironment(const Environment& a, const Environment& b) {
+    return a.map == b.map && a.rotationDegrees == b.rotationDegrees && a.intensity == b.intensity;
+}
+
+void refreshPlotsCache(PlotsWindowState& plots, std::vector<PlotMaterial> materials, const Environment& environment) {
     if (plots.cachedIncidence == plots.incidenceDegrees && plots.cachedFromInside == plots.fresnelFromInside &&
-        samePlotMaterials(plots.cachedMaterials, materials))
+        samePlotMaterials(plots.cachedMaterials, materials) && sameEnvironment(plots.cachedEnvironment, environment))
         return;
     plots.plotted.clear();
     plots.fresnel.reset();
+    plots.environmentNotes.clear();
     for (size_t i = 0; i < materials.size(); ++i) {
         plots.plotted.push_back(computePlottedMaterial(materials[i], plotSeriesColour(static_cast<int>(i)), plots.incidenceDegrees));
+        if (auto accuracy = plotEnvironmentAccuracy(materials[i], environment, plots.incidenceDegrees))
+            plots.environmentNotes.push_back(materials[i].name + ", facing up, seen from θ_o = θ_i: " +
+                                             environmentAccuracyText(accuracy->method, accuracy->preview, accuracy->truth));
         if (!plots.fresnel)
             if (auto index = materialComplexIndex(materials[i])) {
                 plots.fresnel = fresnelCurves(*index, plots.fresnelFromInside);
@@ -66,6 +75,7 @@ void refreshPlotsCache(PlotsWindowState& plots, std::vector<PlotMaterial> materi
     plots.cachedMaterials = std::move(materials);
     plots.cachedIncidence = plots.incidenceDegrees;
     plots.cachedFromInside = plots.fresnelFromInside;
+    plots.cachedEnvironment = environment;
 }
 
 void drawPlotsPinning(EditorState& state) {
@@ -126,10 +136,11 @@ void drawPlotsWindow(EditorState& state, BrdfSampler& sampler) {
     ImGui::Checkbox("Fresnel from inside", &plots.fresnelFromInside);
     if (!gPlotsIncidenceRefusal.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", gPlotsIncidenceRefusal.c_str());
     std::vector<std::string> leftOut;
-    refreshPlotsCache(plots, plotsWindowMaterials(state, sampler, leftOut));
+    refreshPlotsCache(plots, plotsWindowMaterials(state, sampler, leftOut), state.session.scene().environment);
     for (const std::string& reason : leftOut) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", reason.c_str());
     for (const PlotMaterial& material : plots.cachedMaterials)
         if (const std::string note = plotSourceNote(material); !note.empty()) ImGui::TextDisabled("%s", note.c_str());
+    for (const std::string& note : plots.environmentNotes) ImGui::TextWrapped("%s", note.c_str());
 
     const ImVec2 available = ImGui::GetContentRegionAvail();
     const ImVec2 cell(std::max(available.x * 0.5f - 4.0f, 60.0f), std::max(available.y * 0.5f - 4.0f, 60.0f));

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "classroom/brdf_plots.h"
+#include "scene/environment.h"
 
 namespace glint {
 
@@ -19,9 +21,11 @@ struct PlotsWindowState {
     bool fresnelFromInside = false;
     float lobeYaw = -0.6f, lobePitch = 0.45f;  // [rad], turned by dragging the lobe
     std::vector<int> pinnedMaterials;          // indices into the scene's materials
-    // Cache: recomputed only when a plotted material or the angle changes.
+    // Cache: recomputed only when a plotted material, the angle or the environment changes.
     std::vector<PlotMaterial> cachedMaterials;
     float cachedIncidence = -1.0f;
+    Environment cachedEnvironment;
+    std::vector<std::string> environmentNotes;  // per plotted material with an environment term
     bool cachedFromInside = false;
     std::vector<PlottedMaterial> plotted;
     std::optional<FresnelCurves> fresnel;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "classroom/lesson_document.h"
+#include "editor/environment_loading.h"
 #include "editor/panels/panels.h"
 
 namespace glint {
@@ -28,6 +29,10 @@ float drawStatusBar(EditorState& state, float top, float width) {
     if (state.standInProgramsShown > 0) reduced += reduced.empty() ? "generic shaders" : ", generic shaders";
     if (!reduced.empty()) ImGui::Text("frame %.1f ms (%s)", state.lastRenderMilliseconds, reduced.c_str());
     else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
+    if (state.environmentLoad) {
+        ImGui::SameLine(0, 24);
+        ImGui::Text("precomputing %s %.0f%%", state.environmentLoad->name().c_str(), 100.0f * state.environmentLoad->progress());
+    }
     if (state.waitingForPrograms) {
         ImGui::SameLine(0, 24);
         ImGui::TextUnformatted("compiling shaders");
