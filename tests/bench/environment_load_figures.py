@@ -53,6 +53,8 @@ def one_run(x, glint, hdr, state):
         for at, line in stamped:
             if picked <= at <= shown + 1.0:
                 print(f"{at - picked:6.2f} s {line.strip()[:150]}")
+    if not during:
+        raise RuntimeError("no frame was logged from the confirm until the map showed (a missed click?); run again")
     return max(during), len(during), shown - picked
 
 

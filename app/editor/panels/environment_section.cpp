@@ -17,6 +17,8 @@ void openEnvironmentFile(EditorState& state, const std::string& path) {
     startEnvironmentLoad(state, EnvironmentKind::File, path);
 }
 
+namespace {
+
 // The map being made: its name, a progress bar and Cancel.
 void drawEnvironmentProgress(EditorState& state) {
     EnvironmentLoadJob& job = *state.environmentLoad;
@@ -24,6 +26,8 @@ void drawEnvironmentProgress(EditorState& state) {
     if (job.cancelRequested()) ImGui::TextDisabled("Cancelling…");
     else if (ImGui::Button("Cancel##environment")) job.cancel();
 }
+
+}  // namespace
 
 void drawEnvironmentSection(EditorState& state) {
     static std::string refusal;
