@@ -79,7 +79,7 @@ Material sweepMaterial(const SweepCase& sweep) {
         const int index = findParam(table, name);
         EXPECT_GE(index, 0) << sweep.model << "." << name;
         for (int c = 0; c < componentCount(table[index].kind); ++c)
-            material.values[packedOffset(table, index) + c] = value[c];
+            material.analytic()->values[packedOffset(table, index) + c] = value[c];
     }
     return material;
 }
@@ -103,7 +103,7 @@ TEST(BrdfGpuSweep, EveryModelMatchesItsCppTwin) {
                                             << " (worst relative " << agreement.worstRelative << ")";
         EXPECT_GT(agreement.compared, 6000) << sweep.model;
         std::printf("%s: worst relative GPU-CPU difference %.2e\n", sweep.model, agreement.worstRelative);
-        modelSwept[static_cast<size_t>(material.model)] = true;
+        modelSwept[static_cast<size_t>(material.analytic()->model)] = true;
     }
     for (const ModelInfo& info : allModels())
         EXPECT_TRUE(modelSwept[static_cast<size_t>(info.model)]) << info.id << " is missing from the sweep";

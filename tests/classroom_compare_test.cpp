@@ -68,15 +68,15 @@ TEST(CompareScenes, PanesDifferOnlyInTheSubject) {
 
 TEST(CompareScenes, AnotherModelKeepsTheParametersBothModelsName) {
     Material clay = Material::withDefaults("clay", BrdfModel::Lambert);
-    clay.values = {0.6f, 0.3f, 0.2f};  // albedo
+    clay.analytic()->values = {0.6f, 0.3f, 0.2f};  // albedo
     const Material rough = withModel(clay, BrdfModel::OrenNayar);
-    EXPECT_EQ(rough.model, BrdfModel::OrenNayar);
+    EXPECT_EQ(rough.analytic()->model, BrdfModel::OrenNayar);
     const auto table = modelInfo(BrdfModel::OrenNayar).params;
     const int albedo = findParam(table, "albedo");
     ASSERT_GE(albedo, 0);
-    EXPECT_FLOAT_EQ(rough.values[packedOffset(table, albedo)], 0.6f);
-    EXPECT_FLOAT_EQ(rough.values[packedOffset(table, albedo) + 2], 0.2f);
-    EXPECT_EQ(rough.values.size(), defaultValues(table).size());
+    EXPECT_FLOAT_EQ(rough.analytic()->values[packedOffset(table, albedo)], 0.6f);
+    EXPECT_FLOAT_EQ(rough.analytic()->values[packedOffset(table, albedo) + 2], 0.2f);
+    EXPECT_EQ(rough.analytic()->values.size(), defaultValues(table).size());
 }
 
 }  // namespace

@@ -16,8 +16,8 @@ namespace glint {
 namespace {
 
 PlotMaterial plotDataMaterial(BrdfModel model, std::vector<float> values = {}) {
-    PlotMaterial material{modelInfo(model).id, model, defaultValues(modelInfo(model).params)};
-    if (!values.empty()) material.values = std::move(values);
+    PlotMaterial material{Material::withDefaults(modelInfo(model).id, model), {}};
+    if (!values.empty()) material.analytic()->values = std::move(values);
     return material;
 }
 
@@ -74,7 +74,7 @@ TEST(ClassroomPlotData, PolarPlotAndLobeFollowEvalBrdf) {
     EXPECT_NEAR(polar.outgoingDegrees[peak], 30.0f, 1.0f);
     EXPECT_GT(polar.outgoingDegrees[weightedPeak], 20.0f);
     EXPECT_LT(polar.outgoingDegrees[weightedPeak], 30.0f);
-    const glm::vec3 expected = evalBrdf(blinn.model, blinn.values, plotIncidentDirection(30.0f * kPi / 180.0f),
+    const glm::vec3 expected = evalBrdf(blinn.analytic()->model, blinn.analytic()->values, plotIncidentDirection(30.0f * kPi / 180.0f),
                                         plotOutgoingDirection(0.0f), ShadingFrame{});
     EXPECT_NEAR(polar.reflectance[90].r, expected.r, 1e-6f);
     EXPECT_NEAR(polar.cosineWeighted[90].r, expected.r, 1e-6f);  // cos 0° = 1
@@ -137,7 +137,7 @@ TEST(ClassroomPlotData, ConstantMerlTablePlotsAsLambert) {
     const Material measured = measuredBrdfMaterial(makeMeasuredBrdf(std::move(*table), "synthetic.binary"));
     const std::optional<PlotMaterial> material = plotMaterialFrom(measured);
     ASSERT_TRUE(material.has_value());
-    ASSERT_TRUE(material->measured);
+    ASSERT_TRUE(material->measured());
     const PolarPlotData polar = polarPlotData(*material, 30.0f, 37);
     for (size_t i = 0; i < polar.outgoingDegrees.size(); ++i) {
         const float cosOutgoing = std::max(std::cos(polar.outgoingDegrees[i] * kPi / 180.0f), 0.0f);
@@ -153,7 +153,7 @@ TEST(ClassroomPlotData, ConstantMerlTablePlotsAsLambert) {
 // A sampler gets each plot's directions as one batch and its values are what the plot shows.
 TEST(ClassroomPlotData, SampledMaterialUsesItsSamplerInOneBatchPerPlot) {
     int batches = 0;
-    PlotMaterial sampled{"sampled", BrdfModel::Lambert, {}};
+    PlotMaterial sampled{Material{"sampled", {}}, {}};
     sampled.sampler = [&batches](std::span<const glm::vec3> incident, std::span<const glm::vec3> outgoing) {
         ++batches;
         std::vector<glm::vec3> values;

@@ -78,7 +78,7 @@ void expectMatchesTwin(const std::shared_ptr<const CustomBrdf>& custom, const st
                        const Material& twin) {
     ASSERT_TRUE(custom);
     Material material = customBrdfMaterial(custom);
-    material.values = values;
+    material.custom()->values = values;
     const Scene customStage = test::keyLitPreviewStage(material, kSize, kSize);
     auto images = test::sharedHeadless().render(customStage, kSize, kSize);
     ASSERT_TRUE(images) << images.error().format();
@@ -90,24 +90,24 @@ void expectMatchesTwin(const std::shared_ptr<const CustomBrdf>& custom, const st
 
 TEST(CustomBrdfGpu, LambertMatchesBuiltInLambert) {
     Material twin = Material::withDefaults("twin", BrdfModel::Lambert);
-    twin.values = {0.6f, 0.3f, 0.15f};
+    twin.analytic()->values = {0.6f, 0.3f, 0.15f};
     expectMatchesTwin(parseCustom(test::kLambertTwinBrdf, "lambert.brdf"), {0.6f, 0.3f, 0.15f}, twin);
 }
 
 TEST(CustomBrdfGpu, BlinnPhongMatchesNormalisedBlinnPhong) {
     Material twin = Material::withDefaults("twin", BrdfModel::BlinnPhong);
-    twin.values = {0.4f, 0.2f, 0.1f, 0.3f, 0.3f, 0.3f, 40.0f, 3.0f};  // form 3: normalised
+    twin.analytic()->values = {0.4f, 0.2f, 0.1f, 0.3f, 0.3f, 0.3f, 40.0f, 3.0f};  // form 3: normalised
     expectMatchesTwin(parseCustom(test::kBlinnPhongTwinBrdf, "blinn_phong.brdf"), {0.4f, 0.2f, 0.1f, 0.3f, 40.0f}, twin);
 }
 
 TEST(CustomBrdfGpu, GgxMatchesCookTorranceGgxSmithSchlick) {
     Material twin = Material::withDefaults("twin", BrdfModel::CookTorrance);
     // diffuse, ior, extinction, roughness, GGX, Smith, Schlick
-    twin.values = {0.2f, 0.1f, 0.05f, 1.7f, 1.7f, 1.7f, 0, 0, 0, 0.45f, 1, 1, 0};
+    twin.analytic()->values = {0.2f, 0.1f, 0.05f, 1.7f, 1.7f, 1.7f, 0, 0, 0, 0.45f, 1, 1, 0};
     expectMatchesTwin(parseCustom(kGgx, "ggx.brdf"), {0.45f, 1.7f, 0.2f, 0.1f, 0.05f, 1.0f}, twin);
     // The bool parameter reaches the shader: specular off leaves the Lambert term.
     Material lambert = Material::withDefaults("twin", BrdfModel::Lambert);
-    lambert.values = {0.2f, 0.1f, 0.05f};
+    lambert.analytic()->values = {0.2f, 0.1f, 0.05f};
     expectMatchesTwin(parseCustom(kGgx, "ggx.brdf"), {0.45f, 1.7f, 0.2f, 0.1f, 0.05f, 0.0f}, lambert);
 }
 

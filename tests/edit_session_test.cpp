@@ -20,7 +20,7 @@
 namespace glint {
 namespace {
 
-float sphereFirstValue(const EditSession& session) { return session.scene().materials[0].values[0]; }
+float sphereFirstValue(const EditSession& session) { return session.scene().materials[0].analytic()->values[0]; }
 
 TEST(EditSession, StartsCleanWithNothingToUndo) {
     EditSession session;
@@ -33,7 +33,7 @@ TEST(EditSession, StartsCleanWithNothingToUndo) {
 TEST(EditSession, OneChangeIsOneStepThatUndoAndRedoRestore) {
     EditSession session;
     const float original = sphereFirstValue(session);
-    session.change("Edit albedo").materials[0].values[0] = 0.25f;
+    session.change("Edit albedo").materials[0].analytic()->values[0] = 0.25f;
     EXPECT_TRUE(session.dirty());
     EXPECT_TRUE(session.settle(false));
     EXPECT_EQ(session.undoLabel(), "Edit albedo");
@@ -50,7 +50,7 @@ TEST(EditSession, AGestureIsOneStepHoweverManyFramesItLasts) {
     EditSession session;
     const float original = sphereFirstValue(session);
     for (int frame = 1; frame <= 30; ++frame) {
-        session.change("Drag").materials[0].values[0] = frame / 30.0f;
+        session.change("Drag").materials[0].analytic()->values[0] = frame / 30.0f;
         EXPECT_FALSE(session.settle(/*gestureInProgress=*/true));
     }
     EXPECT_TRUE(session.settle(false));
@@ -62,7 +62,7 @@ TEST(EditSession, AGestureIsOneStepHoweverManyFramesItLasts) {
 TEST(EditSession, UndoDuringAGestureClosesItFirst) {
     EditSession session;
     const float original = sphereFirstValue(session);
-    session.change("Drag").materials[0].values[0] = 0.1f;
+    session.change("Drag").materials[0].analytic()->values[0] = 0.1f;
     EXPECT_TRUE(session.canUndo());
     ASSERT_TRUE(session.undo());
     EXPECT_FLOAT_EQ(sphereFirstValue(session), original);
@@ -71,8 +71,8 @@ TEST(EditSession, UndoDuringAGestureClosesItFirst) {
 TEST(EditSession, AStepThatChangesNothingIsDropped) {
     EditSession session;
     const float original = sphereFirstValue(session);
-    session.change("Drag").materials[0].values[0] = 0.9f;
-    session.change("Drag").materials[0].values[0] = original;
+    session.change("Drag").materials[0].analytic()->values[0] = 0.9f;
+    session.change("Drag").materials[0].analytic()->values[0] = original;
     EXPECT_FALSE(session.settle(false));
     EXPECT_FALSE(session.canUndo());
     EXPECT_FALSE(session.dirty());
@@ -138,7 +138,7 @@ TEST(SceneMessage, IsDroppedWhenTheSceneChangesAfterIt) {
     refusal.expire(session.revision());
     refusal.expire(session.revision());
     EXPECT_FALSE(refusal.empty()) << "nothing changed: the refusal still holds";
-    session.change("Edit albedo").materials[0].values[0] = 0.25f;
+    session.change("Edit albedo").materials[0].analytic()->values[0] = 0.25f;
     session.settle(false);
     refusal.expire(session.revision());
     EXPECT_TRUE(refusal.empty());

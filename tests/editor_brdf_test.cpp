@@ -71,18 +71,18 @@ TEST_F(EditorBrdf, DroppedBrdfAndBparamSetTheMaterial) {
     openDroppedFile(state, path);
     settle(state);
     ASSERT_TRUE(state.errorMessage.empty()) << state.errorMessage;
-    ASSERT_TRUE(selected(state).custom);
-    EXPECT_EQ(selected(state).values, (std::vector<float>{0.5f, 1.0f, 0.5f, 0.25f}));
+    ASSERT_TRUE(selected(state).custom());
+    EXPECT_EQ(selected(state).custom()->values, (std::vector<float>{0.5f, 1.0f, 0.5f, 0.25f}));
 
     openDroppedFile(state, write("values.bparam", "::begin parameters\nfloat gain 0 2 1.5\n::end parameters\n"));
     ASSERT_TRUE(state.errorMessage.empty()) << state.errorMessage;
-    EXPECT_EQ(selected(state).values[0], 1.5f);
+    EXPECT_EQ(selected(state).custom()->values[0], 1.5f);
     const std::string saved = directory_ + "/saved.bparam";
     ASSERT_TRUE(saveBparamTo(state, saved));
     EXPECT_TRUE(state.session.undo());  // the .bparam was one step
-    EXPECT_EQ(selected(state).values[0], 0.5f);
+    EXPECT_EQ(selected(state).custom()->values[0], 0.5f);
     openDroppedFile(state, saved);
-    EXPECT_EQ(selected(state).values[0], 1.5f);
+    EXPECT_EQ(selected(state).custom()->values[0], 1.5f);
 
     // Material JSON keeps a relative path to the .brdf and the values.
     const std::string json = directory_ + "/material.json";
@@ -92,7 +92,7 @@ TEST_F(EditorBrdf, DroppedBrdfAndBparamSetTheMaterial) {
     EXPECT_NE(text->find("\"brdf_file\": \"tinted.brdf\""), std::string::npos) << *text;
     auto reread = loadMaterial(json);
     ASSERT_TRUE(reread) << reread.error().format();
-    EXPECT_EQ(reread->values, selected(state).values);
+    EXPECT_EQ(reread->custom()->values, selected(state).custom()->values);
 }
 
 // A .bparam as BRDF Explorer writes it names its .brdf: dropped on a scene without that .brdf, it
@@ -105,8 +105,8 @@ TEST_F(EditorBrdf, BrdfExplorerBparamOpensTheBrdfItNames) {
                                                     "color tint 0.100000 0.200000 0.300000\n::end parameters\n"
                                                     "::begin isFunc\nvec3 f() { return vec3(0); }\n::end isFunc\n"));
     settle(state);
-    ASSERT_TRUE(selected(state).custom) << state.errorMessage;
-    EXPECT_EQ(selected(state).values, (std::vector<float>{1.25f, 0.1f, 0.2f, 0.3f}));
+    ASSERT_TRUE(selected(state).custom()) << state.errorMessage;
+    EXPECT_EQ(selected(state).custom()->values, (std::vector<float>{1.25f, 0.1f, 0.2f, 0.3f}));
     EXPECT_NE(state.errorMessage.find("explorer.bparam:7:1: warning: section 'isFunc' is skipped"), std::string::npos)
         << state.errorMessage;
 }
@@ -123,7 +123,7 @@ TEST_F(EditorBrdf, BadFilesAreRefusedWithLocations) {
     openDroppedFile(state, write("broken.brdf", std::string(kBrdf).replace(std::string(kBrdf).find("return"), 6, "retur")));
     settle(state);
     EXPECT_NE(state.errorMessage.find("broken.brdf:7:"), std::string::npos) << state.errorMessage;
-    EXPECT_FALSE(selected(state).custom);  // unchanged
+    EXPECT_FALSE(selected(state).custom());  // unchanged
 }
 
 TEST_F(EditorBrdf, ChangedFileReloadsAndBrokenChangesKeepTheLastGoodVersion) {
@@ -131,8 +131,8 @@ TEST_F(EditorBrdf, ChangedFileReloadsAndBrokenChangesKeepTheLastGoodVersion) {
     EditorState state;
     openDroppedFile(state, path);
     settle(state);
-    ASSERT_TRUE(selected(state).custom);
-    const auto firstVersion = selected(state).custom;
+    ASSERT_TRUE(selected(state).custom());
+    const auto firstVersion = selected(state).custom()->brdf;
     const auto touch = [&, this](const std::string& text) {
         write("live.brdf", text);
         std::filesystem::last_write_time(path, std::filesystem::last_write_time(path) + std::chrono::seconds(5));
@@ -143,16 +143,16 @@ TEST_F(EditorBrdf, ChangedFileReloadsAndBrokenChangesKeepTheLastGoodVersion) {
     std::string broken = kBrdf;
     broken.replace(broken.find("return"), 6, "retur");
     touch(broken);
-    EXPECT_EQ(selected(state).custom, firstVersion);
+    EXPECT_EQ(selected(state).custom()->brdf, firstVersion);
     EXPECT_NE(state.materialPanelMessage.text().find("live.brdf:7:"), std::string::npos) << state.materialPanelMessage.text();
     EXPECT_NE(state.materialPanelMessage.text().find("last good version stays"), std::string::npos);
     // A good change: reloaded, values kept where the parameter still exists.
     std::string brighter = kBrdf;
     brighter.replace(brighter.find("/ 3.14159265"), 12, "* 0.5");
     touch(brighter);
-    EXPECT_NE(selected(state).custom, firstVersion);
+    EXPECT_NE(selected(state).custom()->brdf, firstVersion);
     EXPECT_TRUE(state.materialPanelMessage.text().empty()) << state.materialPanelMessage.text();
-    EXPECT_EQ(selected(state).values, (std::vector<float>{0.5f, 1.0f, 0.5f, 0.25f}));
+    EXPECT_EQ(selected(state).custom()->values, (std::vector<float>{0.5f, 1.0f, 0.5f, 0.25f}));
 }
 
 }  // namespace

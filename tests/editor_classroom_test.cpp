@@ -59,7 +59,7 @@ TEST_F(EditorClassroom, LessonsOpenInOrderThroughTheUnsavedChangesGuard) {
     EXPECT_EQ(state.classroom.lessonIndex, 0);
     EXPECT_EQ(state.session.path(), "");  // read-only: Ctrl+S asks for a new name
     EXPECT_EQ(lessonDocumentName(state), "Lesson 1 — 01_lambert.json (read-only)");
-    EXPECT_EQ(state.session.scene().materials[0].model, BrdfModel::Lambert);
+    EXPECT_EQ(state.session.scene().materials[0].analytic()->model, BrdfModel::Lambert);
 
     // Unsaved work: the next lesson waits behind the prompt, and the index stays.
     state.session.change("Edit light").lights[0].power = 10.0f;
@@ -70,7 +70,7 @@ TEST_F(EditorClassroom, LessonsOpenInOrderThroughTheUnsavedChangesGuard) {
     state.unsavedPromptRequested = false;
     runActionAfterPrompt(state);
     EXPECT_EQ(state.classroom.lessonIndex, 1);
-    EXPECT_EQ(state.session.scene().materials[0].model, BrdfModel::Phong);
+    EXPECT_EQ(state.session.scene().materials[0].analytic()->model, BrdfModel::Phong);
     EXPECT_FALSE(state.session.dirty());
 }
 

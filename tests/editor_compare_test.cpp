@@ -40,7 +40,7 @@ TEST(EditorCompare, EachPaneChoicePutsItsMaterialOnTheSelectedObject) {
     EXPECT_EQ(subjectMaterialOf((*panes)[0].scene, 0).name, subjectMaterialOf(scene, 0).name);
     EXPECT_EQ(subjectMaterialOf((*panes)[1].scene, 0).name, scene.materials[1].name);
     EXPECT_EQ(subjectMaterialOf((*panes)[2].scene, 0).name, "copper");
-    EXPECT_EQ(subjectMaterialOf((*panes)[3].scene, 0).model, BrdfModel::OrenNayar);
+    EXPECT_EQ(subjectMaterialOf((*panes)[3].scene, 0).analytic()->model, BrdfModel::OrenNayar);
     for (const ComparePaneScene& pane : *panes) {
         EXPECT_EQ(subjectMaterialOf(pane.scene, 1).name, subjectMaterialOf(scene, 1).name);  // the floor keeps its own
         EXPECT_EQ(pane.scene.camera.position, scene.camera.position);

@@ -38,7 +38,7 @@ protected:
 
 TEST_F(EditorDocument, DroppedMaterialGoesOntoTheSelectedObjectAsOneUndoStep) {
     Material gold = Material::withDefaults("gold", BrdfModel::Lambert);
-    gold.values = {0.9f, 0.7f, 0.2f};
+    gold.analytic()->values = {0.9f, 0.7f, 0.2f};
     const std::string path = directory_ + "/gold.json";
     ASSERT_TRUE(saveMaterial(gold, path).ok());
     EditorState state;
@@ -224,8 +224,8 @@ TEST_F(EditorDocument, TextureImageFromTheFileBrowserIsOneUndoStepAndFailuresCha
     openTextureFile(state, good);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Material& textured = state.session.scene().materials[state.textureMaterialIndex];
-    ASSERT_EQ(textured.textures.size(), 1u);
-    EXPECT_EQ(textured.textures[0].parameter, "diffuse_albedo");
+    ASSERT_EQ(textured.analytic()->textures.size(), 1u);
+    EXPECT_EQ(textured.analytic()->textures[0].parameter, "diffuse_albedo");
     EXPECT_TRUE(state.session.undo());
     EXPECT_EQ(sceneToJson(state.session.scene()).dump(), before);
 }
@@ -293,12 +293,12 @@ TEST_F(EditorDocument, FilesOpenedByRelativePathsAreRecoveredAndSavedRelativeToT
     ASSERT_EQ(scene.objects.size(), 4u);
     EXPECT_EQ(meshFile(1), work + "/bunny.obj");
     EXPECT_EQ(meshFile(3), work + "/bunny.obj");
-    EXPECT_EQ(scene.materials[0].textures.at(0).file, work + "/wood.png");
+    EXPECT_EQ(scene.materials[0].analytic()->textures.at(0).file, work + "/wood.png");
     EXPECT_EQ(scene.environment.file, work + "/sky.hdr");
-    ASSERT_TRUE(scene.materials[1].custom);
-    EXPECT_EQ(scene.materials[1].custom->file.path, work + "/tinted.brdf");
-    ASSERT_TRUE(scene.materials[2].measured);
-    EXPECT_EQ(scene.materials[2].measured->path, work + "/plaster.binary");
+    ASSERT_TRUE(scene.materials[1].custom());
+    EXPECT_EQ(scene.materials[1].custom()->brdf->file.path, work + "/tinted.brdf");
+    ASSERT_TRUE(scene.materials[2].measured());
+    EXPECT_EQ(scene.materials[2].measured()->brdf->path, work + "/plaster.binary");
 
     const std::string copy = directory_ + "/saved/copy.json";
     ASSERT_TRUE(ensureParentDirectory(copy).ok());

@@ -41,7 +41,7 @@ TEST_F(EditorInterchange, DroppedMtlGoesOntoTheSelectedObjectAsOneUndoStep) {
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Material& material = state.session.scene().materials[materialIndex];
     EXPECT_EQ(material.name, "shiny");
-    EXPECT_EQ(material.model, BrdfModel::BlinnPhong);
+    EXPECT_EQ(material.analytic()->model, BrdfModel::BlinnPhong);
     EXPECT_NE(state.statusMessage.text().find("material 'shiny'"), std::string::npos);
     EXPECT_TRUE(state.session.undo());
     EXPECT_EQ(state.session.scene().materials[materialIndex].name, defaultScene().materials[materialIndex].name);
@@ -120,7 +120,7 @@ TEST_F(EditorInterchange, WarningsAreShownAfterOpening) {
         "materials": [{"alphaMode": "BLEND"}]})"));
     EXPECT_NE(state.errorMessage.find("with warnings"), std::string::npos);
     EXPECT_NE(state.errorMessage.find("alpha"), std::string::npos);
-    EXPECT_EQ(state.session.scene().materials[state.session.scene().objects[0].materialIndex].model, BrdfModel::OpenPbr);
+    EXPECT_EQ(state.session.scene().materials[state.session.scene().objects[0].materialIndex].analytic()->model, BrdfModel::OpenPbr);
 }
 
 TEST_F(EditorInterchange, MalformedFileShowsFileAndLineAndChangesNothing) {
@@ -143,13 +143,13 @@ TEST_F(EditorInterchange, DroppedMerlFileBecomesAMeasuredMaterialAndSavesWithThe
     openDroppedFile(state, write("plaster.binary", makeConstantMerl(glm::vec3(0.2f))));
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
     const Material& material = state.session.scene().materials[materialIndex];
-    ASSERT_TRUE(material.measured);
-    EXPECT_EQ(material.measured->displayName, "plaster.binary");
+    ASSERT_TRUE(material.measured());
+    EXPECT_EQ(material.measured()->brdf->displayName, "plaster.binary");
     EXPECT_NE(state.statusMessage.text().find("material 'plaster'"), std::string::npos);
     const nlohmann::json saved = sceneToJson(state.session.scene(), write("scene.json", "{}"));
     EXPECT_EQ(saved["materials"][materialIndex]["merl_file"], "plaster.binary");
     EXPECT_TRUE(state.session.undo());
-    EXPECT_FALSE(state.session.scene().materials[materialIndex].measured);
+    EXPECT_FALSE(state.session.scene().materials[materialIndex].measured());
     openDroppedFile(state, write("short.binary", std::string(40, '\0')));
     EXPECT_NE(state.errorMessage.find("not a MERL BRDF"), std::string::npos) << state.errorMessage;
 }
@@ -234,10 +234,10 @@ TEST_F(EditorInterchange, EveryFileTypeOpensFromTheCommandLine) {
             EXPECT_EQ(state.session.scene().lights.size(), start.lights.size() + 1) << path;
         });
     openOnStart(write("plaster.binary", makeConstantMerl(glm::vec3(0.2f))),
-                [&](const EditorState& state) { EXPECT_TRUE(subject(state).measured) << state.errorMessage; });
+                [&](const EditorState& state) { EXPECT_TRUE(subject(state).measured()) << state.errorMessage; });
     openOnStart(write("flat.brdf", "analytic\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) "
                                    "{ return vec3(0.1); }\n::end shader\n"),
-                [&](const EditorState& state) { EXPECT_TRUE(subject(state).custom) << state.errorMessage; });
+                [&](const EditorState& state) { EXPECT_TRUE(subject(state).custom()) << state.errorMessage; });
     openOnStart(write("triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), [&](const EditorState& state) {
         EXPECT_EQ(state.session.scene().objects.size(), start.objects.size() + 1) << state.errorMessage;
     });

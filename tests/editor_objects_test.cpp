@@ -54,7 +54,7 @@ TEST(EditorObjects, DuplicateCopiesShapeAndMaterialBesideTheOriginal) {
     const SceneObject& copy = scene.objects.back();
     EXPECT_EQ(copy.name, "sphere 2");
     EXPECT_NE(copy.materialIndex, scene.objects[0].materialIndex);
-    EXPECT_EQ(scene.materials[copy.materialIndex].values, scene.materials[scene.objects[0].materialIndex].values);
+    EXPECT_EQ(scene.materials[copy.materialIndex].analytic()->values, scene.materials[scene.objects[0].materialIndex].analytic()->values);
     EXPECT_FLOAT_EQ(std::get<SphereShape>(copy.shape).radius, std::get<SphereShape>(scene.objects[0].shape).radius);
     EXPECT_FALSE(duplicateObject(state, 99));
 }
@@ -121,9 +121,9 @@ TEST(EditorMeshLoad, AnObjGetsTheMaterialItsMtlLibraryNames) {
     const Scene& scene = state.session.scene();
     const Material& material = scene.materials.at(scene.objects.back().materialIndex);
     EXPECT_EQ(material.name, "paint");
-    EXPECT_NEAR(material.values[0], 0.8f, 1e-6f);
-    EXPECT_NEAR(material.values[1], 0.1f, 1e-6f);
-    EXPECT_NEAR(material.values[2], 0.1f, 1e-6f);
+    EXPECT_NEAR(material.analytic()->values[0], 0.8f, 1e-6f);
+    EXPECT_NEAR(material.analytic()->values[1], 0.1f, 1e-6f);
+    EXPECT_NEAR(material.analytic()->values[2], 0.1f, 1e-6f);
     // One material per Glint mesh: the second is named in the status line, at the first usemtl.
     EXPECT_NE(state.statusMessage.text().find("painted.obj:6: the file uses 2 materials"), std::string::npos)
         << state.statusMessage.text();
@@ -138,7 +138,7 @@ TEST(EditorMeshLoad, AnObjWhoseMtlLibraryIsMissingLoadsWithTheDefaultMaterialAnd
     const Scene& scene = state.session.scene();
     ASSERT_EQ(scene.objects.size(), objects + 1);
     const Material& material = scene.materials.at(scene.objects.back().materialIndex);
-    EXPECT_EQ(material.model, BrdfModel::Lambert);
+    EXPECT_EQ(material.analytic()->model, BrdfModel::Lambert);
     EXPECT_EQ(material.name, "unpainted material");
     EXPECT_NE(state.statusMessage.text().find("unpainted.obj:1: material library 'missing.mtl' not used"), std::string::npos)
         << state.statusMessage.text();
@@ -199,9 +199,9 @@ TEST(EditorMeshLoad, ASecondLoadWaitsForTheFirst) {
 }
 
 glm::vec3 param(const Material& material, const char* name) {
-    const auto table = modelInfo(material.model).params;
+    const auto table = modelInfo(material.analytic()->model).params;
     const int offset = packedOffset(table, findParam(table, name));
-    return {material.values[offset], material.values[offset + 1], material.values[offset + 2]};
+    return {material.analytic()->values[offset], material.analytic()->values[offset + 1], material.analytic()->values[offset + 2]};
 }
 
 TEST(IorPresets, MetalsSetNAndKappaPerChannelDielectricsClearKappa) {
@@ -214,17 +214,17 @@ TEST(IorPresets, MetalsSetNAndKappaPerChannelDielectricsClearKappa) {
     EXPECT_EQ(param(material, "ior"), glm::vec3(2.42f));
     EXPECT_EQ(param(material, "extinction"), glm::vec3(0.0f));
     // The roughness and the rest are the user's, not the preset's.
-    EXPECT_EQ(material.values.size(), Material::withDefaults("m", BrdfModel::CookTorrance).values.size());
+    EXPECT_EQ(material.analytic()->values.size(), Material::withDefaults("m", BrdfModel::CookTorrance).analytic()->values.size());
 }
 
 TEST(IorPresets, GlassModelTakesDielectricsButNoMetal) {
     Material glass = Material::withDefaults("g", BrdfModel::Glass);
     ASSERT_TRUE(applyIorPreset(glass, "water"));
     const auto table = modelInfo(BrdfModel::Glass).params;
-    EXPECT_FLOAT_EQ(glass.values[packedOffset(table, findParam(table, "ior"))], 1.333f);
+    EXPECT_FLOAT_EQ(glass.analytic()->values[packedOffset(table, findParam(table, "ior"))], 1.333f);
     const Material unchanged = glass;
     EXPECT_FALSE(applyIorPreset(glass, "copper"));
-    EXPECT_EQ(glass.values, unchanged.values);
+    EXPECT_EQ(glass.analytic()->values, unchanged.analytic()->values);
     EXPECT_FALSE(applyIorPreset(glass, "unobtainium"));
     Material lambert = Material::withDefaults("l", BrdfModel::Lambert);
     EXPECT_FALSE(applyIorPreset(lambert, "glass"));

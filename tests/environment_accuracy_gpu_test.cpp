@@ -107,8 +107,8 @@ std::vector<test::AccuracyMap> maps() {
 TEST(EnvironmentAccuracy, LambertAndGgxAgainstTheMonteCarloReference) {
     const auto accuracyMaps = maps();
     for (const auto& entry : test::accuracyMaterials()) {
-        if (!isDefaultModelOrLambert(entry.material.model)) continue;
-        const bool sharp = entry.material.model == BrdfModel::CookTorrance && entry.alpha < 0.5f;
+        if (!isDefaultModelOrLambert(entry.material.analytic()->model)) continue;
+        const bool sharp = entry.material.analytic()->model == BrdfModel::CookTorrance && entry.alpha < 0.5f;
         for (const auto& map : accuracyMaps) checkCell(entry, map, sharp ? 32 : 16);
     }
 }
@@ -118,7 +118,7 @@ TEST(EnvironmentAccuracy, LambertAndGgxAgainstTheMonteCarloReference) {
 TEST(EnvironmentAccuracyHeavy, EveryOtherHookAgainstTheMonteCarloReference) {
     const auto accuracyMaps = maps();
     for (const auto& entry : test::accuracyMaterials()) {
-        if (isDefaultModelOrLambert(entry.material.model)) continue;
+        if (isDefaultModelOrLambert(entry.material.analytic()->model)) continue;
         for (const auto& map : accuracyMaps) checkCell(entry, map, kSize);
     }
 }

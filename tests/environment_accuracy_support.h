@@ -65,9 +65,9 @@ struct AccuracyMaterial {
 };
 
 inline void setParam(Material& material, const char* name, std::initializer_list<float> values) {
-    const auto table = modelInfo(material.model).params;
+    const auto table = modelInfo(material.analytic()->model).params;
     const int index = findParam(table, name);
-    std::copy(values.begin(), values.end(), material.values.begin() + packedOffset(table, index));
+    std::copy(values.begin(), values.end(), material.analytic()->values.begin() + packedOffset(table, index));
 }
 
 // A model's material with its glossy lobe at GGX roughness α (the environment roughness the

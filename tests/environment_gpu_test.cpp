@@ -41,7 +41,7 @@ void forDiscPixels(const RadianceImage& image, float minCosine, Check check) {
 
 TEST(EnvironmentGpu, WhiteOutLambertIsAFlatDisc) {
     Material material = Material::withDefaults("white-out", BrdfModel::Lambert);
-    material.values = {0.6f, 0.6f, 0.6f};
+    material.analytic()->values = {0.6f, 0.6f, 0.6f};
     Scene scene = test::sphereUnderEnvironment(material, EnvironmentKind::White);
     scene.environment.intensity = 2.0f;
     scene.environment.showAsBackground = false;  // the disc on the black constant background
@@ -63,7 +63,7 @@ TEST(EnvironmentGpu, SphereOccludesTheFloorAnalytically) {
     scene.camera.target = {0.0f, 0.0f, 0.0f};
     scene.camera.orthoHeight = 6.0f;
     Material floor = Material::withDefaults("floor", BrdfModel::Lambert);
-    floor.values = {0.5f, 0.5f, 0.5f};
+    floor.analytic()->values = {0.5f, 0.5f, 0.5f};
     scene.materials = {Material::withDefaults("ball", BrdfModel::Lambert), floor};
     scene.objects.push_back({"ball", SphereShape{}, 0});
     scene.objects.push_back({"floor", PlaneShape{{0.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {20.0f, 20.0f}}, 1,
@@ -90,7 +90,7 @@ TEST(EnvironmentGpu, GgxWhiteFurnaceWithinTheSplitSumTolerance) {
     // the disc is ≈ L.
     for (float roughness : {0.1f, 0.5f}) {
         Material material = Material::withDefaults("furnace", BrdfModel::CookTorrance);
-        material.values = {0, 0, 0, 1, 1, 1, 1e4f, 1e4f, 1e4f, roughness, 1, 1, 0};
+        material.analytic()->values = {0, 0, 0, 1, 1, 1, 1e4f, 1e4f, 1e4f, roughness, 1, 1, 0};
         const Scene scene = test::sphereUnderEnvironment(material, EnvironmentKind::White);
         const RadianceImage gpu = renderGpu(scene, 32, 32);
         const RadianceImage sampled = renderReference(scene, 32, 32, {true, 512});
@@ -136,7 +136,7 @@ TEST_F(EnvironmentHdrTest, GlassSphereRefractsTheMapAsTheCpuReferenceDoes) {
     expectAgreesWithReference(scene, 96);
     // Thick tinted glass (Beer-Lambert, σ = (0.2, 0.8, 1.6)/m): still the same per pixel, and darker.
     const RadianceImage clear = renderGpu(scene, 32, 32);
-    scene.materials[0].values = {1.5f, 0.2f, 0.8f, 1.6f, 0.0f, 0.9f};
+    scene.materials[0].analytic()->values = {1.5f, 0.2f, 0.8f, 1.6f, 0.0f, 0.9f};
     expectAgreesWithReference(scene, 96);
     const RadianceImage tinted = renderGpu(scene, 32, 32);
     EXPECT_LT(tinted.at(16, 16).b, 0.5f * clear.at(16, 16).b);
@@ -160,7 +160,7 @@ TEST_F(EnvironmentHdrTest, EveryLayeredPresetAgreesWithTheReference) {
 
 TEST_F(EnvironmentHdrTest, InsideAWaterBallTotalInternalReflectionAgreesWithTheReference) {
     Material water = Material::withDefaults("water", BrdfModel::Glass);
-    water.values[0] = 1.333f;
+    water.analytic()->values[0] = 1.333f;
     Scene scene = test::sphereUnderEnvironment(water, EnvironmentKind::File, hdrPath());
     scene.objects[0].shape = SphereShape{{0, 0, 0}, 3.0f};
     scene.camera.projection = Projection::Perspective;

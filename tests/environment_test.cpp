@@ -260,14 +260,14 @@ TEST(EnvironmentMap, TheProbesMethodSaysWhetherThePeakLightsAreInUse) {
     ASSERT_TRUE(loadEnvironment(studio).ok());
     ASSERT_EQ(studio.map->peaks.size(), 3u);  // key, rim and strip; the fill is below 4× the mean
     const auto method = [&](float alpha) {
-        return environmentApproximation(BrdfModel::CookTorrance, test::glossyMaterial(BrdfModel::CookTorrance, alpha).values,
+        return environmentApproximation(BrdfModel::CookTorrance, test::glossyMaterial(BrdfModel::CookTorrance, alpha).analytic()->values,
                                         studio);
     };
     EXPECT_NE(method(0.5f).find("less its peaks + 3 peak lights"), std::string::npos) << method(0.5f);
     EXPECT_NE(method(0.1f).find("of the whole map (α 0.1 < the map's peak-light α"), std::string::npos) << method(0.1f);
-    EXPECT_EQ(environmentApproximation(BrdfModel::Lambert, Material::withDefaults("m", BrdfModel::Lambert).values, studio),
+    EXPECT_EQ(environmentApproximation(BrdfModel::Lambert, Material::withDefaults("m", BrdfModel::Lambert).analytic()->values, studio),
               "irradiance map");
-    EXPECT_EQ(environmentApproximation(BrdfModel::Glass, Material::withDefaults("m", BrdfModel::Glass).values, studio),
+    EXPECT_EQ(environmentApproximation(BrdfModel::Glass, Material::withDefaults("m", BrdfModel::Glass).analytic()->values, studio),
               "none (traced)");
 }
 
@@ -354,7 +354,7 @@ void forDiscPixels(const RadianceImage& image, float minCosine, Check check) {
 
 Material lambert(float albedo) {
     Material material = Material::withDefaults("white-out", BrdfModel::Lambert);
-    std::fill(material.values.begin(), material.values.end(), albedo);
+    std::fill(material.analytic()->values.begin(), material.analytic()->values.end(), albedo);
     return material;
 }
 
@@ -376,9 +376,9 @@ TEST(WhiteOut, LambertUnderUniformWhiteIsAFlatDiscOnTheCpu) {
 // A conductor with F = 1 (Schlick, F0 = 1 from κ = 10⁴): the specular lobe alone.
 Material perfectConductor(float roughness) {
     Material material = Material::withDefaults("furnace", BrdfModel::CookTorrance);
-    CookTorranceParams params = unpack<CookTorrance>(material.values.data());
-    material.values = {0, 0, 0, 1, 1, 1, 1e4f, 1e4f, 1e4f, roughness, 1, 1, 0};
-    EXPECT_EQ(unpack<CookTorrance>(material.values.data()).fresnel, FresnelMode::Schlick);
+    CookTorranceParams params = unpack<CookTorrance>(material.analytic()->values.data());
+    material.analytic()->values = {0, 0, 0, 1, 1, 1, 1e4f, 1e4f, 1e4f, roughness, 1, 1, 0};
+    EXPECT_EQ(unpack<CookTorrance>(material.analytic()->values.data()).fresnel, FresnelMode::Schlick);
     (void)params;
     return material;
 }

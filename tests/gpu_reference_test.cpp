@@ -56,8 +56,8 @@ TEST(GpuRenderer, BlinnPhongPointLightMatchesTheCpuReference) {
 TEST(GpuRenderer, EveryBlinnFormMatchesTheCpuReference) {
     Scene scene = test::loadTestScene("scenes/blinn_point.json");
     for (float form = 0; form < 4; ++form) {
-        scene.materials[0].values[7] = form;
-        scene.materials[1].values[7] = form;
+        scene.materials[0].analytic()->values[7] = form;
+        scene.materials[1].analytic()->values[7] = form;
         auto images = test::sharedHeadless().render(scene, 128, 96);
         ASSERT_TRUE(images.ok()) << images.error().format();
         const auto agreement = test::compareWithReference(scene, images->radiance);
@@ -69,7 +69,7 @@ TEST(GpuRenderer, PngMatchesTheCpuDisplayChain) {
     Scene scene = test::loadTestScene("scenes/lambert_sun.json");
     // +2.5 EV pushes the lit sphere above 1 so the tone curves differ from a clip.
     // A saturated orange albedo: PBR Neutral works on the whole colour, not channel by channel.
-    scene.materials[0].values = {0.9f, 0.35f, 0.05f};
+    scene.materials[0].analytic()->values = {0.9f, 0.35f, 0.05f};
     for (ToneMap toneMap : {ToneMap::None, ToneMap::Reinhard, ToneMap::AcesFilmic, ToneMap::PbrNeutral}) {
         for (Transfer transfer : {Transfer::Srgb, Transfer::Gamma}) {
             scene.display = {2.5f, transfer, 2.2f, toneMap};

@@ -38,7 +38,7 @@ TEST(Glb, JsonChunkIsReadLikeAGltfAndOtherChunksAreSkipped) {
     ASSERT_TRUE(imported.ok()) << imported.error().format();
     ASSERT_EQ(imported->materials.size(), 1u);
     EXPECT_EQ(imported->materials[0].material.name, "copper");
-    EXPECT_EQ(imported->materials[0].material.model, BrdfModel::OpenPbr);
+    EXPECT_EQ(imported->materials[0].material.analytic()->model, BrdfModel::OpenPbr);
     EXPECT_EQ(findImportFormat("x/Y.GLB")->load, &loadGlb);
 }
 

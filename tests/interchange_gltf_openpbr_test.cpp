@@ -222,7 +222,7 @@ TEST(GltfOpenPbr, CoreFactorsMapOntoOpenPbrNames) {
                                                       {"extensions", {{"KHR_materials_ior", {{"ior", 1.4}}}}}}}));
     ASSERT_EQ(file.materials.size(), 1u);
     const Material& m = file.materials[0].material;
-    ASSERT_EQ(m.model, BrdfModel::OpenPbr);
+    ASSERT_EQ(m.analytic()->model, BrdfModel::OpenPbr);
     EXPECT_EQ(m.name, "blue plastic");
     EXPECT_EQ(paramValue(m, "base_color"), glm::vec3(0.1f, 0.2f, 0.8f));
     EXPECT_FLOAT_EQ(paramScalar(m, "base_metalness"), 0.3f);
@@ -288,8 +288,8 @@ TEST(GltfOpenPbr, EachExtensionMapsOntoItsParameters) {
     EXPECT_EQ(paramScalar(unlit, "specular_weight"), 0.0f);
     EXPECT_EQ(paramValue(unlit, "emission_color"), glm::vec3(0.2f, 0.7f, 0.3f));
     EXPECT_FLOAT_EQ(paramScalar(unlit, "emission_luminance"), 683.0f);
-    ASSERT_NE(findTexture(unlit, "emission_color"), nullptr);
-    EXPECT_EQ(findTexture(unlit, "base_color"), nullptr);
+    ASSERT_NE(findTexture(*unlit.analytic(), "emission_color"), nullptr);
+    EXPECT_EQ(findTexture(*unlit.analytic(), "base_color"), nullptr);
 
     // Only what cannot map exactly speaks: one located line each, and no warning for the rest.
     const std::vector<std::string> texts = warningTexts(file);
@@ -303,39 +303,39 @@ TEST(GltfOpenPbr, TexturesDriveTheirParametersWithFactorsChannelsAndTransforms) 
     writeImages();
     const ImportedFile file = parseOk(withMaterials(sampleMaterials()));
     const Material& core = file.materials[0].material;
-    const MaterialTexture* base = findTexture(core, "base_color");
+    const MaterialTexture* base = findTexture(*core.analytic(), "base_color");
     ASSERT_NE(base, nullptr);
     EXPECT_EQ(base->file, folder() + "/color.png");
     EXPECT_EQ(base->colorSpace, TextureColorSpace::Srgb);
     EXPECT_EQ(base->colorFactor, glm::vec3(0.8f, 0.4f, 0.2f));
     EXPECT_EQ(base->tiling, glm::vec2(2.0f, -3.0f));
     EXPECT_FLOAT_EQ(base->rotation, 0.7f);
-    const MaterialTexture* rough = findTexture(core, "specular_roughness");
-    const MaterialTexture* metal = findTexture(core, "base_metalness");
+    const MaterialTexture* rough = findTexture(*core.analytic(), "specular_roughness");
+    const MaterialTexture* metal = findTexture(*core.analytic(), "base_metalness");
     ASSERT_TRUE(rough && metal);
     EXPECT_EQ(rough->channel, TextureChannel::G);
     EXPECT_EQ(rough->range, glm::vec2(0.0f, 0.6f));
     EXPECT_EQ(metal->channel, TextureChannel::B);
     EXPECT_EQ(metal->range, glm::vec2(0.0f, 0.25f));
     EXPECT_EQ(rough->colorSpace, TextureColorSpace::Linear);
-    const MaterialTexture* normal = findTexture(core, kNormalMapKey);
+    const MaterialTexture* normal = findTexture(*core.analytic(), kNormalMapKey);
     ASSERT_NE(normal, nullptr);
     EXPECT_FLOAT_EQ(normal->normalScale, 0.75f);
-    EXPECT_EQ(core.textures.back().parameter, kNormalMapKey);  // last, as the shader expects
-    const MaterialTexture* emission = findTexture(core, "emission_color");
+    EXPECT_EQ(core.analytic()->textures.back().parameter, kNormalMapKey);  // last, as the shader expects
+    const MaterialTexture* emission = findTexture(*core.analytic(), "emission_color");
     ASSERT_NE(emission, nullptr);
     EXPECT_EQ(emission->colorFactor, glm::vec3(1.0f, 0.5f, 0.25f));
     // The occlusion map: red, 1 + strength·(texel − 1), just before the normal map.
-    const MaterialTexture* occlusion = findTexture(core, kOcclusionMapKey);
+    const MaterialTexture* occlusion = findTexture(*core.analytic(), kOcclusionMapKey);
     ASSERT_NE(occlusion, nullptr);
     EXPECT_EQ(occlusion->file, folder() + "/occlusion.png");
     EXPECT_EQ(occlusion->channel, TextureChannel::R);
     EXPECT_EQ(occlusion->colorSpace, TextureColorSpace::Linear);
     EXPECT_EQ(occlusion->range, glm::vec2(0.5f, 1.0f));
-    EXPECT_EQ(core.textures[core.textures.size() - 2].parameter, kOcclusionMapKey);
+    EXPECT_EQ(core.analytic()->textures[core.analytic()->textures.size() - 2].parameter, kOcclusionMapKey);
     EXPECT_TRUE(file.materials[0].textures.empty());  // nothing left only for export
     // The coat normal map with its scale, rendered (nothing left only for export).
-    const MaterialTexture* coatNormal = findTexture(file.materials[2].material, kCoatNormalMapKey);
+    const MaterialTexture* coatNormal = findTexture(*file.materials[2].material.analytic(), kCoatNormalMapKey);
     ASSERT_NE(coatNormal, nullptr);
     EXPECT_EQ(coatNormal->file, folder() + "/normal.png");
     EXPECT_EQ(coatNormal->colorSpace, TextureColorSpace::Linear);
@@ -343,22 +343,22 @@ TEST(GltfOpenPbr, TexturesDriveTheirParametersWithFactorsChannelsAndTransforms) 
     EXPECT_TRUE(file.materials[2].textures.empty());
     // The volume's thickness: thicknessFactor × G [m], rendered (nothing left only for export).
     EXPECT_FLOAT_EQ(paramScalar(file.materials[4].material, "geometry_thickness"), 0.3f);
-    const MaterialTexture* volumeThickness = findTexture(file.materials[4].material, "geometry_thickness");
+    const MaterialTexture* volumeThickness = findTexture(*file.materials[4].material.analytic(), "geometry_thickness");
     ASSERT_NE(volumeThickness, nullptr);
     EXPECT_EQ(volumeThickness->channel, TextureChannel::G);
     EXPECT_EQ(volumeThickness->range, glm::vec2(0.0f, 0.3f));
     EXPECT_TRUE(file.materials[4].textures.empty());
     // Iridescence thickness: mix(minimum, maximum, G) in µm.
-    const MaterialTexture* thickness = findTexture(file.materials[6].material, "thin_film_thickness");
+    const MaterialTexture* thickness = findTexture(*file.materials[6].material.analytic(), "thin_film_thickness");
     ASSERT_NE(thickness, nullptr);
     EXPECT_EQ(thickness->channel, TextureChannel::G);
     EXPECT_FLOAT_EQ(thickness->range.x, 0.2f);
     EXPECT_FLOAT_EQ(thickness->range.y, 0.8f);
     // Sheen roughness reads alpha; clearcoat R, clearcoat roughness G; specular A.
-    EXPECT_EQ(findTexture(file.materials[3].material, "fuzz_roughness")->channel, TextureChannel::A);
-    EXPECT_EQ(findTexture(file.materials[2].material, "coat_weight")->channel, TextureChannel::R);
-    EXPECT_EQ(findTexture(file.materials[2].material, "coat_roughness")->channel, TextureChannel::G);
-    EXPECT_EQ(findTexture(file.materials[1].material, "specular_weight")->channel, TextureChannel::A);
+    EXPECT_EQ(findTexture(*file.materials[3].material.analytic(), "fuzz_roughness")->channel, TextureChannel::A);
+    EXPECT_EQ(findTexture(*file.materials[2].material.analytic(), "coat_weight")->channel, TextureChannel::R);
+    EXPECT_EQ(findTexture(*file.materials[2].material.analytic(), "coat_roughness")->channel, TextureChannel::G);
+    EXPECT_EQ(findTexture(*file.materials[1].material.analytic(), "specular_weight")->channel, TextureChannel::A);
 }
 
 // KHR_texture_transform in glTF's UV (v down) and MaterialTexture's in Glint's (v up) are the
@@ -410,7 +410,7 @@ TEST(GltfOpenPbr, GltfToGlintToGltfKeepsTheJsonValues) {
         // The written file reads back (its images resolve from its own folder).
         auto again = parseGltf(written.text, folder() + "/out/written.gltf");
         ASSERT_TRUE(again.ok()) << again.error().format();
-        EXPECT_EQ(again->materials[0].material.values, file.materials[i].material.values) << name;
+        EXPECT_EQ(again->materials[0].material.analytic()->values, file.materials[i].material.analytic()->values) << name;
     }
 }
 
@@ -438,7 +438,7 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     color.tiling = {3.0f, 2.0f};
     color.rotation = 0.4f;
     color.offset = {0.1f, 0.2f};
-    putTexture(paint, color);
+    putTexture(*paint.analytic(), color);
     MaterialTexture rough = image("specular_roughness", "data.png", TextureColorSpace::Linear);
     rough.channel = TextureChannel::G;
     rough.range = {0.0f, 0.35f};
@@ -446,18 +446,18 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     metal.parameter = "base_metalness";
     metal.channel = TextureChannel::B;
     metal.range = {0.0f, 0.4f};
-    putTexture(paint, rough);
-    putTexture(paint, metal);
+    putTexture(*paint.analytic(), rough);
+    putTexture(*paint.analytic(), metal);
     MaterialTexture normal = image(kNormalMapKey, "normal.png", TextureColorSpace::Linear);
     normal.normalScale = 0.6f;
-    putTexture(paint, normal);
+    putTexture(*paint.analytic(), normal);
     MaterialTexture coatNormal = image(kCoatNormalMapKey, "normal.png", TextureColorSpace::Linear);
     coatNormal.normalScale = 0.8f;
-    putTexture(paint, coatNormal);
+    putTexture(*paint.analytic(), coatNormal);
     MaterialTexture coatRough = image("coat_roughness", "data.png", TextureColorSpace::Linear);
     coatRough.channel = TextureChannel::G;
     coatRough.range = {0.0f, 0.05f};
-    putTexture(paint, coatRough);
+    putTexture(*paint.analytic(), coatRough);
     materials.push_back(paint);
 
     Material velvet = test::materialWith("velvet", BrdfModel::OpenPbr,
@@ -465,7 +465,7 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
          {"fuzz_color", glm::vec3(0.9f, 0.4f, 0.6f)}, {"fuzz_roughness", 0.7f}});
     MaterialTexture fuzz = image("fuzz_color", "color.png", TextureColorSpace::Srgb);
     fuzz.colorFactor = paramValue(velvet, "fuzz_color");
-    putTexture(velvet, fuzz);
+    putTexture(*velvet.analytic(), fuzz);
     materials.push_back(velvet);
 
     Material bubble = test::materialWith("soap bubble", BrdfModel::OpenPbr,
@@ -485,11 +485,11 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     setParam(glass, "geometry_thickness", 0.02f);  // glTF's volume needs one (0 is written as the sphere's diameter)
     MaterialTexture transmission = image("transmission_weight", "data.png", TextureColorSpace::Linear);
     transmission.range = {0.0f, 1.0f};
-    putTexture(glass, transmission);
+    putTexture(*glass.analytic(), transmission);
     MaterialTexture thickness = image("geometry_thickness", "data.png", TextureColorSpace::Linear);
     thickness.channel = TextureChannel::G;
     thickness.range = {0.0f, 0.02f};
-    putTexture(glass, thickness);
+    putTexture(*glass.analytic(), thickness);
     materials.push_back(glass);
 
     Material brushed = test::materialWith("brushed steel", BrdfModel::OpenPbr,
@@ -503,7 +503,7 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     MaterialTexture glow = image("emission_color", "emissive.png", TextureColorSpace::Srgb);
     glow.colorFactor = paramValue(lamp, "emission_color");
     glow.filter = TextureFilter::Nearest;
-    putTexture(lamp, glow);
+    putTexture(*lamp.analytic(), glow);
     materials.push_back(lamp);
 
     for (const Material& before : materials) {
@@ -513,14 +513,14 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
         ASSERT_TRUE(read.ok()) << read.error().format();
         EXPECT_TRUE(allWarnings(*read).empty()) << before.name;
         const Material& after = read->materials.at(0).material;
-        ASSERT_EQ(after.model, BrdfModel::OpenPbr);
+        ASSERT_EQ(after.analytic()->model, BrdfModel::OpenPbr);
         for (const ParamSpec& spec : modelInfo(BrdfModel::OpenPbr).params) {
             const glm::vec3 a = paramValue(before, spec.name), b = paramValue(after, spec.name);
             EXPECT_LT(glm::length(a - b), 2e-5f * std::max(1.0f, glm::length(a))) << before.name << " " << spec.name;
         }
-        ASSERT_EQ(after.textures.size(), before.textures.size()) << before.name;
-        for (size_t i = 0; i < before.textures.size(); ++i) {
-            const MaterialTexture &x = before.textures[i], &y = after.textures[i];
+        ASSERT_EQ(after.analytic()->textures.size(), before.analytic()->textures.size()) << before.name;
+        for (size_t i = 0; i < before.analytic()->textures.size(); ++i) {
+            const MaterialTexture &x = before.analytic()->textures[i], &y = after.analytic()->textures[i];
             EXPECT_EQ(y.parameter, x.parameter);
             EXPECT_EQ(y.file, x.file);
             EXPECT_EQ(y.colorSpace, x.colorSpace);
@@ -567,7 +567,7 @@ TEST(GltfOpenPbr, SamplersCarryWrapAndFilterBothWays) {
     const ImportedFile file = parseOk(gltf);
     EXPECT_TRUE(allWarnings(file).empty()) << warningTexts(file)[0];
     const auto expectSampling = [&](const char* parameter, TextureFilter filter, TextureMinFilter minFilter, TextureWrap u, TextureWrap v) {
-        const MaterialTexture* texture = findTexture(file.materials[0].material, parameter);
+        const MaterialTexture* texture = findTexture(*file.materials[0].material.analytic(), parameter);
         ASSERT_NE(texture, nullptr) << parameter;
         EXPECT_EQ(texture->filter, filter) << parameter;
         EXPECT_EQ(texture->minFilter, minFilter) << parameter;
@@ -609,8 +609,8 @@ TEST(GltfOpenPbr, UnsupportedTextureSettingsAreLocatedWarnings) {
     EXPECT_TRUE(mentions(texts, "/materials/0/pbrMetallicRoughness/baseColorTexture: texCoord 1"));
     EXPECT_TRUE(mentions(texts, "/materials/0/normalTexture: texture not rendered"));
     EXPECT_TRUE(mentions(texts, "/materials/0/extensions/VENDOR_sparkle: extension not supported"));
-    EXPECT_NE(findTexture(file.materials[0].material, "base_color"), nullptr);
-    EXPECT_EQ(findTexture(file.materials[0].material, kNormalMapKey), nullptr);
+    EXPECT_NE(findTexture(*file.materials[0].material.analytic(), "base_color"), nullptr);
+    EXPECT_EQ(findTexture(*file.materials[0].material.analytic(), kNormalMapKey), nullptr);
 }
 
 }  // namespace

@@ -101,8 +101,8 @@ TEST(Gltf, RoundTripKeepsLightsAndTheModelsNearestGltf) {
         ASSERT_EQ(read.materials.size(), 1u);
         const Material& after = read.materials[0].material;
         EXPECT_EQ(after.name, before.name);
-        ASSERT_EQ(after.model, BrdfModel::OpenPbr);
-        if (before.model == BrdfModel::Glass) {
+        ASSERT_EQ(after.analytic()->model, BrdfModel::OpenPbr);
+        if (before.analytic()->model == BrdfModel::Glass) {
             EXPECT_FLOAT_EQ(paramScalar(after, "specular_ior"), 1.52f);
             EXPECT_EQ(paramScalar(after, "transmission_weight"), 1.0f);
             const glm::vec3 transmitted = glm::pow(paramValue(after, "transmission_color"), glm::vec3(1.0f / paramScalar(after, "transmission_depth")));

@@ -43,7 +43,7 @@ TEST(MaterialX, OpenPbrCarPaintFromTheMaterialXExamples) {
     ASSERT_EQ(file->materials.size(), 1u);
     const Material& m = file->materials[0].material;
     EXPECT_EQ(m.name, "Car_Paint");
-    EXPECT_EQ(m.model, BrdfModel::OpenPbr);
+    EXPECT_EQ(m.analytic()->model, BrdfModel::OpenPbr);
     expectNear(paramValue(m, "base_color"), {0.1f, 0.6f, 0.9f});
     EXPECT_EQ(paramScalar(m, "specular_ior"), 1.6f);
     EXPECT_EQ(paramScalar(m, "specular_roughness"), 0.3f);
@@ -202,16 +202,16 @@ TEST(MaterialX, ImageNodesBecomeTexturesAndProceduralGraphsAreWarnings) {
     auto file = loadMaterialX(path);
     ASSERT_TRUE(file.ok()) << file.error().format();
     const Material& m = file->materials[0].material;
-    ASSERT_EQ(m.textures.size(), 3u) << warningsText(*file);
-    EXPECT_EQ(m.textures[0].parameter, "base_color");
-    EXPECT_EQ(m.textures[0].colorSpace, TextureColorSpace::Srgb);
-    EXPECT_EQ(m.textures[0].tiling, glm::vec2(4, 2));
-    EXPECT_EQ(m.textures[0].file, directory + "/textures/colour.png");
-    EXPECT_TRUE(m.textures[0].image != nullptr);
-    EXPECT_EQ(m.textures[1].parameter, kNormalMapKey);
-    EXPECT_EQ(m.textures[2].parameter, "specular_roughness");
-    EXPECT_EQ(m.textures[2].channel, TextureChannel::G);
-    EXPECT_EQ(m.textures[2].colorSpace, TextureColorSpace::Linear);
+    ASSERT_EQ(m.analytic()->textures.size(), 3u) << warningsText(*file);
+    EXPECT_EQ(m.analytic()->textures[0].parameter, "base_color");
+    EXPECT_EQ(m.analytic()->textures[0].colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(m.analytic()->textures[0].tiling, glm::vec2(4, 2));
+    EXPECT_EQ(m.analytic()->textures[0].file, directory + "/textures/colour.png");
+    EXPECT_TRUE(m.analytic()->textures[0].image != nullptr);
+    EXPECT_EQ(m.analytic()->textures[1].parameter, kNormalMapKey);
+    EXPECT_EQ(m.analytic()->textures[2].parameter, "specular_roughness");
+    EXPECT_EQ(m.analytic()->textures[2].channel, TextureChannel::G);
+    EXPECT_EQ(m.analytic()->textures[2].colorSpace, TextureColorSpace::Linear);
     EXPECT_NE(warningsText(*file).find("images.mtlx:25:5: warning: input 'coat_weight' is driven by a 'noise2d' node"), std::string::npos)
         << warningsText(*file);
 }
@@ -231,7 +231,7 @@ TEST(MaterialX, GlintMaterialsRoundTripThroughOpenPbrSurface) {
     ASSERT_EQ(written.warnings.size(), 0u) << written.warnings[0].format();  // Lambert → OpenPBR drops nothing
     const ImportedFile back = parseMaterialXOk(written.text);
     ASSERT_EQ(back.materials.size(), 2u);
-    EXPECT_EQ(back.materials[0].material.values, openPbr.values);
+    EXPECT_EQ(back.materials[0].material.analytic()->values, openPbr.analytic()->values);
     expectNear(paramValue(back.materials[1].material, "base_color"), {0.7f, 0.2f, 0.1f}, 0.0f);
     EXPECT_EQ(warningsText(back), "");
 }

@@ -31,7 +31,7 @@ TEST(Mtl, Illum2IsLectureBlinnPhongWithEveryStatement) {
     ASSERT_EQ(file.materials.size(), 1u);
     const ImportedMaterial& imported = file.materials[0];
     EXPECT_EQ(imported.material.name, "red plastic");
-    EXPECT_EQ(imported.material.model, BrdfModel::BlinnPhong);
+    EXPECT_EQ(imported.material.analytic()->model, BrdfModel::BlinnPhong);
     EXPECT_EQ(paramValue(imported.material, "diffuse_albedo"), glm::vec3(0.5f, 0.1f, 0.1f));
     EXPECT_EQ(paramValue(imported.material, "specular"), glm::vec3(0.25f));
     EXPECT_EQ(paramScalar(imported.material, "exponent"), 96.0f);
@@ -52,16 +52,16 @@ TEST(Mtl, IllumModelsMapToTheNearestGlintModel) {
         "newmtl window\nNi 1.5\nillum 7\n"
         "newmtl water\nNi 1.33\nTr 0.9\nillum 4\n");
     ASSERT_EQ(file.materials.size(), 5u);
-    EXPECT_EQ(file.materials[0].material.model, BrdfModel::Lambert);
+    EXPECT_EQ(file.materials[0].material.analytic()->model, BrdfModel::Lambert);
     EXPECT_TRUE(hasWarning(file, "illum 0"));
     EXPECT_EQ(paramValue(file.materials[1].material, "albedo"), glm::vec3(0.6f));
     const Material& chrome = file.materials[2].material;
-    EXPECT_EQ(chrome.model, BrdfModel::Mirror);
+    EXPECT_EQ(chrome.analytic()->model, BrdfModel::Mirror);
     // κ for n = 1 gives back the reflectance: κ²/(4 + κ²) = Ks.
     const glm::vec3 kappa = paramValue(chrome, "extinction");
     EXPECT_NEAR(kappa.r * kappa.r / (4 + kappa.r * kappa.r), 0.9f, 1e-5f);
     EXPECT_NEAR(kappa.b * kappa.b / (4 + kappa.b * kappa.b), 0.7f, 1e-5f);
-    EXPECT_EQ(file.materials[3].material.model, BrdfModel::Glass);
+    EXPECT_EQ(file.materials[3].material.analytic()->model, BrdfModel::Glass);
     EXPECT_FLOAT_EQ(paramScalar(file.materials[3].material, "ior"), 1.5f);
     EXPECT_FLOAT_EQ(paramScalar(file.materials[4].material, "ior"), 1.33f);
     EXPECT_TRUE(hasWarning(file, "illum 4"));
@@ -106,10 +106,10 @@ TEST(Mtl, RoundTripKeepsEveryParameterMtlHolds) {
         const Material& before = originals[i].material;
         const Material& after = read.materials[i].material;
         EXPECT_EQ(after.name, before.name);
-        ASSERT_EQ(after.model, before.model) << before.name;
-        ASSERT_EQ(after.values.size(), before.values.size());
-        for (size_t v = 0; v < before.values.size(); ++v)
-            EXPECT_NEAR(after.values[v], before.values[v], 1e-5f * std::max(1.0f, std::abs(before.values[v])))
+        ASSERT_EQ(after.analytic()->model, before.analytic()->model) << before.name;
+        ASSERT_EQ(after.analytic()->values.size(), before.analytic()->values.size());
+        for (size_t v = 0; v < before.analytic()->values.size(); ++v)
+            EXPECT_NEAR(after.analytic()->values[v], before.analytic()->values[v], 1e-5f * std::max(1.0f, std::abs(before.analytic()->values[v])))
                 << before.name << " value " << v << "\n" << written.text;
         ASSERT_EQ(read.materials[i].textures.size(), originals[i].textures.size());
         for (size_t t = 0; t < originals[i].textures.size(); ++t) {

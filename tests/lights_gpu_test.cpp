@@ -101,7 +101,7 @@ TEST(GpuLights, AmbientAloneWhitesOutALambertSphere) {
     Scene scene = test::loadTestScene("scenes/lambert_sun.json");
     const Light ambient = ambientLight(0.8f, {1.0f, 0.5f, 0.25f});
     scene.lights = {ambient};
-    const glm::vec3 albedo{scene.materials[0].values[0], scene.materials[0].values[1], scene.materials[0].values[2]};
+    const glm::vec3 albedo{scene.materials[0].analytic()->values[0], scene.materials[0].analytic()->values[1], scene.materials[0].analytic()->values[2]};
     const RadianceImage gpu = renderGpu(scene, 64, 64);
     const RadianceImage cpu = renderReference(scene, 64, 64);
     long onSphere = 0;
@@ -138,8 +138,8 @@ TEST(GpuSpecular, MirrorAndGlassSpheresMatchTheCpuReferenceUnderAConstantBackgro
 
 TEST(GpuSpecular, ClassicTransparencyAndAThinPaneMatchTheCpuReference) {
     Scene scene = test::loadTestScene("scenes/glass_sphere.json");
-    scene.materials[0].values[4] = static_cast<float>(GlassTransparency::Classic);
-    scene.materials[0].values[5] = 0.6f;
+    scene.materials[0].analytic()->values[4] = static_cast<float>(GlassTransparency::Classic);
+    scene.materials[0].analytic()->values[5] = 0.6f;
     scene.objects.push_back({"pane", PlaneShape{{0, -0.8f, 0}, glm::normalize(glm::vec3(0, 1, 0.3f)), {4, 2}}, 0});
     expectAgreement(scene, 128, 96, 9000);
 }

@@ -38,8 +38,9 @@ TEST(MeasuredMaterial, ConstantTableHasItsAlbedoAtEveryAngle) {
             EXPECT_NEAR(measuredDirectionalAlbedo(**brdf, cosThetaOut)[c], kMeasuredTestAlbedo[c], 1e-5f);
     const Material material = measuredBrdfMaterial(*brdf);
     EXPECT_EQ(material.name, "lambert");
-    EXPECT_EQ(material.model, BrdfModel::Lambert);  // the stand-in for analytic-only code
-    EXPECT_NEAR(material.values[0], kMeasuredTestAlbedo.r, 1e-5f);
+    ASSERT_TRUE(material.measured());
+    EXPECT_EQ(material.measured()->brdf, *brdf);
+    EXPECT_TRUE(paramTable(material).empty());  // the table is all there is: no stand-in parameters
 }
 
 TEST(MeasuredMaterial, JsonReadsTheFileRelativeToItselfAndWritesItBack) {
@@ -48,14 +49,14 @@ TEST(MeasuredMaterial, JsonReadsTheFileRelativeToItselfAndWritesItBack) {
     const std::string text = R"({"format": "glint-material", "version": 1, "name": "plaster", "model": "merl", "merl_file": "lambert.binary"})";
     auto material = parseMaterial(text, folder + "/plaster.json");
     ASSERT_TRUE(material.ok()) << material.error().format();
-    ASSERT_TRUE(material->measured);
+    ASSERT_TRUE(material->measured());
     EXPECT_EQ(material->name, "plaster");
     const nlohmann::json written = materialToJson(*material, folder + "/sub/again.json");
     EXPECT_EQ(written["model"], "merl");
     EXPECT_EQ(written["merl_file"], "../lambert.binary");
     auto again = parseMaterial(written.dump(), folder + "/sub/again.json");
     ASSERT_TRUE(again.ok()) << again.error().format();
-    EXPECT_EQ(again->measured->table.reflectance, material->measured->table.reflectance);
+    EXPECT_EQ(again->measured()->brdf->table.reflectance, material->measured()->brdf->table.reflectance);
 }
 
 TEST(MeasuredMaterial, JsonRefusesBadReferencesAtTheKey) {
@@ -87,7 +88,7 @@ TEST(MeasuredMaterial, BinaryFilesOpenThroughTheImportTable) {
     auto imported = format->load(measuredTestFile());
     ASSERT_TRUE(imported.ok()) << imported.error().format();
     ASSERT_EQ(imported->materials.size(), 1u);
-    EXPECT_TRUE(imported->materials[0].material.measured);
+    EXPECT_TRUE(imported->materials[0].material.measured());
     EXPECT_TRUE(allWarnings(*imported).empty());
 }
 
@@ -96,7 +97,7 @@ TEST(MeasuredMaterial, CpuReferenceOfAConstantTableIsTheLambertModel) {
     ASSERT_TRUE(brdf.ok()) << brdf.error().format();
     Scene measured = previewStage(measuredBrdfMaterial(*brdf), 48, 48);
     Material lambert = Material::withDefaults("lambert", BrdfModel::Lambert);
-    lambert.values = {kMeasuredTestAlbedo.r, kMeasuredTestAlbedo.g, kMeasuredTestAlbedo.b};
+    lambert.analytic()->values = {kMeasuredTestAlbedo.r, kMeasuredTestAlbedo.g, kMeasuredTestAlbedo.b};
     Scene analytic = previewStage(lambert, 48, 48);
     Light ambient;
     ambient.type = LightType::Ambient;

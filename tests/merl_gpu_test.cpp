@@ -66,7 +66,7 @@ TEST(MerlGpu, ConstantTableRendersAsTheLambertModel) {
     const Scene measured = test::keyLitPreviewStage(measuredBrdfMaterial(makeMeasuredBrdf(std::move(*table), "lambert.binary")),
                                         kMerlGpuSize, kMerlGpuSize);
     Material lambert = Material::withDefaults("lambert", BrdfModel::Lambert);
-    lambert.values = {albedo.r, albedo.g, albedo.b};
+    lambert.analytic()->values = {albedo.r, albedo.g, albedo.b};
     const RadianceImage gpu = test::renderGpu(measured, kMerlGpuSize, kMerlGpuSize);
     const auto agreement = test::compareWithReference(test::keyLitPreviewStage(lambert, kMerlGpuSize, kMerlGpuSize), gpu);
     EXPECT_GT(agreement.compared, kMerlGpuSize * kMerlGpuSize / 2);

@@ -82,7 +82,7 @@ TEST(MeshDetailGpu, ShadowMapsFromStandInsAreRedrawnForTheFullFrame) {
     renderer.prepareSimplifiedMeshes(scene);
     renderer.finishSimplifiedMeshes();
     const long long first = renderer.shadowMapRenders();
-    scene.materials[0].values[0] = 0.3f;  // a material drag keeps the full-detail maps
+    scene.materials[0].analytic()->values[0] = 0.3f;  // a material drag keeps the full-detail maps
     (void)render(scene, MeshDetail::Simplified);
     EXPECT_EQ(renderer.shadowMapRenders(), first);
     scene.lights[0].direction.x += 0.05f;  // a light drag draws them from the stand-in

@@ -109,7 +109,7 @@ TEST(MetalSpectra, FittedIndicesFollowTheIntegratedReflectanceToGrazing) {
     // lossless conductor, 0.003 above the integrated 0.997 at 85°).
     for (const MetalSpectrum& spectrum : metalSpectra()) {
         const Preset& preset = *findPreset(spectrum.name);
-        const CookTorranceParams params = unpack<CookTorrance>(preset.material().values.data());
+        const CookTorranceParams params = unpack<CookTorrance>(preset.material().analytic()->values.data());
         float worst = 0.0f;
         for (const float degrees : {0.0f, 30.0f, 60.0f, 75.0f, 80.0f, 85.0f, 89.0f}) {
             const float cosIncident = std::cos(degrees * kPi / 180.0f);

@@ -59,13 +59,13 @@ TEST(ModelMachinery, ProceduralTextureCodeOnlyWhereAMaterialHasOne) {
     image.parameter = "roughness", image.kind = TextureKind::Image;
     MaterialTexture marble;
     marble.parameter = "diffuse_albedo", marble.kind = TextureKind::Marble;
-    material.textures = {image};
-    const TexturedParams imagesOnly = TexturedParams::of(material);
-    EXPECT_EQ(generateMaterialGlsl(modelInfo(material.model), imagesOnly).find("PERLIN_PERMUTATION"), std::string::npos);
-    material.textures = {marble, image};
-    const TexturedParams withMarble = TexturedParams::of(material);
+    material.analytic()->textures = {image};
+    const TexturedParams imagesOnly = TexturedParams::of(*material.analytic());
+    EXPECT_EQ(generateMaterialGlsl(modelInfo(material.analytic()->model), imagesOnly).find("PERLIN_PERMUTATION"), std::string::npos);
+    material.analytic()->textures = {marble, image};
+    const TexturedParams withMarble = TexturedParams::of(*material.analytic());
     EXPECT_TRUE(withMarble.hasProcedural());
-    EXPECT_NE(generateMaterialGlsl(modelInfo(material.model), withMarble).find("#define GLINT_PROCEDURAL_TEXTURES"), std::string::npos);
+    EXPECT_NE(generateMaterialGlsl(modelInfo(material.analytic()->model), withMarble).find("#define GLINT_PROCEDURAL_TEXTURES"), std::string::npos);
     EXPECT_EQ(withMarble.slotOf(TexturedParams::kNormalMapBit), 2);
 }
 

@@ -59,7 +59,7 @@ Material sample(BrdfModel model) {
 }
 
 float roughnessAlpha(const Material& material) {
-    switch (material.model) {
+    switch (material.analytic()->model) {
         case BrdfModel::BlinnPhong: return alphaFromBlinnPhongExponent(paramScalar(material, "exponent"));
         case BrdfModel::Phong: return alphaFromBlinnPhongExponent(4.0f * paramScalar(material, "exponent"));
         case BrdfModel::CookTorrance: return paramScalar(material, "roughness");
@@ -74,7 +74,7 @@ TEST(ModelSwitch, EveryPairIsValidAndKeepsColourAndRoughness) {
             SCOPED_TRACE(std::string(from.id) + " → " + to.id);
             const Material source = sample(from.model);
             const ModelSwitch switched = switchModel(source, to.model);
-            EXPECT_EQ(switched.material.model, to.model);
+            EXPECT_EQ(switched.material.analytic()->model, to.model);
             EXPECT_EQ(switched.material.name, "sample");
             EXPECT_FALSE(findOutOfRange(switched.material).has_value()) << *findOutOfRange(switched.material);
             if (holdsDiffuse(from.model) && holdsDiffuse(to.model)) {
@@ -144,20 +144,20 @@ TEST(ModelSwitch, DiffuseTextureFollowsTheColourAndOthersAreReported) {
     albedo.parameter = "albedo";
     MaterialTexture normal;
     normal.parameter = kNormalMapKey;
-    lambert.textures = {albedo, normal};
+    lambert.analytic()->textures = {albedo, normal};
     const ModelSwitch toOpenPbr = switchModel(lambert, BrdfModel::OpenPbr);
-    ASSERT_EQ(toOpenPbr.material.textures.size(), 2u);
-    EXPECT_EQ(toOpenPbr.material.textures[0].parameter, "base_color");
-    EXPECT_EQ(toOpenPbr.material.textures[1].parameter, kNormalMapKey);
+    ASSERT_EQ(toOpenPbr.material.analytic()->textures.size(), 2u);
+    EXPECT_EQ(toOpenPbr.material.analytic()->textures[0].parameter, "base_color");
+    EXPECT_EQ(toOpenPbr.material.analytic()->textures[1].parameter, kNormalMapKey);
     Material coated = toOpenPbr.material;
     MaterialTexture coatNormal;
     coatNormal.parameter = kCoatNormalMapKey;
-    coated.textures.insert(coated.textures.begin() + 1, coatNormal);
+    coated.analytic()->textures.insert(coated.analytic()->textures.begin() + 1, coatNormal);
     const ModelSwitch back = switchModel(switchModel(coated, BrdfModel::CookTorrance).material, BrdfModel::OpenPbr);
-    ASSERT_EQ(back.material.textures.size(), 3u);  // the coat normal map survives a model without a coat
-    EXPECT_EQ(back.material.textures[1].parameter, kCoatNormalMapKey);
+    ASSERT_EQ(back.material.analytic()->textures.size(), 3u);  // the coat normal map survives a model without a coat
+    EXPECT_EQ(back.material.analytic()->textures[1].parameter, kCoatNormalMapKey);
     const ModelSwitch toGlass = switchModel(lambert, BrdfModel::Glass);
-    ASSERT_EQ(toGlass.material.textures.size(), 1u);
+    ASSERT_EQ(toGlass.material.analytic()->textures.size(), 1u);
     EXPECT_NE(toGlass.summary().find("dropped the texture on albedo"), std::string::npos) << toGlass.summary();
 }
 

@@ -22,7 +22,7 @@ Material writtenCustomMaterial(const std::string& name, const char* text, std::v
     auto brdf = loadCustomBrdf(path);
     EXPECT_TRUE(brdf) << brdf.error().format();
     Material material = customBrdfMaterial(*brdf);
-    material.values = std::move(values);
+    material.custom()->values = std::move(values);
     return material;
 }
 
@@ -37,7 +37,7 @@ void expectPlotsMatchTwin(const Material& custom, const Material& twin) {
     BrdfSampler sampler(defaultShaderSources());
     auto sampled = plotMaterialFor(custom, sampler);
     ASSERT_TRUE(sampled) << sampled.error().format();
-    ASSERT_TRUE(sampled->custom);
+    ASSERT_TRUE(sampled->custom());
     const PlotMaterial reference = *plotMaterialFrom(twin);
     for (float incidence : {0.0f, 35.0f, 70.0f}) {
         const PolarPlotData polar = polarPlotData(*sampled, incidence, 37), expected = polarPlotData(reference, incidence, 37);
@@ -56,13 +56,13 @@ void expectPlotsMatchTwin(const Material& custom, const Material& twin) {
 
 TEST(PlotSamplingGpu, LambertBrdfMatchesBuiltInLambert) {
     Material twin = Material::withDefaults("twin", BrdfModel::Lambert);
-    twin.values = {0.6f, 0.3f, 0.15f};
+    twin.analytic()->values = {0.6f, 0.3f, 0.15f};
     expectPlotsMatchTwin(writtenCustomMaterial("lambert.brdf", test::kLambertTwinBrdf, {0.6f, 0.3f, 0.15f}), twin);
 }
 
 TEST(PlotSamplingGpu, BlinnPhongBrdfMatchesNormalisedBlinnPhong) {
     Material twin = Material::withDefaults("twin", BrdfModel::BlinnPhong);
-    twin.values = {0.4f, 0.2f, 0.1f, 0.3f, 0.3f, 0.3f, 40.0f, 3.0f};  // form 3: normalised
+    twin.analytic()->values = {0.4f, 0.2f, 0.1f, 0.3f, 0.3f, 0.3f, 40.0f, 3.0f};  // form 3: normalised
     expectPlotsMatchTwin(writtenCustomMaterial("blinn_phong.brdf", test::kBlinnPhongTwinBrdf, {0.4f, 0.2f, 0.1f, 0.3f, 40.0f}), twin);
 }
 
@@ -82,7 +82,7 @@ TEST(PlotSamplingGpu, GlslErrorNamesTheBrdfLineAndStateIsKept) {
     glViewport(3, 4, 50, 60);
     const Material lambert = writtenCustomMaterial("state.brdf", test::kLambertTwinBrdf, {0.5f, 0.5f, 0.5f});
     const glm::vec3 up(0.0f, 0.0f, 1.0f);
-    auto values = sampler.sample(*lambert.custom, lambert.values, std::span(&up, 1), std::span(&up, 1));
+    auto values = sampler.sample(*lambert.custom()->brdf, lambert.custom()->values, std::span(&up, 1), std::span(&up, 1));
     ASSERT_TRUE(values) << values.error().format();
     EXPECT_NEAR((*values)[0].g, 0.5f / 3.14159265f, 1e-6f);
     GLint bound = 0, viewport[4] = {};

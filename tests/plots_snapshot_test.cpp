@@ -69,7 +69,7 @@ TEST(PlotSnapshot, LobeBlinnPhong) {
 TEST(PlotSnapshot, AlbedoWarnsAboveOne) {
     Scene scene = test::loadTestScene("scenes/blinn_point.json");
     Material lecture = Material::withDefaults("lecture phong", BrdfModel::Phong);
-    lecture.values = {0.2f, 0.2f, 0.2f, 0.8f, 0.8f, 0.8f, 10.0f, 0.0f};
+    lecture.analytic()->values = {0.2f, 0.2f, 0.2f, 0.8f, 0.8f, 0.8f, 10.0f, 0.0f};
     scene.materials.push_back(lecture);
     scene.objects[1].materialIndex = static_cast<int>(scene.materials.size()) - 1;
     expectPlotMatchesGolden("albedo_phong", scene, "albedo", plotSnapshotOptions(60));

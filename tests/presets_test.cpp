@@ -29,8 +29,8 @@ TEST(Presets, EveryPresetIsAValidMaterialWithASource) {
         ASSERT_TRUE(saveMaterial(material, path).ok());
         auto loaded = loadMaterial(path);
         ASSERT_TRUE(loaded.ok()) << loaded.error().format();
-        EXPECT_EQ(loaded->values, material.values);
-        EXPECT_EQ(loaded->model, preset.model);
+        EXPECT_EQ(loaded->analytic()->values, material.analytic()->values);
+        EXPECT_EQ(loaded->analytic()->model, preset.model);
     }
     EXPECT_EQ(findPreset("unobtainium"), nullptr);
 }
@@ -38,7 +38,7 @@ TEST(Presets, EveryPresetIsAValidMaterialWithASource) {
 glm::vec3 presetF0(const char* name) {
     const Preset* preset = findPreset(name);
     EXPECT_NE(preset, nullptr) << name;
-    const CookTorranceParams params = unpack<CookTorrance>(preset->material().values.data());
+    const CookTorranceParams params = unpack<CookTorrance>(preset->material().analytic()->values.data());
     return fresnelF0(params.ior, params.extinction);
 }
 
@@ -86,14 +86,14 @@ TEST(Presets, ClearDielectricsRefractWithTheirIndex) {
         const Preset* preset = findPreset(name);
         ASSERT_NE(preset, nullptr) << name;
         EXPECT_EQ(preset->model, BrdfModel::Glass) << name;
-        const GlassParams params = unpack<Glass>(preset->material().values.data());
+        const GlassParams params = unpack<Glass>(preset->material().analytic()->values.data());
         EXPECT_EQ(params.ior, ior) << name;
         EXPECT_EQ(params.absorption, glm::vec3(0.0f)) << name << " is clear";
         EXPECT_EQ(params.transparency, GlassTransparency::Fresnel) << name << " uses the exact Fresnel equations";
         const glm::vec3 f0 = fresnelF0(glm::vec3(params.ior), glm::vec3(0.0f));
         EXPECT_NEAR(f0.r, (ior - 1) * (ior - 1) / ((ior + 1) * (ior + 1)), 1e-6f) << name;
     }
-    const float glassIor = unpack<Glass>(findPreset("glass")->material().values.data()).ior;
+    const float glassIor = unpack<Glass>(findPreset("glass")->material().analytic()->values.data()).ior;
     EXPECT_NEAR(fresnelF0(glm::vec3(glassIor), glm::vec3(0.0f)).r, 0.04f, 1e-6f);
 }
 

@@ -35,7 +35,7 @@ TEST(ReferenceRenderer, LambertSunRadianceIsHalfNz) {
 TEST(ReferenceRenderer, PointLightFollowsTheInverseSquareLaw) {
     Scene scene;
     scene.materials = {Material::withDefaults("white", BrdfModel::Lambert)};
-    scene.materials[0].values = {1, 1, 1};
+    scene.materials[0].analytic()->values = {1, 1, 1};
     scene.objects.push_back({"floor", PlaneShape{{0, 0, 0}, {0, 1, 0}, {100, 100}}, 0});
     Light bulb;
     bulb.type = LightType::Point;

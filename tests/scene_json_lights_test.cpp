@@ -51,11 +51,11 @@ TEST(SceneJsonLights, SpotAmbientAttenuationAndSkyRoundTrip) {
 TEST(SceneJsonLights, GlassAndMirrorMaterialsLoad) {
     const Scene scene = test::loadTestScene("scenes/glass_sphere.json");
     ASSERT_EQ(scene.materials.size(), 2u);
-    EXPECT_EQ(scene.materials[0].model, BrdfModel::Glass);
-    const GlassParams glass = unpack<Glass>(scene.materials[0].values.data());
+    EXPECT_EQ(scene.materials[0].analytic()->model, BrdfModel::Glass);
+    const GlassParams glass = unpack<Glass>(scene.materials[0].analytic()->values.data());
     EXPECT_FLOAT_EQ(glass.ior, 1.5f);
     EXPECT_EQ(glass.transparency, GlassTransparency::Fresnel);
-    EXPECT_EQ(scene.materials[1].model, BrdfModel::Mirror);
+    EXPECT_EQ(scene.materials[1].analytic()->model, BrdfModel::Mirror);
     EXPECT_EQ(scene.background.kind, BackgroundKind::Sky);
     // The constant background is still one array.
     EXPECT_EQ(test::loadTestScene("scenes/blinn_point.json").background.kind, BackgroundKind::Constant);
@@ -112,7 +112,7 @@ TEST(SceneJsonMaterials, PerChannelQuantitiesTakeOneNumberOrThreeAndRoundTrip) {
     auto mirror = parseMaterial("{\"format\": \"glint-material\", \"version\": 1, \"model\": \"mirror\",\n"
                                 "\"ior\": 1.5, \"extinction\": [0.5, 1, 2]}", "mirror.json");
     ASSERT_TRUE(mirror.ok()) << mirror.error().format();
-    EXPECT_EQ(std::vector<float>(mirror->values.begin(), mirror->values.begin() + 6),
+    EXPECT_EQ(std::vector<float>(mirror->analytic()->values.begin(), mirror->analytic()->values.begin() + 6),
               (std::vector<float>{1.5f, 1.5f, 1.5f, 0.5f, 1.0f, 2.0f}));
     const nlohmann::json saved = materialToJson(*mirror);
     EXPECT_EQ(saved.at("ior"), nlohmann::json({1.5f, 1.5f, 1.5f}));

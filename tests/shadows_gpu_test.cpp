@@ -277,7 +277,7 @@ TEST(GpuShadows, MapsAreRenderedOnlyWhenLightsOrGeometryChange) {
     (void)renderShadowsGpu(scene);
     EXPECT_EQ(renderer.shadowMapRenders(), first);
     scene.camera.position.x += 0.5f;
-    scene.materials[1].values[0] = 0.3f;
+    scene.materials[1].analytic()->values[0] = 0.3f;
     scene.lights[0].shadow.filterRadius = 3.0f;
     scene.lights[1].shadow.depthBias = 2.0f;
     (void)renderShadowsGpu(scene);

@@ -55,7 +55,7 @@ TEST(Snapshot, OneSpherePerModel) {
     Scene scene = test::loadTestScene("scenes/model_sphere.json");
     // A bright Lommel-Seeliger moon with a retroreflective lobe (k_r = 0.6, m = 8) towards the bulb.
     Material moon = Material::withDefaults("retroreflective", BrdfModel::Retroreflective);
-    moon.values = {0.9f, 0.9f, 0.9f, 1.0f, 0.7f, 0.6f, 0.6f, 0.2f, 8.0f};
+    moon.analytic()->values = {0.9f, 0.9f, 0.9f, 1.0f, 0.7f, 0.6f, 0.6f, 0.2f, 8.0f};
     const std::pair<BrdfModel, Material> samples[] = {
         {BrdfModel::Lambert, Material::withDefaults("lambert", BrdfModel::Lambert)},
         {BrdfModel::BlinnPhong, Material::withDefaults("blinn_phong", BrdfModel::BlinnPhong)},
@@ -75,7 +75,7 @@ TEST(Snapshot, OneSpherePerModel) {
     sky.kind = BackgroundKind::Sky;  // mirror and glass show what they reflect and refract
     for (const auto& [model, material] : samples) {
         SCOPED_TRACE(modelInfo(model).id);
-        ASSERT_EQ(material.model, model);
+        ASSERT_EQ(material.analytic()->model, model);
         scene.background = modelInfo(model).glslTransport ? sky : constant;
         scene.materials = {material};
         scene.materials[0].name = "sample";

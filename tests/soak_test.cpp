@@ -109,10 +109,10 @@ private:
     }
 
     void randomizeParameter(Material& material) {
-        const auto table = modelInfo(material.model).params;
+        const auto table = modelInfo(material.analytic()->model).params;
         const int index = pick(static_cast<int>(table.size()));
         const ParamSpec& spec = table[index];
-        float* value = material.values.data() + packedOffset(table, index);
+        float* value = material.analytic()->values.data() + packedOffset(table, index);
         switch (spec.kind) {
             case ParamKind::Scalar: value[0] = sliderValue(spec); break;
             case ParamKind::Color:

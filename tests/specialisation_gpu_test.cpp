@@ -100,9 +100,9 @@ TEST(Specialisation, MaterialChoicesDrawTheGenericPicture) {
     for (int distribution : {0, 1})
         for (int geometry : {0, 1})
             for (int fresnel : {0, 1}) {
-                material.values[packedOffset(table, findParam(table, "distribution"))] = static_cast<float>(distribution);
-                material.values[packedOffset(table, findParam(table, "geometry"))] = static_cast<float>(geometry);
-                material.values[packedOffset(table, findParam(table, "fresnel"))] = static_cast<float>(fresnel);
+                material.analytic()->values[packedOffset(table, findParam(table, "distribution"))] = static_cast<float>(distribution);
+                material.analytic()->values[packedOffset(table, findParam(table, "geometry"))] = static_cast<float>(geometry);
+                material.analytic()->values[packedOffset(table, findParam(table, "fresnel"))] = static_cast<float>(fresnel);
                 expectSamePictures(scene, "cook_torrance " + std::to_string(distribution) + std::to_string(geometry) +
                                               std::to_string(fresnel));
             }
@@ -113,15 +113,15 @@ TEST(Specialisation, LayersWeightedZeroAreCompiledOutAndDrawTheGenericPicture) {
     Material& material = scene.materials[0];
     material = Material::withDefaults("openpbr", BrdfModel::OpenPbr);
     const auto table = modelInfo(BrdfModel::OpenPbr).params;
-    const auto weight = [&](const char* name) -> float& { return material.values[packedOffset(table, findParam(table, name))]; };
+    const auto weight = [&](const char* name) -> float& { return material.analytic()->values[packedOffset(table, findParam(table, name))]; };
     weight("coat_weight") = 0.0f;
     weight("fuzz_weight") = 0.0f;
-    const std::string defines = materialSpecialisation(material);
+    const std::string defines = materialSpecialisation(*material.analytic());
     EXPECT_NE(defines.find("#define GLINT_PARAM_coat_weight 0.0"), std::string::npos) << defines;
     EXPECT_NE(defines.find("#define GLINT_PARAM_fuzz_weight 0.0"), std::string::npos) << defines;
     expectSamePictures(scene, "openpbr, no coat or fuzz");
     weight("coat_weight") = 0.7f;
-    EXPECT_EQ(materialSpecialisation(material).find("GLINT_PARAM_coat_weight"), std::string::npos);
+    EXPECT_EQ(materialSpecialisation(*material.analytic()).find("GLINT_PARAM_coat_weight"), std::string::npos);
 }
 
 TEST(Specialisation, TheFramesChoicesBecomeConstants) {
@@ -136,7 +136,7 @@ TEST(Specialisation, TheFramesChoicesBecomeConstants) {
         << text;
     EXPECT_NE(text.find("#define GLINT_FUSED_DISPLAY 1"), std::string::npos);
     EXPECT_NE(text.find("#define GLINT_ENVIRONMENT_ENABLED 0"), std::string::npos);
-    EXPECT_NE(materialSpecialisation(Material::withDefaults("plastic", BrdfModel::BlinnPhong)).find("#define GLINT_PARAM_form "),
+    EXPECT_NE(materialSpecialisation(*Material::withDefaults("plastic", BrdfModel::BlinnPhong).analytic()).find("#define GLINT_PARAM_form "),
               std::string::npos);
 }
 

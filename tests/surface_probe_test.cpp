@@ -89,7 +89,7 @@ TEST(SurfaceProbe, BlinnPhongPointUnderAPointLight) {
     EXPECT_NEAR(light.mirrorViewDegrees, glm::degrees(std::acos(1.0f / 3)), 1e-3f);
     EXPECT_NEAR(light.normalIrradiance.r, 100.0f / (4 * kPi * 9), 1e-5f);  // Φ/(4π d²)
     EXPECT_NEAR(light.irradiance.r, 100.0f / (4 * kPi * 9) / 3, 1e-5f);
-    const glm::vec3 expectedBrdf = evalBrdf(BrdfModel::BlinnPhong, scene.materials[0].values, towardsLight,
+    const glm::vec3 expectedBrdf = evalBrdf(BrdfModel::BlinnPhong, scene.materials[0].analytic()->values, towardsLight,
                                             glm::vec3(0, 0, 1), ShadingFrame::fromNormalAndTangent({0, 0, 1}, {1, 0, 0}));
     expectProbeVectorNear(light.brdf, expectedBrdf, 1e-4f);
     expectProbeVectorNear(light.radiance, light.brdf * light.irradiance, 1e-6f);

@@ -181,22 +181,22 @@ TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
         "normal": {"type": "image", "file": "maps/colour.png"}})");
     auto material = parseMaterial(text, directory + "/a.material.json");
     ASSERT_TRUE(material.ok()) << material.error().format();
-    ASSERT_EQ(material->textures.size(), 2u);
-    EXPECT_EQ(material->textures[0].parameter, "albedo");
-    EXPECT_EQ(material->textures[0].colorSpace, TextureColorSpace::Srgb);     // colour default
-    EXPECT_EQ(material->textures[1].colorSpace, TextureColorSpace::Linear);   // normal map default
-    EXPECT_EQ(material->textures[0].filter, TextureFilter::Anisotropic);
-    EXPECT_EQ(material->textures[0].wrapU, TextureWrap::Repeat);  // files without wrap keys repeat
-    EXPECT_EQ(material->textures[0].minFilter, TextureMinFilter::Default);
+    ASSERT_EQ(material->analytic()->textures.size(), 2u);
+    EXPECT_EQ(material->analytic()->textures[0].parameter, "albedo");
+    EXPECT_EQ(material->analytic()->textures[0].colorSpace, TextureColorSpace::Srgb);     // colour default
+    EXPECT_EQ(material->analytic()->textures[1].colorSpace, TextureColorSpace::Linear);   // normal map default
+    EXPECT_EQ(material->analytic()->textures[0].filter, TextureFilter::Anisotropic);
+    EXPECT_EQ(material->analytic()->textures[0].wrapU, TextureWrap::Repeat);  // files without wrap keys repeat
+    EXPECT_EQ(material->analytic()->textures[0].minFilter, TextureMinFilter::Default);
     EXPECT_FALSE(materialToJson(*material)["textures"]["albedo"].contains("wrap_u"));  // written only when not repeat
 
     // Wrap modes and a minification filter other than the filter's survive the file.
     auto sampled = parseMaterial(materialJson(R"({"albedo": {"type": "image", "file": "maps/colour.png", "filter": "bilinear",
         "min_filter": "nearest_mipmap_linear", "wrap_u": "clamp_to_edge", "wrap_v": "mirrored_repeat"}})"), directory + "/s.json");
     ASSERT_TRUE(sampled.ok()) << sampled.error().format();
-    EXPECT_EQ(sampled->textures[0].wrapU, TextureWrap::ClampToEdge);
-    EXPECT_EQ(sampled->textures[0].wrapV, TextureWrap::MirroredRepeat);
-    EXPECT_EQ(sampled->textures[0].minFilter, TextureMinFilter::NearestMipmapLinear);
+    EXPECT_EQ(sampled->analytic()->textures[0].wrapU, TextureWrap::ClampToEdge);
+    EXPECT_EQ(sampled->analytic()->textures[0].wrapV, TextureWrap::MirroredRepeat);
+    EXPECT_EQ(sampled->analytic()->textures[0].minFilter, TextureMinFilter::NearestMipmapLinear);
     auto resampled = parseMaterial(materialToJson(*sampled, directory + "/s.json").dump(), directory + "/s.json");
     ASSERT_TRUE(resampled.ok()) << resampled.error().format();
     EXPECT_EQ(materialToJson(*resampled), materialToJson(*sampled));
@@ -209,34 +209,34 @@ TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
     auto occluded = parseMaterial(materialJson(R"({"normal": {"type": "image", "file": "maps/colour.png"},
         "occlusion": {"type": "image", "file": "maps/colour.png", "channel": "g", "min": 0.25}})"), directory + "/o.json");
     ASSERT_TRUE(occluded.ok()) << occluded.error().format();
-    ASSERT_EQ(occluded->textures.size(), 2u);
-    EXPECT_EQ(occluded->textures[0].parameter, kOcclusionMapKey);
-    EXPECT_EQ(occluded->textures[0].range, glm::vec2(0.25f, 1.0f));
+    ASSERT_EQ(occluded->analytic()->textures.size(), 2u);
+    EXPECT_EQ(occluded->analytic()->textures[0].parameter, kOcclusionMapKey);
+    EXPECT_EQ(occluded->analytic()->textures[0].range, glm::vec2(0.25f, 1.0f));
     EXPECT_EQ(materialToJson(*occluded, directory + "/o.json")["textures"]["occlusion"]["channel"], "g");
     auto reoccluded = parseMaterial(materialToJson(*occluded, directory + "/o.json").dump(), directory + "/o.json");
     ASSERT_TRUE(reoccluded.ok()) << reoccluded.error().format();
     EXPECT_EQ(materialToJson(*reoccluded), materialToJson(*occluded));
     TexturePoint bottomLeft;
     bottomLeft.uv = {0.125f, 0.25f};  // the centre of the bottom row's first texel: grey 0
-    EXPECT_FLOAT_EQ(ambientOcclusion(*occluded, bottomLeft), 0.25f);
-    EXPECT_FLOAT_EQ(ambientOcclusion(*material, bottomLeft), 1.0f);  // none: unoccluded
+    EXPECT_FLOAT_EQ(ambientOcclusion(*occluded->analytic(), bottomLeft), 0.25f);
+    EXPECT_FLOAT_EQ(ambientOcclusion(*material->analytic(), bottomLeft), 1.0f);  // none: unoccluded
 
     // The coat normal map: its scale saved, slot before the occlusion map; it sets the frame's coat normal and leaves the surface's normal to the normal map.
     auto coated = parseMaterial(materialJson(R"({"normal": {"type": "image", "file": "maps/colour.png"},
         "occlusion": {"type": "image", "file": "maps/colour.png"},
         "coat_normal": {"type": "image", "file": "maps/colour.png", "scale": 0.5}})", "openpbr"), directory + "/c.json");
     ASSERT_TRUE(coated.ok()) << coated.error().format();
-    ASSERT_EQ(coated->textures.size(), 3u);
-    EXPECT_EQ(coated->textures[0].parameter, kCoatNormalMapKey);
+    ASSERT_EQ(coated->analytic()->textures.size(), 3u);
+    EXPECT_EQ(coated->analytic()->textures[0].parameter, kCoatNormalMapKey);
     EXPECT_EQ(materialToJson(*coated, directory + "/c.json")["textures"]["coat_normal"]["scale"], 0.5);
     auto recoated = parseMaterial(materialToJson(*coated, directory + "/c.json").dump(), directory + "/c.json");
     ASSERT_TRUE(recoated.ok()) << recoated.error().format();
     EXPECT_EQ(materialToJson(*recoated), materialToJson(*coated));
     const ShadingFrame flat;
-    const ShadingFrame mapped = normalMappedFrame(*coated, bottomLeft, flat);
+    const ShadingFrame mapped = normalMappedFrame(*coated->analytic(), bottomLeft, flat);
     EXPECT_NE(mapped.coatNormal, glm::vec3(0.0f));
     EXPECT_NE(mapped.coatNormal, mapped.normal);  // coat scale 0.5, base scale 1
-    EXPECT_EQ(normalMappedFrame(*occluded, bottomLeft, flat).coatNormal, glm::vec3(0.0f));  // none: the coat shares the normal
+    EXPECT_EQ(normalMappedFrame(*occluded->analytic(), bottomLeft, flat).coatNormal, glm::vec3(0.0f));  // none: the coat shares the normal
 
     const std::string saved = directory + "/maps/b.material.json";  // another folder
     ASSERT_TRUE(saveMaterial(*material, saved).ok());
@@ -252,7 +252,7 @@ TEST(TextureJson, RoundTripsWithPathsRelativeToTheSavedFile) {
     auto again = parseMaterial(materialToJson(*marble).dump(), "m.json");
     ASSERT_TRUE(again.ok()) << again.error().format();
     EXPECT_EQ(materialToJson(*again), materialToJson(*marble));
-    EXPECT_EQ(again->textures[0].parameter, "diffuse_albedo");  // table order
+    EXPECT_EQ(again->analytic()->textures[0].parameter, "diffuse_albedo");  // table order
 }
 
 TEST(Procedural, PerlinNoiseVanishesOnTheLatticeAndStaysBounded) {
@@ -301,27 +301,27 @@ TEST(TextureEval, TexturedValuesReplaceTheConstants) {
     ASSERT_TRUE(material.ok()) << material.error().format();
     const auto table = modelInfo(BrdfModel::CookTorrance).params;
     const int roughness = packedOffset(table, findParam(table, "roughness"));
-    EXPECT_FLOAT_EQ(texturedValues(*material, {{0.25f, 0.25f}, {}})[roughness], 0.2f);
-    EXPECT_FLOAT_EQ(texturedValues(*material, {{0.75f, 0.25f}, {}})[roughness], 0.6f);
+    EXPECT_FLOAT_EQ(texturedValues(*material->analytic(), {{0.25f, 0.25f}, {}})[roughness], 0.2f);
+    EXPECT_FLOAT_EQ(texturedValues(*material->analytic(), {{0.75f, 0.25f}, {}})[roughness], 0.6f);
 }
 
 // The editor's path: a file that fails leaves the material exactly as it was.
 TEST(TextureEdit, AFailingImageLeavesTheMaterialAsItWas) {
     const std::string directory = test::outputDirectory("textures");
     Material material = Material::withDefaults("m", BrdfModel::CookTorrance);
-    putTexture(material, defaultTexture("roughness", &modelInfo(material.model).params[3], TextureKind::Marble));
+    putTexture(*material.analytic(), defaultTexture("roughness", &modelInfo(material.analytic()->model).params[3], TextureKind::Marble));
     const nlohmann::json before = materialToJson(material);
-    Status missing = setTextureImage(material, "diffuse_albedo", directory + "/absent.png");
+    Status missing = setTextureImage(*material.analytic(), "diffuse_albedo", directory + "/absent.png");
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().format().find("absent.png"), std::string::npos);
     std::ofstream(directory + "/broken.png", std::ios::binary) << "\x89PNG\r\n\x1a\n";
-    EXPECT_FALSE(setTextureImage(material, "diffuse_albedo", directory + "/broken.png").ok());
-    EXPECT_FALSE(setTextureImage(material, "distribution", writeSmallPng(directory, "ok.png")).ok());
+    EXPECT_FALSE(setTextureImage(*material.analytic(), "diffuse_albedo", directory + "/broken.png").ok());
+    EXPECT_FALSE(setTextureImage(*material.analytic(), "distribution", writeSmallPng(directory, "ok.png")).ok());
     EXPECT_EQ(materialToJson(material), before);
-    ASSERT_TRUE(setTextureImage(material, "diffuse_albedo", directory + "/ok.png").ok());
-    ASSERT_EQ(material.textures.size(), 2u);
-    EXPECT_EQ(material.textures[0].parameter, "diffuse_albedo");  // table order kept
-    EXPECT_EQ(material.textures[0].colorSpace, TextureColorSpace::Srgb);
+    ASSERT_TRUE(setTextureImage(*material.analytic(), "diffuse_albedo", directory + "/ok.png").ok());
+    ASSERT_EQ(material.analytic()->textures.size(), 2u);
+    EXPECT_EQ(material.analytic()->textures[0].parameter, "diffuse_albedo");  // table order kept
+    EXPECT_EQ(material.analytic()->textures[0].colorSpace, TextureColorSpace::Srgb);
 }
 
 }  // namespace

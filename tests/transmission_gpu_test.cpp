@@ -15,8 +15,8 @@ const glm::vec3 kWallAlbedo{0.6f, 0.3f, 0.1f};
 const glm::vec3 kTint{0.5f, 1.0f, 0.5f};  // the openpbr ball's transmission_color (a tint: depth 0)
 
 void setParam(Material& material, const char* name, std::initializer_list<float> values) {
-    const auto table = modelInfo(material.model).params;
-    std::copy(values.begin(), values.end(), material.values.begin() + packedOffset(table, findParam(table, name)));
+    const auto table = modelInfo(material.analytic()->model).params;
+    std::copy(values.begin(), values.end(), material.analytic()->values.begin() + packedOffset(table, findParam(table, name)));
 }
 
 // Black background, no environment: what the balls show of the wall is all they transmit. The
@@ -30,7 +30,7 @@ Scene glassBeforeAWall() {
     sun.irradiance = 3.0f;
     scene.lights = {sun};
     Material wall = Material::withDefaults("wall", BrdfModel::Lambert);
-    wall.values = {kWallAlbedo.r, kWallAlbedo.g, kWallAlbedo.b};
+    wall.analytic()->values = {kWallAlbedo.r, kWallAlbedo.g, kWallAlbedo.b};
     Material glass = Material::withDefaults("glass", BrdfModel::Glass);
     Material openpbr = Material::withDefaults("openpbr glass", BrdfModel::OpenPbr);
     setParam(openpbr, "transmission_weight", {1.0f});

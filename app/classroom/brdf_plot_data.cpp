@@ -34,10 +34,13 @@ std::vector<glm::vec3> plotEval(const PlotMaterial& material, std::span<const gl
         GLINT_CHECK(sampled.size() == incident.size());
         return sampled;
     }
+    const AnalyticMaterial* analytic = material.analytic();
+    const MeasuredMaterial* measured = material.measured();
+    GLINT_CHECK(analytic || measured);  // a .brdf material comes with its sampler
     std::vector<glm::vec3> reflectance(incident.size());
     for (size_t k = 0; k < incident.size(); ++k)
-        reflectance[k] = material.measured ? evalMeasuredBrdf(*material.measured, incident[k], outgoing[k], kPlotFrame)
-                                           : evalBrdf(material.model, material.values, incident[k], outgoing[k], kPlotFrame);
+        reflectance[k] = measured ? evalMeasuredBrdf(*measured->brdf, incident[k], outgoing[k], kPlotFrame)
+                                  : evalBrdf(analytic->model, analytic->values, incident[k], outgoing[k], kPlotFrame);
     return reflectance;
 }
 
@@ -68,13 +71,18 @@ glm::vec3 albedoFromSamples(std::span<const glm::vec3> reflectance, int thetaSte
 // ---- directions ----------------------------------------------------------------------------
 
 std::optional<PlotMaterial> plotMaterialFrom(const Material& material) {
-    if (material.custom) return std::nullopt;
-    return PlotMaterial{material.name, material.model, material.values, material.measured, {}, nullptr};
+    if (material.custom()) return std::nullopt;
+    return PlotMaterial{material, {}};
 }
 
 bool samePlotMaterial(const PlotMaterial& a, const PlotMaterial& b) {
-    return a.name == b.name && a.model == b.model && a.values == b.values && a.measured == b.measured &&
-           a.custom == b.custom && static_cast<bool>(a.sampler) == static_cast<bool>(b.sampler);
+    const auto source = [](const Material& material) {  // the model's entry, or the .brdf or MERL file itself
+        return std::visit(Overloaded{[](const AnalyticMaterial& analytic) -> const void* { return &modelInfo(analytic.model); },
+                                     [](const auto& file) -> const void* { return file.brdf.get(); }},
+                          material.kind);
+    };
+    return a.name == b.name && source(a) == source(b) && std::ranges::equal(paramValues(a), paramValues(b)) &&
+           static_cast<bool>(a.sampler) == static_cast<bool>(b.sampler);
 }
 
 glm::vec3 plotIncidentDirection(float incidenceRadians) {
@@ -157,14 +165,15 @@ DeltaLobes deltaLobes(const PlotMaterial& material, float incidenceDegrees) {
     const float cosIncident = std::cos(incidence);
     const glm::vec3 wi = plotIncidentDirection(incidence);
     const glm::vec3 mirrored{-wi.x, -wi.y, wi.z};
-    if (material.measured || material.sampler) return lobes;  // f_r is all there is
-    if (material.model == BrdfModel::Mirror) {
-        const MirrorParams mirror = unpack<Mirror>(material.values.data());
+    const AnalyticMaterial* analytic = material.analytic();
+    if (!analytic || material.sampler) return lobes;  // a table or a shader: f_r is all there is
+    if (analytic->model == BrdfModel::Mirror) {
+        const MirrorParams mirror = unpack<Mirror>(analytic->values.data());
         lobes.hasReflection = true;
         lobes.reflectedDirection = mirrored;
         lobes.reflectedWeight = fresnelComplexIndex(cosIncident, mirror.ior, mirror.extinction);
-    } else if (material.model == BrdfModel::Glass) {
-        const GlassParams glass = unpack<Glass>(material.values.data());
+    } else if (analytic->model == BrdfModel::Glass) {
+        const GlassParams glass = unpack<Glass>(analytic->values.data());
         // Snell: sin θ_t = sin θ_i / η; from air into glass (η ≥ 1) there is no total internal reflection.
         const float sinTransmitted = std::sin(incidence) / glass.ior;
         const float cosTransmitted = std::sqrt(std::max(0.0f, 1.0f - sinTransmitted * sinTransmitted));

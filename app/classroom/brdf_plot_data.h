@@ -26,19 +26,11 @@ namespace glint {
 using PlotBrdfSampler = std::function<std::vector<glm::vec3>(std::span<const glm::vec3> incident,
                                                              std::span<const glm::vec3> outgoing)>;
 
-// A material as the plots see it: a built-in model and its packed values (param_table.h), a MERL
-// measured table, or a sampler. Local frame throughout: z is the normal, the plane of incidence is
-// xz, the light comes from −x.
-struct PlotMaterial {
-    std::string name;
-    BrdfModel model = BrdfModel::Lambert;
-    std::vector<float> values;
-    // When set, f_r is the table's (trilinear, as the renderers); model and values are the
-    // Lambert stand-in and unused.
-    std::shared_ptr<const MeasuredBrdf> measured;
-    // When set, f_r comes from here (model unused); `values` are then what was sampled.
+// A material as the plots see it: f_r is its model's, its MERL table's (trilinear, as the
+// renderers), or, when set, the sampler's (a .brdf material: its values are what was sampled).
+// Local frame throughout: z is the normal, the plane of incidence is xz, the light comes from −x.
+struct PlotMaterial : Material {
     PlotBrdfSampler sampler;
-    std::shared_ptr<const CustomBrdf> custom;  // the .brdf the sampler runs, so caches can tell materials apart
 };
 
 // A scene material for the plots; nullopt for a BRDF Explorer .brdf material (its GLSL cannot

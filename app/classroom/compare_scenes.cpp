@@ -24,15 +24,8 @@ Scene withSubjectMaterial(const Scene& scene, size_t subject, const Material& ma
 Material withModel(const Material& material, BrdfModel model) {
     const ModelInfo& target = modelInfo(model);
     Material result = Material::withDefaults(material.name + " as " + target.label, model);
-    if (material.custom) return result;
-    const auto source = modelInfo(material.model).params;
-    for (size_t i = 0; i < target.params.size(); ++i) {
-        const ParamSpec& spec = target.params[i];
-        const int from = findParam(source, spec.name);
-        if (spec.kind == ParamKind::Enum || from < 0 || source[from].kind != spec.kind) continue;
-        const int sourceOffset = packedOffset(source, from), targetOffset = packedOffset(target.params, static_cast<int>(i));
-        for (int c = 0; c < componentCount(spec.kind); ++c) result.values[targetOffset + c] = material.values.at(sourceOffset + c);
-    }
+    // Nothing carries over from a .brdf file's parameters or a measured table.
+    if (material.analytic()) result.analytic()->values = carriedValues(paramTable(material), paramValues(material), target.params);
     return result;
 }
 

@@ -18,8 +18,9 @@ Result<size_t> compareSubject(const Scene& scene);
 // A copy of `scene` in which the subject wears `material` (appended to the scene's materials).
 Scene withSubjectMaterial(const Scene& scene, size_t subject, const Material& material);
 
-// `material` under another model: parameters that both tables name alike (same kind, not an enum)
-// keep their values, the rest take the new model's defaults. A .brdf material starts from defaults.
+// `material` under another model: parameters that both tables name alike keep their values
+// (carriedValues), the rest take the new model's defaults. A .brdf or measured material starts
+// from defaults.
 Material withModel(const Material& material, BrdfModel model);
 
 // The segments × rings of a sphere or torus subject (other shapes have no tessellation).

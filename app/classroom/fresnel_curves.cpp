@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "brdf/fresnel.h"
+#include "interchange/material_values.h"
 #include "math/constants.h"
 
 namespace glint {
@@ -13,24 +14,21 @@ namespace {
 
 constexpr float kFresnelDegrees = kPi / 180.0f;
 
-glm::vec3 fresnelParamValue(const PlotMaterial& material, std::string_view name, glm::vec3 fallback) {
-    const auto table = modelInfo(material.model).params;
-    const int index = findParam(table, name);
-    if (index < 0) return fallback;
-    const int offset = packedOffset(table, index);
-    if (offset < 0 || offset >= static_cast<int>(material.values.size())) return fallback;
-    if (componentCount(table[index].kind) == 1) return glm::vec3(material.values[offset]);
-    if (offset + 2 >= static_cast<int>(material.values.size())) return fallback;
-    return {material.values[offset], material.values[offset + 1], material.values[offset + 2]};
-}
-
 }  // namespace
 
 std::optional<ComplexIndex> materialComplexIndex(const PlotMaterial& material) {
-    if (material.measured || material.sampler) return std::nullopt;  // a table or a shader: no n to read
-    if (findParam(modelInfo(material.model).params, "ior") < 0) return std::nullopt;
-    return ComplexIndex{fresnelParamValue(material, "ior", glm::vec3(1.5f)),
-                        fresnelParamValue(material, "extinction", glm::vec3(0.0f))};
+    if (!material.analytic() || material.sampler) return std::nullopt;  // a table or a shader: no n to read
+    const auto table = paramTable(material);
+    if (findParam(table, "ior") < 0) return std::nullopt;
+    return ComplexIndex{paramValue(material, "ior"),
+                        findParam(table, "extinction") >= 0 ? paramValue(material, "extinction") : glm::vec3(0.0f)};
+}
+
+std::string kindWithoutIndex(const Material& material) {
+    return std::visit(Overloaded{[](const AnalyticMaterial&) { return std::string(); },
+                                 [](const CustomMaterial&) { return std::string("a .brdf shader"); },
+                                 [](const MeasuredMaterial&) { return std::string("a measured table (MERL)"); }},
+                      material.kind);
 }
 
 FresnelCurves fresnelCurves(const ComplexIndex& index, bool fromInside, int angleCount) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,6 +24,9 @@ struct ComplexIndex {
 // optionally "extinction" (κ); nullopt for models without one (Lambert, Phong, …), for a measured
 // table and for a sampled .brdf shader (neither declares an index).
 std::optional<ComplexIndex> materialComplexIndex(const PlotMaterial& material);
+// What a material that declares no index is, for the message that says so ("a measured table
+// (MERL)", "a .brdf shader"); empty for a model (which may still have none).
+std::string kindWithoutIndex(const Material& material);
 
 struct FresnelChannelCurves {
     std::vector<float> s, p, unpolarised, schlick;  // reflectance at each angle

@@ -10,11 +10,11 @@ namespace glint {
 
 Result<PlotMaterial> plotMaterialFor(const Material& material, BrdfSampler& sampler) {
     if (auto plotted = plotMaterialFrom(material)) return *plotted;
-    if (Status prepared = sampler.prepare(*material.custom); !prepared) return prepared.error();
-    PlotMaterial plotted{material.name, material.model, material.values, nullptr, {}, material.custom};
-    plotted.sampler = [&sampler, custom = material.custom, values = material.values](std::span<const glm::vec3> incident,
-                                                                                     std::span<const glm::vec3> outgoing) {
-        auto sampled = sampler.sample(*custom, values, incident, outgoing);
+    const CustomMaterial& custom = *material.custom();
+    if (Status prepared = sampler.prepare(*custom.brdf); !prepared) return prepared.error();
+    PlotMaterial plotted{material, {}};
+    plotted.sampler = [&sampler, custom](std::span<const glm::vec3> incident, std::span<const glm::vec3> outgoing) {
+        auto sampled = sampler.sample(*custom.brdf, custom.values, incident, outgoing);
         if (sampled) return std::move(*sampled);
         // Only a GL failure gets here (the program compiled in prepare): said, and plotted as 0.
         std::fprintf(stderr, "glint: %s\n", sampled.error().format().c_str());
@@ -24,12 +24,15 @@ Result<PlotMaterial> plotMaterialFor(const Material& material, BrdfSampler& samp
 }
 
 std::string plotSourceNote(const PlotMaterial& material) {
-    if (material.custom)
-        return material.name + ": f_r sampled on the GPU from " + material.custom->displayName + " (its own GLSL)";
-    if (material.measured)
-        return material.name + ": f_r from the measured table " + material.measured->displayName +
-               " (MERL, trilinear); no Fresnel index";
-    return "";
+    return std::visit(Overloaded{[](const AnalyticMaterial&) { return std::string(); },
+                                 [&](const CustomMaterial& custom) {
+                                     return material.name + ": f_r sampled on the GPU from " + custom.brdf->displayName + " (its own GLSL)";
+                                 },
+                                 [&](const MeasuredMaterial& measured) {
+                                     return material.name + ": f_r from the measured table " + measured.brdf->displayName +
+                                            " (MERL, trilinear); no Fresnel index";
+                                 }},
+                      material.kind);
 }
 
 }  // namespace glint

@@ -138,8 +138,9 @@ Result<std::string> makeFloor(const Renderer& renderer, const Scene& scene, int 
         draw = [pass = std::shared_ptr<TextbookFloorPass>(std::move(*pass)), &scene, width, height] { pass->draw(scene, width, height); };
         return std::string("textbook");
     }
-    if (scene.objects.empty()) return std::string("none");
-    auto pass = BareShadingPass::create(renderer.sources(), scene.materials.at(scene.objects[0].materialIndex));
+    const AnalyticMaterial* analytic = scene.objects.empty() ? nullptr : scene.materials.at(scene.objects[0].materialIndex).analytic();
+    if (!analytic) return std::string("none");
+    auto pass = BareShadingPass::create(renderer.sources(), *analytic);
     if (!pass) return pass.error();
     draw = [pass = std::shared_ptr<BareShadingPass>(std::move(*pass)), &scene, width, height] { pass->draw(scene, width, height); };
     return std::string("generated");
@@ -269,7 +270,7 @@ Result<ProgramFigures> measureProgram(const BenchOptions& options, const fs::pat
     fs::create_directories(materials);
     for (int i = 0; i < options.thumbnails(); ++i) {
         Material material = Material::withDefaults("bench", i % 2 ? BrdfModel::BlinnPhong : BrdfModel::Lambert);
-        material.values[0] = 0.05f + 0.9f * static_cast<float>(i % 7) / 7.0f;
+        material.analytic()->values[0] = 0.05f + 0.9f * static_cast<float>(i % 7) / 7.0f;
         const std::string path = (materials / ("material_" + std::to_string(i) + ".json")).string();
         if (Status saved = saveMaterial(material, path); !saved) return saved.error();
     }

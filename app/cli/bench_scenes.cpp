@@ -5,6 +5,7 @@
 
 #include "brdf/param_table.h"
 #include "environment/environment_source.h"
+#include "interchange/material_values.h"
 
 namespace glint {
 namespace {
@@ -38,7 +39,7 @@ Material withOption(BrdfModel model, const char* param, const char* option) {
     const int index = findParam(table, param);
     for (size_t i = 0; index >= 0 && i < table[index].options.size(); ++i)
         if (std::string_view(table[index].options[i].id) == option)
-            material.values[packedOffset(table, index)] = static_cast<float>(i);
+            setParam(material, param, static_cast<float>(i));
     return material;
 }
 

@@ -12,6 +12,7 @@
 #include "interchange/bparam_file.h"
 #include "interchange/custom_brdf.h"
 #include "interchange/import_formats.h"
+#include "interchange/measured_brdf.h"
 #include "interchange/obj_material.h"
 #include "light/light_type_name.h"
 #include "scene/scene_json.h"
@@ -24,7 +25,11 @@ void printMaterials(const std::vector<const Material*>& materials) {
     std::printf("materials (%zu):\n", materials.size());
     for (size_t i = 0; i < materials.size(); ++i)
         std::printf("  %zu '%s' (%s)\n", i, materials[i]->name.c_str(),
-                    materials[i]->custom ? materials[i]->custom->displayName.c_str() : modelInfo(materials[i]->model).id);
+                    std::visit(Overloaded{[](const AnalyticMaterial& analytic) { return std::string(modelInfo(analytic.model).id); },
+                                          [](const CustomMaterial& custom) { return custom.brdf->displayName; },
+                                          [](const MeasuredMaterial& measured) { return measured.brdf->displayName; }},
+                               materials[i]->kind)
+                        .c_str());
 }
 
 void printLights(const std::vector<Light>& lights) {

@@ -90,9 +90,8 @@ Status drawPlotOverlay(const Scene& scene, PlotOverlayKind kind, const PlotOverl
                 fresnelName = material.name;
                 break;
             }
-            if (whyNone.empty() && (material.measured || material.custom))
-                whyNone = " (\"" + material.name + "\" is " + (material.measured ? "a measured table" : "a .brdf shader") +
-                           ": it has no index to plot)";
+            if (const std::string kind = kindWithoutIndex(material); whyNone.empty() && !kind.empty())
+                whyNone = " (\"" + material.name + "\" is " + kind + ": it has no index to plot)";
         }
         if (!fresnel) return makeError("no material in the scene has an index of refraction (n, κ) for --overlay fresnel" + whyNone);
     }

@@ -38,24 +38,6 @@ void startProbe(EditorState& state, std::shared_ptr<const CustomBrdf> brdf, std:
                           " s)…";
 }
 
-// Values for a reloaded BRDF: each parameter keeps its value when the new file has it with the
-// same kind and the value still lies in its range; otherwise it takes the new default.
-std::vector<float> carryValues(const CustomBrdf& before, const std::vector<float>& values, const CustomBrdf& after) {
-    std::vector<float> carried = defaultValues(after.table);
-    for (size_t i = 0; i < after.table.size(); ++i) {
-        const ParamSpec& spec = after.table[i];
-        const int old = findParam(before.table, spec.name);
-        if (old < 0 || before.table[old].kind != spec.kind) continue;
-        const float* value = values.data() + packedOffset(before.table, old);
-        bool fits = true;
-        for (int c = 0; c < componentCount(spec.kind); ++c)
-            fits = fits && value[c] >= spec.validMin && value[c] <= spec.validMax;
-        if (!fits) continue;
-        std::copy(value, value + componentCount(spec.kind), carried.begin() + packedOffset(after.table, static_cast<int>(i)));
-    }
-    return carried;
-}
-
 void finishProbe(EditorState& state, PendingBrdfProbe& pending, const Status& verdict) {
     const CustomBrdf& brdf = *pending.brdf;
     state.customBrdfs.seenModification[brdf.file.path] = modificationTime(brdf.file.path);
@@ -73,17 +55,17 @@ void finishProbe(EditorState& state, PendingBrdfProbe& pending, const Status& ve
     const Scene& scene = state.session.scene();
     if (!pending.reload) {
         if (pending.materialIndex >= static_cast<int>(scene.materials.size())) return;
-        Material material = customBrdfMaterial(pending.brdf);
-        material.name = scene.materials[pending.materialIndex].name;
-        material.values = pending.values;  // the defaults, or a .bparam file's values
+        // The defaults, or a .bparam file's values.
+        Material material{scene.materials[pending.materialIndex].name, CustomMaterial{pending.brdf, pending.values}};
         state.session.change("Open " + brdf.displayName).materials[pending.materialIndex] = std::move(material);
         state.statusMessage = "Custom BRDF from " + brdf.file.path;
     } else {
         Scene& changed = state.session.change("Reload " + brdf.displayName);
         for (Material& material : changed.materials) {
-            if (!material.custom || material.custom->file.path != brdf.file.path) continue;
-            material.values = carryValues(*material.custom, material.values, brdf);
-            material.custom = pending.brdf;
+            CustomMaterial* custom = material.custom();
+            if (!custom || custom->brdf->file.path != brdf.file.path) continue;
+            custom->values = carriedValues(custom->brdf->table, custom->values, brdf.table);  // a reloaded file keeps what it can
+            custom->brdf = pending.brdf;
         }
         state.materialPanelMessage.clear();
         state.statusMessage = "Reloaded " + brdf.file.path;
@@ -137,13 +119,12 @@ void openBparamFile(EditorState& state, const std::string& path) {
     }
     const Scene& scene = state.session.scene();
     const int materialIndex = scene.objects.empty() ? -1 : scene.objects[state.selectedObject].materialIndex;
-    const Material* material = materialIndex < 0 ? nullptr : &scene.materials[materialIndex];
+    const CustomMaterial* custom = materialIndex < 0 ? nullptr : scene.materials[materialIndex].custom();
     std::vector<Diagnostic> warnings = file->warnings;
     // A file naming another .brdf than the selected material's (BRDF Explorer's first line
     // `bparam NAME.brdf`) opens that .brdf with its values, as BRDF Explorer does.
-    const bool sameBrdf = material && material->custom &&
-                          (file->brdfPath.empty() || std::filesystem::path(file->brdfPath).filename() ==
-                                                         std::filesystem::path(material->custom->file.path).filename());
+    const bool sameBrdf = custom && (file->brdfPath.empty() || std::filesystem::path(file->brdfPath).filename() ==
+                                                                   std::filesystem::path(custom->brdf->file.path).filename());
     if (!sameBrdf) {
         auto brdfPath = findBparamBrdf(*file, path);
         if (!brdfPath) {
@@ -156,12 +137,12 @@ void openBparamFile(EditorState& state, const std::string& path) {
             state.errorMessage = "Could not open the BRDF the file names; your work is unchanged.\n\n" + brdf.error().format();
             return;
         }
-        auto custom = makeCustomBrdf(std::move(*brdf));
-        std::vector<float> values = applyBparam(*file, *custom, defaultValues(custom->table), warnings);
+        auto named = makeCustomBrdf(std::move(*brdf));
+        std::vector<float> values = applyBparam(*file, *named, defaultValues(named->table), warnings);
         return openBrdfFile(state, *brdfPath, std::move(values), warnings);
     }
-    std::vector<float> values = applyBparam(*file, *material->custom, material->values, warnings);
-    state.session.change("Open " + std::filesystem::path(path).filename().string()).materials[materialIndex].values =
+    std::vector<float> values = applyBparam(*file, *custom->brdf, custom->values, warnings);
+    state.session.change("Open " + std::filesystem::path(path).filename().string()).materials[materialIndex].custom()->values =
         std::move(values);
     state.session.settle(false);
     state.statusMessage = "Parameter values from " + path;
@@ -171,12 +152,12 @@ void openBparamFile(EditorState& state, const std::string& path) {
 bool saveBparamTo(EditorState& state, const std::string& path) {
     const Scene& scene = state.session.scene();
     if (scene.objects.empty()) return false;
-    const Material& material = scene.materials[scene.objects[state.selectedObject].materialIndex];
-    if (!material.custom) {
+    const CustomMaterial* custom = scene.materials[scene.objects[state.selectedObject].materialIndex].custom();
+    if (!custom) {
         state.errorMessage = "The selected material is not a .brdf material; .bparam files hold .brdf parameter values.";
         return false;
     }
-    if (Status saved = saveBparam(path, *material.custom, material.values); !saved) {
+    if (Status saved = saveBparam(path, *custom->brdf, custom->values); !saved) {
         state.errorMessage = "Could not save the parameter values.\n\n" + saved.error().format();
         return false;
     }
@@ -196,24 +177,25 @@ double pollCustomBrdfs(EditorState& state, double nowSeconds) {
         finishProbe(state, finished, finished.result.get());
     }
     bool anyCustom = false;
-    for (const Material& material : state.session.scene().materials) anyCustom |= material.custom != nullptr;
+    for (const Material& material : state.session.scene().materials) anyCustom |= material.custom() != nullptr;
     if (!anyCustom) return 1e9;
     if (nowSeconds - brdfs.lastPollSeconds < kPollInterval) return brdfs.lastPollSeconds + kPollInterval - nowSeconds;
     brdfs.lastPollSeconds = nowSeconds;
     for (const Material& material : state.session.scene().materials) {
-        if (!material.custom) continue;
-        const std::string& path = material.custom->file.path;
+        const CustomMaterial* custom = material.custom();
+        if (!custom) continue;
+        const std::string& path = custom->brdf->file.path;
         const long long modified = modificationTime(path);
         auto [seen, added] = brdfs.seenModification.try_emplace(path, modified);
         if (added || modified == seen->second || modified == 0) continue;
         seen->second = modified;
         auto reloaded = loadCustomBrdf(path);
         if (!reloaded) {
-            state.materialPanelMessage = material.custom->displayName + " changed but cannot be used:\n" +
+            state.materialPanelMessage = custom->brdf->displayName + " changed but cannot be used:\n" +
                                          reloaded.error().format() + "\nThe last good version stays on screen.";
             continue;
         }
-        startProbe(state, *reloaded, carryValues(*material.custom, material.values, **reloaded), true, 0);
+        startProbe(state, *reloaded, carriedValues(custom->brdf->table, custom->values, (*reloaded)->table), true, 0);
         break;  // one probe at a time
     }
     return kPollInterval;

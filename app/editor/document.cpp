@@ -77,8 +77,8 @@ void openMaterialFile(EditorState& state, const std::string& path) {
         return;
     }
     auto loaded = loadMaterial(path);
-    if (loaded && loaded->custom)  // a .brdf material: proven to finish before it is drawn
-        if (Status probed = probeCustomBrdf(*loaded->custom, loaded->values, brdfProbeTimeoutSeconds()); !probed)
+    if (const CustomMaterial* custom = loaded ? loaded->custom() : nullptr)  // a .brdf material: proven to finish before it is drawn
+        if (Status probed = probeCustomBrdf(*custom->brdf, custom->values, brdfProbeTimeoutSeconds()); !probed)
             loaded = probed.error();
     if (!loaded) {
         state.errorMessage = "Could not open the material; your work is unchanged.\n\n" + loaded.error().format();

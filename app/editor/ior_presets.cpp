@@ -10,6 +10,7 @@
 
 #include "brdf/fresnel.h"
 #include "brdf/presets.h"
+#include "interchange/material_values.h"
 
 namespace glint {
 namespace {
@@ -26,18 +27,12 @@ const glm::vec3* presetValue(const Preset& preset, const char* param) {
     return nullptr;
 }
 
-void writeParam(Material& material, int index, const glm::vec3& value) {
-    const auto table = modelInfo(material.model).params;
-    for (int c = 0; c < componentCount(table[index].kind); ++c)
-        material.values[packedOffset(table, index) + c] = value[c];
-}
-
 }  // namespace
 
 bool applyIorPreset(Material& material, const char* presetName) {
     const Preset* preset = findPreset(presetName);
     if (!preset) return false;
-    const auto table = modelInfo(material.model).params;
+    const auto table = paramTable(material);
     const int iorIndex = findParam(table, "ior");
     const int extinctionIndex = findParam(table, "extinction");
     const glm::vec3* ior = presetValue(*preset, "ior");
@@ -45,13 +40,13 @@ bool applyIorPreset(Material& material, const char* presetName) {
     if (iorIndex < 0 || !ior) return false;
     const bool isMetal = extinction && (extinction->x > 0.0f || extinction->y > 0.0f || extinction->z > 0.0f);
     if (isMetal && extinctionIndex < 0) return false;  // κ cannot be represented
-    writeParam(material, iorIndex, *ior);
-    if (extinctionIndex >= 0) writeParam(material, extinctionIndex, extinction ? *extinction : glm::vec3(0.0f));
+    setParam(material, "ior", *ior);
+    if (extinctionIndex >= 0) setParam(material, "extinction", extinction ? *extinction : glm::vec3(0.0f));
     return true;
 }
 
 bool drawIorPresetMenu(Material& material) {
-    const auto table = modelInfo(material.model).params;
+    const auto table = paramTable(material);
     const bool hasExtinction = findParam(table, "extinction") >= 0;
     bool applied = false;
     ImGui::SameLine();

@@ -217,18 +217,19 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
 
 bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest) {
     bool changed = false;
-    const ModelInfo& current = modelInfo(material.model);
     // A .brdf file (its own table, GPU only) or a MERL table (no parameters) replaces the model.
-    const bool custom = material.custom != nullptr || material.measured != nullptr;
-    const std::string measuredLabel = material.measured ? "measured (MERL): " + material.measured->displayName : "";
-    const char* modelLabel = material.custom ? material.custom->displayName.c_str()
-                             : material.measured ? measuredLabel.c_str() : current.label;
-    float widestModel = ImGui::CalcTextSize(modelLabel).x;
+    const std::string modelLabel =
+        std::visit(Overloaded{[](const AnalyticMaterial& analytic) { return std::string(modelInfo(analytic.model).label); },
+                              [](const CustomMaterial& custom) { return custom.brdf->displayName; },
+                              [](const MeasuredMaterial& measured) { return "measured (MERL): " + measured.brdf->displayName; }},
+                   material.kind);
+    float widestModel = ImGui::CalcTextSize(modelLabel.c_str()).x;
     for (const ModelInfo& info : allModels()) widestModel = std::max(widestModel, ImGui::CalcTextSize(info.label).x);
     const std::string modelComboLabel = placeLabel("Model", comboWidth(widestModel));
-    if (ImGui::BeginCombo(modelComboLabel.c_str(), modelLabel)) {
+    if (ImGui::BeginCombo(modelComboLabel.c_str(), modelLabel.c_str())) {
         for (const ModelInfo& info : allModels()) {
-            if (ImGui::Selectable(info.label, !custom && info.model == material.model) && (custom || info.model != material.model)) {
+            const bool current = material.analytic() && material.analytic()->model == info.model;
+            if (ImGui::Selectable(info.label, current) && !current) {
                 // What the two models share (colour, roughness, index) carries over; the panel says what did not.
                 const ModelSwitch switched = switchModel(material, info.model);
                 material = switched.material;
@@ -238,38 +239,39 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
         }
         ImGui::EndCombo();
     }
-    if (material.measured) {
+    if (const MeasuredMaterial* measured = material.measured()) {
         ImGui::PushTextWrapPos();
         ImGui::TextDisabled("Measured BRDF %s (Matusik et al., A Data-Driven Reflectance Model, SIGGRAPH 2003): "
-                            "no parameters; the table is interpolated trilinearly.", material.measured->path.c_str());
+                            "no parameters; the table is interpolated trilinearly.", measured->brdf->path.c_str());
         ImGui::TextDisabled("Ambient and environment light: the measured directional albedo times the diffuse "
                             "irradiance (no glossy reflection of the environment).");
         ImGui::PopTextWrapPos();
         return changed;
     }
-    const auto table = material.custom ? std::span<const ParamSpec>(material.custom->table) : modelInfo(material.model).params;
+    AnalyticMaterial* analytic = material.analytic();  // else a .brdf file's: no IOR presets, no textures
+    const auto table = paramTable(material);
+    const std::span<float> values = paramValues(material);
     for (size_t i = 0; i < table.size(); ++i) {
-        // A .brdf file's parameters have no IOR presets and no textures.
-        const bool indexOfRefraction = !material.custom && std::string_view(table[i].name) == "ior";
-        const bool texturable = !material.custom && (table[i].kind == ParamKind::Scalar || table[i].kind == ParamKind::Color);
+        const bool indexOfRefraction = analytic && std::string_view(table[i].name) == "ior";
+        const bool texturable = analytic && (table[i].kind == ParamKind::Scalar || table[i].kind == ParamKind::Color);
         std::vector<const char*> buttonsAfter = {"R"};
         if (indexOfRefraction) buttonsAfter.push_back("Presets");
         if (texturable) buttonsAfter.push_back("Tex");
-        changed |= drawParam(table[i], material.values.data() + packedOffset(table, static_cast<int>(i)), refusal, buttonsAfter);
+        changed |= drawParam(table[i], values.data() + packedOffset(table, static_cast<int>(i)), refusal, buttonsAfter);
         // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
         if (indexOfRefraction) changed |= drawIorPresetMenu(material);
         if (!texturable) continue;
         // The texture button, where its label ("Checker", "Image", …) no longer fits beside a long
         // parameter label, opens the next line, above the texture's settings.
         ImGui::SameLine();
-        const bool wraps = ImGui::GetContentRegionAvail().x < buttonWidth(textureButtonLabel(material, table[i].name));
+        const bool wraps = ImGui::GetContentRegionAvail().x < buttonWidth(textureButtonLabel(*analytic, table[i].name));
         if (wraps) ImGui::NewLine(), ImGui::Indent();
-        changed |= drawTextureControls(material, table[i].name, &table[i], textureFileRequest, refusal);
+        changed |= drawTextureControls(*analytic, table[i].name, &table[i], textureFileRequest, refusal);
         if (wraps) ImGui::Unindent();
     }
-    if (material.custom) {
+    if (const CustomMaterial* custom = material.custom()) {
         ImGui::PushTextWrapPos();
-        ImGui::TextDisabled("BRDF Explorer file %s (reloads when it changes)", material.custom->file.path.c_str());
+        ImGui::TextDisabled("BRDF Explorer file %s (reloads when it changes)", custom->brdf->file.path.c_str());
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f),
                            "GPU preview only: the CPU reference (glint render --reference) cannot run .brdf shaders.");
         ImGui::PopTextWrapPos();
@@ -278,24 +280,23 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
     std::string unused;
     ImGui::TextUnformatted("Ambient occlusion");
     ImGui::SameLine();
-    changed |= drawTextureControls(material, kOcclusionMapKey, texturableParam(material.model, kOcclusionMapKey, unused),
+    changed |= drawTextureControls(*analytic, kOcclusionMapKey, texturableParam(analytic->model, kOcclusionMapKey, unused),
                                    textureFileRequest, refusal);
     ImGui::TextUnformatted("Normal map");
     ImGui::SameLine();
-    changed |= drawTextureControls(material, kNormalMapKey, nullptr, textureFileRequest, refusal);
-    if (findParam(modelInfo(material.model).params, "coat_weight") >= 0) {
+    changed |= drawTextureControls(*analytic, kNormalMapKey, nullptr, textureFileRequest, refusal);
+    if (findParam(table, "coat_weight") >= 0) {
         ImGui::TextUnformatted("Coat normal map");
         ImGui::SameLine();
-        changed |= drawTextureControls(material, kCoatNormalMapKey, nullptr, textureFileRequest, refusal);
+        changed |= drawTextureControls(*analytic, kCoatNormalMapKey, nullptr, textureFileRequest, refusal);
     }
-    if (material.model == BrdfModel::Lambert) {
+    if (analytic->model == BrdfModel::Lambert) {
         // Show f_r beside ρ, where a teacher would look.
-        ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", material.values[0] * kInvPi,
-                            material.values[1] * kInvPi, material.values[2] * kInvPi);
+        ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", values[0] * kInvPi, values[1] * kInvPi, values[2] * kInvPi);
     }
     ImGui::PushTextWrapPos();
-    ImGui::TextDisabled("%s", modelInfo(material.model).citation);
-    ImGui::TextDisabled("Environment light: %s", modelInfo(material.model).environmentResponse);
+    ImGui::TextDisabled("%s", modelInfo(analytic->model).citation);
+    ImGui::TextDisabled("Environment light: %s", modelInfo(analytic->model).environmentResponse);
     ImGui::PopTextWrapPos();
     return changed;
 }

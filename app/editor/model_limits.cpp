@@ -8,9 +8,9 @@ namespace glint {
 std::vector<std::string> modelLimitNotes(const Scene& scene, int objectIndex) {
     std::vector<std::string> notes;
     if (objectIndex < 0 || objectIndex >= static_cast<int>(scene.objects.size())) return notes;
-    const Material& material = scene.materials.at(scene.objects[objectIndex].materialIndex);
-    if (material.custom || material.measured) return notes;
-    const bool mirror = material.model == BrdfModel::Mirror, glass = material.model == BrdfModel::Glass;
+    const AnalyticMaterial* material = scene.materials.at(scene.objects[objectIndex].materialIndex).analytic();
+    if (!material) return notes;
+    const bool mirror = material->model == BrdfModel::Mirror, glass = material->model == BrdfModel::Glass;
     if (!mirror && !glass) return notes;
     const std::string what = mirror ? "A mirror's reflection" : "Glass's reflection and refraction";
     const bool deltaLight = std::ranges::any_of(scene.lights, [](const Light& light) {

@@ -105,12 +105,12 @@ bool drawProceduralSettings(MaterialTexture& texture, const ParamSpec& spec, std
 
 }  // namespace
 
-const char* textureButtonLabel(const Material& material, const std::string& parameter) {
+const char* textureButtonLabel(const AnalyticMaterial& material, const std::string& parameter) {
     const MaterialTexture* texture = findTexture(material, parameter);
     return texture ? kKindLabels[static_cast<int>(texture->kind)] : "Tex";
 }
 
-bool drawTextureControls(Material& material, const std::string& parameter, const ParamSpec* spec,
+bool drawTextureControls(AnalyticMaterial& material, const std::string& parameter, const ParamSpec* spec,
                          std::string& fileRequest, std::string& refusal) {
     bool changed = false;
     ImGui::PushID(("texture " + parameter).c_str());
@@ -145,7 +145,8 @@ void openTextureFile(EditorState& state, const std::string& path) {
     const Scene& scene = state.session.scene();
     if (state.textureMaterialIndex < 0 || state.textureMaterialIndex >= static_cast<int>(scene.materials.size())) return;
     Material edited = scene.materials[state.textureMaterialIndex];
-    if (Status loaded = setTextureImage(edited, state.textureParameter, path); !loaded) {
+    if (!edited.analytic()) return;  // no longer a built-in model's material: nothing takes the texture
+    if (Status loaded = setTextureImage(*edited.analytic(), state.textureParameter, path); !loaded) {
         state.errorMessage = "Could not use the texture; the material is unchanged.\n\n" + loaded.error().format();
         return;
     }

@@ -12,12 +12,12 @@
 namespace glint {
 
 // The label of `parameter`'s texture button: "Tex", or the kind of texture it has.
-const char* textureButtonLabel(const Material& material, const std::string& parameter);
+const char* textureButtonLabel(const AnalyticMaterial& material, const std::string& parameter);
 
 // `spec` is the table entry, nullptr for the normal map. Returns true when the material changed;
 // sets `fileRequest` to the parameter when the user asked for an image file. A typed value
 // outside the valid range is refused with a message in `refusal`.
-bool drawTextureControls(Material& material, const std::string& parameter, const ParamSpec* spec,
+bool drawTextureControls(AnalyticMaterial& material, const std::string& parameter, const ParamSpec* spec,
                          std::string& fileRequest, std::string& refusal);
 
 // Puts the image at `path` on state.textureParameter of material state.textureMaterialIndex as

@@ -132,8 +132,8 @@ Status probeCustomBrdf(const CustomBrdf& brdf, const std::vector<float>& values,
 
 Status probeSceneBrdfs(const Scene& scene, double timeoutSeconds) {
     for (const Material& material : scene.materials)
-        if (material.custom)
-            if (Status probed = probeCustomBrdf(*material.custom, material.values, timeoutSeconds); !probed)
+        if (const CustomMaterial* custom = material.custom())
+            if (Status probed = probeCustomBrdf(*custom->brdf, custom->values, timeoutSeconds); !probed)
                 return probed;
     return success();
 }
@@ -147,15 +147,13 @@ int runProbeBrdfCommand(const std::string& name, const std::string& valueList) {
         std::fprintf(stderr, "%s\n", file.error().format().c_str());
         return 1;
     }
-    Material material;
+    Material material = customBrdfMaterial(makeCustomBrdf(std::move(*file)));
     material.name = "probe";
-    material.custom = makeCustomBrdf(std::move(*file));
-    material.values = defaultValues(material.custom->table);
     if (valueList != "none") {
         std::vector<float> values;
         std::stringstream list(valueList);
         for (std::string item; std::getline(list, item, ',');) values.push_back(std::strtof(item.c_str(), nullptr));
-        if (values.size() == material.values.size()) material.values = values;
+        if (values.size() == material.custom()->values.size()) material.custom()->values = values;
     }
     auto headless = HeadlessRenderer::create();
     if (!headless) {

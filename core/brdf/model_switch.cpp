@@ -11,6 +11,7 @@
 #include "brdf/fresnel.h"
 #include "brdf/model_registry.h"
 #include "interchange/material_values.h"
+#include "interchange/measured_brdf.h"
 #include "util/diagnostic.h"
 
 namespace glint {
@@ -106,33 +107,45 @@ std::string ModelSwitch::summary() const {
 ModelSwitch switchModel(const Material& source, BrdfModel target) {
     ModelSwitch result;
     result.material = Material::withDefaults(source.name, target);
-    if (source.custom) {
-        result.dropped.push_back("the .brdf shader and its parameters");
-        return result;
-    }
-    const Appearance appearance = dispatch(source.model, [&](auto model) {
-        using M = decltype(model);
-        if constexpr (HasAppearance<M>) return M::appearance(unpack<M>(source.values.data()));
-        else return Appearance{};
-    });
-    AppearanceWriter writer(appearance, modelInfo(target).params, result.material.values);
+    AnalyticMaterial& switched = *result.material.analytic();
+    const Appearance appearance = std::visit(
+        Overloaded{[](const AnalyticMaterial& analytic) {
+                       return dispatch(analytic.model, [&](auto model) {
+                           using M = decltype(model);
+                           if constexpr (HasAppearance<M>) return M::appearance(unpack<M>(analytic.values.data()));
+                           else return Appearance{};
+                       });
+                   },
+                   [&](const CustomMaterial&) {
+                       result.dropped.push_back("the .brdf shader and its parameters");
+                       return Appearance{};
+                   },
+                   [](const MeasuredMaterial& measured) {
+                       // The table's directional albedo at normal viewing, within [0, 1], as the diffuse colour.
+                       const glm::vec3 albedo = glm::clamp(measuredDirectionalAlbedo(*measured.brdf, 1.0f), 0.0f, 1.0f);
+                       return Appearance{.diffuse = {albedo, {"measured albedo"}}};
+                   }},
+        source.kind);
+    AppearanceWriter writer(appearance, modelInfo(target).params, switched.values);
     dispatch(target, [&](auto model) {
         if constexpr (TakesAppearance<decltype(model)>) decltype(model)::takeAppearance(writer);
     });
     std::erase(writer.kept, std::string());
     result.kept = std::move(writer.kept);
+    const AnalyticMaterial* analytic = source.analytic();
+    if (!analytic) return result;
     // Textures follow the parameter they drove where it was copied unchanged; the normal and
     // occlusion maps always.
-    for (const MaterialTexture& texture : source.textures) {
+    for (const MaterialTexture& texture : analytic->textures) {
         const auto copied = writer.unchanged.find(texture.parameter);
         if (!isSurfaceMapKey(texture.parameter) && copied == writer.unchanged.end()) {
             result.dropped.push_back("the texture on " + texture.parameter);
             continue;
         }
-        result.material.textures.push_back(texture);
-        if (!isSurfaceMapKey(texture.parameter)) result.material.textures.back().parameter = copied->second;
+        switched.textures.push_back(texture);
+        if (!isSurfaceMapKey(texture.parameter)) switched.textures.back().parameter = copied->second;
     }
-    const auto table = modelInfo(source.model).params;
+    const auto table = modelInfo(analytic->model).params;
     for (size_t i = 0; i < table.size(); ++i) {
         const ParamSpec& spec = table[i];
         if (writer.used.count(spec.name)) continue;

@@ -21,7 +21,8 @@ struct ModelSwitch {
 };
 
 // `source` in `target`'s model, keeping its name, its normal map and the textures of parameters
-// copied unchanged. A .brdf (custom) material keeps nothing; a measured one its Lambert stand-in.
+// copied unchanged. A .brdf (custom) material keeps nothing; a measured one its directional albedo
+// at normal viewing as the diffuse colour.
 ModelSwitch switchModel(const Material& source, BrdfModel target);
 
 }  // namespace glint

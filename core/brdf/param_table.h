@@ -3,6 +3,7 @@
 // packing and the documentation. It holds no values; ParamValues does.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <span>
@@ -69,6 +70,22 @@ inline int findParam(std::span<const ParamSpec> table, std::string_view name) {
     for (size_t i = 0; i < table.size(); ++i)
         if (name == table[i].name) return static_cast<int>(i);
     return -1;
+}
+
+// Values for table `to`: its defaults, except that a parameter `from` has too (same name and kind,
+// not an enum, whose options are the table's own) keeps its value in `values` where that lies in
+// `to`'s valid range.
+inline std::vector<float> carriedValues(std::span<const ParamSpec> from, std::span<const float> values, std::span<const ParamSpec> to) {
+    std::vector<float> carried = defaultValues(to);
+    for (size_t i = 0; i < to.size(); ++i) {
+        const ParamSpec& spec = to[i];
+        const int old = findParam(from, spec.name);
+        if (spec.kind == ParamKind::Enum || old < 0 || from[old].kind != spec.kind) continue;
+        const float* value = values.data() + packedOffset(from, old);
+        if (std::all_of(value, value + componentCount(spec.kind), [&](float v) { return v >= spec.validMin && v <= spec.validMax; }))
+            std::copy(value, value + componentCount(spec.kind), carried.begin() + packedOffset(to, static_cast<int>(i)));
+    }
+    return carried;
 }
 
 }  // namespace glint

@@ -92,21 +92,22 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         result.materialName = material.name;
         result.towardsViewer = towardsViewer;
         result.normal = hit->normal;
-        if (material.custom) {
+        if (material.custom()) {
             result.gpuOnlyMaterial = true;
             result.modelLabel = "custom .brdf";
             for (int c = 0; c < 3; ++c) result.display[c] = traceDisplayChannel(glm::vec3(0.0f), c, scene.display);
             return result;
         }
         const ShadingBreakdown breakdown = shadingBreakdown(scene, *hit, towardsViewer, {}, pixelSeed);
-        result.modelLabel = modelInfo(material.model).label;
+        const AnalyticMaterial* analytic = material.analytic();  // else a measured table
+        result.modelLabel = analytic ? modelInfo(analytic->model).label : "measured (MERL)";
         result.gouraud = hit->triangle && object.interpolation == SurfaceInterpolation::Gouraud;
         const glm::vec3 normal = breakdown.frame.normal;
         result.normal = normal;
         result.viewMirror = probeMirror(towardsViewer, normal);
         // Refraction (glass): the viewer is outside unless the ray hit an exact sphere from inside.
         std::optional<std::pair<float, float>> etas;  // η on the viewer's side, η beyond
-        if (material.model == BrdfModel::Glass) {
+        if (analytic && analytic->model == BrdfModel::Glass) {
             const float ior = unpack<Glass>(breakdown.values.data()).ior;
             const auto* sphere = std::get_if<SphereShape>(&object.shape);
             const bool inside = sphere && !hit->triangle && glm::dot(hit->normal, hit->position - sphere->center) < 0.0f;
@@ -145,9 +146,9 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         result.ambientReflectance = breakdown.ambientReflectance;
         result.ambientRadiance = breakdown.ambientRadiance;
         result.environment = breakdown.environment;
-        if (scene.environment.enabled() && !material.measured && modelInfo(material.model).glslEnvironment) {
-            result.environmentMethod = environmentApproximation(material.model, breakdown.values, scene.environment);
-            result.environmentTruth = sampleEnvironmentLighting(material.model, breakdown.values, towardsViewer,
+        if (scene.environment.enabled() && analytic && modelInfo(analytic->model).glslEnvironment) {
+            result.environmentMethod = environmentApproximation(analytic->model, breakdown.values, scene.environment);
+            result.environmentTruth = sampleEnvironmentLighting(analytic->model, breakdown.values, towardsViewer,
                                                                 breakdown.frame, scene.environment, pixelSeed,
                                                                 kProbeEnvironmentSamples);
         }

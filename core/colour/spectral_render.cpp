@@ -9,6 +9,7 @@
 
 #include "brdf/model_registry.h"
 #include "colour/cie_cmf.h"
+#include "interchange/material_values.h"
 #include "render/reference_renderer.h"
 
 namespace glint {
@@ -124,10 +125,8 @@ Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettin
     for (const WavelengthSample& sample : spectralSamples(settings)) {
         for (size_t index = 0; index < scene.materials.size(); ++index) {
             const Material& material = scene.materials[index];
-            if (material.custom || material.model != BrdfModel::Glass) continue;
-            const auto table = modelInfo(material.model).params;
-            const int offset = packedOffset(table, findParam(table, "ior"));
-            const float indexAtSodiumD = material.values[offset];
+            if (!material.analytic() || material.analytic()->model != BrdfModel::Glass) continue;
+            const float indexAtSodiumD = paramScalar(material, "ior");
             const float coefficientA = indexAtSodiumD - cauchyIndex(0.0f, settings.cauchyB, kSodiumDNanometres);
             const float dispersedIndex = cauchyIndex(coefficientA, settings.cauchyB, sample.wavelengthNanometres);
             // The glass table accepts indices in [1, 4]; too strong a B must be refused, not clamped.
@@ -135,7 +134,7 @@ Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettin
                 return makeError("material '" + material.name + "': Cauchy B " + std::to_string(settings.cauchyB) +
                                  " µm² gives n = " + std::to_string(dispersedIndex) + " at " +
                                  std::to_string(sample.wavelengthNanometres) + " nm, outside glass's valid [1, 4]");
-            atWavelength.materials[index].values[offset] = dispersedIndex;
+            setParam(atWavelength.materials[index], "ior", dispersedIndex);
         }
         const RadianceImage rgb = renderReference(atWavelength, outputWidth, outputHeight);
         const glm::vec3 weightedMatching = sample.weight * normalisation * cieColourMatching(sample.wavelengthNanometres);

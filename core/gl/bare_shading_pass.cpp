@@ -11,7 +11,7 @@
 
 namespace glint {
 
-Result<std::unique_ptr<BareShadingPass>> BareShadingPass::create(const ShaderSources& sources, const Material& material) {
+Result<std::unique_ptr<BareShadingPass>> BareShadingPass::create(const ShaderSources& sources, const AnalyticMaterial& material) {
     const GeneratedShaderFiles generated = {{"generated/material.glsl", generateMaterialGlsl(modelInfo(material.model))}};
     auto program = ShaderProgram::build(sources, "fullscreen.vert", "bare_shading.frag", "", generated);
     if (!program) return program.error();
@@ -24,7 +24,7 @@ Result<std::unique_ptr<BareShadingPass>> BareShadingPass::create(const ShaderSou
     return std::unique_ptr<BareShadingPass>(new BareShadingPass(std::move(*program), material));
 }
 
-BareShadingPass::BareShadingPass(ShaderProgram program, const Material& material)
+BareShadingPass::BareShadingPass(ShaderProgram program, const AnalyticMaterial& material)
     : program_(std::move(program)), material_(material) {
     glGenBuffers(3, uniformBuffers_);
     glGenVertexArrays(1, &emptyVertexArray_);

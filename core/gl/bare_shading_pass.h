@@ -15,7 +15,7 @@ namespace glint {
 class BareShadingPass {
 public:
     // Builds the pass for the model of `material`; the GL context must be current.
-    static Result<std::unique_ptr<BareShadingPass>> create(const ShaderSources& sources, const Material& material);
+    static Result<std::unique_ptr<BareShadingPass>> create(const ShaderSources& sources, const AnalyticMaterial& material);
     ~BareShadingPass();
     BareShadingPass(const BareShadingPass&) = delete;
     BareShadingPass& operator=(const BareShadingPass&) = delete;
@@ -27,12 +27,12 @@ public:
     void draw(const Scene& scene, int width, int height);
 
 private:
-    BareShadingPass(ShaderProgram program, const Material& material);
+    BareShadingPass(ShaderProgram program, const AnalyticMaterial& material);
 
     // Binding points of its own, so that the renderer's (0-2) stay bound to the renderer's buffers.
     static constexpr GLuint kFirstBinding = 8;
     ShaderProgram program_;
-    Material material_;
+    AnalyticMaterial material_;
     GLuint uniformBuffers_[3] = {0, 0, 0};
     GLuint emptyVertexArray_ = 0;
     RenderTarget target_{Renderer::kRadianceFormat, false};

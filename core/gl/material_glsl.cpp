@@ -35,7 +35,7 @@ std::string specialisable(const std::string& name, const std::string& generic) {
 
 }  // namespace
 
-TexturedParams TexturedParams::of(const Material& material) {
+TexturedParams TexturedParams::of(const AnalyticMaterial& material) {
     TexturedParams textured;
     const auto table = modelInfo(material.model).params;
     for (const MaterialTexture& texture : material.textures) {

@@ -26,7 +26,7 @@ struct TexturedParams {
     static constexpr int kNormalMapBit = 63;
     std::uint64_t mask = 0;
 
-    static TexturedParams of(const Material& material);
+    static TexturedParams of(const AnalyticMaterial& material);
     bool has(int paramIndex) const { return (mask >> paramIndex) & 1u; }
     bool hasNormalMap() const { return has(kNormalMapBit); }
     bool hasOcclusionMap() const { return has(kOcclusionMapBit); }

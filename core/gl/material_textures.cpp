@@ -7,7 +7,7 @@
 
 namespace glint {
 
-void bindMaterialTextures(const ShaderProgram& program, const Material& material, const Shape& shape, TextureCache& cache) {
+void bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& material, const Shape& shape, TextureCache& cache) {
     const glm::vec3 center = shapeCenter(shape);
     glUniform3f(program.uniform("objectCenter"), center.x, center.y, center.z);
     // material.textures is in table order with the normal map last: its index is the slot.

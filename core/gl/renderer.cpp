@@ -199,9 +199,9 @@ SurfaceVariant Renderer::surfaceVariant(const SceneObject& object, const Materia
                                         const std::string& frameDefines, bool seesBackdrop) const {
     const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
     const bool sphere = !triangles && std::holds_alternative<SphereShape>(object.shape);
-    const bool builtInModel = !material.custom && !material.measured;
+    const AnalyticMaterial* analytic = material.analytic();
     return {samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere,
-            (specialise_ && builtInModel ? frameDefines + materialSpecialisation(material) : frameDefines) +
+            (specialise_ && analytic ? frameDefines + materialSpecialisation(*analytic) : frameDefines) +
                 (seesBackdrop ? TransmissionPass::kProgramDefine : "")};
 }
 
@@ -369,9 +369,10 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
                                !std::all_of(scene.objects.begin(), scene.objects.end(), transmissive);
     for (const SceneObject& object : scene.objects) {
         const Material& material = scene.materials.at(object.materialIndex);
-        if (material.custom || material.measured) continue;
-        const SurfaceKey key{material.model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmissive(object)),
-                             TexturedParams::of(material).mask};
+        const AnalyticMaterial* analytic = material.analytic();
+        if (!analytic) continue;
+        const SurfaceKey key{analytic->model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmissive(object)),
+                             TexturedParams::of(*analytic).mask};
         if (surfacePrograms_.count(key) || failedInBackground_.count(key)) continue;
         missing.push_back(key);
         warmUpScene->objects.push_back(object);
@@ -539,9 +540,11 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         const Material& material = scene.materials.at(object.materialIndex);
         const bool seesBackdrop = next >= firstTransmissive && transmission_->shows();
         const SurfaceVariant variant = surfaceVariant(object, material, samples, frameDefines, seesBackdrop);
-        auto program = material.custom     ? customPrograms_.program(sources_, *material.custom, variant)
-                       : material.measured ? measured_.program(sources_, variant)
-                                           : surfaceProgram(material.model, variant, TexturedParams::of(material));
+        auto program = std::visit(
+            Overloaded{[&](const AnalyticMaterial& analytic) { return surfaceProgram(analytic.model, variant, TexturedParams::of(analytic)); },
+                       [&](const CustomMaterial& custom) { return customPrograms_.program(sources_, *custom.brdf, variant); },
+                       [&](const MeasuredMaterial&) { return measured_.program(sources_, variant); }},
+            material.kind);
         if (!program) {
             shaderError_ = program.error().format();
             result = program.error();
@@ -550,17 +553,20 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         const ShaderProgram& shader = **program;
         glUseProgram(shader.id());
         setFusedDisplayUniforms(shader, fusedDisplay_);
-        if (material.custom) setCustomBrdfUniforms(shader, *material.custom, material.values);
-        if (material.measured) measured_.bind(shader, material.measured);
         shadowMaps_->bind(shader);
         MaterialBlockStd140 materialBlock{};
-        std::copy_n(material.values.begin(), std::min<size_t>(material.values.size(), kMaterialBlockFloats),
-                    materialBlock.values);
+        const auto values = paramValues(material);
+        std::copy_n(values.begin(), std::min<size_t>(values.size(), kMaterialBlockFloats), materialBlock.values);
         glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kMaterialBinding]);
         glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
-        if (!material.textures.empty()) bindMaterialTextures(shader, material, object.shape, textureCache_);
+        std::visit(Overloaded{[&](const AnalyticMaterial& analytic) {
+                                  if (!analytic.textures.empty()) bindMaterialTextures(shader, analytic, object.shape, textureCache_);
+                              },
+                              [&](const CustomMaterial& custom) { setCustomBrdfUniforms(shader, *custom.brdf, custom.values); },
+                              [&](const MeasuredMaterial& measured) { measured_.bind(shader, measured.brdf); }},
+                   material.kind);
         if (next >= firstTransmissive) transmission_->bind(shader);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         const auto* plane = std::get_if<PlaneShape>(&object.shape);

@@ -68,7 +68,7 @@ std::string displaySpecialisation(const DisplaySettings& display) {
            define("GLINT_DISPLAY_DITHER", std::to_string(static_cast<int>(display.dither)));
 }
 
-std::string materialSpecialisation(const Material& material) {
+std::string materialSpecialisation(const AnalyticMaterial& material) {
     const auto table = modelInfo(material.model).params;
     const TexturedParams textured = TexturedParams::of(material);
     std::string text;

@@ -41,6 +41,6 @@ std::string displaySpecialisation(const DisplaySettings& display);
 // A built-in model's enum and bool parameters, and its layer weights (scalars named *_weight) that
 // are 0, by name (GLINT_PARAM_<name>, read by the generated loadMaterialParams(),
 // gl/material_glsl.h): a layer weighted 0 (OpenPBR's coat, fuzz, thin film) is compiled out.
-std::string materialSpecialisation(const Material& material);
+std::string materialSpecialisation(const AnalyticMaterial& material);
 
 }  // namespace glint

@@ -9,34 +9,26 @@
 #include "brdf/model_registry.h"
 #include "brdf/param_table.h"
 #include "display/display_chain.h"
+#include "interchange/material_values.h"
 #include "light/light.h"
 
 namespace glint {
 namespace {
 
-// The material's value of a parameter, component `c`.
-float valueOf(const Material& material, const char* name, int c = 0) {
-    const auto table = modelInfo(material.model).params;
-    return material.values.at(packedOffset(table, findParam(table, name)) + c);
-}
-
 // The option id chosen for an enum parameter.
 std::string_view optionOf(const Material& material, const char* name) {
-    const auto table = modelInfo(material.model).params;
+    const auto table = paramTable(material);
     const auto options = table[findParam(table, name)].options;
-    const size_t chosen = static_cast<size_t>(valueOf(material, name) + 0.5f);
+    const size_t chosen = static_cast<size_t>(paramScalar(material, name) + 0.5f);
     return chosen < options.size() ? options[chosen].id : "";
 }
 
 bool textbookMaterial(const Material& material) {
-    if (material.custom || material.measured || !material.textures.empty()) return false;
-    if (material.model == BrdfModel::Lambert) return true;
-    return material.model == BrdfModel::CookTorrance && optionOf(material, "distribution") == "ggx" &&
+    const AnalyticMaterial* analytic = material.analytic();
+    if (!analytic || !analytic->textures.empty()) return false;
+    if (analytic->model == BrdfModel::Lambert) return true;
+    return analytic->model == BrdfModel::CookTorrance && optionOf(material, "distribution") == "ggx" &&
            optionOf(material, "geometry") == "smith" && optionOf(material, "fresnel") == "schlick";
-}
-
-glm::vec3 colorOf(const Material& material, const char* name) {
-    return {valueOf(material, name, 0), valueOf(material, name, 1), valueOf(material, name, 2)};
 }
 
 }  // namespace
@@ -63,7 +55,7 @@ Result<std::unique_ptr<TextbookFloorPass>> TextbookFloorPass::create(const Shade
         if (light.enabled && light.type == LightType::Directional) ++directional;
         if (light.enabled && light.type == LightType::Point) ++point;
     }
-    const bool ggx = !scene.objects.empty() && scene.materials.at(scene.objects[0].materialIndex).model == BrdfModel::CookTorrance;
+    const bool ggx = !scene.objects.empty() && scene.materials.at(scene.objects[0].materialIndex).analytic()->model == BrdfModel::CookTorrance;
     const std::string prelude = "#define NUM_DIRECTIONAL " + std::to_string(directional) + "\n#define NUM_POINT " +
                                 std::to_string(point) + "\n" + (ggx ? "#define GGX 1\n" : "#define LAMBERT 1\n");
     auto program = ShaderProgram::build(sources, "textbook_floor.vert", "textbook_floor.frag", prelude);
@@ -126,14 +118,14 @@ void TextbookFloorPass::draw(const Scene& scene, int width, int height) {
     const auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
     glUniform4f(uniform("sphere"), sphere.center.x, sphere.center.y, sphere.center.z, sphere.radius);
     const Material& material = scene.materials.at(scene.objects[0].materialIndex);
-    if (material.model == BrdfModel::Lambert) {
-        glUniform3fv(uniform("albedo"), 1, glm::value_ptr(colorOf(material, "albedo")));
+    if (material.analytic()->model == BrdfModel::Lambert) {  // covers() checked that it is Lambert or Cook-Torrance
+        glUniform3fv(uniform("albedo"), 1, glm::value_ptr(paramValue(material, "albedo")));
     } else {
-        glUniform3fv(uniform("albedo"), 1, glm::value_ptr(colorOf(material, "diffuse_albedo")));
-        const glm::vec3 n = colorOf(material, "ior"), k = colorOf(material, "extinction");
+        glUniform3fv(uniform("albedo"), 1, glm::value_ptr(paramValue(material, "diffuse_albedo")));
+        const glm::vec3 n = paramValue(material, "ior"), k = paramValue(material, "extinction");
         const glm::vec3 f0 = ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);
         glUniform3fv(uniform("f0"), 1, glm::value_ptr(f0));
-        glUniform1f(uniform("alpha"), valueOf(material, "roughness"));
+        glUniform1f(uniform("alpha"), paramScalar(material, "roughness"));
     }
     glBindVertexArray(emptyVertexArray_);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);

@@ -147,7 +147,7 @@ Result<Scene> loadBparamPreviewStage(const std::string& path, std::vector<Diagno
     warnings.insert(warnings.end(), (*brdf)->file.warnings.begin(), (*brdf)->file.warnings.end());
     warnings.insert(warnings.end(), file->warnings.begin(), file->warnings.end());
     Material material = customBrdfMaterial(*brdf);
-    material.values = applyBparam(*file, **brdf, std::move(material.values), warnings);
+    material.custom()->values = applyBparam(*file, **brdf, std::move(material.custom()->values), warnings);
     return previewStage(material, width > 0 ? width : kDefaultMaterialPreviewSize,
                         height > 0 ? height : kDefaultMaterialPreviewSize);
 }

@@ -36,11 +36,9 @@ Result<std::shared_ptr<const CustomBrdf>> loadCustomBrdf(const std::string& path
 }
 
 Material customBrdfMaterial(std::shared_ptr<const CustomBrdf> brdf) {
-    Material material;
-    material.name = std::filesystem::path(brdf->displayName).stem().string();
-    material.values = defaultValues(brdf->table);
-    material.custom = std::move(brdf);
-    return material;
+    std::string name = std::filesystem::path(brdf->displayName).stem().string();
+    std::vector<float> values = defaultValues(brdf->table);
+    return Material{std::move(name), CustomMaterial{std::move(brdf), std::move(values)}};
 }
 
 bool isBrdfFilePath(const std::string& path) {
@@ -57,8 +55,8 @@ Result<Scene> loadBrdfPreviewStage(const std::string& path, std::vector<Diagnost
 
 Status referenceCanRender(const Scene& scene) {
     for (const Material& material : scene.materials)
-        if (material.custom)
-            return makeError("material '" + material.name + "' uses the custom BRDF " + material.custom->file.path +
+        if (const CustomMaterial* custom = material.custom())
+            return makeError("material '" + material.name + "' uses the custom BRDF " + custom->brdf->file.path +
                              ": custom .brdf shaders run only on the GPU preview, not on the CPU reference");
     return success();
 }

@@ -15,7 +15,9 @@ inline constexpr const char* kExportExtensions[] = {".mtl", ".gltf", ".mtlx"};
 bool isExportPath(const std::string& path);  // ends in one of them (any case)
 
 // The text for `outputPath` (its extension, any case, picks the format) and the warnings about
-// what the format cannot hold; an error for another extension or no material.
+// what the format cannot hold; an error for another extension or no material. The formats hold
+// analytic models only: a measured table is written as Lambert with its albedo at normal viewing,
+// a .brdf shader is left out (a warning each); the writers below see analytic materials only.
 Result<ExportedText> exportMaterials(std::span<const ImportedMaterial> materials, std::span<const Light> lights,
                                      const std::string& outputPath);
 

@@ -35,7 +35,7 @@ Material readCustomBrdfMaterial(ObjectReader& reader, std::string name) {
     if (!brdf) reader.fail("brdf_file", "cannot use '" + reader.requiredString("brdf_file") + "': " + brdf.error().format());
     Material material = customBrdfMaterial(std::move(*brdf));
     material.name = std::move(name);
-    material.values = readParamValues(reader, material.custom->table);
+    material.custom()->values = readParamValues(reader, material.custom()->brdf->table);
     static constexpr const char* kReserved[] = {"name", "model", "format", "version", "brdf_file"};
     reader.rejectUnknownKeys(kReserved);
     return material;
@@ -52,15 +52,14 @@ Material readMeasuredMaterial(ObjectReader& reader, std::string name) {
     return material;
 }
 
-nlohmann::json customBrdfMaterialBody(const Material& material, const std::string& savedTo) {
-    nlohmann::json out = {{"name", material.name}, {"model", kCustomBrdfModelId},
-                          {"brdf_file", referencedPathFor(material.custom->file.path, savedTo)}};
-    writeParamValues(out, material.custom->table, material.values);
+nlohmann::json customBrdfMaterialBody(const std::string& name, const CustomMaterial& material, const std::string& savedTo) {
+    nlohmann::json out = {{"name", name}, {"model", kCustomBrdfModelId}, {"brdf_file", referencedPathFor(material.brdf->file.path, savedTo)}};
+    writeParamValues(out, material.brdf->table, material.values);
     return out;
 }
 
-nlohmann::json measuredMaterialBody(const Material& material, const std::string& savedTo) {
-    return {{"name", material.name}, {"model", kMeasuredModelId}, {"merl_file", referencedPathFor(material.measured->path, savedTo)}};
+nlohmann::json measuredMaterialBody(const std::string& name, const MeasuredMaterial& material, const std::string& savedTo) {
+    return {{"name", name}, {"model", kMeasuredModelId}, {"merl_file", referencedPathFor(material.brdf->path, savedTo)}};
 }
 
 }  // namespace glint

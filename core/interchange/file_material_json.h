@@ -19,7 +19,7 @@ inline constexpr const char* kMeasuredModelId = "merl";
 Material readCustomBrdfMaterial(ObjectReader& reader, std::string name);
 Material readMeasuredMaterial(ObjectReader& reader, std::string name);
 // The material's body; `savedTo` is the JSON file being written ("" keeps the stored path).
-nlohmann::json customBrdfMaterialBody(const Material& material, const std::string& savedTo);
-nlohmann::json measuredMaterialBody(const Material& material, const std::string& savedTo);
+nlohmann::json customBrdfMaterialBody(const std::string& name, const CustomMaterial& material, const std::string& savedTo);
+nlohmann::json measuredMaterialBody(const std::string& name, const MeasuredMaterial& material, const std::string& savedTo);
 
 }  // namespace glint

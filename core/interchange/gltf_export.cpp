@@ -17,7 +17,6 @@
 #include "interchange/base64.h"
 #include "interchange/gltf_openpbr.h"
 #include "interchange/gltf_textures.h"
-#include "interchange/measured_brdf.h"
 #include "light/photometry.h"
 #include "scene/json_vectors.h"
 
@@ -173,12 +172,12 @@ ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> 
     gltf["scenes"] = json::array({{{"nodes", json::array({0})}}});
     gltf["nodes"] = json::array({{{"name", "sphere"}, {"mesh", 0}}});
     addSphere(gltf);
-    const Material& material = imported.material;
+    GLINT_CHECK(imported.material.analytic());  // exportMaterials converts the other kinds
+    const AnalyticMaterial& material = *imported.material.analytic();
+    const std::string& name = imported.material.name;
     auto lost = [&](const std::string& what) {
-        out.warnings.push_back(makeError("warning: '" + material.name + "' (" + modelInfo(material.model).id + "): " + what));
+        out.warnings.push_back(makeError("warning: '" + name + "' (" + modelInfo(material.model).id + "): " + what));
     };
-    if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
-        lost("the measured BRDF " + material.measured->displayName + " has no glTF form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
     const json written = dispatch(material.model, [&](auto model) -> json {
         using M = decltype(model);
         if constexpr (IsGltfOpenPbr<M>) {
@@ -192,7 +191,7 @@ ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> 
             for (const std::string& what : form.lost) lost(what);
             if (!material.textures.empty())
                 out.warnings.push_back(makeError("warning: material textures are written to glTF for the openpbr model only"));
-            return formJson(material.name, form, extensionsUsed);
+            return formJson(name, form, extensionsUsed);
         }
     });
     gltf["materials"] = json::array({written});

@@ -308,12 +308,12 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
 
     // The textures, table order; Glint binds at most kMaxMaterialTextures.
     for (MaterialTexture& texture : reading.textures) {
-        if (static_cast<int>(m.textures.size()) >= kMaxMaterialTextures) {
+        if (static_cast<int>(m.analytic()->textures.size()) >= kMaxMaterialTextures) {
             reading.warn(reader.pointer(), "more than " + std::to_string(kMaxMaterialTextures) + " textures: '" + texture.parameter +
                                                "' uses its constant value");
             continue;
         }
-        putTexture(m, std::move(texture));
+        putTexture(*m.analytic(), std::move(texture));
     }
     if (auto problem = findOutOfRange(m)) reader.failHere(*problem);
     if (!reading.kept.empty()) imported.gltfKept = reading.kept.dump();
@@ -429,8 +429,9 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
         if (std::string(slot.extension).empty()) return out;
         return extensions[slot.extension];
     };
-    const MaterialTexture* metallicRoughness[2] = {findTexture(material, "specular_roughness"), findTexture(material, "base_metalness")};
-    for (const MaterialTexture& texture : material.textures) {
+    const AnalyticMaterial& analytic = *material.analytic();
+    const MaterialTexture* metallicRoughness[2] = {findTexture(analytic, "specular_roughness"), findTexture(analytic, "base_metalness")};
+    for (const MaterialTexture& texture : analytic.textures) {
         std::string parameter = texture.parameter;
         if (unlit && parameter == "emission_color") parameter = "base_color";
         else if (parameter == "emission_color" && emission == 0.0f) continue;  // no emission: the texture does not show

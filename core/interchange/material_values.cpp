@@ -8,11 +8,11 @@ namespace glint {
 namespace {
 
 float* slot(Material& material, std::string_view name, int* count) {
-    const auto table = modelInfo(material.model).params;
+    const auto table = paramTable(material);
     const int index = findParam(table, name);
     GLINT_CHECK(index >= 0);
     *count = componentCount(table[index].kind);
-    return material.values.data() + packedOffset(table, index);
+    return paramValues(material).data() + packedOffset(table, index);
 }
 
 }  // namespace
@@ -34,10 +34,12 @@ void setParam(Material& material, std::string_view name, glm::vec3 value) {
 void setParam(Material& material, std::string_view name, float value) { setParam(material, name, glm::vec3(value)); }
 
 std::optional<std::string> findOutOfRange(const Material& material) {
-    const auto table = modelInfo(material.model).params;
+    const AnalyticMaterial* analytic = material.analytic();
+    if (!analytic) return std::nullopt;  // a .brdf file's own ranges are checked as it is read
+    const auto table = modelInfo(analytic->model).params;
     for (size_t i = 0; i < table.size(); ++i) {
         const ParamSpec& spec = table[i];
-        const float* value = material.values.data() + packedOffset(table, static_cast<int>(i));
+        const float* value = analytic->values.data() + packedOffset(table, static_cast<int>(i));
         for (int c = 0; c < componentCount(spec.kind); ++c) {
             const float v = value[c];
             const bool below = spec.validMinExclusive ? !(v > spec.validMin) : !(v >= spec.validMin);
@@ -45,7 +47,7 @@ std::optional<std::string> findOutOfRange(const Material& material) {
             std::ostringstream message;
             message << "'" << spec.name << "'";
             if (componentCount(spec.kind) == 3) message << "[" << c << "]";
-            message << ": " << v << " is out of range for " << modelInfo(material.model).id << ": must be ";
+            message << ": " << v << " is out of range for " << modelInfo(analytic->model).id << ": must be ";
             if (spec.validMax == kUnbounded)
                 message << (spec.validMinExclusive ? "greater than " : "at least ") << spec.validMin;
             else

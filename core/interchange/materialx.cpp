@@ -41,7 +41,7 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     };
     if (image.file.find("<UDIM>") != std::string::npos || image.file.find("<UVTILE>") != std::string::npos)
         return warn("Glint reads one image per texture, not UDIM tiles");
-    if (static_cast<int>(imported.material.textures.size()) >= kMaxMaterialTextures)
+    if (static_cast<int>(imported.material.analytic()->textures.size()) >= kMaxMaterialTextures)
         return warn("a material holds at most " + std::to_string(kMaxMaterialTextures) + " textures");
     MaterialTexture texture;
     texture.parameter = spec ? spec->name : kNormalMapKey;
@@ -53,7 +53,7 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     auto decoded = loadTextureImage(texture.file, texture.colorSpace);
     if (!decoded) return warn(decoded.error().format());
     texture.image = *decoded;
-    imported.material.textures.push_back(std::move(texture));
+    imported.material.analytic()->textures.push_back(std::move(texture));
 }
 
 Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const std::string& name, const XmlElement& shader) {
@@ -122,9 +122,9 @@ struct ShaderText {
 // The images of `material` as a node graph named `graphName`, and how each input connects to it.
 void writeTextures(const Material& material, const std::string& graphName, const std::string& folder, ShaderText& text,
                    std::map<std::string, std::string>& connections, std::vector<Diagnostic>& warnings) {
-    const auto table = modelInfo(material.model).params;
+    const auto table = paramTable(material);
     std::ostringstream graph;
-    for (const MaterialTexture& texture : material.textures) {
+    for (const MaterialTexture& texture : material.analytic()->textures) {
         const bool normal = texture.parameter == kNormalMapKey;
         const int index = normal ? -1 : findParam(table, texture.parameter);
         if (texture.parameter == kOcclusionMapKey) {
@@ -254,19 +254,13 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
     text << "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\" colorspace=\"lin_rec709\">\n";
     std::set<std::string> taken;
     for (const ImportedMaterial& source : materials) {
+        GLINT_CHECK(source.material.analytic());  // exportMaterials converts the other kinds
         Material material = source.material;
-        if (material.custom) {
-            out.warnings.push_back(makeError("warning: material '" + material.name + "' is a BRDF Explorer shader, which MaterialX "
-                                             "cannot hold: not written"));
-            continue;
-        }
-        if (material.measured)
-            out.warnings.push_back(makeError("warning: material '" + material.name + "' is a measured BRDF: its Lambert stand-in is written"));
-        if (material.model != BrdfModel::OpenPbr) {
+        if (const BrdfModel model = material.analytic()->model; model != BrdfModel::OpenPbr) {
             const ModelSwitch converted = switchModel(material, BrdfModel::OpenPbr);
             if (!converted.dropped.empty())
                 out.warnings.push_back(makeError("warning: material '" + material.name + "' converted from " +
-                                                 modelInfo(material.model).label + " to OpenPBR: " + converted.summary()));
+                                                 modelInfo(model).label + " to OpenPBR: " + converted.summary()));
             material = converted.material;
         }
         const std::string materialName = uniqueName(material.name, taken);
@@ -275,7 +269,7 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
         std::map<std::string, std::string> connections;
         writeTextures(material, uniqueName("NG_" + materialName, taken), folder, shader, connections, out.warnings);
         text << shader.graph << "  <open_pbr_surface name=\"" << shaderName << "\" type=\"surfaceshader\">\n";
-        const auto table = modelInfo(material.model).params;
+        const auto table = paramTable(material);
         for (size_t i = 0; i < table.size(); ++i) {
             const ParamSpec& spec = table[i];
             const glm::vec3 value = paramValue(material, spec.name);

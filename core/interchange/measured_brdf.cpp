@@ -65,11 +65,7 @@ glm::vec3 measuredDirectionalAlbedo(const MeasuredBrdf& brdf, float cosThetaOut)
 
 Material measuredBrdfMaterial(std::shared_ptr<const MeasuredBrdf> brdf) {
     std::string name = std::filesystem::path(brdf->displayName).stem().string();
-    Material material = Material::withDefaults(name.empty() ? "measured" : name, BrdfModel::Lambert);
-    const glm::vec3 albedo = glm::clamp(measuredDirectionalAlbedo(*brdf, 1.0f), 0.0f, 1.0f);  // Lambert's valid range
-    material.values = {albedo.r, albedo.g, albedo.b};
-    material.measured = std::move(brdf);
-    return material;
+    return Material{name.empty() ? "measured" : std::move(name), MeasuredMaterial{std::move(brdf)}};
 }
 
 Result<ImportedFile> importMerl(const std::string& path) {

@@ -35,8 +35,7 @@ glm::vec3 evalMeasuredBrdf(const MeasuredBrdf& brdf, glm::vec3 wi, glm::vec3 wo,
 // ρ(θ_o) interpolated linearly in cos θ_o between the tabulated samples (clamped at the ends).
 glm::vec3 measuredDirectionalAlbedo(const MeasuredBrdf& brdf, float cosThetaOut);
 
-// A material carrying the table, named after the file. Its `model` and `values` hold a Lambert
-// stand-in (albedo = ρ at normal viewing) for code that knows only analytic models (export).
+// A material carrying the table, named after the file.
 Material measuredBrdfMaterial(std::shared_ptr<const MeasuredBrdf> brdf);
 // The import_formats.h row for .binary: one measured material, and a warning when the file has
 // unmeasured (negative) samples, which read as 0.

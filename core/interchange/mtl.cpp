@@ -14,7 +14,6 @@
 #include "brdf/fresnel.h"
 #include "brdf/model_registry.h"
 #include "interchange/material_values.h"
-#include "interchange/measured_brdf.h"
 #include "interchange/text_checks.h"
 #include "util/file_io.h"
 #include "util/text.h"
@@ -350,13 +349,12 @@ ExportedText writeMtl(std::span<const ImportedMaterial> materials) {
     std::string& text = out.text;
     text += "# Wavefront material library written by Glint\n";
     for (const ImportedMaterial& imported : materials) {
-        const Material& material = imported.material;
-        const std::string name = oneLine(material.name);
+        GLINT_CHECK(imported.material.analytic());  // exportMaterials converts the other kinds
+        const AnalyticMaterial& material = *imported.material.analytic();
+        const std::string name = oneLine(imported.material.name);
         auto lost = [&](const std::string& what) {
             out.warnings.push_back(makeError("warning: '" + name + "' (" + modelInfo(material.model).id + "): " + what));
         };
-        if (material.measured)  // measured_brdf.h: model and values hold the Lambert stand-in
-            lost("the measured BRDF " + material.measured->displayName + " has no MTL form; written as its Lambert stand-in (albedo = the measured albedo at normal viewing)");
         const MtlForm form = dispatch(material.model, [&](auto model) {
             using M = decltype(model);
             if constexpr (HasMtlForm<M>) return M::mtlForm(unpack<M>(material.values.data()));

@@ -96,6 +96,10 @@ namespace {
 glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
                      uint32_t pixelSeed, ShadingBreakdown* breakdown) {
     const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
+    // An analytic model or a measured table (a .brdf shader runs on the GPU only: referenceCanRender).
+    const AnalyticMaterial* analytic = material.analytic();
+    GLINT_CHECK(analytic || material.measured());
+    const MeasuredBrdf* measured = analytic ? nullptr : material.measured()->brdf.get();
     // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
     std::optional<glm::vec2> triangleUv;  // shapes drawn from triangles: the interpolated vertex UV
     if (hit.triangle)
@@ -103,9 +107,9 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
                      hit.triangle->barycentric[1] * hit.triangle->vertices[1].uv +
                      hit.triangle->barycentric[2] * hit.triangle->vertices[2].uv;
     const TexturePoint texturePoint = texturePointOn(scene.objects.at(hit.objectIndex).shape, hit.position, triangleUv);
-    const std::vector<float> values = texturedValues(material, texturePoint);
-    const ShadingFrame frame =
-        normalMappedFrame(material, texturePoint, ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent));
+    const std::vector<float> values = analytic ? texturedValues(*analytic, texturePoint) : std::vector<float>();
+    const ShadingFrame unmapped = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
+    const ShadingFrame frame = analytic ? normalMappedFrame(*analytic, texturePoint, unmapped) : unmapped;
     glm::vec3 radiance(0.0f);
     for (size_t lightIndex = 0; lightIndex < scene.lights.size(); ++lightIndex) {
         const Light& light = scene.lights[lightIndex];
@@ -116,8 +120,8 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
         const float visibility = cosTheta <= 0.0f ? 0.0f : lightVisibility(scene, light, hit, arrival);
         if (visibility == 0.0f && !breakdown) continue;
-        const glm::vec3 brdf = material.measured ? evalMeasuredBrdf(*material.measured, arrival.towardsLight, towardsViewer, frame)
-                                                 : evalBrdf(material.model, values, arrival.towardsLight, towardsViewer, frame);
+        const glm::vec3 brdf = measured ? evalMeasuredBrdf(*measured, arrival.towardsLight, towardsViewer, frame)
+                                        : evalBrdf(analytic->model, values, arrival.towardsLight, towardsViewer, frame);
         const glm::vec3 reflected =
             visibility == 0.0f ? glm::vec3(0.0f) : brdf * arrival.normalIrradiance * cosTheta;
         radiance += reflected;
@@ -129,18 +133,18 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
     // A MERL table (measured_shading.h) has no delta lobes, and its ambient and environment terms
     // come from its measured directional albedo.
-    const glm::vec3 ambientFactor = material.measured ? measuredAmbientReflectance(*material.measured, towardsViewer, frame)
-                                                      : ambientReflectance(material.model, values, towardsViewer, frame);
+    const glm::vec3 ambientFactor = measured ? measuredAmbientReflectance(*measured, towardsViewer, frame)
+                                             : ambientReflectance(analytic->model, values, towardsViewer, frame);
     // The occlusion map (glTF's occlusionTexture) scales the ambient and environment light only.
-    const float occlusion = ambientOcclusion(material, texturePoint);
+    const float occlusion = analytic ? ambientOcclusion(*analytic, texturePoint) : 1.0f;
     radiance += occlusion * ambientFactor * ambient;
     // Environment light: the GPU's image-based lighting, or sampled.
     const glm::vec3 unoccludedEnvironment =
-        material.measured ? measuredEnvironmentLighting(*material.measured, towardsViewer, frame, scene.environment)
+        measured ? measuredEnvironmentLighting(*measured, towardsViewer, frame, scene.environment)
         : options.sampleEnvironment
-            ? sampleEnvironmentLighting(material.model, values, towardsViewer, frame, scene.environment, pixelSeed,
+            ? sampleEnvironmentLighting(analytic->model, values, towardsViewer, frame, scene.environment, pixelSeed,
                                         options.environmentSamples)
-            : environmentLighting(material.model, values, towardsViewer, frame, scene.environment);
+            : environmentLighting(analytic->model, values, towardsViewer, frame, scene.environment);
     // ...less what the scene's spheres cover (sphere_occlusion.h).
     const glm::vec3 environment =
         occlusion * unoccludedEnvironment * environmentVisibility(occludingSpheres(scene), hit.position, frame.normal);
@@ -152,9 +156,9 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
     if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
     const glm::vec3 specular =
-        material.measured ? glm::vec3(0.0f)
-                          : traceSpecular(material.model, values, MissRadiance(scene.background, &scene.environment, options.backdrop),
-                                          sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
+        measured ? glm::vec3(0.0f)
+                 : traceSpecular(analytic->model, values, MissRadiance(scene.background, &scene.environment, options.backdrop),
+                                 sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
     radiance += specular;
     if (breakdown) {
         breakdown->frame = frame;

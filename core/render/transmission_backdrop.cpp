@@ -8,8 +8,10 @@
 
 namespace glint {
 
-bool transmitsLight(const Material& material) {
-    if (material.custom || material.measured) return false;
+bool transmitsLight(const Material& kind) {
+    const AnalyticMaterial* analytic = kind.analytic();
+    if (!analytic) return false;
+    const AnalyticMaterial& material = *analytic;
     if (material.model == BrdfModel::Glass) return true;
     if (material.model != BrdfModel::OpenPbr) return false;
     for (const MaterialTexture& texture : material.textures)

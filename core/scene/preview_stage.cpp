@@ -31,7 +31,7 @@ Scene previewStage(const Material& material, int width, int height) {
     scene.display.exposureStops = kPreviewStageExposureStops;
 
     Material floor = Material::withDefaults("stage floor", BrdfModel::Lambert);
-    floor.values = {0.3f, 0.3f, 0.3f};
+    floor.analytic()->values = {0.3f, 0.3f, 0.3f};
     Material shown = material;
     if (shown.name == floor.name) shown.name += " (material)";
     scene.materials = {shown, floor};

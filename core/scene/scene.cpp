@@ -5,10 +5,6 @@
 
 namespace glint {
 
-Material Material::withDefaults(std::string name, BrdfModel model) {
-    return Material{std::move(name), model, defaultValues(modelInfo(model).params), {}};
-}
-
 SurfaceInterpolation defaultInterpolation(const Shape& shape) {
     return std::holds_alternative<SphereShape>(shape) ? SurfaceInterpolation::Exact : SurfaceInterpolation::Phong;
 }

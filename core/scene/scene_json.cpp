@@ -67,21 +67,26 @@ Material readMaterial(ObjectReader& reader, const std::string& file) {
         for (const ModelInfo& info : allModels()) list += std::string(list.empty() ? "" : ", ") + info.id;
         reader.fail("model", "unknown model '" + modelId + "' (known models: " + list + ")");
     }
-    material.model = *model;
-    material.values = readParamValues(reader, modelInfo(*model).params);
-    readMaterialTextures(reader, material, file);
+    AnalyticMaterial& analytic = material.kind.emplace<AnalyticMaterial>(*model, readParamValues(reader, modelInfo(*model).params));
+    readMaterialTextures(reader, analytic, file);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
 }
 
 // `file`: where the JSON goes, so that texture and .brdf paths are written relative to it ("" for absolute).
 json materialBody(const Material& material, const std::string& file) {
-    if (material.custom) return customBrdfMaterialBody(material, file);
-    if (material.measured) return measuredMaterialBody(material, file);
-    json out = {{"name", material.name}, {"model", modelInfo(material.model).id}};
-    writeParamValues(out, modelInfo(material.model).params, material.values);
-    if (json textures = materialTexturesToJson(material, file); !textures.is_null()) out["textures"] = textures;
-    return out;
+    return std::visit(Overloaded{[&](const AnalyticMaterial& analytic) {
+                                     json out = {{"name", material.name}, {"model", modelInfo(analytic.model).id}};
+                                     writeParamValues(out, modelInfo(analytic.model).params, analytic.values);
+                                     if (json textures = materialTexturesToJson(analytic, file); !textures.is_null())
+                                         out["textures"] = textures;
+                                     return out;
+                                 },
+                                 [&](const CustomMaterial& custom) { return customBrdfMaterialBody(material.name, custom, file); },
+                                 [&](const MeasuredMaterial& measured) {
+                                     return measuredMaterialBody(material.name, measured, file);
+                                 }},
+                      material.kind);
 }
 
 // --- lights ---------------------------------------------------------------------------------

@@ -61,17 +61,17 @@ MaterialTexture defaultTexture(const std::string& parameter, const ParamSpec* sp
     return texture;
 }
 
-const MaterialTexture* findTexture(const Material& material, const std::string& parameter) {
+const MaterialTexture* findTexture(const AnalyticMaterial& material, const std::string& parameter) {
     for (const MaterialTexture& texture : material.textures)
         if (texture.parameter == parameter) return &texture;
     return nullptr;
 }
 
-MaterialTexture* findTexture(Material& material, const std::string& parameter) {
+MaterialTexture* findTexture(AnalyticMaterial& material, const std::string& parameter) {
     return const_cast<MaterialTexture*>(findTexture(std::as_const(material), parameter));
 }
 
-void putTexture(Material& material, MaterialTexture texture) {
+void putTexture(AnalyticMaterial& material, MaterialTexture texture) {
     removeTexture(material, texture.parameter);
     const auto table = modelInfo(material.model).params;
     const auto order = [&](const MaterialTexture& t) {
@@ -85,7 +85,7 @@ void putTexture(Material& material, MaterialTexture texture) {
     material.textures.insert(at, std::move(texture));
 }
 
-void removeTexture(Material& material, const std::string& parameter) {
+void removeTexture(AnalyticMaterial& material, const std::string& parameter) {
     std::erase_if(material.textures, [&](const MaterialTexture& t) { return t.parameter == parameter; });
 }
 
@@ -101,7 +101,7 @@ Status checkTexelRange(const TextureImage& image, const MaterialTexture& texture
     return success();
 }
 
-Status setTextureImage(Material& material, const std::string& parameter, const std::string& path) {
+Status setTextureImage(AnalyticMaterial& material, const std::string& parameter, const std::string& path) {
     std::string error;
     const ParamSpec* spec = texturableParam(material.model, parameter, error);
     if (!error.empty()) return makeError(error);

@@ -20,12 +20,12 @@ const ParamSpec* texturableParam(BrdfModel model, const std::string& parameter, 
 MaterialTexture defaultTexture(const std::string& parameter, const ParamSpec* spec, TextureKind kind);
 
 // The texture on `parameter`, or nullptr.
-MaterialTexture* findTexture(Material& material, const std::string& parameter);
-const MaterialTexture* findTexture(const Material& material, const std::string& parameter);
+MaterialTexture* findTexture(AnalyticMaterial& material, const std::string& parameter);
+const MaterialTexture* findTexture(const AnalyticMaterial& material, const std::string& parameter);
 // Puts `texture` on its parameter (replacing one there), keeping table order (then the coat
 // normal map, the occlusion map, the normal map last).
-void putTexture(Material& material, MaterialTexture texture);
-void removeTexture(Material& material, const std::string& parameter);
+void putTexture(AnalyticMaterial& material, MaterialTexture texture);
+void removeTexture(AnalyticMaterial& material, const std::string& parameter);
 
 // Checks that the texels a parameter reads lie in [0, 1] (reflectances and blend weights).
 Status checkTexelRange(const TextureImage& image, const MaterialTexture& texture, const ParamSpec* spec);
@@ -33,6 +33,6 @@ Status checkTexelRange(const TextureImage& image, const MaterialTexture& texture
 // Points `parameter`'s texture at the image `path` (an image texture with defaults when it had
 // none, else keeping its settings). The file is decoded and checked first: on failure the
 // material is left exactly as it was and the Diagnostic names the file.
-Status setTextureImage(Material& material, const std::string& parameter, const std::string& path);
+Status setTextureImage(AnalyticMaterial& material, const std::string& parameter, const std::string& path);
 
 }  // namespace glint

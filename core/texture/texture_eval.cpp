@@ -85,7 +85,7 @@ glm::vec4 evaluateTexture(const MaterialTexture& texture, const TexturePoint& po
     return glm::vec4(glm::mix(texture.valueA, texture.valueB, weight), 1.0f);
 }
 
-std::vector<float> texturedValues(const Material& material, const TexturePoint& point) {
+std::vector<float> texturedValues(const AnalyticMaterial& material, const TexturePoint& point) {
     std::vector<float> values = material.values;
     if (material.textures.empty()) return values;
     const auto table = modelInfo(material.model).params;
@@ -106,7 +106,7 @@ std::vector<float> texturedValues(const Material& material, const TexturePoint& 
     return values;
 }
 
-float ambientOcclusion(const Material& material, const TexturePoint& point) {
+float ambientOcclusion(const AnalyticMaterial& material, const TexturePoint& point) {
     for (const MaterialTexture& texture : material.textures) {
         if (texture.parameter != kOcclusionMapKey) continue;
         const glm::vec4 sampled = evaluateTexture(texture, point);
@@ -130,7 +130,7 @@ glm::vec3 mappedNormal(const MaterialTexture& texture, const TexturePoint& point
 
 }  // namespace
 
-ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame) {
+ShadingFrame normalMappedFrame(const AnalyticMaterial& material, const TexturePoint& point, const ShadingFrame& frame) {
     ShadingFrame mapped = frame;
     for (const MaterialTexture& texture : material.textures)
         if (texture.parameter == kNormalMapKey)

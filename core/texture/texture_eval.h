@@ -38,12 +38,12 @@ glm::vec4 sampleImage(const TextureImage& image, glm::vec2 uv, bool bilinear, Te
 glm::vec4 evaluateTexture(const MaterialTexture& texture, const TexturePoint& point);
 
 // The material's packed values with each textured parameter replaced by its texture's value.
-std::vector<float> texturedValues(const Material& material, const TexturePoint& point);
+std::vector<float> texturedValues(const AnalyticMaterial& material, const TexturePoint& point);
 // The occlusion map's value at the point (1 without one): what scales ambient and environment light.
-float ambientOcclusion(const Material& material, const TexturePoint& point);
+float ambientOcclusion(const AnalyticMaterial& material, const TexturePoint& point);
 // The frame whose normal is the normal map's (tangent space: n = 2·rgb − 1 along tangent,
 // bitangent, normal), or `frame` itself when the material has no normal map; its coatNormal is
 // the coat normal map's, read in `frame` too (zero without one).
-ShadingFrame normalMappedFrame(const Material& material, const TexturePoint& point, const ShadingFrame& frame);
+ShadingFrame normalMappedFrame(const AnalyticMaterial& material, const TexturePoint& point, const ShadingFrame& frame);
 
 }  // namespace glint

@@ -82,7 +82,7 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
 
 }  // namespace
 
-void readMaterialTextures(ObjectReader& materialReader, Material& material, const std::string& referencingFile) {
+void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& material, const std::string& referencingFile) {
     if (!materialReader.has("textures")) return;
     const json& node = materialReader.take("textures");
     if (!node.is_object()) materialReader.fail("textures", "must be an object keyed by parameter name");
@@ -100,7 +100,7 @@ void readMaterialTextures(ObjectReader& materialReader, Material& material, cons
         materialReader.fail("textures", "at most " + std::to_string(kMaxMaterialTextures) + " textures per material");
 }
 
-json materialTexturesToJson(const Material& material, const std::string& targetFile) {
+json materialTexturesToJson(const AnalyticMaterial& material, const std::string& targetFile) {
     if (material.textures.empty()) return nullptr;
     const auto table = modelInfo(material.model).params;
     json out = json::object();

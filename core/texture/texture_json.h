@@ -12,13 +12,13 @@
 
 namespace glint {
 
-// Reads material["textures"] into material.textures (material.model already set); image files
+// Reads material["textures"] into material.textures (its model already set); image files
 // are resolved against the directory of `referencingFile` and decoded. Throws JsonReadError
 // through `materialReader`, as every reader of the file format does.
-void readMaterialTextures(ObjectReader& materialReader, Material& material, const std::string& referencingFile);
+void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& material, const std::string& referencingFile);
 
 // The "textures" object, or null when the material has none. Image paths are written relative
 // to the directory of `targetFile` (absolute when it is empty).
-nlohmann::json materialTexturesToJson(const Material& material, const std::string& targetFile);
+nlohmann::json materialTexturesToJson(const AnalyticMaterial& material, const std::string& targetFile);
 
 }  // namespace glint

@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     std::printf("\n");
     const auto start = std::chrono::steady_clock::now();
     for (const auto& entry : test::accuracyMaterials()) {
-        const BrdfModel model = entry.material.model;
+        const BrdfModel model = entry.material.analytic()->model;
         if (!all && model != BrdfModel::Lambert && model != BrdfModel::CookTorrance) continue;
         std::printf("%-28s", entry.name.c_str());
         for (const auto& map : maps) {

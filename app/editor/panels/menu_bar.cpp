@@ -44,7 +44,7 @@ void drawFileMenu(EditorState& state) {
         if (ImGui::MenuItem("Open BRDF Explorer file (.brdf, .bparam)…", nullptr, false, hasObject))
             requestFileBrowser(state.fileBrowser, FilePurpose::OpenBrdf, "");
         const bool customMaterial =
-            hasObject && state.session.scene().materials[state.session.scene().objects[state.selectedObject].materialIndex].custom;
+            hasObject && state.session.scene().materials[state.session.scene().objects[state.selectedObject].materialIndex].custom();
         if (ImGui::MenuItem("Save parameter values as .bparam…", nullptr, false, customMaterial))
             requestFileBrowser(state.fileBrowser, FilePurpose::SaveBparamAs, "values.bparam");
     }

@@ -41,12 +41,9 @@ bool samePlotMaterials(const std::vector<PlotMaterial>& a, const std::vector<Plo
 
 // Why the Fresnel cell is empty: a measured table or a shader has no index to plot.
 std::string noFresnelText(const std::vector<PlottedMaterial>& plotted) {
-    for (const PlottedMaterial& entry : plotted) {
-        if (entry.material.measured)
-            return "Fresnel: " + entry.material.name + " is a measured table (MERL): it has no index n + iκ to plot";
-        if (entry.material.custom)
-            return "Fresnel: " + entry.material.name + " is a .brdf shader: it declares no index n + iκ to plot";
-    }
+    for (const PlottedMaterial& entry : plotted)
+        if (const std::string kind = kindWithoutIndex(entry.material); !kind.empty())
+            return "Fresnel: " + entry.material.name + " is " + kind + ": it has no index n + iκ to plot";
     return "Fresnel: no plotted material has an index n (+ iκ)";
 }
 
