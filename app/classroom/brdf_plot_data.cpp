@@ -99,15 +99,16 @@ float plotLuminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 
 
 std::optional<PlotEnvironmentAccuracy> plotEnvironmentAccuracy(const PlotMaterial& material, const Environment& environment,
                                                                float incidenceDegrees) {
-    if (!environment.enabled() || material.measured || material.sampler || !modelInfo(material.model).glslEnvironment)
+    const AnalyticMaterial* analytic = material.analytic();
+    if (!environment.enabled() || !analytic || material.sampler || !modelInfo(analytic->model).glslEnvironment)
         return std::nullopt;
     // The plot's frame turned so that its normal is +y and its +x (the mirror side) is +z.
     const ShadingFrame frame{glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
     const glm::vec3 wo = frame.toWorld(plotOutgoingDirection(incidenceDegrees * kPlotDegrees));
     PlotEnvironmentAccuracy accuracy;
-    accuracy.method = environmentApproximation(material.model, material.values, environment);
-    accuracy.preview = environmentLighting(material.model, material.values, wo, frame, environment);
-    accuracy.truth = sampleEnvironmentLighting(material.model, material.values, wo, frame, environment, 1u,
+    accuracy.method = environmentApproximation(analytic->model, analytic->values, environment);
+    accuracy.preview = environmentLighting(analytic->model, analytic->values, wo, frame, environment);
+    accuracy.truth = sampleEnvironmentLighting(analytic->model, analytic->values, wo, frame, environment, 1u,
                                                kProbeEnvironmentSamples);
     return accuracy;
 }
