@@ -117,7 +117,7 @@ TEST(FusedDisplay, AFrameDrawnInBandsIsTheWholeFrame) {
 
 // The editor redraws only the objects of a changed material (Renderer::setRedrawOnlyChanges): the
 // frame is the whole frame, float and 8-bit, fused or through MSAA and the display pass, also when
-// a frame without MSAA drew into the resolve target in between.
+// a frame without MSAA drew into the resolve target in between, and when drawn in bands.
 TEST(FusedDisplay, AFrameRedrawnWhereAMaterialChangedIsTheWholeFrame) {
     Renderer& renderer = test::sharedHeadless().renderer();
     for (int samples : {1, 4}) {
@@ -141,6 +141,17 @@ TEST(FusedDisplay, AFrameRedrawnWhereAMaterialChangedIsTheWholeFrame) {
         renderer.displayOffscreen(after.display);
         EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples";
         EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples";
+        // In bands (the full frame after a drag): one band of a third value, then the whole frame
+        // of `after` again, the first band's pixels included.
+        Scene third = before;
+        third.materials[0].values[0] = 0.9f;
+        ASSERT_TRUE(renderer.renderRadiance(before, 96, 64).ok());
+        ASSERT_TRUE(renderer.renderRadiance(third, 96, 64, MeshDetail::Full, RowBand{32, 32}).ok());
+        for (const RowBand rows : {RowBand{40, 24}, RowBand{0, 40}})
+            ASSERT_TRUE(renderer.renderRadiance(after, 96, 64, MeshDetail::Full, rows).ok());
+        renderer.displayOffscreen(after.display);
+        EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples, in bands";
+        EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples, in bands";
         renderer.setRedrawOnlyChanges(false);
     }
 }

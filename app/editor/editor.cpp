@@ -330,9 +330,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             }
         }
         if (plan.render) {
-            // Only a material's objects redrawn: fast enough to draw at once, not in bands.
+            // Only a material's objects redrawn (its time says nothing of a whole frame's).
             const bool changesOnly = renderer.drawsOnlyChanges(*drawn, renderPixels.x, renderPixels.y);
-            if (changesOnly && plan.band == 0) plan.bands = 1;
             const long long shadowMapRenders = renderer.shadowMapRenders();
             const auto start = std::chrono::steady_clock::now();
             // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.

@@ -385,7 +385,8 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
 std::optional<PixelRegion> Renderer::changedPixels(const HeldFrame& frame) const {
     const std::optional<HeldFrame>& held = held_[frame.samples > 1 ? 1 : 0];
     if (!redrawOnlyChanges_ || !held || held->standIns || !held->sameTargets(frame)) return std::nullopt;
-    return materialChangeRect(held->scene, frame.scene, frame.width, frame.height);
+    const std::optional<PixelRegion> changed = materialChangeRect(held->scene, frame.scene, frame.width, frame.height);
+    return changed && held->newer ? boundsOf(*changed, *held->newer) : changed;
 }
 
 bool Renderer::drawsOnlyChanges(const Scene& scene, int width, int height) const {
@@ -435,10 +436,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     std::optional<HeldFrame> frame;
     if (redrawOnlyChanges_) frame = HeldFrame{scene, width, height, samples, radianceWritten_, fusedDisplay_.has_value()};
     std::optional<HeldFrame>& held = held_[samples > 1 ? 1 : 0];
-    std::optional<PixelRegion> region;
-    if (frame && rows.count == 0) region = changedPixels(*frame);
+    std::optional<PixelRegion> region = frame ? changedPixels(*frame) : std::nullopt;
     const bool changesOnly = region.has_value();
-    if (rows.count > 0) region = PixelRegion{0, rows.first, width, rows.count};
+    if (rows.count > 0) region = intersectionOf(region.value_or(PixelRegion{0, 0, width, height}), {0, rows.first, width, rows.count});
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
@@ -623,7 +623,9 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     resolveHeld_ = samples > 1 && (!region || changesOnly);
     if (samples > 1) held_[0].reset();  // the resolve overwrote the single-sample frame's float image
     if (frame) frame->standIns = simplifiedMeshesDrawn_ > 0 || shadowMaps_->provisional();
-    held = result && rows.count == 0 ? std::move(frame) : std::nullopt;
+    if (!result || !frame || frame->standIns || (rows.count > 0 && !changesOnly)) held.reset();
+    else if (rows.count > 0) held->newer = held->newer ? boundsOf(*held->newer, *region) : *region;  // a band: the rest holds `held`
+    else held = std::move(frame);
     if (result) shaderError_.clear();
     // An object was left out: the display pass runs again, from the float image where there is one.
     else if (radianceWritten_) fusedDisplay_.reset();

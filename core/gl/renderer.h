@@ -97,11 +97,11 @@ public:
     // Redraws only what a material change reaches (off by default; the editor turns it on): when the
     // targets hold a frame of the same scene but for material values, at the same size and samples,
     // drawn with no stand-in (simplified mesh, shadow map drawn for a drag), renderRadiance draws
-    // only the pixels of the changed materials' objects (render/material_change.h) and the rest
-    // stays as held. The picture is the whole frame's.
+    // only the pixels of the changed materials' objects (render/material_change.h), a band of rows
+    // only those within it, and the rest stays as held. The picture is the whole frame's.
     void setRedrawOnlyChanges(bool enabled) { redrawOnlyChanges_ = enabled; }
-    // Whether renderRadiance(scene, width, height) would draw only such pixels (the editor draws that
-    // frame at once rather than in bands).
+    // Whether renderRadiance(scene, width, height) would draw only such pixels (the editor does not
+    // take its time for a whole frame's).
     bool drawsOnlyChanges(const Scene& scene, int width, int height) const;
     // The transmission backdrop (on by default; gl/transmission_pass.h). Off: transmissive
     // surfaces see only the environment or background, as a frame with no opaque object does.
@@ -192,6 +192,8 @@ private:
         int width = 0, height = 0, samples = 1;
         bool radianceWritten = false, fused = false;
         bool standIns = false;  // simplified meshes or provisional shadow maps (set once drawn)
+        // Pixels drawn since from a newer scene (bands of a frame that redrew only changes).
+        std::optional<PixelRegion> newer;
         bool sameTargets(const HeldFrame& o) const {
             return width == o.width && height == o.height && samples == o.samples && radianceWritten == o.radianceWritten &&
                    fused == o.fused;

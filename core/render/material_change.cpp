@@ -24,16 +24,10 @@ std::optional<PixelRegion> materialChangeRect(const Scene& before, const Scene& 
     }
     if (std::none_of(changed.begin(), changed.end(), [](bool c) { return c; })) return std::nullopt;
     if (drawsTransmissionBackdrop(after) || sceneToJson(valuesAsAfter) != sceneToJson(after)) return std::nullopt;
-    int left = width, bottom = height, right = 0, top = 0;
-    for (const SceneObject& object : after.objects) {
-        if (!changed[object.materialIndex]) continue;
-        const PixelRegion rect = coveredRect(after.camera, boundingSphere(object.shape), width, height);
-        if (rect.width == 0 || rect.height == 0) continue;
-        left = std::min(left, rect.x), bottom = std::min(bottom, rect.y);
-        right = std::max(right, rect.x + rect.width), top = std::max(top, rect.y + rect.height);
-    }
-    if (right <= left || top <= bottom) return PixelRegion{};  // no changed object is in the frame
-    return PixelRegion{left, bottom, right - left, top - bottom};
+    PixelRegion region;  // empty when no changed object is in the frame
+    for (const SceneObject& object : after.objects)
+        if (changed[object.materialIndex]) region = boundsOf(region, coveredRect(after.camera, boundingSphere(object.shape), width, height));
+    return region;
 }
 
 }  // namespace glint

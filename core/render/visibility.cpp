@@ -54,6 +54,18 @@ double coveredPixels(const Camera& camera, const BoundingSphere& bounds, int wid
     return std::min(image, 3.14159265358979 * radiusPixels * radiusPixels);
 }
 
+PixelRegion intersectionOf(const PixelRegion& a, const PixelRegion& b) {
+    const int x = std::max(a.x, b.x), y = std::max(a.y, b.y);
+    return {x, y, std::max(0, std::min(a.x + a.width, b.x + b.width) - x), std::max(0, std::min(a.y + a.height, b.y + b.height) - y)};
+}
+
+PixelRegion boundsOf(const PixelRegion& a, const PixelRegion& b) {
+    if (a.width == 0 || a.height == 0) return b;
+    if (b.width == 0 || b.height == 0) return a;
+    const int x = std::min(a.x, b.x), y = std::min(a.y, b.y);
+    return {x, y, std::max(a.x + a.width, b.x + b.width) - x, std::max(a.y + a.height, b.y + b.height) - y};
+}
+
 PixelRegion coveredRect(const Camera& camera, const BoundingSphere& bounds, int width, int height) {
     const glm::mat4 projection = camera.projectionMatrix(static_cast<float>(width) / height);
     const glm::vec3 center = glm::vec3(camera.view() * glm::vec4(bounds.center, 1.0f));  // the eye looks along −z

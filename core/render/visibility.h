@@ -45,6 +45,8 @@ double coveredPixels(const Camera& camera, const BoundingSphere& bounds, int wid
 struct PixelRegion {
     int x = 0, y = 0, width = 0, height = 0;
 };
+PixelRegion intersectionOf(const PixelRegion& a, const PixelRegion& b);
+PixelRegion boundsOf(const PixelRegion& a, const PixelRegion& b);  // the smallest region holding both
 
 // The pixels of a width × height frame of the camera that the sphere may cover, any MSAA sample
 // of them: the bounds of its projected outline, widened by a pixel; the whole frame when the
