@@ -57,6 +57,36 @@ TEST(ViewportRefresh, ADragOfASlowSceneDrawsSimplifiedMeshesThenTheFullFrame) {
     EXPECT_FALSE(refresh.plan(idle(11.5)).render);
 }
 
+// A material's slider redraws only that material's objects (gl/renderer.h) once a frame at the
+// drag's scale was drawn whole: such a drag keeps its scale, going to ½ from ¼ when a frame there
+// would fit the budget, and the next drag starts there; the full frame's time stays the whole one's.
+TEST(ViewportRefresh, ADragThatRedrawsOnlyAMaterialKeepsItsScale) {
+    ViewportRefresh refresh = afterFullFrame(345.0);
+    RefreshPlan plan = refresh.plan(change(10.0, true));
+    EXPECT_EQ(plan.pixelScale, 4);  // ½ would take about 86 ms
+    refresh.rendered(plan, 35.0, false);  // whole, over the budget
+    plan = refresh.plan(change(10.1, true));
+    EXPECT_EQ(plan.pixelScale, 4);  // kept: the next may redraw only the changes
+    refresh.rendered(plan, 6.0, false, true);
+    plan = refresh.plan(change(10.2, true));
+    EXPECT_EQ(plan.pixelScale, 2);  // about 24 ms there
+    refresh.rendered(plan, 80.0, false);
+    for (double now : {10.3, 10.4}) {
+        plan = refresh.plan(change(now, true));
+        EXPECT_EQ(plan.pixelScale, 2);
+        refresh.rendered(plan, 30.0, false, true);
+    }
+    // Released: the full frame, in bands, redraws only the changes too; its time is not a whole frame's.
+    do {
+        plan = refresh.plan(idle(10.5));
+        EXPECT_EQ(plan.pixelScale, 1);
+        refresh.rendered(plan, 10.0, false, true);
+    } while (refresh.refining());
+    EXPECT_EQ(plan.band + 1, ViewportRefresh::kMostRefineBands);
+    EXPECT_TRUE(refresh.fullFramesAreSlow());
+    EXPECT_EQ(refresh.plan(change(11.0, true)).pixelScale, 2);
+}
+
 TEST(ViewportRefresh, ADragDuringTheBandsAbandonsThem) {
     ViewportRefresh refresh = afterFullFrame(200.0);
     RefreshPlan plan = refresh.plan(change(1.0, true));

@@ -115,5 +115,46 @@ TEST(FusedDisplay, AFrameDrawnInBandsIsTheWholeFrame) {
     }
 }
 
+// The editor redraws only the objects of a changed material (Renderer::setRedrawOnlyChanges): the
+// frame is the whole frame, float and 8-bit, fused or through MSAA and the display pass, also when
+// a frame without MSAA drew into the resolve target in between, and when drawn in bands.
+TEST(FusedDisplay, AFrameRedrawnWhereAMaterialChangedIsTheWholeFrame) {
+    Renderer& renderer = test::sharedHeadless().renderer();
+    for (int samples : {1, 4}) {
+        Scene before = defaultScene();  // studio light, a shadowed key light, the floor, a sky
+        before.msaaSamples = samples;
+        Scene after = before;
+        paramValues(after.materials[0])[0] = 0.1f;
+        ASSERT_TRUE(renderer.renderRadiance(after, 96, 64).ok());
+        renderer.displayOffscreen(after.display);
+        const RadianceImage wholeRadiance = renderer.readRadiance();
+        const DisplayImage wholeDisplay = renderer.readDisplay();
+        renderer.setRedrawOnlyChanges(true);
+        ASSERT_TRUE(renderer.renderRadiance(before, 96, 64).ok());
+        Scene small = before;
+        small.msaaSamples = 1;
+        if (samples > 1) {
+            ASSERT_TRUE(renderer.renderRadiance(small, 48, 32).ok());
+        }
+        EXPECT_TRUE(renderer.drawsOnlyChanges(after, 96, 64));
+        ASSERT_TRUE(renderer.renderRadiance(after, 96, 64).ok());
+        renderer.displayOffscreen(after.display);
+        EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples";
+        EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples";
+        // In bands (the full frame after a drag): one band of a third value, then the whole frame
+        // of `after` again, the first band's pixels included.
+        Scene third = before;
+        paramValues(third.materials[0])[0] = 0.9f;
+        ASSERT_TRUE(renderer.renderRadiance(before, 96, 64).ok());
+        ASSERT_TRUE(renderer.renderRadiance(third, 96, 64, MeshDetail::Full, RowBand{32, 32}).ok());
+        for (const RowBand rows : {RowBand{40, 24}, RowBand{0, 40}})
+            ASSERT_TRUE(renderer.renderRadiance(after, 96, 64, MeshDetail::Full, rows).ok());
+        renderer.displayOffscreen(after.display);
+        EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples, in bands";
+        EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples, in bands";
+        renderer.setRedrawOnlyChanges(false);
+    }
+}
+
 }  // namespace
 }  // namespace glint

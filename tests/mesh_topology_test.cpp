@@ -1,7 +1,7 @@
 // Closed-mesh detection (geometry/mesh_topology.h) on the procedural shapes, open and broken
 // meshes, inside-out and two-sided ones, welding by position; and the culling decisions built on it
 // (render/visibility.h): which faces a camera or a shadow map may skip, frustum rejection, and the
-// pixels a sphere may cover.
+// pixels a sphere may cover (how many, and the rectangle that holds them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -126,6 +126,41 @@ TEST(Visibility, CoveredPixelsBoundTheProjectedDisc) {
     EXPECT_EQ(coveredPixels(camera, {{0, 0, 4}, 1.0f}, 64, 48), 64.0 * 48.0);     // the camera is inside
     camera.projection = Projection::Orthographic;  // 2.5 m high
     EXPECT_NEAR(coveredPixels(camera, {{0, 0, 0}, 0.25f}, 100, 100), 3.14159265358979 * 10.0 * 10.0, 1e-3);
+}
+
+// Every point of the sphere projects into its covered rectangle, which is tight: a pixel's margin
+// beyond the outline, in perspective from several directions and orthographic.
+TEST(Visibility, CoveredRectHoldsTheSphereAndLittleElse) {
+    Camera camera;  // at (0, 0, 4) looking at the origin, 40° vertical field of view
+    const int width = 160, height = 120;
+    for (Projection projection : {Projection::Perspective, Projection::Orthographic})
+        for (const BoundingSphere sphere : {BoundingSphere{{0, 0, 0}, 1.0f}, BoundingSphere{{1.3f, -0.7f, 1.0f}, 0.4f},
+                                            BoundingSphere{{-2.0f, 1.0f, -3.0f}, 1.5f}}) {
+            camera.projection = projection;
+            const PixelRegion rect = coveredRect(camera, sphere, width, height);
+            const glm::mat4 viewProjection = camera.viewProjection(static_cast<float>(width) / height);
+            glm::vec2 low(1e9f), high(-1e9f);
+            for (int i = 0; i < 64; ++i)
+                for (int j = 0; j <= 32; ++j) {
+                    const float phi = 2.0f * 3.14159265f * i / 64, theta = 3.14159265f * j / 32;
+                    const glm::vec3 point = sphere.center + sphere.radius * glm::vec3(std::sin(theta) * std::cos(phi),
+                                                                                      std::cos(theta), std::sin(theta) * std::sin(phi));
+                    const glm::vec4 clip = viewProjection * glm::vec4(point, 1.0f);
+                    const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
+                    low = glm::min(low, pixel), high = glm::max(high, pixel);
+                }
+            EXPECT_LE(rect.x, std::max(0.0f, low.x));
+            EXPECT_LE(rect.y, std::max(0.0f, low.y));
+            EXPECT_GE(rect.x + rect.width, std::min<float>(width, high.x));
+            EXPECT_GE(rect.y + rect.height, std::min<float>(height, high.y));
+            EXPECT_GE(rect.x, low.x - 3.0f);  // the outline sampled at 64 meridians: a pixel's margin and a little
+            EXPECT_LE(rect.x + rect.width, high.x + 3.0f);
+        }
+    camera.projection = Projection::Perspective;
+    const PixelRegion around = coveredRect(camera, {{0, 0, 4.5f}, 1.0f}, width, height);  // holds the eye
+    EXPECT_EQ(around.width * around.height, width * height);
+    const PixelRegion behind = coveredRect(camera, {{0, 0, 5.5f}, 1.0f}, width, height);  // behind the eye
+    EXPECT_EQ(behind.width * behind.height, width * height);
 }
 
 }  // namespace

@@ -212,5 +212,12 @@ TEST(SceneJson, ToneMapRoundTripsAndUnknownCurvesAreRefused) {
     EXPECT_NE(refused.error().format().find("tone_map"), std::string::npos) << refused.error().format();
 }
 
+// `glint bench --scene-file tests/bench/scenes/editor_default.json` times the scene the editor opens with.
+TEST(SceneJson, TheEditorBenchSceneIsTheDefaultScene) {
+    auto scene = loadScene(std::string(GLINT_TEST_DATA_DIR) + "/bench/scenes/editor_default.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().format();
+    EXPECT_EQ(sceneToJson(*scene), sceneToJson(defaultScene())) << sceneToJson(defaultScene()).dump(2);
+}
+
 }  // namespace
 }  // namespace glint

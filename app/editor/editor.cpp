@@ -153,6 +153,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     // written (the screenshot renders its own when it saves an EXR).
     renderer.setFusedDisplay(true);
     renderer.setRadianceKept(false);
+    // A material's slider redraws only the pixels of the objects that wear it.
+    renderer.setRedrawOnlyChanges(true);
     // New specialised programs are built on a worker thread, the loop woken when one is ready.
     if (auto context = platform->createWorkerContext())
         renderer.compileInBackground(std::make_unique<ProgramCompiler>(std::move(context), platform->procAddressLoader(),
@@ -331,6 +333,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             }
         }
         if (plan.render) {
+            // Only a material's objects redrawn (its time says nothing of a whole frame's).
+            const bool changesOnly = renderer.drawsOnlyChanges(*drawn, renderPixels.x, renderPixels.y);
             const long long shadowMapRenders = renderer.shadowMapRenders();
             const auto start = std::chrono::steady_clock::now();
             // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
@@ -354,7 +358,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             state.lastRenderMilliseconds = refinedMilliseconds;
             state.standInProgramsShown = renderer.standInProgramsDrawn();
             state.waitingForPrograms = state.standInProgramsShown > 0;
-            refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0);
+            refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0,
+                             changesOnly);
             // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
             if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
                 renderer.prepareSimplifiedMeshes(state.session.scene());

@@ -25,10 +25,10 @@ void hashBytes(std::uint64_t& hash, const void* data, size_t size) {
     for (; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
 }
 
-// Everything the list's pixels follow from: vertices, indices and commands.
-std::uint64_t hashList(const ImDrawList& list) {
+// What the list's pixels follow from but its vertices: the vertex count, indices and commands.
+std::uint64_t hashStructure(const ImDrawList& list) {
     std::uint64_t hash = 14695981039346656037ull;
-    hashBytes(hash, list.VtxBuffer.Data, static_cast<size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+    hashBytes(hash, &list.VtxBuffer.Size, sizeof list.VtxBuffer.Size);
     hashBytes(hash, list.IdxBuffer.Data, static_cast<size_t>(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
     for (const ImDrawCmd& command : list.CmdBuffer) {
         hashBytes(hash, &command.ClipRect, sizeof command.ClipRect);
@@ -64,6 +64,26 @@ ImVec4 listBounds(const ImDrawList& list, const ImDrawData& data) {
 }
 
 bool empty(const ImVec4& r) { return r.z <= r.x || r.w <= r.y; }
+
+// The bounds of the triangles with a vertex unlike the same vertex of `before` (a list of the same
+// structure), their old and new corners both, a pixel wider: what a change of a slider's value or a
+// label of the same length redraws. Empty when no vertex changed.
+ImVec4 changedTriangles(const ImDrawList& list, const std::vector<ImDrawVert>& before) {
+    ImVec4 bounds(1e30f, 1e30f, -1e30f, -1e30f);
+    const auto add = [&bounds](const ImVec2& p) {
+        bounds.x = std::min(bounds.x, p.x - 1.0f), bounds.y = std::min(bounds.y, p.y - 1.0f);
+        bounds.z = std::max(bounds.z, p.x + 1.0f), bounds.w = std::max(bounds.w, p.y + 1.0f);
+    };
+    const auto same = [&](unsigned v) { return std::memcmp(&list.VtxBuffer[static_cast<int>(v)], &before[v], sizeof(ImDrawVert)) == 0; };
+    for (const ImDrawCmd& command : list.CmdBuffer)
+        for (unsigned i = 0; i + 2 < command.ElemCount; i += 3) {
+            unsigned v[3];
+            for (int k = 0; k < 3; ++k) v[k] = command.VtxOffset + list.IdxBuffer[static_cast<int>(command.IdxOffset + i + k)];
+            if (same(v[0]) && same(v[1]) && same(v[2])) continue;
+            for (unsigned vertex : v) add(list.VtxBuffer[static_cast<int>(vertex)].pos), add(before[vertex].pos);
+        }
+    return bounds;
+}
 
 ImVec4 intersection(const ImVec4& a, const ImVec4& b) {
     return ImVec4(std::max(a.x, b.x), std::max(a.y, b.y), std::min(a.z, b.z), std::min(a.w, b.w));
@@ -156,18 +176,31 @@ void UiLayerCache::draw(ImDrawData* data, const ImVec4& viewport, const float cl
         const int y0 = std::max(0, fbHeight - static_cast<int>(std::ceil((bounds.w - data->DisplayPos.y) * scale.y)));
         const int y1 = std::min(fbHeight, fbHeight - static_cast<int>(std::floor((bounds.y - data->DisplayPos.y) * scale.y)));
         if (x1 <= x0 || y1 <= y0) continue;
-        const std::uint64_t hash = hashList(*list);
+        const std::uint64_t structure = hashStructure(*list);
         Entry& entry = entries_[list];
-        // Redrawn when it changed, or was not drawn last frame (another list may have drawn there since).
-        if (entry.hash != hash || entry.frame + 1 != frame_) {
-            entry.hash = hash;
+        // Redrawn where its vertices changed when only they did, whole when more changed or it was
+        // not drawn last frame (another list may have drawn there since).
+        const bool continued = entry.frame + 1 == frame_ && entry.structure == structure &&
+                               entry.vertices.size() == static_cast<size_t>(list->VtxBuffer.Size);
+        const ImVec4 redrawn = continued ? intersection(changedTriangles(*list, entry.vertices), bounds) : bounds;
+        if (!empty(redrawn)) {
+            entry.structure = structure;
+            entry.vertices.assign(list->VtxBuffer.begin(), list->VtxBuffer.end());
+            const int rx0 = std::max(x0, static_cast<int>(std::floor((redrawn.x - data->DisplayPos.x) * scale.x)));
+            const int rx1 = std::min(x1, static_cast<int>(std::ceil((redrawn.z - data->DisplayPos.x) * scale.x)));
+            const int ry0 = std::max(y0, fbHeight - static_cast<int>(std::ceil((redrawn.w - data->DisplayPos.y) * scale.y)));
+            const int ry1 = std::min(y1, fbHeight - static_cast<int>(std::floor((redrawn.y - data->DisplayPos.y) * scale.y)));
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
             glEnable(GL_SCISSOR_TEST);
-            glScissor(x0, y0, x1 - x0, y1 - y0);
+            glScissor(rx0, ry0, std::max(0, rx1 - rx0), std::max(0, ry1 - ry0));
             glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
             glClear(GL_COLOR_BUFFER_BIT);  // as the screen is under the list
             glDisable(GL_SCISSOR_TEST);
+            // The backend scissors each command to its clip rectangle: kept to the redrawn part for the call.
+            std::vector<ImVec4> clips;
+            for (ImDrawCmd& command : list->CmdBuffer) clips.push_back(command.ClipRect), command.ClipRect = intersection(command.ClipRect, redrawn);
             renderLists(*data, &list, 1);
+            for (int i = 0; i < list->CmdBuffer.Size; ++i) list->CmdBuffer[i].ClipRect = clips[static_cast<size_t>(i)];
             ++listsRedrawn_;
         } else {
             ++listsCopied_;

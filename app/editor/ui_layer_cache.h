@@ -4,7 +4,8 @@
 // viewport's reduced-resolution render while dragging. A plain window (not a popup, tooltip or
 // child) drawn only with the font atlas, overlapping neither the viewport nor a window drawn before
 // it, depends on nothing but its own draw list: it is drawn into an offscreen copy of the screen
-// when its vertices, indices or commands change, and otherwise copied from there (an unscaled copy,
+// when its vertices, indices or commands change (only the triangles' bounds whose vertices moved,
+// when nothing else did: a slider's row), and otherwise copied from there (an unscaled copy,
 // no shading). Such a window is cut to its rectangle (its border's anti-aliased fringe reached one
 // pixel beyond). Everything else is drawn as ImGui_ImplOpenGL3_RenderDrawData would, in order.
 #pragma once
@@ -14,6 +15,7 @@
 
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 namespace glint {
 
@@ -33,7 +35,8 @@ public:
 
 private:
     struct Entry {
-        std::uint64_t hash = 0;
+        std::uint64_t structure = 0;  // of the list as last drawn: its vertex count, indices, commands
+        std::vector<ImDrawVert> vertices;  // and its vertices
         std::uint64_t frame = 0;  // the last frame that drew the list
     };
     void ensureTarget(int width, int height);

@@ -17,6 +17,7 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
     }
     nextBand_ = 0;
     if (input.sceneChanged && !input.dragging) lastChangeSeconds_ = input.nowSeconds;
+    const bool wasDragging = dragging_;
     dragging_ = input.dragging;
     // A drag ends its interaction at once (the release is the last input); other changes after
     // a pause, as nothing tells when the next one comes.
@@ -28,7 +29,20 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
     bands_ = plan.bands;
     if (!plan.render || !interacting || !fullFramesAreSlow()) return plan;
     if (input.simplifyWhileDragging) plan.detail = MeshDetail::Simplified;
-    if (input.dragging) {
+    const bool newScaleOverBudget = interactiveScaleIsNew_ && wasDragging && interactiveMilliseconds_ > kFrameBudgetMilliseconds;
+    if (input.dragging && interactiveMeasured_ && (interactiveChangesOnly_ || newScaleOverBudget)) {
+        // Frames that redraw only a changed material's objects keep their scale (at another, the
+        // first frame is drawn whole), and so does the drag's frame after a slow one at a new
+        // scale, which may be one.
+        // Coarser when such a frame takes twice the budget; ½ when one there would fit it.
+        plan.pixelScale = interactiveScale_;
+        const double milliseconds = interactiveChangesOnly_ ? interactiveMilliseconds_ : 0.0;
+        const double atHalf = milliseconds * interactiveScale_ * interactiveScale_ / (kCoarsestPixelScale * kCoarsestPixelScale);
+        if (milliseconds > 2.0 * kFrameBudgetMilliseconds)
+            plan.pixelScale = std::min(2 * interactiveScale_, kCoarsestPixelScaleOfSlowScenes);
+        else if (interactiveChangesOnly_ && interactiveScale_ > kCoarsestPixelScale && atHalf <= kFrameBudgetMilliseconds)
+            plan.pixelScale = kCoarsestPixelScale;
+    } else if (input.dragging) {
         // Frame cost taken as proportional to the pixels drawn: the scale that brings the last
         // interactive frame (or, before any, the last full one) within the budget.
         const double milliseconds = interactiveMeasured_ ? interactiveMilliseconds_ : fullFrameMilliseconds_;
@@ -41,7 +55,7 @@ RefreshPlan ViewportRefresh::plan(const Input& input) {
     return plan;
 }
 
-void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewStandIns) {
+void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewStandIns, bool drewChangesOnly) {
     if (plan.bands > 1) {
         bandsMilliseconds_ = (plan.band == 0 ? 0.0 : bandsMilliseconds_) + renderMilliseconds;
         nextBand_ = plan.band + 1 < plan.bands ? plan.band + 1 : 0;
@@ -52,10 +66,12 @@ void ViewportRefresh::rendered(const RefreshPlan& plan, double renderMillisecond
     if (shownReduced_ || plan.detail == MeshDetail::Simplified) {
         // Drawn for an interaction (with stand-ins or not yet: then it was the full mesh).
         interactiveMilliseconds_ = renderMilliseconds;
+        interactiveScaleIsNew_ = !interactiveMeasured_ || plan.pixelScale != interactiveScale_;
         interactiveScale_ = plan.pixelScale;
+        interactiveChangesOnly_ = drewChangesOnly;
         interactiveMeasured_ = true;
     }
-    if (!shownReduced_) fullFrameMilliseconds_ = renderMilliseconds;
+    if (!shownReduced_ && !drewChangesOnly) fullFrameMilliseconds_ = renderMilliseconds;
 }
 
 double ViewportRefresh::secondsToRefine(double nowSeconds, bool waitingForPrograms) const {

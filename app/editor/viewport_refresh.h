@@ -51,9 +51,10 @@ public:
     };
 
     RefreshPlan plan(const Input& input);
-    // After the planned frame was drawn: its render time and whether it drew a stand-in (a
-    // simplified mesh, a generic program).
-    void rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewStandIns);
+    // After the planned frame was drawn: its render time, whether it drew a stand-in (a simplified
+    // mesh, a generic program), and whether it drew only a changed material's objects (gl/renderer.h;
+    // its time says nothing about a whole frame's).
+    void rendered(const RefreshPlan& plan, double renderMilliseconds, bool drewStandIns, bool drewChangesOnly = false);
     // Seconds until a frame drawn with stand-ins is due for its full-detail redraw (for the event
     // wait); a large number when none is due or it waits for programs.
     double secondsToRefine(double nowSeconds, bool waitingForPrograms = false) const;
@@ -68,6 +69,8 @@ private:
     double interactiveMilliseconds_ = 0.0;
     int interactiveScale_ = 1;
     bool interactiveMeasured_ = false;
+    bool interactiveChangesOnly_ = false;  // it drew only a changed material's objects
+    bool interactiveScaleIsNew_ = false;   // its scale was not the one before's
     double lastChangeSeconds_ = -1e9;  // the last change outside a drag
     bool dragging_ = false;
     bool shownReduced_ = false;  // the frame on screen is not the full one

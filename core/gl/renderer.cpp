@@ -14,6 +14,7 @@
 #include "gl/material_glsl.h"
 #include "gl/material_textures.h"
 #include "gl/shader_specialisation.h"
+#include "render/material_change.h"
 #include "render/sphere_occlusion.h"
 #include "render/transmission_backdrop.h"
 #include "scene/plane_edge_fade.h"
@@ -322,6 +323,7 @@ bool Renderer::reloadChangedShaders() {
         }
     }
     if (changed) shaderError_ = error;
+    if (changed) held_[0].reset(), held_[1].reset();
     return changed;
 }
 
@@ -356,22 +358,19 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
     // As renderRadiance finds them (with the shadow maps of the frame before).
     const int samples = samplesFor(scene.msaaSamples);
     std::optional<DisplaySettings> fused;
-    if (fuseDisplay_ && samples == 1 && !scene.display.levelsRamp) fused = scene.display;
+    if (fusesDisplay(scene, samples)) fused = scene.display;
     const std::string frameDefines =
         specialise_ ? frameSpecialisation(packFrameUniforms(scene, width, height), shadowMaps_->block(), scene.environment, fused) : "";
     ProgramsReady ready = ProgramsReady::All;
     std::vector<SurfaceKey> missing;
     auto warmUpScene = std::make_shared<Scene>(scene);  // with the objects that need them
     warmUpScene->objects.clear();
-    // As renderRadiance decides: transmissive objects see a backdrop when an opaque object is drawn.
-    const auto transmissive = [&](const SceneObject& object) { return transmitsLight(scene.materials.at(object.materialIndex)); };
-    const bool backdropShown = transmissionBackdrop_ && std::any_of(scene.objects.begin(), scene.objects.end(), transmissive) &&
-                               !std::all_of(scene.objects.begin(), scene.objects.end(), transmissive);
+    const bool backdropShown = transmissionBackdrop_ && drawsTransmissionBackdrop(scene);  // as renderRadiance decides
     for (const SceneObject& object : scene.objects) {
         const Material& material = scene.materials.at(object.materialIndex);
         const AnalyticMaterial* analytic = material.analytic();
         if (!analytic) continue;
-        const SurfaceKey key{analytic->model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmissive(object)),
+        const SurfaceKey key{analytic->model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmitsLight(material)),
                              TexturedParams::of(*analytic).mask};
         if (surfacePrograms_.count(key) || failedInBackground_.count(key)) continue;
         missing.push_back(key);
@@ -383,6 +382,20 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
 }
 
 // --- drawing --------------------------------------------------------------------------------
+
+std::optional<PixelRegion> Renderer::changedPixels(const HeldFrame& frame) const {
+    const std::optional<HeldFrame>& held = held_[frame.samples > 1 ? 1 : 0];
+    if (!redrawOnlyChanges_ || !held || held->standIns || !held->sameTargets(frame)) return std::nullopt;
+    const std::optional<PixelRegion> changed = materialChangeRect(held->scene, frame.scene, frame.width, frame.height);
+    return changed && held->newer ? boundsOf(*changed, *held->newer) : changed;
+}
+
+bool Renderer::drawsOnlyChanges(const Scene& scene, int width, int height) const {
+    const int samples = samplesFor(scene.msaaSamples);
+    const bool fused = fusesDisplay(scene, samples);
+    // (A frame that captures a transmission backdrop writes the float image too, but draws every pixel.)
+    return changedPixels({scene, width, height, samples, keepRadiance_ || !fused, fused}).has_value();
+}
 
 Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail, RowBand rows) {
     platform_.makeCurrent();
@@ -409,20 +422,24 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     for (size_t i = 0; i < drawOrder.size(); ++i) drawOrder[i] = i;
     const auto transmissive = [&](size_t i) { return transmitsLight(scene.materials.at(scene.objects[i].materialIndex)); };
     const auto firstTransmissive = std::stable_partition(drawOrder.begin(), drawOrder.end(), [&](size_t i) { return !transmissive(i); });
-    // With no opaque object the backdrop would hold nothing: transmissive surfaces see the
-    // environment or background directly, and the frame costs no more than before.
-    const bool backdropNeeded =
-        transmissionBackdrop_ && firstTransmissive != drawOrder.end() && firstTransmissive != drawOrder.begin();
+    const bool backdropNeeded = transmissionBackdrop_ && drawsTransmissionBackdrop(scene);
     const bool capturesBackdrop = backdropNeeded && (rows.count == 0 || rows.first + rows.count >= height);
     if (!backdropNeeded || (!capturesBackdrop && !transmission_->holds(width, height))) transmission_->forget();
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
     fusedDisplay_.reset();
-    if (fuseDisplay_ && samples == 1 && !scene.display.levelsRamp) {  // the ramp is drawn by the display pass
+    if (fusesDisplay(scene, samples)) {
         displayTarget_.ensure(width, height, 1);
         fusedDisplay_ = scene.display;
     }
     // The float image is written unless the render is fused and nobody reads it (setRadianceKept).
     radianceWritten_ = keepRadiance_ || !fusedDisplay_ || capturesBackdrop;  // the backdrop is copied from it
+    // Only the pixels a material change reaches, when the target holds the frame before it.
+    std::optional<HeldFrame> frame;
+    if (redrawOnlyChanges_) frame = HeldFrame{scene, width, height, samples, radianceWritten_, fusedDisplay_.has_value()};
+    std::optional<HeldFrame>& held = held_[samples > 1 ? 1 : 0];
+    std::optional<PixelRegion> region = frame ? changedPixels(*frame) : std::nullopt;
+    const bool changesOnly = region.has_value();
+    if (rows.count > 0) region = intersectionOf(region.value_or(PixelRegion{0, 0, width, height}), {0, rows.first, width, rows.count});
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
@@ -433,16 +450,17 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     glViewport(0, 0, width, height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    // Clears, draws and the MSAA resolve keep to the band (after the backdrop's opaque pass, if any).
-    const auto scissorTo = [width](RowBand band) {
-        if (band.count > 0) {
+    // Clears, draws and the MSAA resolve keep to the band or the changed pixels (after the
+    // backdrop's opaque pass, if any).
+    const auto scissorTo = [](const std::optional<PixelRegion>& rect) {
+        if (rect) {
             glEnable(GL_SCISSOR_TEST);
-            glScissor(0, band.first, width, band.count);
+            glScissor(rect->x, rect->y, rect->width, rect->height);
         } else {
             glDisable(GL_SCISSOR_TEST);
         }
     };
-    scissorTo(capturesBackdrop ? RowBand{} : rows);
+    scissorTo(capturesBackdrop ? std::nullopt : region);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -524,7 +542,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
             transmission_->capture(drawTarget.framebuffer(), width, height, emptyVertexArray_);
             glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
             glViewport(0, 0, width, height);
-            scissorTo(rows);
+            scissorTo(region);
             glDisable(GL_CULL_FACE);
             clearDepthOnce();  // with the depth mask on: the background pass turns it off
             drawBackground();
@@ -599,12 +617,21 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     glDisable(GL_CULL_FACE);
     if (!backgroundDrawn) drawBackground();
     if (samples > 1) {
+        // The whole frame when the resolve target does not hold the last resolve (a frame without
+        // MSAA drew into it since).
+        if (changesOnly && !resolveHeld_) glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
         // Depth too: the overlay pass hides lines behind the surface with it.
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     glDisable(GL_SCISSOR_TEST);
+    resolveHeld_ = samples > 1 && (!region || changesOnly);
+    if (samples > 1) held_[0].reset();  // the resolve overwrote the single-sample frame's float image
+    if (frame) frame->standIns = simplifiedMeshesDrawn_ > 0 || shadowMaps_->provisional();
+    if (!result || !frame || frame->standIns || (rows.count > 0 && !changesOnly)) held.reset();
+    else if (rows.count > 0) held->newer = held->newer ? boundsOf(*held->newer, *region) : *region;  // a band: the rest holds `held`
+    else held = std::move(frame);
     if (result) shaderError_.clear();
     // An object was left out: the display pass runs again, from the float image where there is one.
     else if (radianceWritten_) fusedDisplay_.reset();
@@ -647,6 +674,7 @@ void Renderer::displayOffscreen(const DisplaySettings& display) {
     }
     overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
     fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
+    held_[0].reset();
 }
 
 void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale, GLuint framebuffer) {

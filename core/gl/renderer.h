@@ -30,6 +30,7 @@
 #include "gl/shadow_maps.h"
 #include "gl/transmission_pass.h"
 #include "image/image.h"
+#include "render/visibility.h"
 #include "scene/scene.h"
 
 namespace glint {
@@ -93,6 +94,15 @@ public:
     // keep fixed is compiled in as constants, one program per combination, built when first drawn.
     // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
     void setSpecialisedPrograms(bool enabled) { specialise_ = enabled; }
+    // Redraws only what a material change reaches (off by default; the editor turns it on): when the
+    // targets hold a frame of the same scene but for material values, at the same size and samples,
+    // drawn with no stand-in (simplified mesh, shadow map drawn for a drag), renderRadiance draws
+    // only the pixels of the changed materials' objects (render/material_change.h), a band of rows
+    // only those within it, and the rest stays as held. The picture is the whole frame's.
+    void setRedrawOnlyChanges(bool enabled) { redrawOnlyChanges_ = enabled; }
+    // Whether renderRadiance(scene, width, height) would draw only such pixels (the editor does not
+    // take its time for a whole frame's).
+    bool drawsOnlyChanges(const Scene& scene, int width, int height) const;
     // The transmission backdrop (on by default; gl/transmission_pass.h). Off: transmissive
     // surfaces see only the environment or background, as a frame with no opaque object does.
     void setTransmissionBackdrop(bool enabled) { transmissionBackdrop_ = enabled; }
@@ -176,7 +186,26 @@ private:
     static constexpr size_t kSurfaceProgramCapacity = 64;
     static constexpr size_t kBackgroundProgramCapacity = 16;
 
+    // A frame a draw target holds (for setRedrawOnlyChanges).
+    struct HeldFrame {
+        Scene scene;
+        int width = 0, height = 0, samples = 1;
+        bool radianceWritten = false, fused = false;
+        bool standIns = false;  // simplified meshes or provisional shadow maps (set once drawn)
+        // Pixels drawn since from a newer scene (bands of a frame that redrew only changes).
+        std::optional<PixelRegion> newer;
+        bool sameTargets(const HeldFrame& o) const {
+            return width == o.width && height == o.height && samples == o.samples && radianceWritten == o.radianceWritten &&
+                   fused == o.fused;
+        }
+    };
+
     Renderer(GlPlatform& platform, ShaderSources sources);
+    // The pixels a frame must draw when its target holds `frame` but for material values; none: all.
+    std::optional<PixelRegion> changedPixels(const HeldFrame& frame) const;
+    // Whether a frame with these samples writes the display image in the radiance pass (the levels
+    // ramp is drawn by the display pass).
+    bool fusesDisplay(const Scene& scene, int samples) const { return fuseDisplay_ && samples == 1 && !scene.display.levelsRamp; }
     Result<ShaderProgram> buildBackgroundProgram(const std::string& prelude) const;
     Result<const ShaderProgram*> backgroundProgram(const std::string& prelude);
     // The display pass's program for these settings (specialised unless switched off); the
@@ -238,6 +267,10 @@ private:
     bool specialise_ = true;
     bool transmissionBackdrop_ = true;
     bool keepRadiance_ = true;
+    bool redrawOnlyChanges_ = false;
+    // What the single-sample targets (float and 8-bit, drawn directly) and the multisample target hold.
+    std::optional<HeldFrame> held_[2];
+    bool resolveHeld_ = false;  // the float target holds the multisample target's frame, resolved
     bool radianceWritten_ = true;  // by the last renderRadiance
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};

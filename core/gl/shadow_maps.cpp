@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 
 #include "geometry/shape_mesh.h"
 #include "gl/gl_loader.h"
@@ -238,6 +239,10 @@ void ShadowMaps::update(const Scene& scene, const MeshOfObject& meshOf, MeshDeta
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block_, &block_);
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBinding, uniformBuffer_);
+}
+
+bool ShadowMaps::provisional() const {
+    return std::any_of(std::begin(slots_), std::end(slots_), [](const Slot& slot) { return !slot.key.empty() && slot.provisional; });
 }
 
 // --- binding ----------------------------------------------------------------------------------

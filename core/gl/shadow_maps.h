@@ -61,6 +61,8 @@ public:
     // How many update() calls re-rendered maps, and how many maps they drew (tests of the caching).
     long long renderCount() const { return renderCount_; }
     long long mapRenderCount() const { return mapRenderCount_; }
+    // Whether a map in use was drawn for a drag (coarser, or from stand-ins): a full-detail frame draws it again.
+    bool provisional() const;
 
 private:
     struct Slot {

@@ -19,6 +19,12 @@ bool transmitsLight(const Material& kind) {
     return unpack<OpenPbr>(material.values.data()).transmissionWeight > 0.0f;
 }
 
+bool drawsTransmissionBackdrop(const Scene& scene) {
+    const auto transmissive = [&](const SceneObject& object) { return transmitsLight(scene.materials.at(object.materialIndex)); };
+    return std::any_of(scene.objects.begin(), scene.objects.end(), transmissive) &&
+           !std::all_of(scene.objects.begin(), scene.objects.end(), transmissive);
+}
+
 TransmissionBackdrop::TransmissionBackdrop(const OpaquePassImage& opaque, const glm::mat4& viewProjection)
     : viewProjection_(viewProjection) {
     Level base{opaque.width, opaque.height, {}};

@@ -16,12 +16,17 @@
 
 #include "image/image.h"
 #include "scene/material.h"
+#include "scene/scene.h"
 
 namespace glint {
 
 // Whether a material lets light through from behind: the glass model, or openpbr with a
 // transmission weight above 0 (or a texture on it). Frames without one draw no backdrop.
 bool transmitsLight(const Material& material);
+// Whether a frame of the scene draws the backdrop: it has a transmissive object and an opaque one
+// (with no opaque object the backdrop would hold nothing; transmissive surfaces then see the
+// environment or background directly).
+bool drawsTransmissionBackdrop(const Scene& scene);
 
 // The opaque pass as the backdrop holds it, top row first: rgb the radiance premultiplied by the
 // coverage a (1 where an opaque object was drawn, 0 where none, between on an MSAA silhouette).

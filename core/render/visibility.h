@@ -1,6 +1,7 @@
 // What a view may skip without changing a pixel: an object whose bounding sphere lies wholly
 // outside the view's frustum, and the faces of a closed mesh that no viewer outside it can see;
-// and how many pixels an object covers at most (which simplified stand-in a drag frame needs).
+// and how many pixels an object covers at most (which simplified stand-in a drag frame needs) and
+// where (which pixels a material change reaches).
 // The GL renderer asks it for its camera and for each shadow-map view; pure maths, no GL.
 #pragma once
 
@@ -39,5 +40,17 @@ bool outsideFrustum(const glm::mat4& viewProjection, const BoundingSphere& bound
 // perspective, radius / (height/2) of it in orthographic), at most the whole image (also when the
 // camera is inside or the near plane cuts it).
 double coveredPixels(const Camera& camera, const BoundingSphere& bounds, int width, int height);
+
+// A rectangle of a frame's pixels, in GL's convention: x from the left column, y from the bottom row.
+struct PixelRegion {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+PixelRegion intersectionOf(const PixelRegion& a, const PixelRegion& b);
+PixelRegion boundsOf(const PixelRegion& a, const PixelRegion& b);  // the smallest region holding both
+
+// The pixels of a width × height frame of the camera that the sphere may cover, any MSAA sample
+// of them: the bounds of its projected outline, widened by a pixel; the whole frame when the
+// sphere holds the eye or reaches behind it.
+PixelRegion coveredRect(const Camera& camera, const BoundingSphere& bounds, int width, int height);
 
 }  // namespace glint

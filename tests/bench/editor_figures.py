@@ -38,6 +38,8 @@ def frames(log_path, start_line):
         frame = {"size": words[3], "scale": words[5], "render": float(words[7]), "total": float(words[13])}
         if "presented" in words[14:]:  # the phases: ui built, displayed, ui drawn, presented [ms]
             frame.update(ui=float(words[23]), display=float(words[26]), drawn=float(words[30]), present=float(words[33]))
+        if "band" in words:
+            frame["band"] = words[words.index("band") + 1].rstrip(",")
         parsed.append(frame)
     return parsed
 
@@ -56,7 +58,10 @@ def fast_drag(x, start, end, steps, step_seconds):
 def summary(name, values):
     if not values:
         return f"{name}: no frames"
-    return f"{name}: median {statistics.median(values):.1f} ms, min {min(values):.1f}, max {max(values):.1f} (n={len(values)})"
+    ordered = sorted(values)
+    p90 = ordered[min(len(ordered) - 1, int(0.9 * len(ordered)))]
+    return (f"{name}: median {statistics.median(values):.1f} ms, p90 {p90:.1f}, min {min(values):.1f}, "
+            f"max {max(values):.1f} (n={len(values)})")
 
 
 def main():
@@ -99,7 +104,10 @@ def main():
                 x.drag(slider, (slider[0] - 80, slider[1]), steps=40, step_seconds=0.05)
             drag_seconds = time.time() - start
             time.sleep(1.5)
-            dragged = frames(log_path, mark)
+            logged = frames(log_path, mark)
+            # The drag's frames, then the full frame after the release (its bands, if any).
+            last_preview = max((i for i, f in enumerate(logged) if f["scale"] != "1/1"), default=len(logged) - 1)
+            dragged, released = logged[:last_preview + 2], logged[last_preview + 1:]
             previews = [f for f in dragged if f["scale"] != "1/1"]
             print(f"slider drag with 4 lights ({width}x{height} window): {len(dragged)} frames, "
                   f"sizes {sorted(set(f['size'] + ' ' + f['scale'] for f in dragged))}")
@@ -111,6 +119,11 @@ def main():
                                 ("drawn", "ui drawn"), ("present", "presented (swap)")):
                 print("  " + summary(name + " during the drag", [f[phase] for f in dragged[:-1] if phase in f]))
             print(f"  preview frames: {len(previews)}; last (refined) frame: {dragged[-1] if dragged else None}")
+            if released:
+                print(f"  full frame after the release: {len(released)} frame(s) (bands {[f.get('band') for f in released]}), "
+                      f"first: render {released[0]['render']:.1f} ms, input to presented {released[0]['total']:.1f} ms; "
+                      f"render of all {sum(f['render'] for f in released):.1f} ms, "
+                      f"input to presented of all {sum(f['total'] for f in released):.1f} ms")
 
             x.click(316, 34)   # close the scene column
             time.sleep(1.5)
