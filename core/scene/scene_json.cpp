@@ -67,7 +67,8 @@ Material readMaterial(ObjectReader& reader, const std::string& file) {
         for (const ModelInfo& info : allModels()) list += std::string(list.empty() ? "" : ", ") + info.id;
         reader.fail("model", "unknown model '" + modelId + "' (known models: " + list + ")");
     }
-    AnalyticMaterial& analytic = material.kind.emplace<AnalyticMaterial>(*model, readParamValues(reader, modelInfo(*model).params));
+    AnalyticMaterial& analytic = material.kind.emplace<AnalyticMaterial>(
+        AnalyticMaterial{*model, readParamValues(reader, modelInfo(*model).params)});
     readMaterialTextures(reader, analytic, file);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
