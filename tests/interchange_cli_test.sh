@@ -7,6 +7,7 @@ set -u
 glint=$1
 out=$2
 source "$(dirname "$0")/cli_checks.sh"
+export GLINT_BRDF_TIMEOUT_S=60  # the .brdf safety probe, on a loaded machine or under the sanitizers
 check() {  # check NAME COMMAND...: the command must succeed
   local name=$1
   shift
