@@ -1,6 +1,6 @@
 // `glint lessons`: list, check (every scene loads) or render (one PNG per lesson, headless) the
 // classroom lesson list. It parses nothing itself: lists and scenes load through core.
-#include "cli/lessons_command.h"
+#include "cli/commands.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,18 +29,12 @@ int runLessons(const LessonsOptions& options) {
     const int width = options.width;
     const std::string& listPath = options.listPath;
     auto list = loadLessonList(listPath);
-    if (!list) {
-        std::fprintf(stderr, "glint lessons: %s\n", list.error().format().c_str());
-        return 2;
-    }
+    if (!list) return commandFailed("lessons", list.error().format());
 
     std::unique_ptr<HeadlessRenderer> headless;
     if (!renderDirectory.empty()) {
         auto created = HeadlessRenderer::create();
-        if (!created) {
-            std::fprintf(stderr, "glint lessons: %s\n", created.error().format().c_str());
-            return 2;
-        }
+        if (!created) return commandFailed("lessons", created.error().format());
         headless = std::move(*created);
         std::error_code error;
         std::filesystem::create_directories(renderDirectory, error);
