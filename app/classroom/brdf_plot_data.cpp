@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "brdf/fresnel.h"
 #include "brdf/glass.h"
@@ -44,7 +43,10 @@ std::vector<glm::vec3> plotEval(const PlotMaterial& material, std::span<const gl
                        [&](const MeasuredMaterial& measured) {
                            return evalMeasuredBrdf(*measured.brdf, incident[k], outgoing[k], kPlotFrame);
                        },
-                       [](const CustomMaterial&) -> glm::vec3 { std::abort(); }},  // a .brdf material comes with its sampler
+                       [](const CustomMaterial&) -> glm::vec3 {
+                           GLINT_CHECK(!"a .brdf material comes with its sampler");
+                           return {};
+                       }},
             material.kind);
     return reflectance;
 }

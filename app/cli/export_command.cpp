@@ -42,25 +42,25 @@ struct ExportOptions {
 };
 
 int runExport(const ExportOptions& options) {
-    const std::string& input = options.input;
-    const std::string& output = options.output;
-    if (!isExportPath(output)) return commandFailed("export", "the output must end in .mtl, .gltf or .mtlx (got '" + output + "')");
-    auto file = readInput(input);
+    if (!isExportPath(options.output))
+        return commandFailed("export", "the output must end in .mtl, .gltf or .mtlx (got '" + options.output + "')");
+    auto file = readInput(options.input);
     if (!file) return commandFailed("export", file.error().format());
     if (!options.material.empty()) {
-        auto chosen = chooseMaterial(*file, options.material, input);
+        auto chosen = chooseMaterial(*file, options.material, options.input);
         if (!chosen) return commandFailed("export", chosen.error().format());
         for (const Diagnostic& warning : warningsFor(*file, *chosen)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
         file->materials = {file->materials[*chosen]};
     } else {
         for (const Diagnostic& warning : allWarnings(*file)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
     }
-    if (file->materials.empty()) return commandFailed("export", input + ": no material to export");
-    auto written = exportMaterials(file->materials, file->lights, output);
+    if (file->materials.empty()) return commandFailed("export", options.input + ": no material to export");
+    auto written = exportMaterials(file->materials, file->lights, options.output);
     if (!written) return commandFailed("export", written.error().message);
     for (const Diagnostic& warning : written->warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
-    if (Status saved = writeFileAtomically(output, written->text); !saved) return commandFailed("export", saved.error().format());
-    std::printf("glint: wrote %s\n", output.c_str());
+    if (Status saved = writeFileAtomically(options.output, written->text); !saved)
+        return commandFailed("export", saved.error().format());
+    std::printf("glint: wrote %s\n", options.output.c_str());
     return 0;
 }
 

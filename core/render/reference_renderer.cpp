@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <thread>
@@ -152,7 +151,10 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
                 return HitResponse{{}, unmapped, brdf, measuredAmbientReflectance(table, towardsViewer, unmapped), 1.0f,
                                    measuredEnvironmentLighting(table, towardsViewer, unmapped, scene.environment), glm::vec3(0.0f)};
             },
-            [](const CustomMaterial&) -> HitResponse { std::abort(); }},  // GPU only: referenceCanRender refuses it
+            [](const CustomMaterial&) -> HitResponse {
+                GLINT_CHECK(!"a .brdf material reached the CPU reference (referenceCanRender refuses it)");
+                return {};
+            }},
         scene.materials.at(object.materialIndex).kind);
     const ShadingFrame& frame = response.frame;
     glm::vec3 radiance(0.0f);
