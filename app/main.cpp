@@ -9,19 +9,9 @@
 #include <vector>
 
 #include "classroom/lessons.h"
-#include "cli/bench_command.h"
-#include "cli/cmf_command.h"
+#include "cli/commands.h"
 #include "cli/command_line.h"
-#include "cli/export_command.h"
-#include "cli/info_command.h"
-#include "cli/lessons_command.h"
-#include "cli/models_command.h"
-#include "cli/presets_command.h"
-#include "cli/render_command.h"
 #include "cli/render_input.h"
-#include "cli/snapshot_command.h"
-#include "cli/spectral_command.h"
-#include "cli/thumbnails_command.h"
 #include "editor/editor.h"
 #include "runtime/brdf_probe.h"
 #include "runtime/headless.h"
@@ -47,28 +37,17 @@ int renderWithoutDisplay(const std::string& path, const std::string& reason) {
         for (const std::string& note : notes) std::printf("glint: %s\n", note.c_str());
         // Custom .brdf shaders are proven to finish (in a child) before this process draws them.
         glint::Status usable = loaded ? glint::probeSceneBrdfs(*loaded, glint::brdfProbeTimeoutSeconds()) : loaded.error();
-        if (!usable) {
-            std::fprintf(stderr, "glint: %s\n", usable.error().format().c_str());
-            return 2;
-        }
+        if (!usable) return glint::commandFailed("", usable.error().format());
         scene = std::move(*loaded);
     }
     const std::string sceneName = path.empty() ? "default" : std::filesystem::path(path).stem().string();
     const std::string output = "glint-" + sceneName + ".png";
     auto headless = glint::HeadlessRenderer::create();
-    if (!headless) {
-        std::fprintf(stderr, "glint: %s\n", headless.error().format().c_str());
-        return 2;
-    }
+    if (!headless) return glint::commandFailed("", headless.error().format());
     auto images = (*headless)->render(scene, scene.width, scene.height);
-    if (!images) {
-        std::fprintf(stderr, "glint: %s\n", images.error().format().c_str());
-        return 2;
-    }
-    if (glint::Status written = glint::writeRenderedImage(*images, output); !written) {
-        std::fprintf(stderr, "glint: %s\n", written.error().format().c_str());
-        return 2;
-    }
+    if (!images) return glint::commandFailed("", images.error().format());
+    if (glint::Status written = glint::writeRenderedImage(*images, output); !written)
+        return glint::commandFailed("", written.error().format());
     std::printf("glint: no display (%s).\nglint: rendered the %s scene headless (%dx%d, %s) to %s\n",
                 reason.c_str(), sceneName.c_str(), scene.width, scene.height,
                 (*headless)->renderer().description().c_str(),
@@ -78,19 +57,12 @@ int renderWithoutDisplay(const std::string& path, const std::string& reason) {
 
 // `glint present [LIST.json]`: the editor in presentation mode on the list's first lesson.
 int runPresentation(const std::string& presentList) {
-    if (auto list = glint::loadLessonList(presentList); !list) {
-        std::fprintf(stderr, "glint: %s\n", list.error().format().c_str());
-        return 2;
-    }
-    if (!hasDisplay()) {
-        std::fprintf(stderr, "glint: present needs a display (DISPLAY is not set); `glint lessons --render DIR` renders the lessons headless\n");
-        return 2;
-    }
+    if (auto list = glint::loadLessonList(presentList); !list) return glint::commandFailed("", list.error().format());
+    if (!hasDisplay())
+        return glint::commandFailed("", "present needs a display (DISPLAY is not set); "
+                                        "`glint lessons --render DIR` renders the lessons headless");
     auto platform = glint::GlfwPlatform::create(1280, 800, "Glint — presentation");
-    if (!platform) {
-        std::fprintf(stderr, "glint: present needs a window: %s\n", platform.error().message.c_str());
-        return 2;
-    }
+    if (!platform) return glint::commandFailed("", "present needs a window: " + platform.error().message);
     return glint::runEditor(std::move(*platform), "", presentList);
 }
 

@@ -34,13 +34,20 @@ std::vector<glm::vec3> plotEval(const PlotMaterial& material, std::span<const gl
         GLINT_CHECK(sampled.size() == incident.size());
         return sampled;
     }
-    const AnalyticMaterial* analytic = material.analytic();
-    const MeasuredMaterial* measured = material.measured();
-    GLINT_CHECK(analytic || measured);  // a .brdf material comes with its sampler
     std::vector<glm::vec3> reflectance(incident.size());
     for (size_t k = 0; k < incident.size(); ++k)
-        reflectance[k] = measured ? evalMeasuredBrdf(*measured->brdf, incident[k], outgoing[k], kPlotFrame)
-                                  : evalBrdf(analytic->model, analytic->values, incident[k], outgoing[k], kPlotFrame);
+        reflectance[k] = std::visit(
+            Overloaded{[&](const AnalyticMaterial& analytic) {
+                           return evalBrdf(analytic.model, analytic.values, incident[k], outgoing[k], kPlotFrame);
+                       },
+                       [&](const MeasuredMaterial& measured) {
+                           return evalMeasuredBrdf(*measured.brdf, incident[k], outgoing[k], kPlotFrame);
+                       },
+                       [](const CustomMaterial&) -> glm::vec3 {
+                           GLINT_CHECK(!"a .brdf material comes with its sampler");
+                           return {};
+                       }},
+            material.kind);
     return reflectance;
 }
 

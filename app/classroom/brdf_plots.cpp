@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "math/constants.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -20,12 +20,6 @@ constexpr ImU32 kPlotText = IM_COL32(225, 228, 235, 255);
 constexpr ImU32 kPlotLight = IM_COL32(255, 215, 60, 255);
 constexpr ImU32 kPlotWarning = IM_COL32(255, 70, 60, 255);
 constexpr float kPlotRadians = kPi / 180.0f;
-
-std::string plotFormat(const char* format, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
-}
 
 void plotFrame(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, const std::string& title) {
     drawList->AddRectFilled(topLeft, bottomRight, kPlotBackground, 4.0f);
@@ -91,7 +85,7 @@ PlotGraph plotAngleGraph(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRigh
         const ImVec2 base = graph.at(static_cast<float>(degrees), 0.0f);
         drawList->AddLine(base, ImVec2(base.x, base.y - graph.size.y), kPlotGrid);
         if (degrees % 30 == 0) {
-            const std::string label = plotFormat("%.0f°", degrees);
+            const std::string label = formatNumber(degrees, "%.0f°");
             drawList->AddText(ImVec2(base.x - line * 0.5f, base.y + 2), kPlotText, label.c_str());
         }
     }
@@ -99,7 +93,7 @@ PlotGraph plotAngleGraph(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRigh
     for (float value = 0.0f; value <= yMax + 1e-4f; value += step) {
         const ImVec2 left = graph.at(0.0f, value);
         drawList->AddLine(left, ImVec2(left.x + graph.size.x, left.y), kPlotGrid);
-        const std::string label = plotFormat("%.2f", value);
+        const std::string label = formatNumber(value, "%.2f");
         drawList->AddText(ImVec2(topLeft.x + 4, left.y - line * 0.5f), kPlotText, label.c_str());
     }
     drawList->AddRect(ImVec2(graph.origin.x, graph.origin.y - graph.size.y), ImVec2(graph.origin.x + graph.size.x, graph.origin.y), kPlotAxis);
@@ -140,7 +134,7 @@ void drawPolarPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std
         anyTransmission |= plotted.delta.hasTransmission;
     }
     plotFrame(drawList, topLeft, bottomRight,
-              "f_r·cos θ_o [1/sr] in plane, θ_i = " + plotFormat("%.0f°", incidenceDegrees));
+              "f_r·cos θ_o [1/sr] in plane, θ_i = " + formatNumber(incidenceDegrees, "%.0f°"));
     const float line = ImGui::GetTextLineHeight();
     const float width = bottomRight.x - topLeft.x, height = bottomRight.y - topLeft.y;
     const float surfaceFraction = anyTransmission ? 0.62f : 0.86f;
@@ -157,13 +151,13 @@ void drawPolarPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std
         drawList->PathStroke(kPlotGrid, 0, 1.0f);
     }
     if (largest > 0.0f) {
-        const std::string top = plotFormat("%.3g", largest);
+        const std::string top = formatNumber(largest, "%.3g");
         drawList->AddText(ImVec2(centre.x + 3, centre.y - radius - line), kPlotText, top.c_str());
     }
     for (int degrees = -90; degrees <= 90; degrees += 30) {
         const glm::vec3 direction = plotOutgoingDirection(static_cast<float>(degrees) * kPlotRadians);
         drawList->AddLine(centre, toScreen(direction, radius), kPlotGrid);
-        const std::string label = plotFormat("%.0f°", degrees);
+        const std::string label = formatNumber(degrees, "%.0f°");
         const ImVec2 at = toScreen(direction, radius + 0.9f * line);
         drawList->AddText(ImVec2(at.x - line * 0.8f, at.y - line * 0.5f), kPlotText, label.c_str());
     }
@@ -185,14 +179,14 @@ void drawPolarPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std
             const float weight = plotLuminance(delta.reflectedWeight);
             const ImVec2 tip = toScreen(delta.reflectedDirection, radius * std::max(weight, 0.05f));
             plotArrow(drawList, centre, tip, plotted.colour, 2.5f);
-            plotLabel(drawList, ImVec2(tip.x + 4, tip.y - line), bottomRight, plotted.colour, plotFormat("R %.3f", weight));
+            plotLabel(drawList, ImVec2(tip.x + 4, tip.y - line), bottomRight, plotted.colour, formatNumber(weight, "R %.3f"));
         }
         if (delta.hasTransmission) {
             const float weight = plotLuminance(delta.transmittedWeight);
             const float room = bottomRight.y - centre.y - 1.2f * line;
             const ImVec2 tip = toScreen(delta.transmittedDirection, room * std::max(weight, 0.05f));
             plotArrow(drawList, centre, tip, plotted.colour, 2.5f);
-            const std::string label = plotFormat("T %.3f", weight) + plotFormat(", θ_t %.1f°", delta.transmittedDegrees);
+            const std::string label = formatNumber(weight, "T %.3f") + formatNumber(delta.transmittedDegrees, ", θ_t %.1f°");
             plotLabel(drawList, ImVec2(tip.x + 4, tip.y - 0.5f * line), bottomRight, plotted.colour, label);
         }
     }
@@ -208,7 +202,7 @@ void drawLobePlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std:
     const float incidenceDegrees = materials.empty() ? 0.0f : materials.front().lobe.incidenceDegrees;
     float largest = 0.0f;
     for (const PlottedMaterial& plotted : materials) largest = std::max(largest, plotted.lobe.largestRadius);
-    plotFrame(drawList, topLeft, bottomRight, "lobe: f_r·cos θ_o [1/sr], θ_i = " + plotFormat("%.0f°", incidenceDegrees));
+    plotFrame(drawList, topLeft, bottomRight, "lobe: f_r·cos θ_o [1/sr], θ_i = " + formatNumber(incidenceDegrees, "%.0f°"));
     const float line = ImGui::GetTextLineHeight();
     const float width = bottomRight.x - topLeft.x, height = bottomRight.y - topLeft.y;
     const ImVec2 centre(topLeft.x + 0.5f * width, topLeft.y + 0.62f * height);
@@ -257,12 +251,12 @@ void drawLobePlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, std:
             const float weight = plotLuminance(plotted.delta.transmittedWeight);
             const ImVec2 tip = project(plotted.delta.transmittedDirection * weight * 0.6f, radius);
             plotArrow(drawList, centre, tip, plotted.colour, 2.5f);
-            drawList->AddText(ImVec2(tip.x + 4, tip.y - 0.5f * line), plotted.colour, plotFormat("T %.3f", weight).c_str());
+            drawList->AddText(ImVec2(tip.x + 4, tip.y - 0.5f * line), plotted.colour, formatNumber(weight, "T %.3f").c_str());
         }
     }
     if (largest > 0.0f)
         drawList->AddText(ImVec2(topLeft.x + 6, bottomRight.y - 1.2f * line), kPlotText,
-                          ("largest " + plotFormat("%.3g /sr", largest)).c_str());
+                          ("largest " + formatNumber(largest, "%.3g /sr")).c_str());
     plotLegend(drawList, ImVec2(topLeft.x + 6, topLeft.y + 4 + line), materials);
 }
 
@@ -274,7 +268,7 @@ void drawAlbedoPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, st
     for (const PlottedMaterial& plotted : materials) {
         largest = std::max(largest, plotted.albedo.largestAlbedo);
         if (plotted.albedo.exceedsOne)
-            warnings.push_back("ρ > 1: " + plotted.material.name + plotFormat(" (up to %.2f)", plotted.albedo.largestAlbedo));
+            warnings.push_back("ρ > 1: " + plotted.material.name + formatNumber(plotted.albedo.largestAlbedo, " (up to %.2f)"));
     }
     // Up to 2: a curve that climbs further (the lecture Phong at grazing) leaves through the top.
     const float yMax = std::min(2.0f, std::ceil(std::max(1.25f, largest * 1.05f) * 4.0f) / 4.0f);
@@ -314,9 +308,9 @@ void drawFresnelPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, c
                      const std::string& materialName) {
     const glm::vec3 n = curves.index.n, k = curves.index.k;
     const bool grey = n.r == n.g && n.g == n.b && k.r == k.g && k.g == k.b;  // one curve set for all channels
-    const std::string index = grey ? plotFormat("n = %.3g", n.r) + (k.r != 0.0f ? plotFormat(" + %.3gi", k.r) : std::string())
-                                   : plotFormat("n (%.2f", n.r) + plotFormat(" %.2f", n.g) + plotFormat(" %.2f)", n.b) +
-                                         plotFormat(" κ (%.2f", k.r) + plotFormat(" %.2f", k.g) + plotFormat(" %.2f)", k.b);
+    const std::string index = grey ? formatNumber(n.r, "n = %.3g") + (k.r != 0.0f ? formatNumber(k.r, " + %.3gi") : std::string())
+                                   : formatNumber(n.r, "n (%.2f") + formatNumber(n.g, " %.2f") + formatNumber(n.b, " %.2f)") +
+                                         formatNumber(k.r, " κ (%.2f") + formatNumber(k.g, " %.2f") + formatNumber(k.b, " %.2f)");
     plotFrame(drawList, topLeft, bottomRight,
               "Fresnel " + materialName + (grey ? ": " + index : std::string()) + (curves.fromInside ? ", inside" : ""));
     const PlotGraph graph = plotAngleGraph(drawList, topLeft, bottomRight, 1.0f, "θ_i", 3.4f);
@@ -349,7 +343,7 @@ void drawFresnelPlot(ImDrawList* drawList, ImVec2 topLeft, ImVec2 bottomRight, c
             if (degrees < 0.0f) return;
             const ImVec2 base = graph.at(degrees, 0.0f);
             drawList->AddLine(base, ImVec2(base.x, base.y - graph.size.y), colour, 1.0f);
-            const std::string label = plotFormat(format, degrees);
+            const std::string label = formatNumber(degrees, format);
             drawList->AddText(angleText, colour, label.c_str());
             angleText.x += ImGui::CalcTextSize(label.c_str()).x + line;
         };

@@ -3,25 +3,19 @@
 #include "classroom/probe_text.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "light/light_type_name.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
-
-std::string probeTextPrintf(const char* format, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, value);
-    return buffer;
-}
 
 std::string probeVector(glm::vec3 v) {
     return "(" + formatProbeNumber(v.x) + ", " + formatProbeNumber(v.y) + ", " + formatProbeNumber(v.z) + ")";
 }
 
-std::string probeDegrees(float degrees) { return probeTextPrintf("%.1f°", degrees); }
+std::string probeDegrees(float degrees) { return formatNumber(degrees, "%.1f°"); }
 
 const char* toneMapName(ToneMap toneMap) {
     switch (toneMap) {
@@ -41,10 +35,10 @@ std::string formatProbeNumber(float value) {
     const float magnitude = std::abs(value);
     if (value == 0.0f) return "0";
     if (!std::isfinite(value)) return value > 0 ? "∞" : "-∞";
-    if (magnitude < 1e-3f || magnitude >= 1e5f) return probeTextPrintf("%.3e", value);
-    if (magnitude < 10.0f) return probeTextPrintf("%.3f", value);
-    if (magnitude < 100.0f) return probeTextPrintf("%.2f", value);
-    return probeTextPrintf("%.1f", value);
+    if (magnitude < 1e-3f || magnitude >= 1e5f) return formatNumber(value, "%.3e");
+    if (magnitude < 10.0f) return formatNumber(value, "%.3f");
+    if (magnitude < 100.0f) return formatNumber(value, "%.2f");
+    return formatNumber(value, "%.1f");
 }
 
 std::string formatProbeRgb(glm::vec3 value) {
@@ -121,7 +115,7 @@ std::string probeTotalEquation(const ProbeResult& result) {
 std::string environmentAccuracyText(const std::string& method, glm::vec3 preview, glm::vec3 truth) {
     const float truthSum = glm::dot(truth, glm::vec3(1.0f));
     const float previewSum = glm::dot(preview, glm::vec3(1.0f));
-    std::string error = truthSum > 0.0f ? probeTextPrintf("%+.1f%%", 100.0f * (previewSum / truthSum - 1.0f)) : "n/a";
+    std::string error = truthSum > 0.0f ? formatNumber(100.0f * (previewSum / truthSum - 1.0f), "%+.1f%%") : "n/a";
     return "L_environment by " + method + ": " + formatProbeRgb(preview) + "; Monte-Carlo (" +
            std::to_string(kProbeEnvironmentSamples) + " samples) " + formatProbeRgb(truth) + " W/(sr·m²): error " + error;
 }
@@ -136,9 +130,9 @@ std::string probeEnvironmentLine(const ProbeResult& result) {
 std::vector<std::string> probeDisplayEquation(const ProbeResult& result) {
     const DisplaySettings& display = result.displaySettings;
     const std::string encoding =
-        display.transfer == Transfer::Srgb ? "sRGB" : probeTextPrintf("^(1/%.2f)", display.gamma);
+        display.transfer == Transfer::Srgb ? "sRGB" : formatNumber(display.gamma, "^(1/%.2f)");
     auto channelLine = [&](const ProbeDisplayChannel& channel, const std::string& name) {
-        return name + formatProbeNumber(channel.radiance) + " × 2^" + probeTextPrintf("%.2f", display.exposureStops) +
+        return name + formatProbeNumber(channel.radiance) + " × 2^" + formatNumber(display.exposureStops, "%.2f") +
                " = " + formatProbeNumber(channel.exposed) + " → tone map " + toneMapName(display.toneMap) + " " +
                formatProbeNumber(channel.toneMapped) + " → clamp " + formatProbeNumber(channel.clamped) + " → " + encoding +
                " " + formatProbeNumber(channel.encoded) + " → 8-bit " + std::to_string(channel.value8);

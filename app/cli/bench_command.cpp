@@ -1,7 +1,7 @@
-// `glint bench` (see bench_command.h).
+// `glint bench` (see commands.h).
 // Sections: options · statistics · child processes · scene timing · whole-program figures ·
 // output · the command.
-#include "cli/bench_command.h"
+#include "cli/commands.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -361,10 +361,7 @@ int runBench(const BenchOptions& options) {
     }
 
     auto headless = HeadlessRenderer::create();
-    if (!headless) {
-        std::fprintf(stderr, "glint bench: %s\n", headless.error().format().c_str());
-        return 2;
-    }
+    if (!headless) return commandFailed("bench", headless.error().format());
     (*headless)->renderer().setSpecialisedPrograms(!options.generic);
     (*headless)->renderer().setRadianceKept(options.radiance);
     std::vector<const BenchScene*> timed;
@@ -378,10 +375,7 @@ int runBench(const BenchOptions& options) {
     std::vector<SceneResult> scenes;
     for (const BenchScene* benchScene : timed) {
         auto result = timeScene(**headless, *benchScene, options);
-        if (!result) {
-            std::fprintf(stderr, "glint bench: %s: %s\n", benchScene->name.c_str(), result.error().format().c_str());
-            return 1;
-        }
+        if (!result) return commandFailed("bench", benchScene->name + ": " + result.error().format(), 1);
         scenes.push_back(std::move(*result));
     }
     const std::string description = (*headless)->renderer().description();
@@ -392,19 +386,13 @@ int runBench(const BenchOptions& options) {
         auto measured = measureProgram(options, work);
         std::error_code ignored;
         fs::remove_all(work, ignored);
-        if (!measured) {
-            std::fprintf(stderr, "glint bench: %s\n", measured.error().format().c_str());
-            return 1;
-        }
+        if (!measured) return commandFailed("bench", measured.error().format(), 1);
         program = *measured;
     }
     printTable(scenes, program, options, description);
     if (!options.jsonPath.empty()) {
-        if (Status written = writeFileAtomically(options.jsonPath, toJson(scenes, program, options, description).dump(2) + "\n");
-            !written) {
-            std::fprintf(stderr, "glint bench: %s\n", written.error().format().c_str());
-            return 1;
-        }
+        const Status written = writeFileAtomically(options.jsonPath, toJson(scenes, program, options, description).dump(2) + "\n");
+        if (!written) return commandFailed("bench", written.error().format(), 1);
         std::printf("figures written to %s\n", options.jsonPath.c_str());
     }
     return 0;

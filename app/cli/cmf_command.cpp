@@ -1,11 +1,10 @@
 // `glint cmf`: one OSMesa context (HeadlessRenderer), one OverlayCanvas, drawCmfPlot into its
 // background draw list, and the PNG written. The plot itself lives in app/classroom/cmf_plot.cpp.
-#include "cli/cmf_command.h"
+#include "cli/commands.h"
 
 #include <imgui.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <utility>
@@ -21,27 +20,15 @@ namespace {
 
 int plotCmf(const std::string& outputPath, int width, int height) {
     auto headless = HeadlessRenderer::create();  // makes the OSMesa context current
-    if (!headless) {
-        std::fprintf(stderr, "glint cmf: %s\n", headless.error().format().c_str());
-        return 2;
-    }
+    if (!headless) return commandFailed("cmf", headless.error().format());
     const float fontSize = std::max(12.0f, height / 25.0f);
     auto canvas = OverlayCanvas::create(fontSize);
-    if (!canvas) {
-        std::fprintf(stderr, "glint cmf: %s\n", canvas.error().format().c_str());
-        return 2;
-    }
+    if (!canvas) return commandFailed("cmf", canvas.error().format());
     (*canvas)->begin(width, height);
     drawCmfPlot(ImGui::GetBackgroundDrawList(), ImVec2(0.0f, 0.0f), ImVec2(static_cast<float>(width), static_cast<float>(height)), fontSize);
     auto image = (*canvas)->finish(DisplayImage{});
-    if (!image) {
-        std::fprintf(stderr, "glint cmf: %s\n", image.error().format().c_str());
-        return 2;
-    }
-    if (Status written = writeDisplayImage(*image, outputPath); !written) {
-        std::fprintf(stderr, "glint cmf: %s\n", written.error().format().c_str());
-        return 2;
-    }
+    if (!image) return commandFailed("cmf", image.error().format());
+    if (Status written = writeDisplayImage(*image, outputPath); !written) return commandFailed("cmf", written.error().format());
     return 0;
 }
 

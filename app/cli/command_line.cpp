@@ -89,9 +89,13 @@ CLI::Option* addPixelSize(CLI::App& command, int& width, int& height, int low, i
         ->type_name("WxH");
 }
 
+int commandFailed(const std::string& command, const std::string& message, int exitCode) {
+    std::fprintf(stderr, "glint%s%s: %s\n", command.empty() ? "" : " ", command.c_str(), message.c_str());
+    return exitCode;
+}
+
 int usageError(const std::string& command, const std::string& message) {
-    std::fprintf(stderr, "glint %s: %s\nRun `glint %s --help` for the options.\n", command.c_str(), message.c_str(), command.c_str());
-    return 2;
+    return commandFailed(command, message + "\nRun `glint " + command + " --help` for the options.");
 }
 
 void refuse(const std::string& message) { throw CLI::ValidationError(message); }
@@ -107,8 +111,7 @@ int runCommandLine(CLI::App& glint, int argc, char** argv, bool& chosen) {
     } catch (const CLI::ParseError& error) {
         CLI::App* command = failingCommand(glint);
         if (command != &glint) return usageError(command->get_name(), mistake(*command, error));
-        std::fprintf(stderr, "glint: %s\nRun `glint --help` for the commands.\n", mistake(*command, error).c_str());
-        return 2;
+        return commandFailed("", mistake(*command, error) + "\nRun `glint --help` for the commands.");
     }
     chosen = false;
     return 0;

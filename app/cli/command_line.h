@@ -28,6 +28,10 @@ CLI::Option* addPixelSize(CLI::App& command, int& width, int& height, int low, i
 // A refusal found while taking an option's value (an option function): printed as it is.
 [[noreturn]] void refuse(const std::string& message);
 
+// A command that could not do its work: "glint COMMAND: message" on stderr ("glint: message" for
+// glint itself, an empty `command`); returns `exitCode`.
+int commandFailed(const std::string& command, const std::string& message, int exitCode = 2);
+
 // A mistake in a command's arguments found after parsing, reported as parsing reports one:
 // "glint COMMAND: message" and where the options are listed; returns 2, the exit code.
 int usageError(const std::string& command, const std::string& message);

@@ -1,5 +1,5 @@
-// `glint export` (see export_command.h).
-#include "cli/export_command.h"
+// `glint export` (see commands.h).
+#include "cli/commands.h"
 
 #include <cstdio>
 #include <memory>
@@ -13,11 +13,6 @@
 
 namespace glint {
 namespace {
-
-int fail(const std::string& message) {
-    std::fprintf(stderr, "glint export: %s\n", message.c_str());
-    return 2;
-}
 
 // The input's materials and lights, whatever its format.
 Result<ImportedFile> readInput(const std::string& path) {
@@ -47,25 +42,25 @@ struct ExportOptions {
 };
 
 int runExport(const ExportOptions& options) {
-    const std::string& input = options.input;
-    const std::string& output = options.output;
-    if (!isExportPath(output)) return fail("the output must end in .mtl, .gltf or .mtlx (got '" + output + "')");
-    auto file = readInput(input);
-    if (!file) return fail(file.error().format());
+    if (!isExportPath(options.output))
+        return commandFailed("export", "the output must end in .mtl, .gltf or .mtlx (got '" + options.output + "')");
+    auto file = readInput(options.input);
+    if (!file) return commandFailed("export", file.error().format());
     if (!options.material.empty()) {
-        auto chosen = chooseMaterial(*file, options.material, input);
-        if (!chosen) return fail(chosen.error().format());
+        auto chosen = chooseMaterial(*file, options.material, options.input);
+        if (!chosen) return commandFailed("export", chosen.error().format());
         for (const Diagnostic& warning : warningsFor(*file, *chosen)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
         file->materials = {file->materials[*chosen]};
     } else {
         for (const Diagnostic& warning : allWarnings(*file)) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
     }
-    if (file->materials.empty()) return fail(input + ": no material to export");
-    auto written = exportMaterials(file->materials, file->lights, output);
-    if (!written) return fail(written.error().message);
+    if (file->materials.empty()) return commandFailed("export", options.input + ": no material to export");
+    auto written = exportMaterials(file->materials, file->lights, options.output);
+    if (!written) return commandFailed("export", written.error().message);
     for (const Diagnostic& warning : written->warnings) std::fprintf(stderr, "glint export: %s\n", warning.format().c_str());
-    if (Status saved = writeFileAtomically(output, written->text); !saved) return fail(saved.error().format());
-    std::printf("glint: wrote %s\n", output.c_str());
+    if (Status saved = writeFileAtomically(options.output, written->text); !saved)
+        return commandFailed("export", saved.error().format());
+    std::printf("glint: wrote %s\n", options.output.c_str());
     return 0;
 }
 

@@ -1,5 +1,5 @@
-// `glint info` (see info_command.h).
-#include "cli/info_command.h"
+// `glint info` (see commands.h).
+#include "cli/commands.h"
 
 #include <cstdio>
 #include <memory>
@@ -52,16 +52,11 @@ void printWarnings(const std::vector<Diagnostic>& warnings) {
     for (const Diagnostic& warning : warnings) std::printf("  %s\n", warning.format().c_str());
 }
 
-int fail(const Diagnostic& error) {
-    std::fprintf(stderr, "glint info: %s\n", error.format().c_str());
-    return 2;
-}
-
 // Lists what `path` holds; the exit code.
 int describeFile(const std::string& path) {
     if (isBrdfFilePath(path)) {
         auto file = loadBrdfFile(path);
-        if (!file) return fail(file.error());
+        if (!file) return commandFailed("info", file.error().format());
         std::printf("%s: BRDF Explorer analytic BRDF (GLSL shader at line %d)\n", path.c_str(), file->shaderLine);
         printParams(file->params);
         printWarnings(file->warnings);
@@ -70,7 +65,7 @@ int describeFile(const std::string& path) {
     if (isBparamFilePath(path)) {
         auto text = readTextFile(path);
         auto file = text ? parseBparamFile(*text, path) : Result<BparamFile>(text.error());
-        if (!file) return fail(file.error());
+        if (!file) return commandFailed("info", file.error().format());
         auto brdf = findBparamBrdf(*file, path);
         std::printf("%s: BRDF Explorer parameter values for %s (%s)\n", path.c_str(),
                     file->brdfPath.empty() ? "(no .brdf named)" : file->brdfPath.c_str(),
@@ -82,7 +77,7 @@ int describeFile(const std::string& path) {
     if (const ImportFormat* format = findImportFormat(path)) {
         auto file = format->load(path);
         if (file || !isMeshFile(path)) {  // a glTF of meshes only is listed as a mesh below
-            if (!file) return fail(file.error());
+            if (!file) return commandFailed("info", file.error().format());
             std::printf("%s: %s\n", path.c_str(), format->description);
             std::vector<const Material*> materials;
             for (const ImportedMaterial& material : file->materials) materials.push_back(&material.material);
@@ -101,7 +96,7 @@ int describeFile(const std::string& path) {
     }
     if (isMeshFile(path)) {
         auto mesh = importMesh(path);
-        if (!mesh) return fail(mesh.error());
+        if (!mesh) return commandFailed("info", mesh.error().format());
         std::printf("%s: mesh: %s\n", path.c_str(), meshStatisticsText(mesh->statistics).c_str());
         const ObjMaterial material = readObjMaterial(path);
         if (material.material) std::printf("material (its first usemtl): '%s'\n", material.material->material.name.c_str());
@@ -109,16 +104,16 @@ int describeFile(const std::string& path) {
         return 0;
     }
     auto text = readTextFile(path);
-    if (!text) return fail(text.error());
+    if (!text) return commandFailed("info", text.error().format());
     if (text->find("\"glint-material\"") != std::string::npos) {
         auto material = parseMaterial(*text, path);
-        if (!material) return fail(material.error());
+        if (!material) return commandFailed("info", material.error().format());
         std::printf("%s: Glint material\n", path.c_str());
         printMaterials({&*material});
         return 0;
     }
     auto scene = parseScene(*text, path);
-    if (!scene) return fail(scene.error());
+    if (!scene) return commandFailed("info", scene.error().format());
     std::printf("%s: Glint scene\n", path.c_str());
     std::vector<const Material*> materials;
     for (const Material& material : scene->materials) materials.push_back(&material);

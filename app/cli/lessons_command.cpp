@@ -1,6 +1,6 @@
 // `glint lessons`: list, check (every scene loads) or render (one PNG per lesson, headless) the
 // classroom lesson list. It parses nothing itself: lists and scenes load through core.
-#include "cli/lessons_command.h"
+#include "cli/commands.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,32 +24,22 @@ struct LessonsOptions {
 };
 
 int runLessons(const LessonsOptions& options) {
-    const bool check = options.check;
-    const std::string& renderDirectory = options.renderDirectory;
-    const int width = options.width;
-    const std::string& listPath = options.listPath;
-    auto list = loadLessonList(listPath);
-    if (!list) {
-        std::fprintf(stderr, "glint lessons: %s\n", list.error().format().c_str());
-        return 2;
-    }
+    auto list = loadLessonList(options.listPath);
+    if (!list) return commandFailed("lessons", list.error().format());
 
     std::unique_ptr<HeadlessRenderer> headless;
-    if (!renderDirectory.empty()) {
+    if (!options.renderDirectory.empty()) {
         auto created = HeadlessRenderer::create();
-        if (!created) {
-            std::fprintf(stderr, "glint lessons: %s\n", created.error().format().c_str());
-            return 2;
-        }
+        if (!created) return commandFailed("lessons", created.error().format());
         headless = std::move(*created);
         std::error_code error;
-        std::filesystem::create_directories(renderDirectory, error);
+        std::filesystem::create_directories(options.renderDirectory, error);
     }
     int failures = 0;
     for (size_t index = 0; index < list->lessons.size(); ++index) {
         const Lesson& lesson = list->lessons[index];
         std::printf("%2zu  %-45s %s\n", index + 1, lesson.title.c_str(), lesson.scenePath.c_str());
-        if (!check && !headless) continue;
+        if (!options.check && !headless) continue;
         auto scene = loadScene(lesson.scenePath);
         if (!scene) {
             std::fprintf(stderr, "glint lessons: lesson %zu (%s): %s\n", index + 1, lesson.title.c_str(), scene.error().format().c_str());
@@ -57,10 +47,10 @@ int runLessons(const LessonsOptions& options) {
             continue;
         }
         if (!headless) continue;
-        const int height = std::max(1, width * scene->height / std::max(scene->width, 1));
-        auto images = headless->render(*scene, width, height);
+        const int height = std::max(1, options.width * scene->height / std::max(scene->width, 1));
+        auto images = headless->render(*scene, options.width, height);
         const std::string number = (index + 1 < 10 ? "0" : "") + std::to_string(index + 1);
-        const std::string output = (std::filesystem::path(renderDirectory) /
+        const std::string output = (std::filesystem::path(options.renderDirectory) /
                                     (number + "_" + std::filesystem::path(lesson.scenePath).stem().string() + ".png")).string();
         const Status written = images ? writeRenderedImage(*images, output) : Status(images.error());
         if (!written) {
@@ -68,7 +58,7 @@ int runLessons(const LessonsOptions& options) {
             ++failures;
         }
     }
-    if (check || headless)
+    if (options.check || headless)
         std::printf("%zu lessons, %zu %s, %d failed\n", list->lessons.size(), list->lessons.size() - failures,
                     headless ? "rendered" : "load", failures);
     return failures == 0 ? 0 : 1;

@@ -1,5 +1,5 @@
-// `glint models` (see models_command.h).
-#include "cli/models_command.h"
+// `glint models` (see commands.h).
+#include "cli/commands.h"
 
 #include <cstdio>
 #include <memory>

@@ -1,5 +1,5 @@
-// `glint presets` (see presets_command.h).
-#include "cli/presets_command.h"
+// `glint presets` (see commands.h).
+#include "cli/commands.h"
 
 #include <cstdio>
 #include <memory>
@@ -34,10 +34,8 @@ void addPresetsCommand(CLI::App& glint) {
             for (const Preset& known : allPresets()) names += std::string(names.empty() ? "" : ", ") + known.name;
             return usageError("presets", "unknown preset '" + *name + "' (known presets: " + names + ")");
         }
-        if (Status written = saveMaterial(preset->material(), *output); !written) {
-            std::fprintf(stderr, "glint presets: %s\n", written.error().format().c_str());
-            return 2;
-        }
+        if (Status written = saveMaterial(preset->material(), *output); !written)
+            return commandFailed("presets", written.error().format());
         std::printf("glint: wrote preset '%s' (%s; %s) to %s\n", preset->name, modelInfo(preset->model).id, preset->source,
                     output->c_str());
         return 0;

@@ -1,5 +1,5 @@
-// `glint render` (see render_command.h).
-#include "cli/render_command.h"
+// `glint render` (see commands.h).
+#include "cli/commands.h"
 
 #include <cstdio>
 #include <memory>
@@ -67,10 +67,7 @@ int render(RenderOptions& options) {
     auto scene = loadRenderInput(options.scenePath, options.input, warnings, notes);
     for (const Diagnostic& warning : warnings) std::fprintf(stderr, "glint render: %s\n", warning.format().c_str());
     for (const std::string& note : notes) std::printf("glint render: %s\n", note.c_str());
-    if (!scene) {
-        std::fprintf(stderr, "glint render: %s\n", scene.error().format().c_str());
-        return 2;
-    }
+    if (!scene) return commandFailed("render", scene.error().format());
     if (options.msaa > 0) scene->msaaSamples = options.msaa;
     scene->display.overlays.wireframe |= options.wireframe;
     scene->display.overlays.normals |= options.normals;
@@ -87,22 +84,15 @@ int render(RenderOptions& options) {
         return usageError("--overlay draws over the display-encoded image: write a PNG, not an EXR or HDR");
 
     // Custom .brdf shaders: GPU only, and proven to finish in a child process before drawing here.
-    if (Status gpuOnly = referenceCanRender(*scene); !gpuOnly && options.reference) {
-        std::fprintf(stderr, "glint render: %s\n", gpuOnly.error().format().c_str());
-        return 2;
-    }
-    if (Status probed = probeSceneBrdfs(*scene, brdfProbeTimeoutSeconds()); !probed) {
-        std::fprintf(stderr, "glint render: %s\n", probed.error().format().c_str());
-        return 2;
-    }
+    if (Status gpuOnly = referenceCanRender(*scene); !gpuOnly && options.reference)
+        return commandFailed("render", gpuOnly.error().format());
+    if (Status probed = probeSceneBrdfs(*scene, brdfProbeTimeoutSeconds()); !probed)
+        return commandFailed("render", probed.error().format());
     RenderedImages images;
     std::unique_ptr<HeadlessRenderer> headless;  // the GL context: for OpenGL renders and for overlays
     if (!options.reference || !options.overlays.empty()) {
         auto created = HeadlessRenderer::create();
-        if (!created) {
-            std::fprintf(stderr, "glint render: %s\n", created.error().format().c_str());
-            return 2;
-        }
+        if (!created) return commandFailed("render", created.error().format());
         headless = std::move(*created);
         if (!options.reference)
             if (const std::string note = headless->renderer().samplesNote(scene->msaaSamples); !note.empty())
@@ -127,10 +117,7 @@ int render(RenderOptions& options) {
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
                                               : headless->render(*scene, width, height, isFloatImagePath(options.outputPath));
-        if (!rendered) {
-            std::fprintf(stderr, "glint render: %s\n", rendered.error().format().c_str());
-            return 2;
-        }
+        if (!rendered) return commandFailed("render", rendered.error().format());
         images = std::move(*rendered);
     }
     // The classroom surface probe (core/classroom/surface_probe.h) and the overlays drawn over the PNG.
@@ -141,16 +128,11 @@ int render(RenderOptions& options) {
     }
     if (!options.overlays.empty()) {
         auto composite = drawRenderOverlays(options.overlays, {*scene, width, height, probe, options.plots}, images.display);
-        if (!composite) {
-            std::fprintf(stderr, "glint render: %s\n", composite.error().format().c_str());
-            return 2;
-        }
+        if (!composite) return commandFailed("render", composite.error().format());
         images.display = std::move(*composite);
     }
-    if (Status written = writeRenderedImage(images, options.outputPath); !written) {
-        std::fprintf(stderr, "glint render: %s\n", written.error().format().c_str());
-        return 2;
-    }
+    if (Status written = writeRenderedImage(images, options.outputPath); !written)
+        return commandFailed("render", written.error().format());
     return 0;
 }
 

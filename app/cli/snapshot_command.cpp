@@ -1,6 +1,6 @@
-// `glint snapshot` (see snapshot_command.h).
+// `glint snapshot` (see commands.h).
 // Sections: options · one case · reports · the command.
-#include "cli/snapshot_command.h"
+#include "cli/commands.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,6 @@
 // `glint spectral`: parses the spectral settings, renders the scene's XYZ per wavelength through
 // core/colour/spectral_render.h and writes it as linear sRGB (EXR) or display-encoded (PNG).
-#include "cli/spectral_command.h"
+#include "cli/commands.h"
 
 #include <cmath>
 #include <cstdio>
@@ -34,31 +34,16 @@ struct SpectralOptions {
 int renderSpectral(SpectralOptions& options) {
     SpectralSettings& settings = options.settings;
     const std::string& outputPath = options.outputPath;
-    if (Status valid = checkSpectralSettings(settings); !valid) {
-        std::fprintf(stderr, "glint spectral: %s\n", valid.error().format().c_str());
-        return 2;
-    }
+    if (Status valid = checkSpectralSettings(settings); !valid) return commandFailed("spectral", valid.error().format());
     auto scene = loadRenderable(options.scenePath);
-    if (!scene) {
-        std::fprintf(stderr, "glint spectral: %s\n", scene.error().format().c_str());
-        return 2;
-    }
-    if (Status cpu = referenceCanRender(*scene); !cpu) {
-        std::fprintf(stderr, "glint spectral: %s\n", cpu.error().format().c_str());
-        return 2;
-    }
+    if (!scene) return commandFailed("spectral", scene.error().format());
+    if (Status cpu = referenceCanRender(*scene); !cpu) return commandFailed("spectral", cpu.error().format());
     auto xyz = renderSpectralXyz(*scene, settings, options.width, options.height);
-    if (!xyz) {
-        std::fprintf(stderr, "glint spectral: %s\n", xyz.error().format().c_str());
-        return 2;
-    }
+    if (!xyz) return commandFailed("spectral", xyz.error().format());
     RenderedImages images;
     images.radiance = spectralImageToRgb(*xyz);
     images.display = applyDisplayChain(images.radiance, scene->display);
-    if (Status written = writeRenderedImage(images, outputPath); !written) {
-        std::fprintf(stderr, "glint spectral: %s\n", written.error().format().c_str());
-        return 2;
-    }
+    if (Status written = writeRenderedImage(images, outputPath); !written) return commandFailed("spectral", written.error().format());
     std::printf("glint spectral: %d wavelengths, %dx%d, written to %s\n", settings.wavelengthSamples, images.radiance.width,
                 images.radiance.height, outputPath.c_str());
     return 0;

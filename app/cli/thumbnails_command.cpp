@@ -1,5 +1,5 @@
-// `glint thumbnails` (see thumbnails_command.h).
-#include "cli/thumbnails_command.h"
+// `glint thumbnails` (see commands.h).
+#include "cli/commands.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -39,25 +39,13 @@ int renderThumbnails(const ThumbnailsOptions& options) {
     const std::string& outputDirectory = options.outputDirectory;
     const int size = options.size, jobs = options.jobs, columns = options.columns;
     auto files = listJsonFiles(inputDirectory);
-    if (!files) {
-        std::fprintf(stderr, "glint thumbnails: %s\n", files.error().format().c_str());
-        return 2;
-    }
-    if (files->empty()) {
-        std::fprintf(stderr, "glint thumbnails: %s: no *.json material or scene files\n", inputDirectory.c_str());
-        return 2;
-    }
+    if (!files) return commandFailed("thumbnails", files.error().format());
+    if (files->empty()) return commandFailed("thumbnails", inputDirectory + ": no *.json material or scene files");
     auto font = LabelFont::load();
-    if (!font) {
-        std::fprintf(stderr, "glint thumbnails: %s\n", font.error().format().c_str());
-        return 2;
-    }
+    if (!font) return commandFailed("thumbnails", font.error().format());
     std::error_code error;
     fs::create_directories(outputDirectory, error);
-    if (error) {
-        std::fprintf(stderr, "glint thumbnails: cannot create %s: %s\n", outputDirectory.c_str(), error.message().c_str());
-        return 2;
-    }
+    if (error) return commandFailed("thumbnails", "cannot create " + outputDirectory + ": " + error.message());
 
     std::vector<Thumbnail> thumbnails(files->size());
     const Status rendered = renderInParallel(jobs, files->size(), [&](HeadlessRenderer& headless, size_t index) {
@@ -81,10 +69,7 @@ int renderThumbnails(const ThumbnailsOptions& options) {
         }
         thumbnail.image = std::move(images->display);
     });
-    if (!rendered) {
-        std::fprintf(stderr, "glint thumbnails: %s\n", rendered.error().format().c_str());
-        return 2;
-    }
+    if (!rendered) return commandFailed("thumbnails", rendered.error().format());
 
     std::vector<LabelledImage> sheetEntries;
     int failed = 0;
@@ -98,10 +83,8 @@ int renderThumbnails(const ThumbnailsOptions& options) {
     }
     const std::string sheetPath = (fs::path(outputDirectory) / kContactSheetName).string();
     if (!sheetEntries.empty()) {
-        if (Status written = writeDisplayImage(contactSheet(sheetEntries, columns, *font), sheetPath, kThumbnailPngCompression); !written) {
-            std::fprintf(stderr, "glint thumbnails: %s\n", written.error().format().c_str());
-            return 2;
-        }
+        if (Status written = writeDisplayImage(contactSheet(sheetEntries, columns, *font), sheetPath, kThumbnailPngCompression); !written)
+            return commandFailed("thumbnails", written.error().format());
     }
     std::printf("%zu thumbnails (%dx%d) and %s written to %s; %d files could not be rendered\n", sheetEntries.size(), size, size,
                 sheetEntries.empty() ? "no contact sheet" : kContactSheetName, outputDirectory.c_str(), failed);

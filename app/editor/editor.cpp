@@ -52,16 +52,10 @@ bool gEventSeen = false;
 bool gCloseRequested = false;
 std::vector<std::string> gDroppedPaths;
 
-void noteCursor(GLFWwindow*, double, double) { gEventSeen = true; }
-void noteButton(GLFWwindow*, int, int, int) { gEventSeen = true; }
-void noteScroll(GLFWwindow*, double, double) { gEventSeen = true; }
 void noteKey(GLFWwindow*, int key, int, int action, int mods) {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) recordKeyPress(key, mods);
     gEventSeen = true;
 }
-void noteChar(GLFWwindow*, unsigned int) { gEventSeen = true; }
-void noteSize(GLFWwindow*, int, int) { gEventSeen = true; }
-void noteRefresh(GLFWwindow*) { gEventSeen = true; }
 void noteClose(GLFWwindow* window) {
     // The editor decides (unsaved-changes prompt); the window stays open until it does.
     glfwSetWindowShouldClose(window, GLFW_FALSE);
@@ -75,13 +69,13 @@ void noteDrop(GLFWwindow*, int count, const char** paths) {
 
 void installEventTracking(GLFWwindow* window) {
     // Installed before ImGui's backend, which chains to them.
-    glfwSetCursorPosCallback(window, noteCursor);
-    glfwSetMouseButtonCallback(window, noteButton);
-    glfwSetScrollCallback(window, noteScroll);
+    glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { gEventSeen = true; });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { gEventSeen = true; });
+    glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { gEventSeen = true; });
     glfwSetKeyCallback(window, noteKey);
-    glfwSetCharCallback(window, noteChar);
-    glfwSetFramebufferSizeCallback(window, noteSize);
-    glfwSetWindowRefreshCallback(window, noteRefresh);
+    glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { gEventSeen = true; });
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { gEventSeen = true; });
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { gEventSeen = true; });
     glfwSetWindowCloseCallback(window, noteClose);
     glfwSetDropCallback(window, noteDrop);
 }

@@ -5,7 +5,6 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,16 +19,14 @@
 #include "interchange/custom_brdf.h"
 #include "interchange/measured_brdf.h"
 #include "texture/texture_edit.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
 
 std::string formatRange(const ParamSpec& spec) {
-    char text[96];
-    const char* above = spec.validMinExclusive ? "greater than" : "at least";
-    if (spec.validMax == kUnbounded) std::snprintf(text, sizeof text, "%s %g", above, spec.validMin);
-    else std::snprintf(text, sizeof text, "%s %g and at most %g", above, spec.validMin, spec.validMax);
-    return text;
+    const std::string least = (spec.validMinExclusive ? "greater than " : "at least ") + formatNumber(spec.validMin);
+    return spec.validMax == kUnbounded ? least : least + " and at most " + formatNumber(spec.validMax);
 }
 
 // A positive channel below this reads "≈ 0" (dragChannels).
@@ -124,9 +121,7 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
                     *value = edited, changed = true;
                     refusal.clear();
                 } else {
-                    char typed[32];
-                    std::snprintf(typed, sizeof typed, "%g", edited);
-                    refusal = std::string(spec.label) + ": " + typed + " refused; it must be " + formatRange(spec);
+                    refusal = std::string(spec.label) + ": " + formatNumber(edited) + " refused; it must be " + formatRange(spec);
                 }
             }
             break;
@@ -213,6 +208,61 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
     return changed;
 }
 
+// The rows of the material's parameter table; `analytic`, a built-in model's material (else a
+// .brdf file's), adds the IOR presets and the texture controls.
+bool drawParamRows(Material& material, AnalyticMaterial* analytic, std::string& refusal, std::string& textureFileRequest) {
+    bool changed = false;
+    const auto table = paramTable(material);
+    const std::span<float> values = paramValues(material);
+    for (size_t i = 0; i < table.size(); ++i) {
+        const bool indexOfRefraction = analytic && std::string_view(table[i].name) == "ior";
+        const bool texturable = analytic && (table[i].kind == ParamKind::Scalar || table[i].kind == ParamKind::Color);
+        std::vector<const char*> buttonsAfter = {"R"};
+        if (indexOfRefraction) buttonsAfter.push_back("Presets");
+        if (texturable) buttonsAfter.push_back("Tex");
+        changed |= drawParam(table[i], values.data() + packedOffset(table, static_cast<int>(i)), refusal, buttonsAfter);
+        // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
+        if (indexOfRefraction) changed |= drawIorPresetMenu(material);
+        if (!texturable) continue;
+        // The texture button, where its label ("Checker", "Image", …) no longer fits beside a long
+        // parameter label, opens the next line, above the texture's settings.
+        ImGui::SameLine();
+        const bool wraps = ImGui::GetContentRegionAvail().x < buttonWidth(textureButtonLabel(*analytic, table[i].name));
+        if (wraps) ImGui::NewLine(), ImGui::Indent();
+        changed |= drawTextureControls(*analytic, table[i].name, &table[i], textureFileRequest, refusal);
+        if (wraps) ImGui::Unindent();
+    }
+    return changed;
+}
+
+// A built-in model's rows: its parameters, its maps and what the model is.
+bool drawAnalyticRows(Material& material, AnalyticMaterial& analytic, std::string& refusal, std::string& textureFileRequest) {
+    bool changed = drawParamRows(material, &analytic, refusal, textureFileRequest);
+    std::string unused;
+    ImGui::TextUnformatted("Ambient occlusion");
+    ImGui::SameLine();
+    changed |= drawTextureControls(analytic, kOcclusionMapKey, texturableParam(analytic.model, kOcclusionMapKey, unused),
+                                   textureFileRequest, refusal);
+    ImGui::TextUnformatted("Normal map");
+    ImGui::SameLine();
+    changed |= drawTextureControls(analytic, kNormalMapKey, nullptr, textureFileRequest, refusal);
+    if (findParam(modelInfo(analytic.model).params, "coat_weight") >= 0) {
+        ImGui::TextUnformatted("Coat normal map");
+        ImGui::SameLine();
+        changed |= drawTextureControls(analytic, kCoatNormalMapKey, nullptr, textureFileRequest, refusal);
+    }
+    if (analytic.model == BrdfModel::Lambert) {
+        // Show f_r beside ρ, where a teacher would look.
+        const std::vector<float>& rho = analytic.values;
+        ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", rho[0] * kInvPi, rho[1] * kInvPi, rho[2] * kInvPi);
+    }
+    ImGui::PushTextWrapPos();
+    ImGui::TextDisabled("%s", modelInfo(analytic.model).citation);
+    ImGui::TextDisabled("Environment light: %s", modelInfo(analytic.model).environmentResponse);
+    ImGui::PopTextWrapPos();
+    return changed;
+}
+
 }  // namespace
 
 bool drawMaterialPanel(Material& material, std::string& refusal, std::string& textureFileRequest) {
@@ -239,65 +289,27 @@ bool drawMaterialPanel(Material& material, std::string& refusal, std::string& te
         }
         ImGui::EndCombo();
     }
-    if (const MeasuredMaterial* measured = material.measured()) {
-        ImGui::PushTextWrapPos();
-        ImGui::TextDisabled("Measured BRDF %s (Matusik et al., A Data-Driven Reflectance Model, SIGGRAPH 2003): "
-                            "no parameters; the table is interpolated trilinearly.", measured->brdf->path.c_str());
-        ImGui::TextDisabled("Ambient and environment light: the measured directional albedo times the diffuse "
-                            "irradiance (no glossy reflection of the environment).");
-        ImGui::PopTextWrapPos();
-        return changed;
-    }
-    AnalyticMaterial* analytic = material.analytic();  // else a .brdf file's: no IOR presets, no textures
-    const auto table = paramTable(material);
-    const std::span<float> values = paramValues(material);
-    for (size_t i = 0; i < table.size(); ++i) {
-        const bool indexOfRefraction = analytic && std::string_view(table[i].name) == "ior";
-        const bool texturable = analytic && (table[i].kind == ParamKind::Scalar || table[i].kind == ParamKind::Color);
-        std::vector<const char*> buttonsAfter = {"R"};
-        if (indexOfRefraction) buttonsAfter.push_back("Presets");
-        if (texturable) buttonsAfter.push_back("Tex");
-        changed |= drawParam(table[i], values.data() + packedOffset(table, static_cast<int>(i)), refusal, buttonsAfter);
-        // The IOR preset menu sits beside the index field (it sets κ too where the model has it).
-        if (indexOfRefraction) changed |= drawIorPresetMenu(material);
-        if (!texturable) continue;
-        // The texture button, where its label ("Checker", "Image", …) no longer fits beside a long
-        // parameter label, opens the next line, above the texture's settings.
-        ImGui::SameLine();
-        const bool wraps = ImGui::GetContentRegionAvail().x < buttonWidth(textureButtonLabel(*analytic, table[i].name));
-        if (wraps) ImGui::NewLine(), ImGui::Indent();
-        changed |= drawTextureControls(*analytic, table[i].name, &table[i], textureFileRequest, refusal);
-        if (wraps) ImGui::Unindent();
-    }
-    if (const CustomMaterial* custom = material.custom()) {
-        ImGui::PushTextWrapPos();
-        ImGui::TextDisabled("BRDF Explorer file %s (reloads when it changes)", custom->brdf->file.path.c_str());
-        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f),
-                           "GPU preview only: the CPU reference (glint render --reference) cannot run .brdf shaders.");
-        ImGui::PopTextWrapPos();
-        return changed;
-    }
-    std::string unused;
-    ImGui::TextUnformatted("Ambient occlusion");
-    ImGui::SameLine();
-    changed |= drawTextureControls(*analytic, kOcclusionMapKey, texturableParam(analytic->model, kOcclusionMapKey, unused),
-                                   textureFileRequest, refusal);
-    ImGui::TextUnformatted("Normal map");
-    ImGui::SameLine();
-    changed |= drawTextureControls(*analytic, kNormalMapKey, nullptr, textureFileRequest, refusal);
-    if (findParam(table, "coat_weight") >= 0) {
-        ImGui::TextUnformatted("Coat normal map");
-        ImGui::SameLine();
-        changed |= drawTextureControls(*analytic, kCoatNormalMapKey, nullptr, textureFileRequest, refusal);
-    }
-    if (analytic->model == BrdfModel::Lambert) {
-        // Show f_r beside ρ, where a teacher would look.
-        ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", values[0] * kInvPi, values[1] * kInvPi, values[2] * kInvPi);
-    }
-    ImGui::PushTextWrapPos();
-    ImGui::TextDisabled("%s", modelInfo(analytic->model).citation);
-    ImGui::TextDisabled("Environment light: %s", modelInfo(analytic->model).environmentResponse);
-    ImGui::PopTextWrapPos();
+    changed |= std::visit(
+        Overloaded{[&](AnalyticMaterial& analytic) { return drawAnalyticRows(material, analytic, refusal, textureFileRequest); },
+                   [&](const CustomMaterial& custom) {
+                       const bool edited = drawParamRows(material, nullptr, refusal, textureFileRequest);
+                       ImGui::PushTextWrapPos();
+                       ImGui::TextDisabled("BRDF Explorer file %s (reloads when it changes)", custom.brdf->file.path.c_str());
+                       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "GPU preview only: the CPU reference "
+                                                                          "(glint render --reference) cannot run .brdf shaders.");
+                       ImGui::PopTextWrapPos();
+                       return edited;
+                   },
+                   [](const MeasuredMaterial& measured) {
+                       ImGui::PushTextWrapPos();
+                       ImGui::TextDisabled("Measured BRDF %s (Matusik et al., A Data-Driven Reflectance Model, SIGGRAPH 2003): "
+                                           "no parameters; the table is interpolated trilinearly.", measured.brdf->path.c_str());
+                       ImGui::TextDisabled("Ambient and environment light: the measured directional albedo times the diffuse "
+                                           "irradiance (no glossy reflection of the environment).");
+                       ImGui::PopTextWrapPos();
+                       return false;
+                   }},
+        material.kind);
     return changed;
 }
 

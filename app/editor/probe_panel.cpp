@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -13,6 +12,7 @@
 #include "classroom/probe_overlay.h"
 #include "classroom/probe_text.h"
 #include "editor/window_placement.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -59,11 +59,7 @@ void probeRow(const char* quantity, const std::string& value) {
     ImGui::TextUnformatted(value.c_str());
 }
 
-std::string probeDegreesText(float degrees) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f°", degrees);
-    return text;
-}
+std::string probeDegreesText(float degrees) { return formatNumber(degrees, "%.1f°"); }
 
 std::string probeDirectionText(glm::vec3 v) {
     return "(" + formatProbeNumber(v.x) + ", " + formatProbeNumber(v.y) + ", " + formatProbeNumber(v.z) + ")";

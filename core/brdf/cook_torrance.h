@@ -36,9 +36,8 @@ struct CookTorranceParams {
 };
 
 inline constexpr ParamSpec kCookTorranceTable[] = {
-    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
-     .help = "Added Lambert term ρ_d/π (0 for metals; a dielectric's body colour)"},
+    colorParam("diffuse_albedo", "Diffuse albedo ρ_d", {0.0f, 0.0f, 0.0f},
+        "Added Lambert term ρ_d/π (0 for metals; a dielectric's body colour)"),
     {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0.01f, .sliderMax = 4, .validMin = 0, .validMax = kUnbounded, .defaultValue = {1.5f, 1.5f, 1.5f},
      .validMinExclusive = true, .help = "Real part of the complex index per RGB channel (> 0)"},

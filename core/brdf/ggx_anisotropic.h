@@ -25,9 +25,7 @@ struct GgxAnisotropicParams {
 };
 
 inline constexpr ParamSpec kGgxAnisotropicTable[] = {
-    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
-     .help = "Added Lambert term ρ_d/π (0 for metals)"},
+    colorParam("diffuse_albedo", "Diffuse albedo ρ_d", {0.0f, 0.0f, 0.0f}, "Added Lambert term ρ_d/π (0 for metals)"),
     {.name = "ior", .label = "IOR n", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0.01f, .sliderMax = 4, .validMin = 0, .validMax = kUnbounded,
      .defaultValue = {1.3456f, 0.96521f, 0.61722f}, .validMinExclusive = true,

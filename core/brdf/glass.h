@@ -40,9 +40,8 @@ inline constexpr ParamSpec kGlassTable[] = {
     {.name = "transparency", .label = "Transparency", .unit = "", .kind = ParamKind::Enum,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0, 0, 0},
      .options = kGlassTransparencyOptions, .help = "Exact Fresnel, or the classic constant k_t"},
-    {.name = "transmission", .label = "Transmission k_t", .unit = "", .kind = ParamKind::Scalar,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.9f, 0, 0},
-     .help = "Classic transparency only: fraction transmitted at each interface"},
+    fractionParam("transmission", "Transmission k_t", 0.9f,
+        "Classic transparency only: fraction transmitted at each interface"),
 };
 
 // f_r for delta lights: 0 (both lobes are deltas; a point light's reflection has zero area).

@@ -17,9 +17,7 @@ struct LambertParams {
 };
 
 inline constexpr ParamSpec kLambertTable[] = {
-    {.name = "albedo", .label = "Albedo ρ", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.5f, 0.5f, 0.5f},
-     .help = "Fraction of incident flux reflected; f_r = ρ/π"},
+    colorParam("albedo", "Albedo ρ", {0.5f, 0.5f, 0.5f}, "Fraction of incident flux reflected; f_r = ρ/π"),
 };
 
 // f_r = ρ/π [1/sr], independent of direction (Lambert 1760).

@@ -29,10 +29,9 @@ inline constexpr ParamSpec kMirrorTable[] = {
     {.name = "extinction", .label = "Extinction κ", .unit = "", .kind = ParamKind::PerChannel,
      .sliderMin = 0, .sliderMax = 10, .validMin = 0, .validMax = kUnbounded, .defaultValue = {9.22f, 6.27f, 4.84f},
      .help = "Imaginary part κ of n + iκ; 0 for a dielectric"},
-    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0, 0, 0},
-     .help = "Optional small Lambert part, lit by the lights and the ambient light; added to the mirror "
-             "lobe, not balanced against it (F + ρ_d may exceed 1)"},
+    colorParam("diffuse_albedo", "Diffuse albedo ρ_d", {0, 0, 0},
+        "Optional small Lambert part, lit by the lights and the ambient light; added to the mirror "
+        "lobe, not balanced against it (F + ρ_d may exceed 1)"),
 };
 
 // f_r for delta lights: only the Lambert part ρ_d/π (the mirror lobe is a delta).

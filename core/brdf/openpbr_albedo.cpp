@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "brdf/microfacet.h"
 #include "brdf/openpbr_lobes.h"
 #include "environment/ggx_sampling.h"
 #include "math/constants.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -66,11 +66,7 @@ T bilinear(const std::vector<T>& table, float cosOut, float perceptualRoughness)
     return top * (1.0f - fy) + bottom * fy;
 }
 
-std::string glslFloat(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.8e", static_cast<double>(value));
-    return text;
-}
+std::string glslFloat(float value) { return formatNumber(value, "%.8e"); }
 
 }  // namespace
 

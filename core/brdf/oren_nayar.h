@@ -21,9 +21,7 @@ struct OrenNayarParams {
 };
 
 inline constexpr ParamSpec kOrenNayarTable[] = {
-    {.name = "albedo", .label = "Albedo ρ", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.8f, 0.8f, 0.8f},
-     .help = "Facet albedo; σ = 0 gives Lambert ρ/π"},
+    colorParam("albedo", "Albedo ρ", {0.8f, 0.8f, 0.8f}, "Facet albedo; σ = 0 gives Lambert ρ/π"),
     {.name = "roughness", .label = "Roughness σ", .unit = "deg", .kind = ParamKind::Scalar,
      .sliderMin = 0, .sliderMax = 90, .validMin = 0, .validMax = 90, .defaultValue = {30, 0, 0},
      .help = "Standard deviation of the facet slope angle, in degrees"},

@@ -41,6 +41,15 @@ struct ParamSpec {
 
 inline constexpr float kUnbounded = std::numeric_limits<float>::infinity();
 
+// The two common rows: a Color, and a dimensionless Scalar in [0, 1] (a weight, a roughness), each
+// with the slider over its whole valid range [0, 1].
+constexpr ParamSpec colorParam(const char* name, const char* label, std::array<float, 3> value, const char* help) {
+    return {.name = name, .label = label, .unit = "", .kind = ParamKind::Color, .defaultValue = value, .help = help};
+}
+constexpr ParamSpec fractionParam(const char* name, const char* label, float value, const char* help) {
+    return {.name = name, .label = label, .unit = "", .kind = ParamKind::Scalar, .defaultValue = {value, 0, 0}, .help = help};
+}
+
 // Floats one parameter occupies in the packed value array.
 constexpr int componentCount(ParamKind kind) {
     return kind == ParamKind::Color || kind == ParamKind::PerChannel ? 3 : 1;

@@ -39,12 +39,9 @@ struct PhongParams {
 };
 
 inline constexpr ParamSpec kPhongTable[] = {
-    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.1f, 0.3f, 0.5f},
-     .help = "Lambert term ρ_d/π"},
-    {.name = "specular", .label = "Specular k_s", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.04f, 0.04f, 0.04f},
-     .help = "Specular strength; white for dielectrics, coloured for metals"},
+    colorParam("diffuse_albedo", "Diffuse albedo ρ_d", {0.1f, 0.3f, 0.5f}, "Lambert term ρ_d/π"),
+    colorParam("specular", "Specular k_s", {0.04f, 0.04f, 0.04f},
+        "Specular strength; white for dielectrics, coloured for metals"),
     {.name = "exponent", .label = "Exponent n", .unit = "", .kind = ParamKind::Scalar,
      .sliderMin = 1, .sliderMax = 10000, .validMin = 0, .validMax = kUnbounded, .defaultValue = {32, 0, 0},
      .scale = ParamScale::Log, .help = "Sharpness of the highlight, cos^n δ"},

@@ -34,18 +34,16 @@ struct RetroreflectiveParams {
 };
 
 inline constexpr ParamSpec kRetroreflectiveTable[] = {
-    {.name = "albedo", .label = "Albedo ρ", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.12f, 0.12f, 0.12f},
-     .help = "Minnaert: directional albedo at normal incidence; Lommel-Seeliger: single-scattering albedo"},
+    colorParam("albedo", "Albedo ρ", {0.12f, 0.12f, 0.12f},
+        "Minnaert: directional albedo at normal incidence; Lommel-Seeliger: single-scattering albedo"),
     {.name = "limb_darkening", .label = "Limb darkening", .unit = "", .kind = ParamKind::Enum,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {1, 0, 0},
      .options = kLimbDarkeningOptions, .help = "The diffuse law"},
     {.name = "minnaert_k", .label = "Minnaert exponent k", .unit = "", .kind = ParamKind::Scalar,
      .sliderMin = 0.1f, .sliderMax = 2, .validMin = 0.1f, .validMax = 2, .defaultValue = {0.7f, 0, 0},
      .help = "Minnaert only: 1 = Lambert, < 1 flatter (moon-like), > 1 darker limb"},
-    {.name = "retroreflection", .label = "Retroreflection k_r", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.0f, 0.0f, 0.0f},
-     .help = "Weight of the lobe (m+1)/(2π) cos^m γ, γ the angle between ω_o and ω_i"},
+    colorParam("retroreflection", "Retroreflection k_r", {0.0f, 0.0f, 0.0f},
+        "Weight of the lobe (m+1)/(2π) cos^m γ, γ the angle between ω_o and ω_i"),
     {.name = "retro_exponent", .label = "Retro exponent m", .unit = "", .kind = ParamKind::Scalar,
      .sliderMin = 1, .sliderMax = 1000, .validMin = 0, .validMax = kUnbounded, .defaultValue = {50, 0, 0},
      .scale = ParamScale::Log, .help = "Sharpness of the retroreflective lobe"},

@@ -34,12 +34,8 @@ struct WardParams {
 };
 
 inline constexpr ParamSpec kWardTable[] = {
-    {.name = "diffuse_albedo", .label = "Diffuse albedo ρ_d", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.1f, 0.1f, 0.1f},
-     .help = "Lambert term ρ_d/π"},
-    {.name = "specular", .label = "Specular ρ_s", .unit = "", .kind = ParamKind::Color,
-     .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = 1, .defaultValue = {0.5f, 0.5f, 0.5f},
-     .help = "Specular reflectance of the Gaussian lobe"},
+    colorParam("diffuse_albedo", "Diffuse albedo ρ_d", {0.1f, 0.1f, 0.1f}, "Lambert term ρ_d/π"),
+    colorParam("specular", "Specular ρ_s", {0.5f, 0.5f, 0.5f}, "Specular reflectance of the Gaussian lobe"),
     {.name = "roughness_x", .label = "Roughness α_x", .unit = "", .kind = ParamKind::Scalar,
      .sliderMin = 0.01f, .sliderMax = 1, .validMin = 0.01f, .validMax = 1, .defaultValue = {0.1f, 0, 0},
      .scale = ParamScale::Log, .help = "RMS surface slope along the tangent"},

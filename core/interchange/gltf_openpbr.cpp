@@ -165,53 +165,50 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         return extensions->object(name);
     };
     auto pointerOf = [&](const char* name) { return appendPointer(extensions->pointer(), name); };
+    // A factor that also scales its texture: the parameter's value, and the texture's range [0, factor].
+    auto factor = [&](ObjectReader& object, const char* key, double fallback, Bounds bounds, const char* parameter) {
+        const float value = number(object, key, fallback, bounds);
+        setParam(m, parameter, value);
+        ranges[parameter] = {0.0f, value};
+        return value;
+    };
 
     if (auto ior = extension("KHR_materials_ior")) {
         setParam(m, "specular_ior", number(*ior, "ior", 1.5, Bounds::between(1, 1e6)));
         finish(*ior);
     }
     if (auto specular = extension("KHR_materials_specular")) {
-        const float factor = number(*specular, "specularFactor", 1.0, Bounds::between(0, 1));
+        factor(*specular, "specularFactor", 1.0, Bounds::between(0, 1), "specular_weight");
         glm::vec3 color = specular->vec3("specularColorFactor", glm::vec3(1.0f), Bounds::nonNegative());
         if (glm::any(glm::greaterThan(color, glm::vec3(1.0f)))) {
             reading.warn(pointerOf("KHR_materials_specular"), "specularColorFactor above 1 is clipped to 1 (OpenPBR's specular_color is a reflectance)");
             color = glm::min(color, glm::vec3(1.0f));
         }
-        setParam(m, "specular_weight", factor);
         setParam(m, "specular_color", color);
-        ranges["specular_weight"] = {0.0f, factor};
         colorFactors["specular_color"] = color;
         reading.readSlots(*specular, "KHR_materials_specular", ranges, colorFactors);
         finish(*specular);
     }
     if (auto coat = extension("KHR_materials_clearcoat")) {
-        const float weight = number(*coat, "clearcoatFactor", 0.0, Bounds::between(0, 1));
-        const float coatRoughness = number(*coat, "clearcoatRoughnessFactor", 0.0, Bounds::between(0, 1));
-        setParam(m, "coat_weight", weight);
-        setParam(m, "coat_roughness", coatRoughness);
+        factor(*coat, "clearcoatFactor", 0.0, Bounds::between(0, 1), "coat_weight");
+        factor(*coat, "clearcoatRoughnessFactor", 0.0, Bounds::between(0, 1), "coat_roughness");
         setParam(m, "coat_ior", kGltfCoatIor);
         setParam(m, "coat_darkening", 0.0f);  // glTF's coat only attenuates by its Fresnel: no internal reflections
-        ranges["coat_weight"] = {0.0f, weight};
-        ranges["coat_roughness"] = {0.0f, coatRoughness};
         reading.readSlots(*coat, "KHR_materials_clearcoat", ranges, colorFactors);
         finish(*coat);
     }
     if (auto sheen = extension("KHR_materials_sheen")) {
         const glm::vec3 color = sheen->vec3("sheenColorFactor", glm::vec3(0.0f), Bounds::between(0, 1));
-        const float sheenRoughness = number(*sheen, "sheenRoughnessFactor", 0.0, Bounds::between(0, 1));
+        factor(*sheen, "sheenRoughnessFactor", 0.0, Bounds::between(0, 1), "fuzz_roughness");
         setParam(m, "fuzz_weight", 1.0f);
         setParam(m, "fuzz_color", color);
-        setParam(m, "fuzz_roughness", sheenRoughness);
         colorFactors["fuzz_color"] = color;
-        ranges["fuzz_roughness"] = {0.0f, sheenRoughness};
         reading.readSlots(*sheen, "KHR_materials_sheen", ranges, colorFactors);
         finish(*sheen);
     }
     bool transmits = false;
     if (auto transmission = extension("KHR_materials_transmission")) {
-        const float weight = number(*transmission, "transmissionFactor", 0.0, Bounds::between(0, 1));
-        setParam(m, "transmission_weight", weight);
-        ranges["transmission_weight"] = {0.0f, weight};
+        factor(*transmission, "transmissionFactor", 0.0, Bounds::between(0, 1), "transmission_weight");
         reading.readSlots(*transmission, "KHR_materials_transmission", ranges, colorFactors);
         finish(*transmission);
         transmits = true;
@@ -220,11 +217,10 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         setParam(m, "geometry_thin_walled", 1.0f);  // glTF: without KHR_materials_volume the surface is thin
     }
     if (auto volume = extension("KHR_materials_volume")) {
-        const float thickness = number(*volume, "thicknessFactor", 0.0, Bounds::nonNegative());
+        // In the mesh's units, taken as metres.
+        const float thickness = factor(*volume, "thicknessFactor", 0.0, Bounds::nonNegative(), "geometry_thickness");
         const float distance = number(*volume, "attenuationDistance", std::numeric_limits<double>::max(), Bounds::positive());
         const glm::vec3 color = volume->vec3("attenuationColor", glm::vec3(1.0f), Bounds::between(0, 1));
-        setParam(m, "geometry_thickness", thickness);  // in the mesh's units, taken as metres
-        ranges["geometry_thickness"] = {0.0f, thickness};
         reading.readSlots(*volume, "KHR_materials_volume", ranges, colorFactors);
         finish(*volume);
         if (thickness > 0.0f) setParam(m, "geometry_thin_walled", 0.0f);
@@ -237,14 +233,12 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         }
     }
     if (auto iridescence = extension("KHR_materials_iridescence")) {
-        const float weight = number(*iridescence, "iridescenceFactor", 0.0, Bounds::between(0, 1));
+        factor(*iridescence, "iridescenceFactor", 0.0, Bounds::between(0, 1), "thin_film_weight");
         const float filmIor = number(*iridescence, "iridescenceIor", 1.3, Bounds::between(1, 1e6));
         const float minimum = number(*iridescence, "iridescenceThicknessMinimum", 100.0, Bounds::nonNegative());
         const float maximum = number(*iridescence, "iridescenceThicknessMaximum", 400.0, Bounds::nonNegative());
-        setParam(m, "thin_film_weight", weight);
         setParam(m, "thin_film_ior", filmIor);
         setParam(m, "thin_film_thickness", maximum / 1000.0f);  // nm → µm; without a texture glTF uses the maximum
-        ranges["thin_film_weight"] = {0.0f, weight};
         ranges["thin_film_thickness"] = {minimum / 1000.0f, maximum / 1000.0f};
         const size_t before = reading.textures.size();
         reading.readSlots(*iridescence, "KHR_materials_iridescence", ranges, colorFactors);
@@ -255,11 +249,8 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         finish(*iridescence);
     }
     if (auto anisotropy = extension("KHR_materials_anisotropy")) {
-        const float strength = number(*anisotropy, "anisotropyStrength", 0.0, Bounds::between(0, 1));
-        const float rotation = number(*anisotropy, "anisotropyRotation", 0.0, Bounds::any());
-        setParam(m, "specular_roughness_anisotropy", strength);
-        setParam(m, "geometry_tangent_rotation", glm::degrees(rotation));
-        ranges["specular_roughness_anisotropy"] = {0.0f, strength};
+        factor(*anisotropy, "anisotropyStrength", 0.0, Bounds::between(0, 1), "specular_roughness_anisotropy");
+        setParam(m, "geometry_tangent_rotation", glm::degrees(number(*anisotropy, "anisotropyRotation", 0.0, Bounds::any())));
         if (anisotropy->has("anisotropyTexture"))
             reading.warn(appendPointer(pointerOf("KHR_materials_anisotropy"), "anisotropyTexture"),
                          "its blue channel (strength) is used; the direction in red and green is not (one tangent rotation per material)");

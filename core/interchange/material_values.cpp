@@ -7,19 +7,20 @@
 namespace glint {
 namespace {
 
-float* slot(Material& material, std::string_view name, int* count) {
+// Where parameter `name` starts in the material's packed values; its component count in `count`.
+int slot(const Material& material, std::string_view name, int* count) {
     const auto table = paramTable(material);
     const int index = findParam(table, name);
     GLINT_CHECK(index >= 0);
     *count = componentCount(table[index].kind);
-    return paramValues(material).data() + packedOffset(table, index);
+    return packedOffset(table, index);
 }
 
 }  // namespace
 
 glm::vec3 paramValue(const Material& material, std::string_view name) {
     int count = 0;
-    const float* value = slot(const_cast<Material&>(material), name, &count);
+    const float* value = paramValues(material).data() + slot(material, name, &count);
     return count == 3 ? glm::vec3(value[0], value[1], value[2]) : glm::vec3(value[0]);
 }
 
@@ -27,7 +28,7 @@ float paramScalar(const Material& material, std::string_view name) { return para
 
 void setParam(Material& material, std::string_view name, glm::vec3 value) {
     int count = 0;
-    float* target = slot(material, name, &count);
+    float* target = paramValues(material).data() + slot(material, name, &count);
     for (int c = 0; c < count; ++c) target[c] = value[c];
 }
 

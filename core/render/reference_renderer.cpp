@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -91,25 +92,71 @@ std::optional<SurfaceHit> intersectScene(const Scene& scene, const Ray& ray) {
 
 namespace {
 
+// A material's response at one hit: its textured values and normal-mapped frame, f_r for each
+// light, and its ambient, environment and traced delta-lobe terms.
+struct HitResponse {
+    std::vector<float> values;  // packed per the model's table, textures applied (none for a table)
+    ShadingFrame frame;
+    std::function<glm::vec3(glm::vec3 towardsLight)> brdf;
+    glm::vec3 ambientReflectance;
+    float occlusion;  // the occlusion map (glTF's occlusionTexture): scales ambient and environment light only
+    glm::vec3 environment;  // before occlusion
+    glm::vec3 specular;
+};
+
 // shadeHit's terms at the hit itself; `breakdown`, when given, receives each term (the surface
 // probe's hook), else only the sum is returned.
 glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
                      uint32_t pixelSeed, ShadingBreakdown* breakdown) {
-    const Material& material = scene.materials.at(scene.objects.at(hit.objectIndex).materialIndex);
-    // An analytic model or a measured table (a .brdf shader runs on the GPU only: referenceCanRender).
-    const AnalyticMaterial* analytic = material.analytic();
-    GLINT_CHECK(analytic || material.measured());
-    const MeasuredBrdf* measured = analytic ? nullptr : material.measured()->brdf.get();
+    const SceneObject& object = scene.objects.at(hit.objectIndex);
     // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
     std::optional<glm::vec2> triangleUv;  // shapes drawn from triangles: the interpolated vertex UV
     if (hit.triangle)
         triangleUv = hit.triangle->barycentric[0] * hit.triangle->vertices[0].uv +
                      hit.triangle->barycentric[1] * hit.triangle->vertices[1].uv +
                      hit.triangle->barycentric[2] * hit.triangle->vertices[2].uv;
-    const TexturePoint texturePoint = texturePointOn(scene.objects.at(hit.objectIndex).shape, hit.position, triangleUv);
-    const std::vector<float> values = analytic ? texturedValues(*analytic, texturePoint) : std::vector<float>();
+    const TexturePoint texturePoint = texturePointOn(object.shape, hit.position, triangleUv);
     const ShadingFrame unmapped = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
-    const ShadingFrame frame = analytic ? normalMappedFrame(*analytic, texturePoint, unmapped) : unmapped;
+    // The delta lobes (mirror, glass) are traced against the environment or the background.
+    std::optional<SphereGeometry> sphere;
+    const auto* sphereShape = std::get_if<SphereShape>(&object.shape);
+    if (sphereShape && !drawnAsTriangles(object.shape, object.interpolation))
+        sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
+    const HitResponse response = std::visit(
+        Overloaded{
+            [&](const AnalyticMaterial& analytic) {
+                const BrdfModel model = analytic.model;
+                std::vector<float> values = texturedValues(analytic, texturePoint);
+                const ShadingFrame frame = normalMappedFrame(analytic, texturePoint, unmapped);
+                // Environment light: the GPU's image-based lighting, or sampled.
+                const glm::vec3 environment =
+                    options.sampleEnvironment ? sampleEnvironmentLighting(model, values, towardsViewer, frame, scene.environment,
+                                                                          pixelSeed, options.environmentSamples)
+                                              : environmentLighting(model, values, towardsViewer, frame, scene.environment);
+                const glm::vec3 specular =
+                    traceSpecular(model, values, MissRadiance(scene.background, &scene.environment, options.backdrop),
+                                  sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
+                const glm::vec3 ambient = ambientReflectance(model, values, towardsViewer, frame);
+                auto brdf = [=](glm::vec3 towardsLight) { return evalBrdf(model, values, towardsLight, towardsViewer, frame); };
+                return HitResponse{std::move(values), frame, brdf, ambient, ambientOcclusion(analytic, texturePoint),
+                                   environment, specular};
+            },
+            // A MERL table (measured_shading.h) has no delta lobes, and its ambient and environment
+            // terms come from its measured directional albedo.
+            [&](const MeasuredMaterial& measured) {
+                const MeasuredBrdf& table = *measured.brdf;
+                auto brdf = [&table, towardsViewer, unmapped](glm::vec3 towardsLight) {
+                    return evalMeasuredBrdf(table, towardsLight, towardsViewer, unmapped);
+                };
+                return HitResponse{{}, unmapped, brdf, measuredAmbientReflectance(table, towardsViewer, unmapped), 1.0f,
+                                   measuredEnvironmentLighting(table, towardsViewer, unmapped, scene.environment), glm::vec3(0.0f)};
+            },
+            [](const CustomMaterial&) -> HitResponse {
+                GLINT_CHECK(!"a .brdf material reached the CPU reference (referenceCanRender refuses it)");
+                return {};
+            }},
+        scene.materials.at(object.materialIndex).kind);
+    const ShadingFrame& frame = response.frame;
     glm::vec3 radiance(0.0f);
     for (size_t lightIndex = 0; lightIndex < scene.lights.size(); ++lightIndex) {
         const Light& light = scene.lights[lightIndex];
@@ -120,8 +167,7 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
         // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
         const float visibility = cosTheta <= 0.0f ? 0.0f : lightVisibility(scene, light, hit, arrival);
         if (visibility == 0.0f && !breakdown) continue;
-        const glm::vec3 brdf = measured ? evalMeasuredBrdf(*measured, arrival.towardsLight, towardsViewer, frame)
-                                        : evalBrdf(analytic->model, values, arrival.towardsLight, towardsViewer, frame);
+        const glm::vec3 brdf = response.brdf(arrival.towardsLight);
         const glm::vec3 reflected =
             visibility == 0.0f ? glm::vec3(0.0f) : brdf * arrival.normalIrradiance * cosTheta;
         radiance += reflected;
@@ -131,42 +177,19 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
-    // A MERL table (measured_shading.h) has no delta lobes, and its ambient and environment terms
-    // come from its measured directional albedo.
-    const glm::vec3 ambientFactor = measured ? measuredAmbientReflectance(*measured, towardsViewer, frame)
-                                             : ambientReflectance(analytic->model, values, towardsViewer, frame);
-    // The occlusion map (glTF's occlusionTexture) scales the ambient and environment light only.
-    const float occlusion = analytic ? ambientOcclusion(*analytic, texturePoint) : 1.0f;
-    radiance += occlusion * ambientFactor * ambient;
-    // Environment light: the GPU's image-based lighting, or sampled.
-    const glm::vec3 unoccludedEnvironment =
-        measured ? measuredEnvironmentLighting(*measured, towardsViewer, frame, scene.environment)
-        : options.sampleEnvironment
-            ? sampleEnvironmentLighting(analytic->model, values, towardsViewer, frame, scene.environment, pixelSeed,
-                                        options.environmentSamples)
-            : environmentLighting(analytic->model, values, towardsViewer, frame, scene.environment);
-    // ...less what the scene's spheres cover (sphere_occlusion.h).
-    const glm::vec3 environment =
-        occlusion * unoccludedEnvironment * environmentVisibility(occludingSpheres(scene), hit.position, frame.normal);
+    radiance += response.occlusion * response.ambientReflectance * ambient;
+    // The environment, less what the scene's spheres cover (sphere_occlusion.h).
+    const glm::vec3 environment = response.occlusion * response.environment *
+                                  environmentVisibility(occludingSpheres(scene), hit.position, frame.normal);
     radiance += environment;
-    // Delta lobes (mirror, glass), traced against the environment or the background.
-    const Shape& shape = scene.objects.at(hit.objectIndex).shape;
-    std::optional<SphereGeometry> sphere;
-    const auto* sphereShape = std::get_if<SphereShape>(&shape);
-    const SurfaceInterpolation interpolation = scene.objects.at(hit.objectIndex).interpolation;
-    if (sphereShape && !drawnAsTriangles(shape, interpolation)) sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    const glm::vec3 specular =
-        measured ? glm::vec3(0.0f)
-                 : traceSpecular(analytic->model, values, MissRadiance(scene.background, &scene.environment, options.backdrop),
-                                 sphere ? &*sphere : nullptr, hit.position, frame.normal, towardsViewer, hit.distance);
-    radiance += specular;
+    radiance += response.specular;
     if (breakdown) {
         breakdown->frame = frame;
-        breakdown->values = values;
-        breakdown->ambientReflectance = ambientFactor;
+        breakdown->values = response.values;
+        breakdown->ambientReflectance = response.ambientReflectance;
         breakdown->ambientRadiance = ambient;
         breakdown->environment = environment;
-        breakdown->specular = specular;
+        breakdown->specular = response.specular;
         breakdown->total = radiance;
     }
     return radiance;

@@ -72,11 +72,6 @@ double ObjectReader::number(const std::string& key, double fallback, Bounds boun
     return checkedNumber(node_.at(key), appendPointer(pointer_, key), key, bounds);
 }
 
-double ObjectReader::requiredNumber(const std::string& key, Bounds bounds) {
-    if (!has(key)) failHere(what_ + " needs the key '" + key + "'");
-    return number(key, 0.0, bounds);
-}
-
 int ObjectReader::integer(const std::string& key, int fallback, int min, int max) {
     known_.insert(key);
     if (!has(key)) return fallback;

@@ -45,7 +45,6 @@ public:
     const std::string& file() const { return document_.file(); }  // the JSON file, for relative paths
 
     double number(const std::string& key, double fallback, Bounds bounds = Bounds::any());
-    double requiredNumber(const std::string& key, Bounds bounds = Bounds::any());
     int integer(const std::string& key, int fallback, int min, int max);
     bool boolean(const std::string& key, bool fallback);
     std::string string(const std::string& key, const std::string& fallback);

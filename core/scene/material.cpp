@@ -16,13 +16,24 @@ std::span<const ParamSpec> paramTable(const Material& material) {
                       material.kind);
 }
 
-std::span<float> paramValues(Material& material) {
-    return std::visit(Overloaded{[](AnalyticMaterial& analytic) { return std::span<float>(analytic.values); },
-                                 [](CustomMaterial& custom) { return std::span<float>(custom.values); },
-                                 [](const MeasuredMaterial&) { return std::span<float>(); }},
-                      material.kind);
+namespace {
+
+// The values of the kinds that hold them, none for a measured table; `Values` is std::span<float>
+// or std::span<const float>, as `material` is const or not.
+template <class Values, class AnyMaterial>
+Values valuesOf(AnyMaterial& material) {
+    return std::visit(
+        [](auto& kind) {
+            if constexpr (requires { kind.values; }) return Values(kind.values);
+            else return Values();
+        },
+        material.kind);
 }
 
-std::span<const float> paramValues(const Material& material) { return paramValues(const_cast<Material&>(material)); }
+}  // namespace
+
+std::span<float> paramValues(Material& material) { return valuesOf<std::span<float>>(material); }
+
+std::span<const float> paramValues(const Material& material) { return valuesOf<std::span<const float>>(material); }
 
 }  // namespace glint

@@ -154,14 +154,14 @@ json lightToJson(const Light& light) {
     switch (light.type) {
         case LightType::Directional:
             out["irradiance"] = light.irradiance;
-            out["direction"] = {light.direction.x, light.direction.y, light.direction.z};
+            out["direction"] = vec3Json(light.direction);
             break;
         case LightType::Point:
         case LightType::Spot:
             out["power"] = light.power;
-            out["position"] = {light.position.x, light.position.y, light.position.z};
+            out["position"] = vec3Json(light.position);
             if (light.type == LightType::Spot) {
-                out["direction"] = {light.direction.x, light.direction.y, light.direction.z};
+                out["direction"] = vec3Json(light.direction);
                 out["cone_half_angle_degrees"] = light.coneHalfAngleDegrees;
                 out["falloff_exponent"] = light.falloffExponent;
                 out["edge_width_degrees"] = light.edgeWidthDegrees;
@@ -203,10 +203,9 @@ Background readBackground(ObjectReader& root) {
 }
 
 json backgroundToJson(const Background& background) {
-    const auto rgb = [](glm::vec3 v) { return json{v.x, v.y, v.z}; };
-    if (background.kind == BackgroundKind::Constant) return rgb(background.color);
-    return {{"type", "sky"}, {"zenith", rgb(background.zenith)}, {"horizon", rgb(background.horizon)},
-            {"ground", rgb(background.ground)}};
+    if (background.kind == BackgroundKind::Constant) return vec3Json(background.color);
+    return {{"type", "sky"}, {"zenith", vec3Json(background.zenith)}, {"horizon", vec3Json(background.horizon)},
+            {"ground", vec3Json(background.ground)}};
 }
 
 // --- objects --------------------------------------------------------------------------------

@@ -2,14 +2,13 @@
 #include "scene/shape_json.h"
 
 #include "geometry/mesh_import.h"
+#include "scene/json_vectors.h"
 #include "util/referenced_path.h"
 
 namespace glint {
 namespace {
 
 using nlohmann::json;
-
-json vec3(glm::vec3 v) { return {v.x, v.y, v.z}; }
 
 // "rotation": [x, y, z] in degrees, turned about x, then y, then z, about the shape's centre.
 glm::vec3 readRotation(ObjectReader& reader) { return reader.vec3("rotation", glm::vec3(0.0f), Bounds::between(-3600.0, 3600.0)); }
@@ -84,31 +83,31 @@ Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string&
 
 json shapeToJson(const Shape& shape, const std::string& sceneFile) {
     if (const auto* sphere = std::get_if<SphereShape>(&shape))
-        return {{"center", vec3(sphere->center)}, {"radius", sphere->radius}, {"segments", sphere->segments},
+        return {{"center", vec3Json(sphere->center)}, {"radius", sphere->radius}, {"segments", sphere->segments},
                 {"rings", sphere->rings}};
     if (const auto* plane = std::get_if<PlaneShape>(&shape)) {
-        json out = {{"center", vec3(plane->center)}, {"normal", vec3(plane->normal)}, {"size", {plane->size.x, plane->size.y}}};
+        json out = {{"center", vec3Json(plane->center)}, {"normal", vec3Json(plane->normal)}, {"size", {plane->size.x, plane->size.y}}};
         if (plane->edgeFade > 0.0f) out["edge_fade"] = plane->edgeFade;  // absent: a hard edge
         return out;
     }
     json out;
     if (const auto* cube = std::get_if<CubeShape>(&shape)) {
-        out = {{"center", vec3(cube->center)}, {"size", cube->size}};
-        if (cube->rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3(cube->rotationDegrees);
+        out = {{"center", vec3Json(cube->center)}, {"size", cube->size}};
+        if (cube->rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3Json(cube->rotationDegrees);
         return out;
     }
     if (const auto* torus = std::get_if<TorusShape>(&shape)) {
-        out = {{"center", vec3(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
+        out = {{"center", vec3Json(torus->center)}, {"major_radius", torus->majorRadius}, {"minor_radius", torus->minorRadius},
                {"segments", torus->segments}, {"rings", torus->rings}};
-        if (torus->rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3(torus->rotationDegrees);
+        if (torus->rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3Json(torus->rotationDegrees);
         return out;
     }
     const auto& mesh = std::get<MeshShape>(shape);
     const std::string& file = mesh.resolvedPath.empty() ? mesh.path : mesh.resolvedPath;
-    out = {{"path", referencedPathFor(file, sceneFile)}, {"center", vec3(mesh.center)}, {"scale", mesh.scale},
+    out = {{"path", referencedPathFor(file, sceneFile)}, {"center", vec3Json(mesh.center)}, {"scale", mesh.scale},
            {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
     if (mesh.upAxis == MeshUpAxis::Z) out["up"] = "z";
-    if (mesh.rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3(mesh.rotationDegrees);
+    if (mesh.rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3Json(mesh.rotationDegrees);
     return out;
 }
 

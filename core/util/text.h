@@ -20,7 +20,7 @@ inline std::string_view trimmed(std::string_view text) {
 
 // A number through a printf format: "%g" for people, "%.9g" to read back as the same float.
 inline std::string formatNumber(double value, const char* format = "%g") {
-    char text[32];
+    char text[64];
     std::snprintf(text, sizeof text, format, value);
     return text;
 }
