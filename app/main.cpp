@@ -15,6 +15,7 @@
 #include "editor/editor.h"
 #include "runtime/brdf_probe.h"
 #include "runtime/headless.h"
+#include "runtime/precompute_report.h"
 #include "scene/scene_json.h"
 
 namespace {
@@ -28,8 +29,10 @@ bool hasDisplay() {
 // No window could be opened: render `path` (the default scene when empty) offscreen instead, as
 // `glint render` would, and say where it went.
 int renderWithoutDisplay(const std::string& path, const std::string& reason) {
-    glint::Scene scene = glint::defaultScene();
-    if (!path.empty()) {
+    glint::Scene scene;  // the default one only when no file is named: its studio map takes a while
+    if (path.empty()) {
+        scene = glint::defaultScene();
+    } else {
         std::vector<glint::Diagnostic> warnings;
         std::vector<std::string> notes;
         auto loaded = glint::loadRenderInput(path, {}, warnings, notes);
@@ -69,6 +72,7 @@ int runPresentation(const std::string& presentList) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    glint::reportSlowEnvironmentPrecomputes();  // headless runs (the editor turns it off)
     CLI::App glint("Glint " GLINT_VERSION ": a material editor for physically based shading.", "glint");
     glint.set_version_flag("--version", "glint " GLINT_VERSION);
     std::string openPath;

@@ -27,7 +27,7 @@ std::string sceneWithoutViewChanges(const Scene& scene, const Scene& lesson) {
 bool openLessonDocument(EditorState& state, int index) {
     ClassroomState& classroom = state.classroom;
     const std::string path = classroom.lessonList.lessons.at(index).scenePath;
-    auto loaded = loadScene(path);
+    auto loaded = loadScene(path, EnvironmentMapLoading::Later);
     if (!loaded) {
         state.errorMessage = "Could not open the lesson; your work is unchanged.\n\n" + loaded.error().format();
         return false;

@@ -8,6 +8,7 @@
 #include "classroom/lesson_document.h"
 #include "runtime/brdf_probe.h"
 #include "editor/crash_guard.h"
+#include "editor/environment_loading.h"
 #include "editor/mesh_loading.h"
 #include "editor/interchange_open.h"
 #include "editor/custom_brdf_editor.h"
@@ -16,13 +17,14 @@
 #include "editor/settings.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 
 // --- scenes ---------------------------------------------------------------------------------
 
 void openSceneFile(EditorState& state, const std::string& path) {
-    auto loaded = loadScene(path);
+    auto loaded = loadScene(path, EnvironmentMapLoading::Later);  // the map is made on a worker (environment_loading.h)
     if (!loaded) {
         state.errorMessage = "Could not open the scene; your work is unchanged.\n\n" + loaded.error().format();
         return;
@@ -109,6 +111,8 @@ void openDroppedFile(EditorState& state, const std::string& path) {
     // .gltf dropped is read for its material; File ▸ Open mesh… reads it as a mesh.
     if (openInterchangeFile(state, path)) return;
     if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
+    if (const std::string extension = lowerExtension(path); extension == "hdr" || extension == "exr")
+        return startEnvironmentLoad(state, EnvironmentKind::File, path);  // the environment, made on a worker
     auto text = readTextFile(path);
     if (text && text->find("\"glint-material\"") != std::string::npos) openMaterialFile(state, path);
     else openSceneGuarded(state, path);

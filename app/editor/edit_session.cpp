@@ -78,8 +78,26 @@ void EditSession::replace(Scene scene, std::string path, bool dirty) {
     // Recovered work counts as unsaved: its saved state is one no step can reach.
     savedStep_ = dirty ? nextStepId_++ : baseStep_;
     ++documentGeneration_;
+    ++replacements_;
     ++revision_;
     ++settledRevision_;
+}
+
+void EditSession::completeEnvironment(EnvironmentKind kind, const std::string& file,
+                                      const std::shared_ptr<const EnvironmentMap>& map) {
+    auto complete = [&](Scene& scene) {
+        Environment& environment = scene.environment;
+        if (environment.kind == kind && environment.file == file && !environment.map) environment.map = map;
+    };
+    complete(scene_);
+    complete(openBefore_);
+    for (std::deque<Step>* steps : {&undo_, &redo_}) {
+        for (Step& step : *steps) {
+            complete(step.before);
+            complete(step.after);
+        }
+    }
+    ++revision_;  // drawn again, with the map
 }
 
 }  // namespace glint

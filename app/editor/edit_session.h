@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <string>
 #include <string_view>
 
+#include "scene/environment.h"
 #include "scene/scene.h"
 
 namespace glint {
@@ -46,6 +48,9 @@ public:
     // Replaces everything (open a file, recover work): history cleared. `dirty` is true for
     // recovered work that was never saved.
     void replace(Scene scene, std::string path, bool dirty = false);
+    // Gives the map to the scene and every state undo and redo reach that name `kind` and `file`
+    // without one (opened while the map was still being made): no step, nothing unsaved.
+    void completeEnvironment(EnvironmentKind kind, const std::string& file, const std::shared_ptr<const EnvironmentMap>& map);
 
     // Grows on every change, undo, redo and replace: the renderer redraws when it moves.
     std::uint64_t revision() const { return revision_; }
@@ -55,6 +60,8 @@ public:
     // Grows on replace and save: which document the scene is (a lesson open read-only stays the
     // lesson until a new scene, another file or Save as takes its place).
     std::uint64_t documentGeneration() const { return documentGeneration_; }
+    // Grows on replace only: work started for the scene before (a map being made) no longer applies.
+    std::uint64_t replacements() const { return replacements_; }
 
 private:
     struct Step {
@@ -78,6 +85,7 @@ private:
     std::uint64_t revision_ = 0;
     std::uint64_t settledRevision_ = 0;
     std::uint64_t documentGeneration_ = 0;
+    std::uint64_t replacements_ = 0;
 };
 
 }  // namespace glint

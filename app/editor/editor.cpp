@@ -136,6 +136,7 @@ double autosaveIntervalSeconds() {
 // --- loop -----------------------------------------------------------------------------------
 
 int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath, const std::string& presentLessonList) {
+    setEnvironmentProgressReport(nullptr);  // not on stderr: maps show their progress in the window
     auto created = Renderer::create(*platform, defaultShaderSources());
     if (!created) {
         std::fprintf(stderr, "glint: %s\n", created.error().format().c_str());

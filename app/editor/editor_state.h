@@ -83,6 +83,7 @@ struct EditorState {
     std::optional<MaterialChoice> materialChoice;  // a file asking which of its materials to use
     std::shared_ptr<MeshLoadJob> meshLoad;  // the mesh file loading on a worker thread, if any
     std::shared_ptr<EnvironmentLoadJob> environmentLoad;  // the environment map being made, if any
+    std::string environmentDeclined;  // the scene's environment whose map failed or was cancelled (environment_loading.cpp)
 
     // Autosave: the recovery file and the crash copy follow session.settledRevision().
     std::uint64_t autosavedRevision = 0;

@@ -99,7 +99,7 @@ Result<RecoveredWork> loadRecovery(const std::string& path) {
         !document.contains("scene") || !document["scene"].is_object() ||
         !document.contains("scene_path") || !document["scene_path"].is_string())
         return makeError("not a Glint recovery file (damaged or from another program)", {path});
-    auto scene = parseScene(document["scene"].dump(2), path + " (scene)");
+    auto scene = parseScene(document["scene"].dump(2), path + " (scene)", EnvironmentMapLoading::Later);
     if (!scene) return scene.error();
     return RecoveredWork{std::move(*scene), document["scene_path"].get<std::string>(), path};
 }

@@ -120,7 +120,8 @@ EquirectImage bakeBuiltinEnvironment(EnvironmentKind kind) {
 
 namespace {
 constexpr const char* kCancelledMessage = "environment precompute cancelled";
-}
+EnvironmentProgressReport gProgressReport;
+}  // namespace
 
 Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file,
                                                                  const EnvironmentProgress& progress) {
@@ -144,6 +145,13 @@ Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind
 
 bool isEnvironmentCancellation(const Diagnostic& diagnostic) { return diagnostic.message == kCancelledMessage; }
 
+std::string environmentName(EnvironmentKind kind, const std::string& file) {
+    if (kind == EnvironmentKind::File) return std::filesystem::path(file).filename().string();
+    return kEnvironmentKindIds[static_cast<int>(kind)];
+}
+
+void setEnvironmentProgressReport(EnvironmentProgressReport report) { gProgressReport = std::move(report); }
+
 std::string absoluteEnvironmentFile(const Environment& environment) {
     if (environment.kind != EnvironmentKind::File || environment.file.empty()) return environment.file;
     return std::filesystem::absolute(environment.file).lexically_normal().string();
@@ -151,7 +159,8 @@ std::string absoluteEnvironmentFile(const Environment& environment) {
 
 Status loadEnvironment(Environment& environment) {
     const std::string file = absoluteEnvironmentFile(environment);
-    auto map = loadEnvironmentMap(environment.kind, file);
+    auto map = loadEnvironmentMap(environment.kind, file,
+                                  gProgressReport ? gProgressReport(environmentName(environment.kind, file)) : nullptr);
     if (!map) return map.error();
     environment.file = file;
     environment.map = std::move(*map);

@@ -4,6 +4,7 @@
 // process. Returns the map with its lighting precomputed. No JSON here (environment_json.h).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -26,6 +27,15 @@ EquirectImage bakeBuiltinEnvironment(EnvironmentKind kind);
 Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind kind, const std::string& file,
                                                                  const EnvironmentProgress& progress = {});
 bool isEnvironmentCancellation(const Diagnostic& diagnostic);
+
+// What progress reports call a map: the file's name, or the built-in's ("studio").
+std::string environmentName(EnvironmentKind kind, const std::string& file);
+
+// Follows every map loadEnvironment() makes: given the map's name before it is read, returns the
+// progress to offer its precompute (e.g. headless runs report slow maps on stderr). Set once at
+// start-up, before any thread loads a map; none by default.
+using EnvironmentProgressReport = std::function<EnvironmentProgress(const std::string& name)>;
+void setEnvironmentProgressReport(EnvironmentProgressReport report);
 
 // The file an environment names made absolute (as loadEnvironment stores it); others unchanged.
 std::string absoluteEnvironmentFile(const Environment& environment);

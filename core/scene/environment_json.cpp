@@ -8,7 +8,7 @@
 
 namespace glint {
 
-Environment readEnvironment(ObjectReader& root, const std::string& sceneFile) {
+Environment readEnvironment(ObjectReader& root, const std::string& sceneFile, EnvironmentMapLoading loading) {
     Environment environment;
     if (!root.has("environment")) return environment;
     ObjectReader reader = root.object("environment");
@@ -23,7 +23,8 @@ Environment readEnvironment(ObjectReader& root, const std::string& sceneFile) {
     environment.intensity = static_cast<float>(reader.number("intensity", environment.intensity, Bounds::nonNegative()));
     environment.showAsBackground = reader.boolean("show_as_background", environment.showAsBackground);
     reader.rejectUnknownKeys();
-    if (Status loaded = loadEnvironment(environment); !loaded)
+    if (loading == EnvironmentMapLoading::Later) environment.file = absoluteEnvironmentFile(environment);
+    else if (Status loaded = loadEnvironment(environment); !loaded)
         reader.fail(environment.kind == EnvironmentKind::File ? "file" : "type", loaded.error().format());
     return environment;
 }

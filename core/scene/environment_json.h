@@ -9,9 +9,14 @@
 
 namespace glint {
 
+// Whether reading a scene makes its environment's map (a file is read and precomputed: seconds for
+// a large one) or leaves it null, its file made absolute, for the caller to make (the editor, on a
+// worker thread: editor/environment_loading.h).
+enum class EnvironmentMapLoading { Now, Later };
+
 // Reads root["environment"] if present (a relative "file" is taken from the folder of
-// `sceneFile`) and loads its map; throws JsonReadError through the reader on any mistake.
-Environment readEnvironment(ObjectReader& root, const std::string& sceneFile);
+// `sceneFile`) and, Now, loads its map; throws JsonReadError through the reader on any mistake.
+Environment readEnvironment(ObjectReader& root, const std::string& sceneFile, EnvironmentMapLoading loading);
 
 // The "environment" object, or null for none; its file relative to the folder of `sceneFile`
 // (absolute when "": util/referenced_path.h).

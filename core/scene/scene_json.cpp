@@ -273,7 +273,7 @@ Camera readCamera(ObjectReader& reader) {
     return camera;
 }
 
-Scene readScene(const JsonDocument& document) {
+Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment) {
     ObjectReader root = readRoot(document, "scene");
     readHeader(root, kSceneFormat);
     Scene scene;
@@ -289,7 +289,7 @@ Scene readScene(const JsonDocument& document) {
         scene.camera = readCamera(camera);
     }
     scene.background = readBackground(root);
-    scene.environment = readEnvironment(root, document.file());
+    scene.environment = readEnvironment(root, document.file(), environment);
     if (root.has("display")) {
         ObjectReader display = root.object("display");
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
@@ -325,18 +325,22 @@ Scene readScene(const JsonDocument& document) {
 
 // --- writers and entry points ---------------------------------------------------------------
 
-Result<Scene> parseScene(const std::string& text, const std::string& file) {
+Result<Scene> parseScene(const std::string& text, const std::string& file, EnvironmentMapLoading environment) {
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
     if (Status upgraded = upgradeOlderVersion(*document, true); !upgraded) return upgraded.error();
     try {
-        return readScene(*document);
+        return readScene(*document, environment);
     } catch (const JsonReadError& error) {
         return error.diagnostic;
     }
 }
 
-Result<Scene> loadScene(const std::string& path) { return parseTextFile(path, parseScene); }
+Result<Scene> loadScene(const std::string& path, EnvironmentMapLoading environment) {
+    return parseTextFile(path, [environment](const std::string& text, const std::string& file) {
+        return parseScene(text, file, environment);
+    });
+}
 
 json sceneToJson(const Scene& scene, const std::string& file) {
     json out = {{"format", kSceneFormat}, {"version", kSceneFormatVersion}};

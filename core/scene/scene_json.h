@@ -6,15 +6,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/environment_json.h"
 #include "scene/scene.h"
 #include "util/diagnostic.h"
 
 namespace glint {
 
 // Parses scene JSON text; `file` names it in messages, and relative texture paths are resolved
-// against its directory (texture images are decoded while reading: a failing one fails the parse).
-Result<Scene> parseScene(const std::string& text, const std::string& file);
-Result<Scene> loadScene(const std::string& path);
+// against its directory (texture images are decoded while reading: a failing one fails the parse;
+// the environment's map too unless `environment` is Later).
+Result<Scene> parseScene(const std::string& text, const std::string& file,
+                         EnvironmentMapLoading environment = EnvironmentMapLoading::Now);
+Result<Scene> loadScene(const std::string& path, EnvironmentMapLoading environment = EnvironmentMapLoading::Now);
 
 // `file`: where the JSON will be written; texture and .brdf paths are made relative to it ("" keeps
 // them absolute).

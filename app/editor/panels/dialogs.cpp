@@ -14,6 +14,7 @@
 #include "classroom/lesson_document.h"
 #include "editor/custom_brdf_editor.h"
 #include "editor/document.h"
+#include "editor/environment_loading.h"
 #include "editor/interchange_export.h"
 #include "editor/interchange_open.h"
 #include "editor/mesh_loading.h"
@@ -180,7 +181,7 @@ void handleFileBrowser(EditorState& state) {
         case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;
         case FilePurpose::OpenBrdf: openDroppedFile(state, *chosen); break;  // routes .brdf and .bparam
         case FilePurpose::SaveBparamAs: saveBparamTo(state, *chosen); break;
-        case FilePurpose::OpenEnvironment: openEnvironmentFile(state, *chosen); break;
+        case FilePurpose::OpenEnvironment: startEnvironmentLoad(state, EnvironmentKind::File, *chosen); break;
         case FilePurpose::ExportMaterial: exportMaterialTo(state, *chosen); break;
         case FilePurpose::SaveScreenshot:
             state.screenshotRequested = true;

@@ -13,16 +13,12 @@
 
 namespace glint {
 
-void openEnvironmentFile(EditorState& state, const std::string& path) {
-    startEnvironmentLoad(state, EnvironmentKind::File, path);
-}
-
 namespace {
 
 // The map being made: its name, a progress bar and Cancel.
 void drawEnvironmentProgress(EditorState& state) {
     EnvironmentLoadJob& job = *state.environmentLoad;
-    ImGui::ProgressBar(job.progress(), ImVec2(-1.0f, 0.0f), ("Precomputing " + job.name()).c_str());
+    ImGui::ProgressBar(job.progress(), ImVec2(-1.0f, 0.0f), job.progressText().c_str());
     if (job.cancelRequested()) ImGui::TextDisabled("Cancelling…");
     else if (ImGui::Button("Cancel##environment")) job.cancel();
 }

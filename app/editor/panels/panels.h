@@ -24,9 +24,8 @@ void drawPresetBrowser(EditorState& state, int materialIndex);
 void drawLightsSection(EditorState& state);
 void drawDisplaySection(EditorState& state);
 void drawCameraSection(EditorState& state);
-// The display panel's Environment section (environment_section.cpp) and its file action.
+// The display panel's Environment section (environment_section.cpp).
 void drawEnvironmentSection(EditorState& state);
-void openEnvironmentFile(EditorState& state, const std::string& path);
 
 // Modals: unsaved changes, errors, recovery offer; the help window (F1); the file browser.
 void drawDialogs(EditorState& state);

@@ -31,7 +31,7 @@ float drawStatusBar(EditorState& state, float top, float width) {
     else ImGui::Text("frame %.1f ms", state.lastRenderMilliseconds);
     if (state.environmentLoad) {
         ImGui::SameLine(0, 24);
-        ImGui::Text("precomputing %s %.0f%%", state.environmentLoad->name().c_str(), 100.0f * state.environmentLoad->progress());
+        ImGui::TextUnformatted(state.environmentLoad->progressText().c_str());
     }
     if (state.waitingForPrograms) {
         ImGui::SameLine(0, 24);
