@@ -460,11 +460,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, ui lists %d changed %d unchanged, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
+                         "presented %.1f ms, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, renderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
-                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiDamage.listsChanged(),
-                         uiDamage.listsUnchanged(), pixelsPresented, plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
+                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), pixelsPresented, plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
         }
         if (logFrames && !plan.render && !waitedForPrograms)  // the UI alone (a progress bar, a menu)
             std::fprintf(stderr, "glint ui frame: input to presented %.1f ms\n",

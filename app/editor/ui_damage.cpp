@@ -98,7 +98,6 @@ bool overlap(const PixelRegion& a, const PixelRegion& b) {
 
 void UiDamage::collect(const ImDrawData& data, std::vector<PixelRegion>& damage) {
     ++frame_;
-    listsChanged_ = listsUnchanged_ = 0;
     for (int n = 0; n < data.CmdListsCount; ++n) {
         const ImDrawList& list = *data.CmdLists[n];
         const std::uint64_t structure = hashStructure(list);
@@ -110,12 +109,7 @@ void UiDamage::collect(const ImDrawData& data, std::vector<PixelRegion>& damage)
             changed = boundsOf(changed, bounds);
         else
             changed = intersectionOf(changedTriangles(list, entry.vertices, data), boundsOf(changed, bounds));
-        if (changed.width > 0 && changed.height > 0) {
-            damage.push_back(changed);
-            ++listsChanged_;
-        } else {
-            ++listsUnchanged_;
-        }
+        damage.push_back(changed);  // (mergeOverlapping drops it when empty)
         entry.structure = structure;
         entry.vertices.assign(list.VtxBuffer.begin(), list.VtxBuffer.end());
         entry.bounds = bounds;

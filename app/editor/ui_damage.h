@@ -27,9 +27,6 @@ public:
     // Draws the lists of `data` that reach `rect`, within it only (their clip rectangles cut to it
     // for the call), in order, as ImGui_ImplOpenGL3_RenderDrawData would there.
     static void drawWithin(ImDrawData& data, const PixelRegion& rect);
-    // Lists that changed, and lists unchanged, in the last collect() (GLINT_LOG_FRAMES).
-    int listsChanged() const { return listsChanged_; }
-    int listsUnchanged() const { return listsUnchanged_; }
 
 private:
     struct Entry {
@@ -40,7 +37,6 @@ private:
     };
     std::unordered_map<const ImDrawList*, Entry> entries_;
     std::uint64_t frame_ = 0;
-    int listsChanged_ = 0, listsUnchanged_ = 0;
 };
 
 // Merges the rectangles that overlap into their bounds, until none do.
