@@ -72,7 +72,7 @@ struct OrenNayar {
     using Params = OrenNayarParams;
     static constexpr auto eval = evalOrenNayar;
     static constexpr auto ambientReflectance = ambientReflectanceOrenNayar;
-    static constexpr const char* environmentResponse = "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo)";
+    static constexpr const char* environmentResponse = "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo) + the lobe's departure from Lambert at the map's peak lights";
     static MtlForm mtlForm(const Params& p) {
         return {.diffuse = p.albedo, .lost = {"roughness σ is not kept (written as Lambert)"}};
     }

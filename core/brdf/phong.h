@@ -88,7 +88,7 @@ struct Phong {
     using Params = PhongParams;
     static constexpr auto eval = evalPhong;
     static constexpr auto ambientReflectance = ambientReflectancePhong;
-    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·w·prefiltered radiance at α = √(2/(4n+2)) (w = 1 for the normalized form)";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·a(θ_o)·prefiltered radiance at α = √(2/(4n+2)) (a: the form's directional albedo, tabulated)";
     static bool isReciprocal(const Params& p) { return p.form != PhongForm::Lecture; }  // the lecture form is not
     static MtlForm mtlForm(const Params& p) {
         MtlForm form{.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular, .exponent = p.exponent};

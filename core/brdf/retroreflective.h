@@ -87,7 +87,7 @@ struct Retroreflective {
     using Params = RetroreflectiveParams;
     static constexpr auto eval = evalRetroreflective;
     static constexpr auto ambientReflectance = ambientReflectanceRetroreflective;
-    static constexpr const char* environmentResponse = "k_a(ω_o)·E(n)/π (the retroreflective lobe is left out)";
+    static constexpr const char* environmentResponse = "k_a(ω_o)·E(n)/π + the lobe's departure from Lambert (both lobes) at the map's peak lights";
     static MtlForm mtlForm(const Params& p) {
         return {.diffuse = p.albedo, .lost = {"the limb darkening and retroreflective lobe are not kept (written as Lambert)"}};
     }

@@ -10,6 +10,7 @@
 
 #include "brdf/fresnel.h"
 #include "environment/environment_map.h"
+#include "environment/lobe_albedo.h"
 #include "math/constants.h"
 
 namespace glint {
@@ -75,20 +76,6 @@ glm::vec3 mirrorDirection(glm::vec3 wo, const ShadingFrame& frame) {
     return 2.0f * frame.cosTheta(wo) * frame.normal - wo;
 }
 
-// A lobe form's value at the mirror configuration (θ_i = θ_o = θ, |ω_i + ω_o|² = 4cos²θ) over the
-// normalised form's: the normalised lobe reflects about all of a uniform environment, so this
-// weights the other forms by how much more or less they reflect. Lecture and max-cosine: 1/cos θ;
-// half-vector: 1/(4 cos²θ).
-float formWeight(int form, float cosOut, float normalization) {
-    const float cosine = std::max(cosOut, 1e-3f);
-    switch (form) {
-        case 0:
-        case 1: return 1.0f / (cosine * normalization);
-        case 2: return 1.0f / (4.0f * cosine * cosine * normalization);
-        default: return 1.0f;
-    }
-}
-
 // The prefiltered radiance for GGX roughness α, of the map less its peaks where the lobe takes them.
 glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha) {
     return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, std::sqrt(alpha))
@@ -101,7 +88,7 @@ glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float a
 // material's exact F0, as the split sum's F0·A + B does (the exact complex-index equations per
 // light cost a quarter of a studio frame on llvmpipe).
 template <class ReflectedCos>
-glm::vec3 peakSpecular(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
+glm::vec3 peakLighting(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
     glm::vec3 sum(0.0f);
     if (!environmentUsesPeaks(e, alpha) || frame.cosTheta(wo) <= 0.0f) return sum;
     for (int k = 0; k < static_cast<int>(e.map->peaks.size()); ++k) {
@@ -134,30 +121,47 @@ glm::vec3 lightingOf(const LambertParams& p, glm::vec3, const ShadingFrame& fram
     return p.albedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
-// The directional albedo × E(n)/π: exact under a uniform map, as for Lambert.
-glm::vec3 lightingOf(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame,
-                                       const Environment& e) {
-    return p.albedo * directionalAlbedoOrenNayar(p.roughnessDegrees, frame.cosTheta(wo)) *
-           environmentDiffuseRadiance(e, frame.normal);
+// Diffuse-like lobes that are not Lambert's: their directional albedo k_a(ω_o) × E(n)/π, exact under
+// a uniform map, plus at the map's peak lights the lobe's departure from that Lambert shape,
+// Σ_k (f_r(ω_k, ω_o) − k_a/π) cos θ_k E_k, so that a small bright light meets the lobe's own
+// shape (back-scattering, limb darkening, a retroreflective lobe).
+glm::vec3 diffuseLikeAlbedo(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame) {
+    return p.albedo * directionalAlbedoOrenNayar(p.roughnessDegrees, frame.cosTheta(wo));
+}
+glm::vec3 diffuseLikeAlbedo(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame) {
+    return ambientReflectanceRetroreflective(p, wo, frame);
+}
+glm::vec3 evalLobe(const OrenNayarParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& f) { return evalOrenNayar(p, wi, wo, f); }
+glm::vec3 evalLobe(const RetroreflectiveParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& f) {
+    return evalRetroreflective(p, wi, wo, f);
 }
 
-glm::vec3 lightingOf(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame,
-                                             const Environment& e) {
-    return ambientReflectanceRetroreflective(p, wo, frame) * environmentDiffuseRadiance(e, frame.normal);
+template <class Params>
+    requires requires(const Params& p, glm::vec3 w, const ShadingFrame& f) { diffuseLikeAlbedo(p, w, f); }
+glm::vec3 lightingOf(const Params& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const glm::vec3 albedo = diffuseLikeAlbedo(p, wo, frame);
+    return albedo * environmentDiffuseRadiance(e, frame.normal) + peakLighting(e, 1.0f, wo, frame, [&](glm::vec3 wi, float) {
+               return (evalLobe(p, wi, wo, frame) - albedo * kInvPi) * frame.cosTheta(wi);
+           });
 }
 
 glm::vec3 lightingOf(const MirrorParams& p, glm::vec3, const ShadingFrame& frame, const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
-// Blinn-Phong, Phong, Ward: a GGX-prefiltered lobe of equivalent α for the map (less its peaks),
-// their own lobe for the peaks.
+// Blinn-Phong, Phong, Ward: a GGX-prefiltered lobe of equivalent α for the map (less its peaks)
+// × the lobe's own directional albedo (lobe_albedo.h), their own lobe for the peaks.
+float lobeAlbedo(int table, glm::vec3 wo, const ShadingFrame& frame, float alpha) {
+    return sampleLobeAlbedo(table, std::max(frame.cosTheta(wo), 0.0f), std::sqrt(alpha)).x;
+}
+
 glm::vec3 lightingOf(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = blinnAlpha(p.exponent);
-    const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 8.0f) / (8.0f * kPi));
+    const float normalization = p.form == BlinnForm::Normalized ? 1.0f : (p.exponent + 8.0f) / (8.0f * kPi);
+    const float weight = lobeAlbedo(kBlinnPhongAlbedo + static_cast<int>(p.form), wo, frame, alpha) / normalization;
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
-           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+           peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                return widenedExponentLobe(p, blinnExponent(widened), 8.0f, p.form == BlinnForm::Normalized, evalBlinnPhong, wi,
                                           wo, frame);
            });
@@ -165,10 +169,11 @@ glm::vec3 lightingOf(const BlinnPhongParams& p, glm::vec3 wo, const ShadingFrame
 
 glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = phongAlpha(p.exponent);
-    const float weight = formWeight(static_cast<int>(p.form), frame.cosTheta(wo), (p.exponent + 2.0f) / (2.0f * kPi));
+    const float normalization = p.form == PhongForm::Normalized ? 1.0f : (p.exponent + 2.0f) / (2.0f * kPi);
+    const float weight = lobeAlbedo(kPhongAlbedo + static_cast<int>(p.form), wo, frame, alpha) / normalization;
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * weight * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
-           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+           peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                return widenedExponentLobe(p, phongExponent(widened), 2.0f, p.form == PhongForm::Normalized, evalPhong, wi, wo,
                                           frame);
            });
@@ -177,8 +182,9 @@ glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& fra
 glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           p.specular * glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
-           peakSpecular(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+           p.specular * lobeAlbedo(kWardAlbedo + static_cast<int>(p.normalization), wo, frame, alpha) *
+               glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+           peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                WardParams lobe = p;
                lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
                return p.specular * (wardSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
@@ -199,7 +205,7 @@ glm::vec3 dominantDirection(glm::vec3 wo, const ShadingFrame& frame, float alpha
 glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm::vec3 wo, const ShadingFrame& frame,
                            const Environment& e) {
     const float perceptual = std::sqrt(alpha);
-    const glm::vec2 scaleBias = sampleSplitSum(splitSumLut(), std::max(frame.cosTheta(wo), 0.0f), perceptual);
+    const glm::vec2 scaleBias = sampleLobeAlbedo(kGgxSplitSum, std::max(frame.cosTheta(wo), 0.0f), perceptual);
     return glossyRadiance(e, dominantDirection(wo, frame, alpha), alpha) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }
@@ -208,7 +214,7 @@ glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFra
                                           const Environment& e) {
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e) +
-           peakSpecular(e, p.roughness, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+           peakLighting(e, p.roughness, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
                CookTorranceParams lobe = p;
                lobe.roughness = widened;
                return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
@@ -221,7 +227,7 @@ glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingF
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            splitSumSpecular(p.ior, p.extinction, alpha, wo, frame, e) +
-           peakSpecular(e, alpha, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+           peakLighting(e, alpha, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
                GgxAnisotropicParams lobe = p;
                lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
                return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
@@ -257,6 +263,8 @@ template <class M>
 concept SplitSum = requires(const typename M::Params& p) { splitSumAlpha(p); };
 template <class M>
 concept EquivalentLobe = requires(const typename M::Params& p) { lobeAlpha(p); };
+template <class M>
+concept DiffuseLike = requires(const typename M::Params& p, glm::vec3 w, const ShadingFrame& f) { diffuseLikeAlbedo(p, w, f); };
 
 }  // namespace
 
@@ -272,13 +280,19 @@ std::string environmentApproximation(BrdfModel model, std::span<const float> val
     const char* lobe = dispatch(model, []<class M>(M) -> const char* {
         if constexpr (!HasEnvironment<M>) return nullptr;
         else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction";
-        else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R";
+        else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R × its directional albedo";
         else return "";
     });
     if (!lobe) return "none (traced)";
-    if (!*lobe) return "irradiance map";
-    const float alpha = environmentRoughness(model, values);
     const size_t lights = environment.enabled() ? environment.map->peaks.size() : 0;
+    if (!*lobe) {
+        const bool diffuseLike = dispatch(model, []<class M>(M) { return DiffuseLike<M>; });
+        if (!diffuseLike) return "irradiance map";
+        if (lights == 0) return "irradiance map × the directional albedo";
+        return "irradiance map × the directional albedo + the lobe's departure from Lambert at " + std::to_string(lights) +
+               " peak light" + (lights == 1 ? "" : "s");
+    }
+    const float alpha = environmentRoughness(model, values);
     if (lights == 0) return std::string("irradiance map + ") + lobe + " (the map has no peaks)";
     char threshold[96];
     std::snprintf(threshold, sizeof threshold, "α %.3g %s the map's peak-light α %.3g", alpha,

@@ -1,8 +1,9 @@
 // Image-based lighting of a surface by the scene's environment, as the GPU computes it (twin of
 // shaders/common/environment.glsl and of each model's environmentLighting<Model> GLSL hook):
 // diffuse terms take the irradiance map's E(n)/π, glossy terms the GGX-prefiltered radiance along
-// the mirror direction at the model's equivalent roughness, microfacet models the split-sum
-// scale and bias with the lookup along the dominant direction; from α 0.04 the map's peaks are
+// the mirror direction at the model's equivalent roughness × the lobe's own directional albedo
+// (lobe_albedo.h), microfacet models the split-sum scale and bias with the lookup along the
+// dominant direction; from α 0.04 the map's peaks are
 // lit as directional lights through the model's own BRDF and the prefiltered terms see the rest.
 // The Monte-Carlo ground truth is render/environment_sampling.h.
 #pragma once

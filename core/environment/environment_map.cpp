@@ -1,5 +1,5 @@
 // Precomputed image-based lighting (see environment_map.h).
-// Sections: parallel rows · irradiance · GGX prefiltering · split-sum table · lookups.
+// Sections: parallel rows · irradiance · GGX prefiltering · lookups.
 #include "environment/environment_map.h"
 
 #include <algorithm>
@@ -271,52 +271,7 @@ std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance,
     return map;
 }
 
-// --- split-sum table ------------------------------------------------------------------------
-
-const SplitSumLut& splitSumLut() {
-    static const SplitSumLut lut = [] {
-        constexpr int kSamples = 1024;
-        SplitSumLut table;
-        table.texels.resize(kSplitSumLutSize * kSplitSumLutSize);
-        for (int row = 0; row < kSplitSumLutSize; ++row) {
-            const float perceptual = static_cast<float>(row) / (kSplitSumLutSize - 1);
-            const float alpha = perceptual * perceptual;
-            for (int column = 0; column < kSplitSumLutSize; ++column) {
-                const float cosOut = (column + 0.5f) / kSplitSumLutSize;
-                const glm::vec3 view{std::sqrt(1.0f - cosOut * cosOut), 0.0f, cosOut};
-                glm::vec2 sum(0.0f);
-                for (int i = 0; i < kSamples; ++i) {
-                    const glm::vec3 halfway = sampleGgxHalfVector(hammersley(i, kSamples), alpha);
-                    const float viewDotHalf = glm::dot(view, halfway);
-                    const glm::vec3 light = 2.0f * viewDotHalf * halfway - view;
-                    if (light.z <= 0.0f || viewDotHalf <= 0.0f) continue;
-                    // f_r cos θ_i / pdf = G2 (v·h) / (cos θ_o cos θ_h) for pdf = D cos θ_h / (4 v·h).
-                    const float geometry = smithHeightCorrelated(lambdaGgx(light.z, alpha), lambdaGgx(cosOut, alpha));
-                    const float weight = geometry * viewDotHalf / (cosOut * halfway.z);
-                    const float schlick = std::pow(1.0f - viewDotHalf, 5.0f);
-                    sum += glm::vec2((1.0f - schlick) * weight, schlick * weight);
-                }
-                table.texels[row * kSplitSumLutSize + column] = sum / static_cast<float>(kSamples);
-            }
-        }
-        return table;
-    }();
-    return lut;
-}
-
 // --- lookups --------------------------------------------------------------------------------
-
-glm::vec2 sampleSplitSum(const SplitSumLut& lut, float cosOut, float perceptualRoughness) {
-    const float x = std::clamp(cosOut * kSplitSumLutSize - 0.5f, 0.0f, kSplitSumLutSize - 1.0f);
-    const float y = std::clamp(perceptualRoughness * (kSplitSumLutSize - 1), 0.0f, kSplitSumLutSize - 1.0f);
-    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-    const int x1 = std::min(x0 + 1, kSplitSumLutSize - 1), y1 = std::min(y0 + 1, kSplitSumLutSize - 1);
-    const float fx = x - x0, fy = y - y0;
-    auto at = [&](int column, int row) { return lut.texels[row * kSplitSumLutSize + column]; };
-    const glm::vec2 top = at(x0, y0) * (1.0f - fx) + at(x1, y0) * fx;
-    const glm::vec2 bottom = at(x0, y1) * (1.0f - fx) + at(x1, y1) * fx;
-    return top * (1.0f - fy) + bottom * fy;
-}
 
 glm::vec3 diffuseRadiance(const EnvironmentMap& map, glm::vec3 normal) { return sampleEquirect(map.irradiance, normal); }
 

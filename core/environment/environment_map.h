@@ -77,15 +77,4 @@ glm::vec3 prefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, fl
 // The same for the radiance less its peaks, for r ≥ 1/kPrefilteredLevels (clamped there).
 glm::vec3 residualPrefilteredRadiance(const EnvironmentMap& map, glm::vec3 direction, float perceptualRoughness);
 
-// The split-sum BRDF table (Karis 2013) for GGX with height-correlated Smith masking: at
-// (cos θ_o, perceptual roughness; rows at r = i/(size − 1), so that r = 1 is a row) the directional albedo of D·G/(4 cos θ_i cos θ_o) splits into
-// scale A and bias B with ∫ f_r cos θ_i dω_i = F0·A + B under Schlick's Fresnel.
-inline constexpr int kSplitSumLutSize = 32;
-struct SplitSumLut {
-    std::vector<glm::vec2> texels;  // row = roughness index, column = cos θ_o index; (A, B)
-};
-const SplitSumLut& splitSumLut();
-// Bilinear lookup: columns at cos θ_o = (i + ½)/size clamped at the edges, rows at r = i/(size − 1).
-glm::vec2 sampleSplitSum(const SplitSumLut& lut, float cosOut, float perceptualRoughness);
-
 }  // namespace glint

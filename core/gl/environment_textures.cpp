@@ -6,6 +6,7 @@
 
 #include "environment/environment_lighting.h"
 #include "environment/environment_map.h"
+#include "environment/lobe_albedo.h"
 #include "math/constants.h"
 
 namespace glint {
@@ -30,7 +31,7 @@ std::vector<float> rgba(const EquirectImage& image) {
 EnvironmentTextures::EnvironmentTextures() {
     glGenTextures(1, &baseTexture_);
     glGenTextures(1, &prefilteredTexture_);
-    glGenTextures(1, &splitSumTexture_);
+    glGenTextures(1, &lobeAlbedoTexture_);
     glGenBuffers(1, &uniformBuffer_);
     glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffer_);
     glBufferData(GL_UNIFORM_BUFFER, sizeof(EnvironmentBlockStd140), nullptr, GL_DYNAMIC_DRAW);
@@ -42,17 +43,17 @@ EnvironmentTextures::EnvironmentTextures() {
     glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
     setNearestClamp(GL_TEXTURE_2D_ARRAY);
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, 1, 1, 1, 0, GL_RGBA, GL_FLOAT, black);
-    // The split-sum table depends on no map: uploaded once.
-    const SplitSumLut& lut = splitSumLut();
-    glBindTexture(GL_TEXTURE_2D, splitSumTexture_);
+    // The lobes' albedo tables depend on no map: uploaded once.
+    glBindTexture(GL_TEXTURE_2D, lobeAlbedoTexture_);
     setNearestClamp(GL_TEXTURE_2D);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kSplitSumLutSize, kSplitSumLutSize, 0, GL_RG, GL_FLOAT, lut.texels.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kLobeAlbedoSize, kLobeAlbedoTables * kLobeAlbedoSize, 0, GL_RG, GL_FLOAT,
+                 lobeAlbedoTables().texels.data());
 }
 
 EnvironmentTextures::~EnvironmentTextures() {
     glDeleteTextures(1, &baseTexture_);
     glDeleteTextures(1, &prefilteredTexture_);
-    glDeleteTextures(1, &splitSumTexture_);
+    glDeleteTextures(1, &lobeAlbedoTexture_);
     glDeleteBuffers(1, &uniformBuffer_);
 }
 
@@ -61,7 +62,7 @@ void EnvironmentTextures::connect(const ShaderProgram& program) {
     glUseProgram(program.id());
     glUniform1i(program.uniform("environmentBase"), kEnvironmentBaseUnit);
     glUniform1i(program.uniform("environmentPrefiltered"), kEnvironmentPrefilteredUnit);
-    glUniform1i(program.uniform("environmentSplitSum"), kEnvironmentSplitSumUnit);
+    glUniform1i(program.uniform("environmentLobeTables"), kEnvironmentLobeAlbedoUnit);
     glUseProgram(0);
 }
 
@@ -106,8 +107,8 @@ void EnvironmentTextures::prepare(const Environment& environment) {
     glBindTexture(GL_TEXTURE_2D, baseTexture_);
     glActiveTexture(GL_TEXTURE0 + kEnvironmentPrefilteredUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, prefilteredTexture_);
-    glActiveTexture(GL_TEXTURE0 + kEnvironmentSplitSumUnit);
-    glBindTexture(GL_TEXTURE_2D, splitSumTexture_);
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentLobeAlbedoUnit);
+    glBindTexture(GL_TEXTURE_2D, lobeAlbedoTexture_);
     glActiveTexture(GL_TEXTURE0);
 }
 

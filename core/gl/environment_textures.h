@@ -1,5 +1,5 @@
 // The environment on the GPU: uploads a scene's environment map (base radiance, prefiltered
-// levels and the irradiance map as a texture array, the split-sum table) when the map changes, never per frame, and
+// levels and the irradiance map as a texture array; the lobes' albedo tables once) when the map changes, never per frame, and
 // each frame fills the EnvironmentBlock (rotation, intensity, flags, sizes, peak lights) and binds the textures.
 // C++ mirror of the block in shaders/common/environment.glsl. It computes nothing itself.
 #pragma once
@@ -26,7 +26,7 @@ static_assert(sizeof(EnvironmentBlockStd140) == (3 + 2 * kMaxPeakLights) * 16, "
 
 // Binding point and texture units, clear of the renderer's blocks 0-2 and low units.
 inline constexpr GLuint kEnvironmentBinding = 6;
-inline constexpr GLint kEnvironmentBaseUnit = 13, kEnvironmentPrefilteredUnit = 14, kEnvironmentSplitSumUnit = 15;
+inline constexpr GLint kEnvironmentBaseUnit = 13, kEnvironmentPrefilteredUnit = 14, kEnvironmentLobeAlbedoUnit = 15;
 
 class EnvironmentTextures {
 public:
@@ -41,7 +41,7 @@ public:
     void prepare(const Environment& environment);
 
 private:
-    GLuint baseTexture_ = 0, prefilteredTexture_ = 0, splitSumTexture_ = 0, uniformBuffer_ = 0;
+    GLuint baseTexture_ = 0, prefilteredTexture_ = 0, lobeAlbedoTexture_ = 0, uniformBuffer_ = 0;
     const void* uploadedMap_ = nullptr;
     std::shared_ptr<const void> keepAlive_;  // the uploaded map, so its address stays unique
 };

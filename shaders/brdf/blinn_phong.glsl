@@ -35,7 +35,8 @@ vec3 blinnPhongPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, 
 // Environment hook: twin of environmentLightingBlinnPhong in core/environment/environment_lighting.cpp.
 vec3 environmentLightingBlinnPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float alpha = sqrt(2.0 / (p.exponent + 2.0));
-    float weight = environmentFormWeight(p.form, cosTheta(frame, wo), (p.exponent + 8.0) / (8.0 * PI));
+    float normalization = p.form == FORM_NORMALIZED ? 1.0 : (p.exponent + 8.0) / (8.0 * PI);
+    float weight = environmentLobeAlbedo(BLINN_PHONG_ALBEDO + p.form, wo, frame, alpha) / normalization;
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, blinnPhongPeakLobe(p, wi, wo, frame, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +

@@ -32,8 +32,11 @@ float directionalAlbedoOrenNayar(float roughnessDegrees, float cosOut) {
 
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingOrenNayar in core/environment/environment_lighting.cpp.
+// The albedo × E(n)/π plus the lobe's departure from Lambert's shape at the peak lights.
 vec3 environmentLightingOrenNayar(MaterialParams p, vec3 wo, ShadingFrame frame) {
-    return p.albedo * directionalAlbedoOrenNayar(p.roughness, cosTheta(frame, wo)) *
-           environmentDiffuseRadiance(frame.normal);
+    vec3 albedo = p.albedo * directionalAlbedoOrenNayar(p.roughness, cosTheta(frame, wo));
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, 1.0, wo, frame, (evalOrenNayar(p, wi, wo, frame) - albedo * INV_PI) * cosTheta(frame, wi))
+    return albedo * environmentDiffuseRadiance(frame.normal) + peaks;
 }
 #endif

@@ -34,7 +34,8 @@ vec3 phongPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float
 // Environment hook: twin of environmentLightingPhong in core/environment/environment_lighting.cpp.
 vec3 environmentLightingPhong(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float alpha = sqrt(2.0 / (4.0 * p.exponent + 2.0));
-    float weight = environmentFormWeight(p.form, cosTheta(frame, wo), (p.exponent + 2.0) / (2.0 * PI));
+    float normalization = p.form == FORM_NORMALIZED ? 1.0 : (p.exponent + 2.0) / (2.0 * PI);
+    float weight = environmentLobeAlbedo(PHONG_ALBEDO + p.form, wo, frame, alpha) / normalization;
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, phongPeakLobe(p, wi, wo, frame, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +

@@ -23,7 +23,11 @@ vec3 ambientReflectanceRetroreflective(MaterialParams p, vec3 wo, ShadingFrame f
 
 #ifdef GLINT_HAS_ENVIRONMENT
 // Environment hook: twin of environmentLightingRetroreflective in core/environment/environment_lighting.cpp.
+// The albedo × E(n)/π plus the lobe's departure from Lambert's shape at the peak lights.
 vec3 environmentLightingRetroreflective(MaterialParams p, vec3 wo, ShadingFrame frame) {
-    return ambientReflectanceRetroreflective(p, wo, frame) * environmentDiffuseRadiance(frame.normal);
+    vec3 albedo = ambientReflectanceRetroreflective(p, wo, frame);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, 1.0, wo, frame, (evalRetroreflective(p, wi, wo, frame) - albedo * INV_PI) * cosTheta(frame, wi))
+    return albedo * environmentDiffuseRadiance(frame.normal) + peaks;
 }
 #endif

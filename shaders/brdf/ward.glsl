@@ -37,6 +37,7 @@ vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, wardPeakLobe(p, wi, wo, frame, alpha, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           p.specular * environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
+           p.specular * environmentLobeAlbedo(WARD_ALBEDO + p.normalization, wo, frame, alpha) *
+               environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
 }
 #endif

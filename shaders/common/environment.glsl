@@ -1,5 +1,5 @@
 // The environment map on the GPU: GLSL twin of core/environment (equirect.cpp's bilinear lookup,
-// environment_map.cpp's irradiance map, prefiltered levels and split-sum table, and
+// environment_map.cpp's irradiance map and prefiltered levels, lobe_albedo.cpp's tables, and
 // environment_lighting.cpp's lookups) and of render/miss_radiance.h. Every lookup is a manual
 // bilinear of texelFetch'ed float texels, so the CPU reference computes the same numbers.
 // Needs frame.glsl and background.glsl first. Defines GLINT_HAS_ENVIRONMENT for the model hooks.
@@ -7,7 +7,7 @@
 #define GLINT_HAS_ENVIRONMENT
 
 const int PREFILTERED_LEVELS = 5;  // kPrefilteredLevels
-const int SPLIT_SUM_SIZE = 32;     // kSplitSumLutSize
+const int LOBE_ALBEDO_SIZE = 32;   // kLobeAlbedoSize
 const int MAX_PEAK_LIGHTS = 8;     // kMaxPeakLights
 
 layout(std140) uniform EnvironmentBlock {
@@ -21,7 +21,9 @@ layout(std140) uniform EnvironmentBlock {
 uniform sampler2D environmentBase;             // the radiance image
 uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
                                                // layer L + k: roughness k/L of the map less its peaks
-uniform sampler2D environmentSplitSum;         // rg: split-sum scale A and bias B
+uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: GGX split-sum scale A and bias B,
+                                               // then one albedo (r) per Blinn-Phong, Phong and Ward variant
+const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9;  // LobeAlbedoTable
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
 // in a specialised program (gl/shader_specialisation.h), else the block's flags.
@@ -107,7 +109,7 @@ float environmentPeakAlpha(int k, float alpha) {
     return min(1.0, sqrt(alpha * alpha + spread * spread));
 }
 
-// Twin of peakSpecular() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k
+// Twin of peakLighting() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k
 // over the peak lights where a lobe of roughness ALPHA takes them, LOBE being the glossy lobe's
 // f_r cos θ_i (Fresnel included) for the light direction `wi` at the widened roughness `widened`
 // (a macro: GLSL has no callbacks).
@@ -133,18 +135,19 @@ vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
     return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + sampleEnvironmentLevel(first + 1, d) * t);
 }
 
-// Split-sum (A, B): twin of sampleSplitSum() in environment_map.cpp.
-vec2 sampleSplitSum(float cosOut, float perceptualRoughness) {
-    float last = float(SPLIT_SUM_SIZE - 1);
-    float x = clamp(cosOut * float(SPLIT_SUM_SIZE) - 0.5, 0.0, last);
+// Table TABLE at (cos θ_o, r): twin of sampleLobeAlbedo() in lobe_albedo.cpp.
+vec2 sampleLobeAlbedo(int table, float cosOut, float perceptualRoughness) {
+    float last = float(LOBE_ALBEDO_SIZE - 1);
+    float x = clamp(cosOut * float(LOBE_ALBEDO_SIZE) - 0.5, 0.0, last);
     float y = clamp(perceptualRoughness * last, 0.0, last);
     int x0 = int(x), y0 = int(y);
-    int x1 = min(x0 + 1, SPLIT_SUM_SIZE - 1), y1 = min(y0 + 1, SPLIT_SUM_SIZE - 1);
+    int x1 = min(x0 + 1, LOBE_ALBEDO_SIZE - 1), y1 = min(y0 + 1, LOBE_ALBEDO_SIZE - 1);
     float fx = x - float(x0), fy = y - float(y0);
-    vec2 top = texelFetch(environmentSplitSum, ivec2(x0, y0), 0).rg * (1.0 - fx) +
-               texelFetch(environmentSplitSum, ivec2(x1, y0), 0).rg * fx;
-    vec2 bottom = texelFetch(environmentSplitSum, ivec2(x0, y1), 0).rg * (1.0 - fx) +
-                  texelFetch(environmentSplitSum, ivec2(x1, y1), 0).rg * fx;
+    int base = table * LOBE_ALBEDO_SIZE;
+    vec2 top = texelFetch(environmentLobeTables, ivec2(x0, base + y0), 0).rg * (1.0 - fx) +
+               texelFetch(environmentLobeTables, ivec2(x1, base + y0), 0).rg * fx;
+    vec2 bottom = texelFetch(environmentLobeTables, ivec2(x0, base + y1), 0).rg * (1.0 - fx) +
+                  texelFetch(environmentLobeTables, ivec2(x1, base + y1), 0).rg * fx;
     return top * (1.0 - fy) + bottom * fy;
 }
 
@@ -153,11 +156,9 @@ vec3 environmentMirrorDirection(vec3 wo, ShadingFrame frame) {
     return 2.0 * cosTheta(frame, wo) * frame.normal - wo;
 }
 
-float environmentFormWeight(int form, float cosOut, float normalization) {
-    float cosine = max(cosOut, 1e-3);
-    if (form == 0 || form == 1) return 1.0 / (cosine * normalization);
-    if (form == 2) return 1.0 / (4.0 * cosine * cosine * normalization);
-    return 1.0;
+// Twin of lobeAlbedo(): the directional albedo of table TABLE for a lobe of GGX roughness ALPHA.
+float environmentLobeAlbedo(int table, vec3 wo, ShadingFrame frame, float alpha) {
+    return sampleLobeAlbedo(table, max(cosTheta(frame, wo), 0.0), sqrt(alpha)).x;
 }
 
 // Twin of dominantDirection() (Lagarde & de Rousiers 2014).
@@ -169,7 +170,7 @@ vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
 
 vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
     float perceptual = sqrt(alpha);
-    vec2 scaleBias = sampleSplitSum(max(cosTheta(frame, wo), 0.0), perceptual);
+    vec2 scaleBias = sampleLobeAlbedo(GGX_SPLIT_SUM, max(cosTheta(frame, wo), 0.0), perceptual);
     return environmentGlossyRadiance(environmentDominantDirection(wo, frame, alpha), alpha) *
            (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
 }

@@ -4,7 +4,7 @@
 // preview's image-based lighting (the CPU twin of the GPU's, equal to it to 79 dB and better)
 // against the CPU reference's Monte-Carlo integral: PSNR over the sphere's interior and the ratio
 // of means, and the reference's own noise (two seeds: PSNR between them − 3 dB).
-// usage: environment_accuracy [--samples N] [--size S] [--all]. Not run by ctest.
+// usage: environment_accuracy [--samples N] [--size S] [--all | --model ID]. Not run by ctest.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,13 +19,15 @@ using namespace glint;
 int main(int argc, char** argv) {
     int samples = 4096, size = 64;
     bool all = false;
+    std::string only;  // a model id: that model alone
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument == "--samples" && i + 1 < argc) samples = std::atoi(argv[++i]);
         else if (argument == "--size" && i + 1 < argc) size = std::atoi(argv[++i]);
         else if (argument == "--all") all = true;
+        else if (argument == "--model" && i + 1 < argc) only = argv[++i];
         else {
-            std::fprintf(stderr, "usage: environment_accuracy [--samples N] [--size S] [--all]\n");
+            std::fprintf(stderr, "usage: environment_accuracy [--samples N] [--size S] [--all | --model ID]\n");
             return 2;
         }
     }
@@ -45,7 +47,8 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     for (const auto& entry : test::accuracyMaterials()) {
         const BrdfModel model = entry.material.analytic()->model;
-        if (!all && model != BrdfModel::Lambert && model != BrdfModel::CookTorrance) continue;
+        if (!only.empty() ? only != modelInfo(model).id : !all && model != BrdfModel::Lambert && model != BrdfModel::CookTorrance)
+            continue;
         std::printf("%-28s", entry.name.c_str());
         for (const auto& map : maps) {
             const Scene scene = test::accuracyScene(entry.material, map.environment);

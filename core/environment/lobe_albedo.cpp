@@ -1,0 +1,154 @@
+// Directional-albedo tables (see lobe_albedo.h), once per process, one table per thread.
+#include "environment/lobe_albedo.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <thread>
+
+#include "brdf/blinn_phong.h"
+#include "brdf/microfacet.h"
+#include "brdf/phong.h"
+#include "brdf/ward.h"
+#include "environment/ggx_sampling.h"
+#include "math/constants.h"
+#include "math/frame.h"
+
+namespace glint {
+namespace {
+
+// The texel (r, cos θ_o) of a table; the view direction in the local frame (z the normal).
+struct TableTexel {
+    float alpha;
+    glm::vec3 view;
+};
+
+void fillTable(LobeAlbedoTables& tables, int table, float minAlpha, const std::function<glm::vec2(const TableTexel&)>& texel) {
+    for (int row = 0; row < kLobeAlbedoSize; ++row) {
+        const float perceptual = static_cast<float>(row) / (kLobeAlbedoSize - 1);
+        for (int column = 0; column < kLobeAlbedoSize; ++column) {
+            const float cosOut = (column + 0.5f) / kLobeAlbedoSize;
+            tables.texels[(table * kLobeAlbedoSize + row) * kLobeAlbedoSize + column] =
+                texel({std::max(perceptual * perceptual, minAlpha), {std::sqrt(1.0f - cosOut * cosOut), 0.0f, cosOut}});
+        }
+    }
+}
+
+// GGX (A, B): the mean of f_r cos θ_i / pdf = G2 (v·h) / (cos θ_o cos θ_h) over 1024 half vectors of
+// density D cos θ_h, split by Schlick's (1 − v·h)⁵.
+glm::vec2 splitSum(const TableTexel& t) {
+    constexpr int kSamples = 1024;
+    glm::vec2 sum(0.0f);
+    for (int i = 0; i < kSamples; ++i) {
+        const glm::vec3 halfway = sampleGgxHalfVector(hammersley(i, kSamples), t.alpha);
+        const float viewDotHalf = glm::dot(t.view, halfway);
+        const glm::vec3 light = 2.0f * viewDotHalf * halfway - t.view;
+        if (light.z <= 0.0f || viewDotHalf <= 0.0f) continue;
+        const float geometry = smithHeightCorrelated(lambdaGgx(light.z, t.alpha), lambdaGgx(t.view.z, t.alpha));
+        const float weight = geometry * viewDotHalf / (t.view.z * halfway.z);
+        const float schlick = std::pow(1.0f - viewDotHalf, 5.0f);
+        sum += glm::vec2((1.0f - schlick) * weight, schlick * weight);
+    }
+    return sum / static_cast<float>(kSamples);
+}
+
+// ∫ f_r cos θ_i dω_i of a lobe (ρ = 1) by multiple importance sampling (balance heuristic, Veach
+// 1997) of three strategies in equal shares, so that narrow lobes and wide ones, cut by the
+// horizon at grazing view, are both sampled well: GGX half vectors at α (density D cos θ_h /
+// (4 v·h)), a Phong lobe of the equivalent exponent m = (2/α² − 2)/4 around the mirror direction
+// ((m + 1)/(2π) cos^m δ) and the uniform hemisphere (1/(2π): bounded weights where the forms'
+// 1/cos θ_i makes f_r cos θ_i flat up to the horizon).
+float lobeAlbedo(const TableTexel& t, const std::function<float(glm::vec3 light, glm::vec3 view, float alpha)>& brdf) {
+    constexpr int kSamples = 256;  // per strategy
+    const float m = (2.0f / (t.alpha * t.alpha) - 2.0f) / 4.0f;
+    const glm::vec3 mirror{-t.view.x, -t.view.y, t.view.z};
+    const ShadingFrame aroundMirror = ShadingFrame::fromNormal(mirror);
+    const auto density = [&](glm::vec3 light) {
+        const glm::vec3 halfway = glm::normalize(light + t.view);
+        const float ggx = distributionGgx(halfway.z, std::max(0.0f, 1.0f - halfway.z * halfway.z), t.alpha) *
+                          std::max(halfway.z, 0.0f) / (4.0f * std::max(glm::dot(t.view, halfway), 1e-6f));
+        const float cosMirror = glm::dot(light, mirror);
+        const float phong = cosMirror > 0.0f ? (m + 1.0f) / (2.0f * kPi) * std::pow(cosMirror, m) : 0.0f;
+        return (ggx + phong + 0.5f * kInvPi) / 3.0f;
+    };
+    double sum = 0.0;
+    for (int i = 0; i < kSamples; ++i) {
+        const glm::vec2 u = hammersley(i, kSamples);
+        const glm::vec3 halfway = sampleGgxHalfVector(u, t.alpha);
+        const float cosMirror = std::pow(u.x, 1.0f / (m + 1.0f)), sinMirror = std::sqrt(std::max(0.0f, 1.0f - cosMirror * cosMirror));
+        const float cosine = u.x, sine = std::sqrt(1.0f - u.x * u.x), phi = 2.0f * kPi * u.y;
+        const glm::vec3 lights[3] = {
+            2.0f * glm::dot(t.view, halfway) * halfway - t.view,
+            aroundMirror.toWorld({sinMirror * std::cos(phi), sinMirror * std::sin(phi), cosMirror}),
+            {sine * std::cos(phi), sine * std::sin(phi), cosine}};
+        for (const glm::vec3& light : lights)
+            if (light.z > 0.0f) sum += brdf(light, t.view, t.alpha) * light.z / density(light);
+    }
+    return static_cast<float>(sum / (3 * kSamples));
+}
+
+}  // namespace
+
+const LobeAlbedoTables& lobeAlbedoTables() {
+    static const LobeAlbedoTables tables = [] {
+        LobeAlbedoTables result;
+        result.texels.resize(kLobeAlbedoTables * kLobeAlbedoSize * kLobeAlbedoSize);
+        const ShadingFrame frame = ShadingFrame::fromNormalAndTangent({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f});
+        const auto lobe = [](auto brdf) {
+            return [brdf](const TableTexel& t) { return glm::vec2(lobeAlbedo(t, brdf), 0.0f); };
+        };
+        std::vector<std::function<void()>> jobs{[&] { fillTable(result, kGgxSplitSum, 0.0f, splitSum); }};
+        for (int form = 0; form < 4; ++form) {
+            // The lecture, max-cosine and half-vector forms × the normalised form's factor (lobe_albedo.h).
+            jobs.push_back([&, form] {
+                fillTable(result, kBlinnPhongAlbedo + form, kLobeAlbedoMinAlpha, lobe([&, form](glm::vec3 l, glm::vec3 v, float alpha) {
+                    const float n = 2.0f / (alpha * alpha) - 2.0f;
+                    const BlinnPhongParams p{glm::vec3(0.0f), glm::vec3(1.0f), n, static_cast<BlinnForm>(form)};
+                    return (form == 3 ? 1.0f : (n + 8.0f) / (8.0f * kPi)) * evalBlinnPhong(p, l, v, frame).x;
+                }));
+            });
+            jobs.push_back([&, form] {
+                fillTable(result, kPhongAlbedo + form, kLobeAlbedoMinAlpha, lobe([&, form](glm::vec3 l, glm::vec3 v, float alpha) {
+                    const float n = (2.0f / (alpha * alpha) - 2.0f) / 4.0f;
+                    const PhongParams p{glm::vec3(0.0f), glm::vec3(1.0f), n, static_cast<PhongForm>(form)};
+                    return (form == 3 ? 1.0f : (n + 2.0f) / (2.0f * kPi)) * evalPhong(p, l, v, frame).x;
+                }));
+            });
+        }
+        for (int normalization = 0; normalization < 2; ++normalization)
+            jobs.push_back([&, normalization] {
+                fillTable(result, kWardAlbedo + normalization, kLobeAlbedoMinAlpha, lobe([&, normalization](glm::vec3 l, glm::vec3 v, float alpha) {
+                    const WardParams p{glm::vec3(0.0f), glm::vec3(1.0f), alpha, alpha, static_cast<WardNormalization>(normalization)};
+                    return wardSpecular(p, l, v, frame);
+                }));
+            });
+        std::atomic<size_t> next{0};
+        const auto work = [&] {
+            for (size_t job = next++; job < jobs.size(); job = next++) jobs[job]();
+        };
+        std::vector<std::thread> threads(std::clamp(std::thread::hardware_concurrency(), 1u, 11u) - 1);
+        for (std::thread& thread : threads) thread = std::thread(work);
+        work();
+        for (std::thread& thread : threads) thread.join();
+        return result;
+    }();
+    return tables;
+}
+
+glm::vec2 sampleLobeAlbedo(int table, float cosOut, float perceptualRoughness) {
+    const float last = kLobeAlbedoSize - 1.0f;
+    const float x = std::clamp(cosOut * kLobeAlbedoSize - 0.5f, 0.0f, last);
+    const float y = std::clamp(perceptualRoughness * last, 0.0f, last);
+    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+    const int x1 = std::min(x0 + 1, kLobeAlbedoSize - 1), y1 = std::min(y0 + 1, kLobeAlbedoSize - 1);
+    const float fx = x - x0, fy = y - y0;
+    const auto at = [&](int column, int row) {
+        return lobeAlbedoTables().texels[(table * kLobeAlbedoSize + row) * kLobeAlbedoSize + column];
+    };
+    const glm::vec2 top = at(x0, y0) * (1.0f - fx) + at(x1, y0) * fx;
+    const glm::vec2 bottom = at(x0, y1) * (1.0f - fx) + at(x1, y1) * fx;
+    return top * (1.0f - fy) + bottom * fy;
+}
+
+}  // namespace glint

@@ -1,0 +1,36 @@
+// Directional-albedo tables of the glossy lobes the environment prefilters (the split sum of Karis,
+// "Real Shading in Unreal Engine 4", SIGGRAPH 2013 course, for every lobe): at (cos θ_o,
+// perceptual roughness r = √α) each table holds ∫ f_r cos θ_i dω_i of the lobe itself, computed
+// once from the model's own BRDF, so that the prefiltered radiance × the table is exact under a
+// uniform map. Stacked in one texture (shaders/common/environment.glsl reads it, texel for texel
+// the same as sampleLobeAlbedo). Rows at r = i/(size − 1), so that r = 1 is a row; columns at
+// cos θ_o = (i + ½)/size.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace glint {
+
+inline constexpr int kLobeAlbedoSize = 32;
+
+// The tables, each kLobeAlbedoSize rows: GGX with height-correlated Smith masking split into scale A
+// and bias B, ∫ f_r cos θ_i dω_i = F0·A + B under Schlick's Fresnel; then one albedo (in x) per
+// Blinn-Phong and Phong form (0-3, as BlinnForm and PhongForm; the lecture, max-cosine and
+// half-vector forms × the normalised form's factor (n + c)/(cπ), c = 8 and 2, so that the table
+// stays near 1/cos θ_o: the hooks divide by it) at n = 2/α² − 2 and (2/α² − 2)/4, and per Ward
+// normalisation (0-1, as WardNormalization) at α_x = α_y = α. Lobes take α ≥ kLobeAlbedoMinAlpha.
+// Computed on first use, a thread per table.
+enum LobeAlbedoTable { kGgxSplitSum = 0, kBlinnPhongAlbedo = 1, kPhongAlbedo = 5, kWardAlbedo = 9, kLobeAlbedoTables = 11 };
+inline constexpr float kLobeAlbedoMinAlpha = 0.01f;
+
+struct LobeAlbedoTables {
+    std::vector<glm::vec2> texels;  // row = table × size + roughness index, column = cos θ_o index
+};
+const LobeAlbedoTables& lobeAlbedoTables();
+
+// Bilinear lookup in table `table` (+ the form or normalisation), edges clamped.
+glm::vec2 sampleLobeAlbedo(int table, float cosOut, float perceptualRoughness);
+
+}  // namespace glint
