@@ -83,7 +83,7 @@ struct BlinnPhong {
     using Params = BlinnPhongParams;
     static constexpr auto eval = evalBlinnPhong;
     static constexpr auto ambientReflectance = ambientReflectanceBlinnPhong;
-    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·a(θ_o)·prefiltered radiance at α = √(2/(n+2)) (a: the form's directional albedo, tabulated)";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + k_s·a·prefiltered radiance at α = √(2/(n+2)) (a: the form's albedo at θ_o)";
     static bool isReciprocal(const Params& p) { return p.form != BlinnForm::Lecture; }  // the lecture form is not
     // MTL's highlight is Ks·(N·H)^Ns: Blinn-Phong's lecture form.
     static MtlForm mtlForm(const Params& p) {
