@@ -27,6 +27,9 @@ screenshots. One scenario per ctest entry:
                corrupt image is refused with a message naming it and changes nothing
   material_choice File ▸ Open of a .mtl with two materials asks which one: Down and Enter put the
                second (blue) on the sphere, Ctrl+Z takes it off; Esc in the same question changes nothing
+  redraw_changes only what changed is drawn and presented: after a slider drag (reduced frames, the
+               full frame in bands after it) the window is, pixel for pixel, the frame drawn whole
+               (the window unmapped and mapped again)
   model_switch the Model combo from Blinn-Phong to Lambert: the sphere keeps its red (the diffuse
                albedo carries over) and loses its highlight, the panel says what was kept; one
                Ctrl+Z brings the Blinn-Phong material back
@@ -669,6 +672,28 @@ def scenario_model_switch(x, glint, output, state):
         x.key("ctrl+z")
         x.wait_for(matches(base), "one Ctrl+Z to bring the Blinn-Phong material back")
         print("ok: Blinn-Phong → Lambert kept the red albedo, one Ctrl+Z undid the switch")
+    finally:
+        editor.kill()
+
+
+def scenario_redraw_changes(x, glint, output, state):
+    editor = Editor(x, glint, output, state)
+    window = (0, 0, 1280, 800)
+    try:
+        base = x.wait_for(lit_sphere, "the lit sphere")
+        x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
+        x.wait_for(differs(base), "the sphere to change after the slider drag")
+        x.move(1200, 10)  # off the slider (its tooltip follows the pointer), onto the menu bar's empty end
+        drawn = x.wait_stable(window)
+        x.run("xdotool", "windowunmap", "--sync", editor.window)
+        x.run("xdotool", "windowmap", "--sync", editor.window)
+        time.sleep(1.0)
+        whole = x.wait_stable(window)
+        save(drawn, output, "redraw_changes_1_drawn")
+        save(whole, output, "redraw_changes_2_whole")
+        difference = region_difference(drawn, whole, window, step=1)
+        assert difference == 0, f"the frame drawn in changed parts differs from the whole frame by {difference:.4f} on average"
+        print("ok: after a slider drag the window equals the frame drawn whole")
     finally:
         editor.kill()
 

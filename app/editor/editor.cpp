@@ -34,7 +34,7 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
-#include "editor/ui_layer_cache.h"
+#include "editor/ui_damage.h"
 #include "editor/viewport_refresh.h"
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
@@ -49,6 +49,7 @@ namespace {
 // --- window events: any input asks for a few more frames; close and drop are queued --------
 
 bool gEventSeen = false;
+bool gExposed = true;  // the window's pixels must all be drawn again (mapped, exposed, resized)
 bool gCloseRequested = false;
 std::vector<std::string> gDroppedPaths;
 
@@ -74,8 +75,8 @@ void installEventTracking(GLFWwindow* window) {
     glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { gEventSeen = true; });
     glfwSetKeyCallback(window, noteKey);
     glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { gEventSeen = true; });
-    glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { gEventSeen = true; });
-    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { gEventSeen = true; });
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { gEventSeen = gExposed = true; });
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { gEventSeen = gExposed = true; });
     glfwSetWindowCloseCallback(window, noteClose);
     glfwSetDropCallback(window, noteDrop);
 }
@@ -193,7 +194,16 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     DisplaySettings shownDisplay;  // of the frame last drawn (a change may wait for its programs)
     std::string shownTitle;
     ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
-    UiLayerCache uiLayers;  // unchanged windows copied, not drawn again (ui_layer_cache.h)
+    // Where the window keeps its pixels between frames (the platform presents regions, and nothing
+    // swaps the buffers), only what changed is drawn and put on screen: the pixels the render drew
+    // and where the ui changed (ui_damage.h); elsewhere every frame whole.
+    const bool presentRegions = platform->presentsRegions();
+    UiDamage uiDamage;
+    glm::ivec4 placed{0, 0, 0, 0};  // where the viewport was put on screen: lower left, size
+    PixelRegion viewportCopied;  // the screen pixels its last (scaled) copy covered
+    // Frames drawn whole and swapped after the window was exposed or resized: llvmpipe gives a
+    // resized window a new back buffer only at a swap, with no pixels of the frame before.
+    int wholeFrames = 0;
     RenderTarget reducedFrame{GL_RGBA8, false};  // on screen while the full frame is refined in bands
     int refinedRows = 0;  // the full frame's rows drawn so far, from the top
     double refinedMilliseconds = 0.0;  // the full frame's bands so far
@@ -327,13 +337,15 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                 state.waitingForPrograms = waitedForPrograms = true;
             }
         }
+        // What the viewport on screen shows: the targets' frame at this scale, but for a full frame's
+        // missing bands (a new frame in place of one being refined is put on screen whole).
+        const int scaleOnScreen = renderedScale;
+        const bool bandsMissing = refresh.refining();
+        RowBand rows;  // of a full frame drawn in bands
         if (plan.render) {
-            // Only a material's objects redrawn (its time says nothing of a whole frame's).
-            const bool changesOnly = renderer.drawsOnlyChanges(*drawn, renderPixels.x, renderPixels.y);
             const long long shadowMapRenders = renderer.shadowMapRenders();
             const auto start = std::chrono::steady_clock::now();
             // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
-            RowBand rows;
             if (plan.bands > 1) {
                 if (plan.band == 0) {
                     reducedFrame.ensure(viewportPixels.x, viewportPixels.y, 1);
@@ -353,8 +365,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             state.lastRenderMilliseconds = refinedMilliseconds;
             state.standInProgramsShown = renderer.standInProgramsDrawn();
             state.waitingForPrograms = state.standInProgramsShown > 0;
+            // Only a material's objects redrawn: its time says nothing of a whole frame's.
             refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0,
-                             changesOnly);
+                             renderer.drewOnlyChanges());
             // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
             if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
                 renderer.prepareSimplifiedMeshes(state.session.scene());
@@ -369,29 +382,72 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             shownDisplay = drawn->display;
             framesToDraw = std::max(framesToDraw, 2);
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, framebuffer.x, framebuffer.y);
-        glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
-        glClear(GL_COLOR_BUFFER_BIT);
-        const auto composeStart = std::chrono::steady_clock::now();
-        if (refresh.refining()) {  // the full frame's bands so far, over the reduced frame
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
-            glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
-                              viewportLowerLeft.x + reducedFrame.width(), viewportLowerLeft.y + reducedFrame.height(),
-                              GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows, renderedSize.x, refinedRows);
+        // What changed on screen: the viewport's pixels the render drew (all of them at a new
+        // scale), where the ui changed; all of it where the window does not keep its pixels, or
+        // after it was exposed or resized or the viewport moved.
+        const int shownScale = renderedScale;
+        const glm::ivec2 shownSize = (renderedSize + shownScale - 1) / shownScale * shownScale;  // the copy's, whole radiance pixels
+        const PixelRegion shownViewport{viewportLowerLeft.x, viewportLowerLeft.y, shownSize.x, shownSize.y};
+        std::vector<PixelRegion> damage;
+        uiDamage.collect(*ImGui::GetDrawData(), damage);
+        if (plan.render) {
+            // A band: its rows, which showed the reduced frame (all of it for a new frame in place of
+            // one being refined, as the reduced frame kept under it is the targets' mix of both).
+            const std::optional<PixelRegion>& drawnPixels = renderer.drawnPixels();
+            if (plan.bands > 1 && (plan.band > 0 || !bandsMissing))
+                damage.push_back({viewportLowerLeft.x, viewportLowerLeft.y + rows.first * shownScale, shownSize.x, rows.count * shownScale});
+            else if (plan.bands == 1 && drawnPixels && shownScale == scaleOnScreen && !bandsMissing)
+                damage.push_back({viewportLowerLeft.x + drawnPixels->x * shownScale, viewportLowerLeft.y + drawnPixels->y * shownScale,
+                                  drawnPixels->width * shownScale, drawnPixels->height * shownScale});
+            else
+                damage.push_back(shownViewport);
+            if (viewportCopied.width != shownViewport.width || viewportCopied.height != shownViewport.height)
+                damage.push_back(viewportCopied);  // a copy at a coarser scale reached further
         }
-        renderer.displayToScreen(shownDisplay, viewportLowerLeft, renderedScale);
-        glDisable(GL_SCISSOR_TEST);
+        viewportCopied = shownViewport;
+        const glm::ivec4 placing{viewportLowerLeft, viewportPixels};
+        if (gExposed || placing != placed) wholeFrames = 2;
+        const bool whole = !presentRegions || wholeFrames > 0;
+        if (whole) damage = {PixelRegion{0, 0, framebuffer.x, framebuffer.y}};
+        wholeFrames = std::max(0, wholeFrames - 1);
+        gExposed = false;
+        placed = placing;
+        mergeOverlapping(damage);
+        // Each changed rectangle drawn as the whole frame would be there: the window's colour under
+        // the panels, the viewport (over the reduced frame while the full one is refined in bands:
+        // the bands so far), the ui.
+        const auto composeStart = std::chrono::steady_clock::now();
+        for (const PixelRegion& rect : damage) {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, framebuffer.x, framebuffer.y);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(rect.x, rect.y, rect.width, rect.height);
+            glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
+            glClear(GL_COLOR_BUFFER_BIT);
+            PixelRegion viewportPart = intersectionOf(rect, shownViewport);
+            if (viewportPart.width > 0 && viewportPart.height > 0 && refresh.refining()) {
+                glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
+                glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
+                                  viewportLowerLeft.x + reducedFrame.width(), viewportLowerLeft.y + reducedFrame.height(),
+                                  GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                viewportPart = intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows,
+                                                             renderedSize.x, refinedRows});
+                glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);
+            }
+            if (viewportPart.width > 0 && viewportPart.height > 0) renderer.displayToScreen(shownDisplay, viewportLowerLeft, shownScale);
+            glDisable(GL_SCISSOR_TEST);
+        }
         if (logFrames) glFinish();  // so that the log can tell the phases apart
         const auto displayed = std::chrono::steady_clock::now();
         glViewport(0, 0, framebuffer.x, framebuffer.y);
-        uiLayers.draw(ImGui::GetDrawData(), ImVec4(viewport.x, viewport.y, viewport.width, viewport.height), kWindowClearColor);
+        for (const PixelRegion& rect : damage) UiDamage::drawWithin(*ImGui::GetDrawData(), rect);
         if (logFrames) glFinish();
         const auto composed = std::chrono::steady_clock::now();
-        platform->present();
+        long long pixelsPresented = 0;
+        for (const PixelRegion& rect : damage) pixelsPresented += static_cast<long long>(rect.width) * rect.height;
+        if (whole) platform->present();
+        else for (const PixelRegion& rect : damage) platform->presentRegion(rect.x, rect.y, rect.width, rect.height);
         if (logFrames && plan.render) {
             glFinish();
             const auto now = std::chrono::steady_clock::now();
@@ -399,11 +455,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, ui windows %d redrawn %d copied, band %d/%d, %d stand-in programs, %lld triangles\n",
+                         "presented %.1f ms, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, renderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
-                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), uiLayers.listsRedrawn(),
-                         uiLayers.listsCopied(), plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
+                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), pixelsPresented, plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
         }
         if (logFrames && !plan.render && !waitedForPrograms)  // the UI alone (a progress bar, a menu)
             std::fprintf(stderr, "glint ui frame: input to presented %.1f ms\n",

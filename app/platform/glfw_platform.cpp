@@ -3,6 +3,10 @@
 
 #include <GLFW/glfw3.h>
 
+// GLFW's X11 and GLX handles (GLFW/glfw3native.h, declared here without the X11 headers it needs).
+extern "C" struct _XDisplay* glfwGetX11Display();
+extern "C" unsigned long glfwGetGLXWindow(GLFWwindow* window);
+
 namespace glint {
 namespace {
 
@@ -46,6 +50,8 @@ Result<std::unique_ptr<GlfwPlatform>> GlfwPlatform::create(int width, int height
     platform->window_ = window;
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
+    if (glfwExtensionSupported("GLX_MESA_copy_sub_buffer"))
+        platform->copySubBuffer_ = reinterpret_cast<decltype(copySubBuffer_)>(glfwGetProcAddress("glXCopySubBufferMESA"));
     return platform;
 }
 
@@ -77,5 +83,9 @@ glm::ivec2 GlfwPlatform::framebufferSize() const {
 }
 
 void GlfwPlatform::present() { glfwSwapBuffers(window_); }
+
+void GlfwPlatform::presentRegion(int x, int y, int width, int height) {
+    copySubBuffer_(glfwGetX11Display(), glfwGetGLXWindow(window_), x, y, width, height);  // flushes first
+}
 
 }  // namespace glint

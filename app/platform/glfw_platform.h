@@ -22,6 +22,11 @@ public:
     void makeCurrent() override;
     glm::ivec2 framebufferSize() const override;
     void present() override;
+    // Whether presentRegion() is offered (GLX_MESA_copy_sub_buffer, as Mesa's llvmpipe has). An editor
+    // that presents only regions never swaps, so the back buffer keeps every pixel it was given.
+    bool presentsRegions() const { return copySubBuffer_ != nullptr; }
+    // Puts the back buffer's rectangle (pixels, lower-left origin) on screen.
+    void presentRegion(int x, int y, int width, int height);
     const char* name() const override { return "GLFW window"; }
     // A hidden window whose context shares the editor window's objects (programs built in the
     // background, gl/program_compiler.h); null when GLFW refuses one.
@@ -32,6 +37,7 @@ public:
 private:
     GlfwPlatform() = default;
     GLFWwindow* window_ = nullptr;
+    void (*copySubBuffer_)(void* display, unsigned long drawable, int x, int y, int width, int height) = nullptr;
 };
 
 }  // namespace glint

@@ -390,13 +390,6 @@ std::optional<PixelRegion> Renderer::changedPixels(const HeldFrame& frame) const
     return changed && held->newer ? boundsOf(*changed, *held->newer) : changed;
 }
 
-bool Renderer::drawsOnlyChanges(const Scene& scene, int width, int height) const {
-    const int samples = samplesFor(scene.msaaSamples);
-    const bool fused = fusesDisplay(scene, samples);
-    // (A frame that captures a transmission backdrop writes the float image too, but draws every pixel.)
-    return changedPixels({scene, width, height, samples, keepRadiance_ || !fused, fused}).has_value();
-}
-
 Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail, RowBand rows) {
     platform_.makeCurrent();
     ++framesRendered_;  // programs looked up from here on belong to this frame (makeRoom spares them)
@@ -440,6 +433,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     std::optional<PixelRegion> region = frame ? changedPixels(*frame) : std::nullopt;
     const bool changesOnly = region.has_value();
     if (rows.count > 0) region = intersectionOf(region.value_or(PixelRegion{0, 0, width, height}), {0, rows.first, width, rows.count});
+    drewOnlyChanges_ = changesOnly;
+    drawnPixels_ = capturesBackdrop ? std::nullopt : region;  // the backdrop's opaque pass draws every pixel
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
@@ -619,7 +614,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     if (samples > 1) {
         // The whole frame when the resolve target does not hold the last resolve (a frame without
         // MSAA drew into it since).
-        if (changesOnly && !resolveHeld_) glDisable(GL_SCISSOR_TEST);
+        if (changesOnly && !resolveHeld_) {
+            glDisable(GL_SCISSOR_TEST);
+            drawnPixels_.reset();
+        }
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
         // Depth too: the overlay pass hides lines behind the surface with it.

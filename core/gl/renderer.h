@@ -100,9 +100,11 @@ public:
     // only the pixels of the changed materials' objects (render/material_change.h), a band of rows
     // only those within it, and the rest stays as held. The picture is the whole frame's.
     void setRedrawOnlyChanges(bool enabled) { redrawOnlyChanges_ = enabled; }
-    // Whether renderRadiance(scene, width, height) would draw only such pixels (the editor does not
-    // take its time for a whole frame's).
-    bool drawsOnlyChanges(const Scene& scene, int width, int height) const;
+    // Whether the last renderRadiance drew only such pixels (the editor does not take its time for
+    // a whole frame's), and the pixels it drew: its band, the changed objects' rectangle within it;
+    // none: all (the editor puts only those on screen again).
+    bool drewOnlyChanges() const { return drewOnlyChanges_; }
+    const std::optional<PixelRegion>& drawnPixels() const { return drawnPixels_; }
     // The transmission backdrop (on by default; gl/transmission_pass.h). Off: transmissive
     // surfaces see only the environment or background, as a frame with no opaque object does.
     void setTransmissionBackdrop(bool enabled) { transmissionBackdrop_ = enabled; }
@@ -268,6 +270,8 @@ private:
     bool transmissionBackdrop_ = true;
     bool keepRadiance_ = true;
     bool redrawOnlyChanges_ = false;
+    bool drewOnlyChanges_ = false;
+    std::optional<PixelRegion> drawnPixels_;
     // What the single-sample targets (float and 8-bit, drawn directly) and the multisample target hold.
     std::optional<HeldFrame> held_[2];
     bool resolveHeld_ = false;  // the float target holds the multisample target's frame, resolved
