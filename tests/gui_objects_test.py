@@ -116,6 +116,7 @@ def scenario_add_object(x, glint, output, state):
 SHADING_COMBO = (1018, 590)
 SEGMENTS_SLIDER = (1018, 671)
 SHADING_ITEM = {"exact": (975, 617), "flat": (975, 638)}
+SHADING_LIST = (935, 628, 1000, 690)  # under the combo, where its list opens: "flat", "Gouraud", "Phong"
 
 
 def scenario_shading(x, glint, output, state):
@@ -124,7 +125,7 @@ def scenario_shading(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         before = x.screenshot()
         slow_click(x, SHADING_COMBO)
-        x.wait_for(lambda shot: region_difference(shot, before, (930, 533, 1000, 593)) > 1.0, "the shading combo's list")
+        x.wait_for(lambda shot: region_difference(shot, before, SHADING_LIST) > 1.0, "the shading combo's list")
         slow_click(x, SHADING_ITEM["flat"])
         park_mouse(x)
         x.wait_for(differs(base, 1.0), "flat shading to change the sphere")
