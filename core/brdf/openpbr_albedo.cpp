@@ -9,6 +9,7 @@
 #include "brdf/openpbr_lobes.h"
 #include "environment/ggx_sampling.h"
 #include "math/constants.h"
+#include "util/disk_cache.h"
 #include "util/text.h"
 
 namespace glint {
@@ -72,17 +73,17 @@ std::string glslFloat(float value) { return formatNumber(value, "%.8e"); }
 
 const OpenPbrAlbedoTables& openPbrAlbedoTables() {
     static const OpenPbrAlbedoTables tables = [] {
+        const auto table = [](auto term) {  // term(cos θ_o, perceptual roughness) at every texel
+            std::vector<decltype(term(0.0f, 0.0f))> values(kSize * kSize);
+            for (int row = 0; row < kSize; ++row)
+                for (int column = 0; column < kSize; ++column) values[row * kSize + column] = term(columnCosine(column), rowRoughness(row));
+            return values;
+        };
         OpenPbrAlbedoTables t;
-        t.ggx.resize(kSize * kSize);
-        t.sheen.resize(kSize * kSize);
-        for (int row = 0; row < kSize; ++row) {
-            const float roughness = rowRoughness(row);
-            for (int column = 0; column < kSize; ++column) {
-                const float cosOut = columnCosine(column);
-                t.ggx[row * kSize + column] = ggxTerms(cosOut, roughness * roughness);
-                t.sheen[row * kSize + column] = sheenTerm(cosOut, roughness);
-            }
-        }
+        t.ggx = cachedValues<glm::vec3>("openpbr-ggx-albedo", kSize * kSize, [&] {
+            return table([](float cosOut, float roughness) { return ggxTerms(cosOut, roughness * roughness); });
+        });
+        t.sheen = cachedValues<float>("openpbr-sheen-albedo", kSize * kSize, [&] { return table(sheenTerm); });
         return t;
     }();
     return tables;

@@ -1,4 +1,5 @@
-// Directional-albedo tables of the OpenPBR model's lobes, precomputed once on the CPU and handed
+// Directional-albedo tables of the OpenPBR model's lobes, precomputed once on the CPU (kept in the
+// disk cache, util/disk_cache.h) and handed
 // to the GLSL twin as constant arrays (openPbrAlbedoGlsl), so that both twins interpolate the same
 // numbers: the GGX lobe with height-correlated Smith masking split by Fresnel term (A, B, C) and
 // the Charlie sheen with Neubelt's visibility. They drive the energy

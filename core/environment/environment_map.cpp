@@ -201,7 +201,8 @@ glm::vec3 samplePyramid(const std::vector<EquirectImage>& pyramid, glm::vec3 dir
     const int lower = static_cast<int>(level);
     const int upper = std::min(lower + 1, static_cast<int>(pyramid.size()) - 1);
     const float t = level - lower;
-    return sampleEquirect(pyramid[lower], direction) * (1.0f - t) + sampleEquirect(pyramid[upper], direction) * t;
+    const glm::vec2 coordinates = equirectCoordinates(direction);
+    return sampleEquirectAt(pyramid[lower], coordinates) * (1.0f - t) + sampleEquirectAt(pyramid[upper], coordinates) * t;
 }
 
 // One prefiltered level: for each texel direction R (taking n = v = R, Karis 2013), the mean of
@@ -209,26 +210,33 @@ glm::vec3 samplePyramid(const std::vector<EquirectImage>& pyramid, glm::vec3 dir
 // pyramid level whose texels match the sample's solid angle (Colbert & Křivánek, "GPU-Based
 // Importance Sampling", GPU Gems 3, ch. 20).
 EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float alpha, StagedProgress& progress) {
-    EquirectImage level(kPrefilteredWidth, kPrefilteredHeight);
+    // The samples in the local frame (z the mirror direction), the same for every texel.
+    struct LocalSample {
+        glm::vec3 light;
+        float pyramidLevel;
+    };
+    std::vector<LocalSample> samples;
+    float weightSum = 0.0f;
     const float texelSolidAngleMean = 4.0f * kPi / (pyramid[0].width * pyramid[0].height);
+    for (int i = 0; i < kPrefilterSamples; ++i) {
+        const glm::vec3 halfLocal = sampleGgxHalfVector(hammersley(i, kPrefilterSamples), alpha);
+        const glm::vec3 lightLocal = 2.0f * halfLocal.z * halfLocal - glm::vec3(0, 0, 1);
+        if (lightLocal.z <= 0.0f) continue;
+        // pdf of the light direction with n = v: D(h) cos θ_h / (4 v·h) = D(h)/4.
+        const float sin2Half = std::max(0.0f, 1.0f - halfLocal.z * halfLocal.z);
+        const float pdf = distributionGgx(halfLocal.z, sin2Half, alpha) * 0.25f;
+        const float sampleSolidAngle = 1.0f / (kPrefilterSamples * pdf);
+        samples.push_back({lightLocal, 0.5f * std::log2(sampleSolidAngle / texelSolidAngleMean) + 1.0f});
+        weightSum += lightLocal.z;
+    }
+    EquirectImage level(kPrefilteredWidth, kPrefilteredHeight);
     forEachRow(level.height, [&](int y) {
         for (int x = 0; x < level.width; ++x) {
             const glm::vec3 mirror = equirectDirection({(x + 0.5f) / level.width, (y + 0.5f) / level.height});
             const ShadingFrame frame = ShadingFrame::fromNormal(mirror);
             glm::vec3 sum(0.0f);
-            float weightSum = 0.0f;
-            for (int i = 0; i < kPrefilterSamples; ++i) {
-                const glm::vec3 halfLocal = sampleGgxHalfVector(hammersley(i, kPrefilterSamples), alpha);
-                const glm::vec3 lightLocal = 2.0f * halfLocal.z * halfLocal - glm::vec3(0, 0, 1);
-                if (lightLocal.z <= 0.0f) continue;
-                // pdf of the light direction with n = v: D(h) cos θ_h / (4 v·h) = D(h)/4.
-                const float sin2Half = std::max(0.0f, 1.0f - halfLocal.z * halfLocal.z);
-                const float pdf = distributionGgx(halfLocal.z, sin2Half, alpha) * 0.25f;
-                const float sampleSolidAngle = 1.0f / (kPrefilterSamples * pdf);
-                const float pyramidLevel = 0.5f * std::log2(sampleSolidAngle / texelSolidAngleMean) + 1.0f;
-                sum += samplePyramid(pyramid, frame.toWorld(lightLocal), pyramidLevel) * lightLocal.z;
-                weightSum += lightLocal.z;
-            }
+            for (const LocalSample& sample : samples)
+                sum += samplePyramid(pyramid, frame.toWorld(sample.light), sample.pyramidLevel) * sample.light.z;
             level.at(x, y) = sum / weightSum;
         }
     }, progress);

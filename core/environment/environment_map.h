@@ -64,8 +64,9 @@ struct EnvironmentMap {
 // weighted by their measured cost, rows within each); returning false cancels it.
 using EnvironmentProgress = std::function<bool(float fraction)>;
 
-// Precomputes the lighting of a radiance image (multithreaded; tens of ms for the built-ins, about
-// a second for a 1024×512 file on 2 cores). Null only when `progress` cancelled it.
+// Precomputes the lighting of a radiance image (multithreaded; over a second of CPU for the built-in
+// studio, which environment_cache.h keeps on disk; about a second for a 1024×512 file on 2 cores).
+// Null only when `progress` cancelled it.
 std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance, const EnvironmentProgress& progress = {});
 
 // E(n)/π [W/(sr·m²)] for a unit normal n (map space): bilinear in the irradiance map.

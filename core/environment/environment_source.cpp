@@ -9,6 +9,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "environment/environment_cache.h"
 #include "math/constants.h"
 #include "scene/background.h"
 
@@ -136,7 +137,9 @@ Result<std::shared_ptr<const EnvironmentMap>> loadEnvironmentMap(EnvironmentKind
         static std::shared_ptr<const EnvironmentMap> builtins[5];
         std::lock_guard lock(mutex);
         auto& cached = builtins[static_cast<int>(kind)];
-        if (!cached) cached = makeEnvironmentMap(bakeBuiltinEnvironment(kind), progress);
+        if (!cached)
+            cached = cachedEnvironmentMap(std::string("environment-") + kEnvironmentKindIds[static_cast<int>(kind)],
+                                          bakeBuiltinEnvironment(kind), progress);
         map = cached;
     }
     if (!map) return makeError(kCancelledMessage, {file});

@@ -22,7 +22,10 @@ glm::vec3 equirectDirection(glm::vec2 coordinates) {
 }
 
 glm::vec3 sampleEquirect(const EquirectImage& image, glm::vec3 direction) {
-    const glm::vec2 uv = equirectCoordinates(direction);
+    return sampleEquirectAt(image, equirectCoordinates(direction));
+}
+
+glm::vec3 sampleEquirectAt(const EquirectImage& image, glm::vec2 uv) {
     const float x = uv.x * image.width - 0.5f, y = uv.y * image.height - 0.5f;
     const float x0 = std::floor(x), y0 = std::floor(y);
     const float fx = x - x0, fy = y - y0;

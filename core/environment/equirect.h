@@ -26,6 +26,8 @@ glm::vec3 equirectDirection(glm::vec2 coordinates);
 
 // Bilinear lookup at a unit direction: wraps around in u, clamps at the poles in v.
 glm::vec3 sampleEquirect(const EquirectImage& image, glm::vec3 direction);
+// The same at equirectCoordinates(direction), for lookups of one direction in several images.
+glm::vec3 sampleEquirectAt(const EquirectImage& image, glm::vec2 coordinates);
 
 // The solid angle [sr] of a texel in row y: (2π/width)·(cos θ_top − cos θ_bottom).
 float texelSolidAngle(int y, int width, int height);

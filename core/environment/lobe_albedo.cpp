@@ -1,4 +1,4 @@
-// Directional-albedo tables (see lobe_albedo.h), once per process, one table per thread.
+// Directional-albedo tables (see lobe_albedo.h), one table per thread, kept in the disk cache.
 #include "environment/lobe_albedo.h"
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "environment/ggx_sampling.h"
 #include "math/constants.h"
 #include "math/frame.h"
+#include "util/disk_cache.h"
 
 namespace glint {
 namespace {
@@ -91,7 +92,7 @@ float lobeAlbedo(const TableTexel& t, const std::function<float(glm::vec3 light,
 }  // namespace
 
 const LobeAlbedoTables& lobeAlbedoTables() {
-    static const LobeAlbedoTables tables = [] {
+    static const LobeAlbedoTables tables{cachedValues<glm::vec2>("lobe-albedo", kLobeAlbedoTables * kLobeAlbedoSize * kLobeAlbedoSize, [] {
         LobeAlbedoTables result;
         result.texels.resize(kLobeAlbedoTables * kLobeAlbedoSize * kLobeAlbedoSize);
         const ShadingFrame frame = ShadingFrame::fromNormalAndTangent({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f});
@@ -131,8 +132,8 @@ const LobeAlbedoTables& lobeAlbedoTables() {
         for (std::thread& thread : threads) thread = std::thread(work);
         work();
         for (std::thread& thread : threads) thread.join();
-        return result;
-    }();
+        return result.texels;
+    })};
     return tables;
 }
 

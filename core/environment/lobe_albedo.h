@@ -21,7 +21,7 @@ inline constexpr int kLobeAlbedoSize = 32;
 // half-vector forms × the normalised form's factor (n + c)/(cπ), c = 8 and 2, so that the table
 // stays near 1/cos θ_o: the hooks divide by it) at n = 2/α² − 2 and (2/α² − 2)/4, and per Ward
 // normalisation (0-1, as WardNormalization) at α_x = α_y = α. Lobes take α ≥ kLobeAlbedoMinAlpha.
-// Computed on first use, a thread per table.
+// Computed on first use, a thread per table, and kept in the disk cache (util/disk_cache.h).
 enum LobeAlbedoTable { kGgxSplitSum = 0, kBlinnPhongAlbedo = 1, kPhongAlbedo = 5, kWardAlbedo = 9, kLobeAlbedoTables = 11 };
 inline constexpr float kLobeAlbedoMinAlpha = 0.01f;
 
