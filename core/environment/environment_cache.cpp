@@ -52,11 +52,8 @@ private:
     size_t offset_ = 0;
 };
 
-std::uint64_t radianceHash(const EquirectImage& radiance) {  // FNV-1a over the texels' bytes
-    std::uint64_t hash = 14695981039346656037ull;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(radiance.texels.data());
-    for (size_t i = 0; i < radiance.texels.size() * sizeof(glm::vec3); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-    return hash;
+std::uint64_t radianceHash(const EquirectImage& radiance) {
+    return cacheChecksum(radiance.texels.data(), radiance.texels.size() * sizeof(glm::vec3));
 }
 
 std::string lightingBytes(const EnvironmentMap& map) {

@@ -17,12 +17,6 @@ namespace {
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'C', 'A', '1'};
 constexpr size_t kHeaderSize = sizeof kMagic + 2 * sizeof(std::uint64_t);  // magic, size, checksum
 
-std::uint64_t checksum(const char* data, size_t size) {  // FNV-1a
-    std::uint64_t hash = 14695981039346656037ull;
-    for (size_t i = 0; i < size; ++i) hash = (hash ^ static_cast<unsigned char>(data[i])) * 1099511628211ull;
-    return hash;
-}
-
 // The hexadecimal GNU build ID of the executable (the first object dl_iterate_phdr reports);
 // empty without one.
 std::string executableBuildId() {
@@ -63,6 +57,13 @@ std::string entryPath(const std::string& folder, const std::string& name) {
 
 }  // namespace
 
+std::uint64_t cacheChecksum(const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::uint64_t hash = 14695981039346656037ull;
+    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+    return hash;
+}
+
 std::string cacheFolder() {
     static const std::string folder = [] {
         if (executableBuildId().empty()) return std::string();
@@ -85,7 +86,7 @@ std::optional<std::string> readCacheEntry(const std::string& name) {
     std::uint64_t size = 0, sum = 0;
     std::memcpy(&size, contents->data() + sizeof kMagic, sizeof size);
     std::memcpy(&sum, contents->data() + sizeof kMagic + sizeof size, sizeof sum);
-    if (size != contents->size() - kHeaderSize || sum != checksum(contents->data() + kHeaderSize, size)) return std::nullopt;
+    if (size != contents->size() - kHeaderSize || sum != cacheChecksum(contents->data() + kHeaderSize, size)) return std::nullopt;
     return contents->substr(kHeaderSize);
 }
 
@@ -101,7 +102,7 @@ void writeCacheEntry(const std::string& name, const std::string& bytes) {
                               file.find('-', name.size() + 1) == std::string::npos && other.path().extension() == ".bin";
         if (sameName && other.path().string() != path) std::filesystem::remove(other.path(), error);  // another build's
     }
-    const std::uint64_t size = bytes.size(), sum = checksum(bytes.data(), bytes.size());
+    const std::uint64_t size = bytes.size(), sum = cacheChecksum(bytes.data(), bytes.size());
     std::string contents(kMagic, sizeof kMagic);
     contents.append(reinterpret_cast<const char*>(&size), sizeof size);
     contents.append(reinterpret_cast<const char*>(&sum), sizeof sum);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -19,6 +20,9 @@ namespace glint {
 std::optional<std::string> readCacheEntry(const std::string& name);
 // Stores `bytes` under `name` (atomically) and removes the entries of other builds under it.
 void writeCacheEntry(const std::string& name, const std::string& bytes);
+
+// FNV-1a over `size` bytes: the entries' checksum, and a key for what an entry was made from.
+std::uint64_t cacheChecksum(const void* data, size_t size);
 
 // The folder entries go to; empty when the cache is off or this executable has no build ID.
 std::string cacheFolder();
