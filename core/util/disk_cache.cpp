@@ -78,9 +78,7 @@ std::string cacheFolder() {
 std::optional<std::string> readCacheEntry(const std::string& name) {
     const std::string folder = cacheFolder();
     if (folder.empty()) return std::nullopt;
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(entryPath(folder, name), error)) return std::nullopt;
-    auto contents = readTextFile(entryPath(folder, name));
+    auto contents = readTextFile(entryPath(folder, name));  // an error for a missing file or a folder
     if (!contents || contents->size() < kHeaderSize || std::memcmp(contents->data(), kMagic, sizeof kMagic) != 0)
         return std::nullopt;
     std::uint64_t size = 0, sum = 0;
