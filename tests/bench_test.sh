@@ -46,7 +46,7 @@ PY
 grep -q "^lambert/4 " "$out/list.txt" && grep -q "^glass/1 " "$out/list.txt"
 
 start=$(date +%s)
-"$glint" bench --quick --json "$out/bench.json" | tee "$out/bench.txt"
+"$glint" bench --quick --size 320x180 --json "$out/bench.json" | tee "$out/bench.txt"
 echo "glint bench --quick took $(( $(date +%s) - start )) s"
 grep -q "^lambert/4 .*diffuse" "$out/bench.txt"
 grep -q "^cold start" "$out/bench.txt"
@@ -60,7 +60,7 @@ import json, sys
 bench = json.load(open(sys.argv[1]))
 names = [line.split()[0] for line in open(sys.argv[2]) if line.strip()]
 assert bench["format"] == "glint-bench" and bench["version"] == 1, bench.get("format")
-assert (bench["width"], bench["height"]) == (1280, 720)
+assert (bench["width"], bench["height"]) == (320, 180)
 assert bench["quick"] is True and bench["frames"] == 1
 assert [scene["name"] for scene in bench["scenes"]] == names, "every standard scene, in table order"
 for scene in bench["scenes"]:

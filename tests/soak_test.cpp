@@ -1,6 +1,6 @@
 // Soak test (issue 9): a headless session applies N random edits (default 10,000) through core's
 // EditSession — every parameter kind, lights added/removed/changed, model switches, drags,
-// undo/redo, display and background settings, MSAA — and renders each state at 64×64 through the
+// undo/redo, display and background settings, MSAA — and renders each state at 32×32 through the
 // OSMesa HeadlessRenderer. Fails on the first GL error (KHR_debug callback and glGetError after
 // every frame, with the edit number), on a non-finite radiance, and when the resident memory
 // after the last edit exceeds the memory after the first 100 edits by more than 5 %.
@@ -28,7 +28,7 @@
 namespace glint {
 namespace {
 
-constexpr int kSize = 64;
+constexpr int kSize = 32;
 constexpr int kBaselineEdit = 100;
 constexpr double kMemoryGrowthAllowed = 0.05;
 constexpr int kMaxSoakLights = 16;
