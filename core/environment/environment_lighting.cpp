@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 
 #include "brdf/fresnel.h"
 #include "environment/environment_map.h"
@@ -80,10 +81,12 @@ glm::vec3 mirrorDirection(glm::vec3 wo, const ShadingFrame& frame) {
     return 2.0f * frame.cosTheta(wo) * frame.normal - wo;
 }
 
-// The prefiltered radiance for GGX roughness α, of the map less its peaks where the lobe takes them.
-glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha) {
-    return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, std::sqrt(alpha))
-                                          : environmentSpecularRadiance(e, worldDirection, std::sqrt(alpha));
+// The prefiltered radiance at perceptual roughness r, of the map less its peaks where a lobe of GGX
+// roughness α takes them; r = √α unless given.
+glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha, float perceptual = -1.0f) {
+    if (perceptual < 0.0f) perceptual = std::sqrt(alpha);
+    return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, perceptual)
+                                          : environmentSpecularRadiance(e, worldDirection, perceptual);
 }
 
 // Σ_k term(ω_k, α_k) E_k over every peak light k, α_k the lobe's GGX roughness α widened for the
@@ -214,11 +217,16 @@ glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& fra
            });
 }
 
+// Ward's lobe (Beckmann-like, without GGX's long tails) takes its GGX stand-in (lobe_albedo.h): the
+// prefiltered level with its mean cosine, along its mean direction n + (R − n) t.
 glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
+    const glm::vec2 standIn = sampleLobeAlbedo(kWardStandIn + static_cast<int>(p.normalization),
+                                               std::max(frame.cosTheta(wo), 0.0f), std::sqrt(alpha));
+    const glm::vec3 direction = glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * standIn.y);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * lobeAlbedo(kWardAlbedo + static_cast<int>(p.normalization), wo, frame, alpha) *
-               glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+               glossyRadiance(e, direction, alpha, standIn.x) +
            peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                WardParams lobe = p;
                lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
@@ -315,6 +323,7 @@ std::string environmentApproximation(BrdfModel model, std::span<const float> val
     const char* lobe = dispatch(model, []<class M>(M) -> const char* {
         if constexpr (!HasEnvironment<M>) return nullptr;
         else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction";
+        else if constexpr (std::is_same_v<M, Ward>) return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction, × its directional albedo";
         else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R × its directional albedo";
         else return "";
     });

@@ -23,8 +23,9 @@ uniform sampler2D environmentBase;             // the radiance image
 uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
                                                // layer L + k: roughness k/L of the map less its peaks
 uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: GGX split-sum scale A and bias B,
-                                               // then one albedo (r) per Blinn-Phong, Phong and Ward variant
-const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9;  // LobeAlbedoTable
+                                               // then one albedo (r) per Blinn-Phong, Phong and Ward variant,
+                                               // then Ward's GGX stand-in (r', t) per variant
+const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9, WARD_STAND_IN = 11;  // LobeAlbedoTable
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
 // in a specialised program (gl/shader_specialisation.h), else the block's flags.
@@ -127,17 +128,22 @@ float environmentPeakAlpha(int k, float alpha) {
 #define ENVIRONMENT_ADD_PEAKS(SUM, ALPHA, WO, FRAME, LOBE) \
     ENVIRONMENT_EACH_PEAK(ALPHA, WO, FRAME, if (cosTheta(FRAME, wi) > 0.0) SUM += (LOBE) * environmentPeakIrradiance(k);)
 
-// Twin of glossyRadiance(): the prefiltered map (environmentSpecularRadiance), less its peaks where
-// the lobe takes them (residualPrefilteredRadiance(), environment_map.cpp: r clamped to ≥ 1/L), as
-// one pair of lookups whose levels are picked (llvmpipe would run both arms of a choice of calls).
-vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
+// Twin of glossyRadiance(): the prefiltered map (environmentSpecularRadiance) at perceptual roughness
+// PERCEPTUAL, less its peaks where a lobe of GGX roughness ALPHA takes them (residualPrefilteredRadiance(),
+// environment_map.cpp: r clamped to ≥ 1/L), as one pair of lookups whose levels are picked (llvmpipe
+// would run both arms of a choice of calls).
+vec3 environmentGlossyRadianceAt(vec3 worldDirection, float alpha, float perceptual) {
     bool residual = environmentUsesPeaks(alpha);
     vec3 d = environmentMapDirection(worldDirection);
-    float level = clamp(sqrt(alpha) * float(PREFILTERED_LEVELS), residual ? 1.0 : 0.0, float(PREFILTERED_LEVELS));
+    float level = clamp(perceptual * float(PREFILTERED_LEVELS), residual ? 1.0 : 0.0, float(PREFILTERED_LEVELS));
     int lower = min(int(level), PREFILTERED_LEVELS - 1);
     float t = level - float(lower);
     int first = residual ? PREFILTERED_LEVELS + 1 + lower : lower;
     return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + sampleEnvironmentLevel(first + 1, d) * t);
+}
+
+vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
+    return environmentGlossyRadianceAt(worldDirection, alpha, sqrt(alpha));
 }
 
 // Table TABLE at (cos θ_o, r): twin of sampleLobeAlbedo() in lobe_albedo.cpp.
