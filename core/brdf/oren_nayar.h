@@ -27,33 +27,44 @@ inline constexpr ParamSpec kOrenNayarTable[] = {
      .help = "Standard deviation of the facet slope angle, in degrees"},
 };
 
-// f_r = ρ/π (A + B max(0, cos(φ_i − φ_o)) sin α tan β), α = max(θ_i, θ_o), β = min(θ_i, θ_o),
-// A = 1 − 0.5 σ²/(σ² + 0.33), B = 0.45 σ²/(σ² + 0.09), σ in radians. Uses
-// sin θ_i sin θ_o cos Δφ = ω_i·ω_o − cos θ_i cos θ_o and sin α tan β = sin θ_i sin θ_o / max(cos θ_i, cos θ_o).
+// A = 1 − 0.5 σ²/(σ² + 0.33) and B = 0.45 σ²/(σ² + 0.09) for σ in degrees.
+inline glm::vec2 orenNayarCoefficients(float roughnessDegrees) {
+    const float sigma = roughnessDegrees * (kPi / 180.0f);
+    const float sigma2 = sigma * sigma;
+    return {1.0f - 0.5f * sigma2 / (sigma2 + 0.33f), 0.45f * sigma2 / (sigma2 + 0.09f)};
+}
+
+// f_r = ρ/π (A + B max(0, cos(φ_i − φ_o)) sin α tan β), α = max(θ_i, θ_o), β = min(θ_i, θ_o).
+// Uses sin θ_i sin θ_o cos Δφ = ω_i·ω_o − cos θ_i cos θ_o and sin α tan β = sin θ_i sin θ_o / max(cos θ_i, cos θ_o).
 inline glm::vec3 evalOrenNayar(const OrenNayarParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
     const float cosIn = frame.cosTheta(wi), cosOut = frame.cosTheta(wo);
     if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
-    const float sigma = p.roughnessDegrees * (kPi / 180.0f);
-    const float sigma2 = sigma * sigma;
-    const float a = 1.0f - 0.5f * sigma2 / (sigma2 + 0.33f);
-    const float b = 0.45f * sigma2 / (sigma2 + 0.09f);
+    const glm::vec2 ab = orenNayarCoefficients(p.roughnessDegrees);
     const float azimuthal = std::max(0.0f, glm::dot(wi, wo) - cosIn * cosOut);
-    return p.albedo * kInvPi * (a + b * azimuthal / std::max(cosIn, cosOut));
+    return p.albedo * kInvPi * (ab.x + ab.y * azimuthal / std::max(cosIn, cosOut));
 }
 
-// The qualitative model's directional albedo ∫ f_r cos θ_i dω_i / ρ at cos θ_o, in closed form:
-// A + (2B/π)[sin θ_o (θ_o/2 − sin 2θ_o/4) + tan θ_o (1 − sin³θ_o)/3] (the B term integrated over
-// θ_i < θ_o, where α = θ_o, and θ_i > θ_o, where β = θ_o; ∫ max(0, cos Δφ) dφ = 2).
-inline float directionalAlbedoOrenNayar(float roughnessDegrees, float cosOut) {
-    const float sigma = roughnessDegrees * (kPi / 180.0f);
-    const float sigma2 = sigma * sigma;
-    const float a = 1.0f - 0.5f * sigma2 / (sigma2 + 0.33f);
-    const float b = 0.45f * sigma2 / (sigma2 + 0.09f);
-    const float cosine = std::clamp(cosOut, 1e-4f, 1.0f), sine = std::sqrt(1.0f - cosine * cosine);
-    const float theta = std::acos(cosine);
-    const float below = sine * (0.5f * theta - 0.5f * sine * cosine);
-    const float above = sine / cosine * (1.0f - sine * sine * sine) / 3.0f;
-    return a + 2.0f * b * kInvPi * (below + above);
+// The qualitative model's moments per unit ρ at cos θ_o, in closed form: the B term integrated over
+// θ_i < θ_o, where α = θ_o, and θ_i > θ_o, where β = θ_o (∫ max(0, cos Δφ) dφ = 2, ∫ max(0, cos Δφ) cos Δφ dφ = π/2).
+struct OrenNayarMoments {
+    // ∫ f_r cos θ_i dω_i: A + (2B/π)[sin θ_o (θ_o/2 − sin 2θ_o/4) + tan θ_o (1 − sin³θ_o)/3]
+    float albedo;
+    // ∫ f_r cos θ_i ω_i dω_i = normal·n + tangent·(ω_o − cos θ_o n): the B term leans it towards the viewer.
+    // normal: 2A/3 + (2B/π)[sin⁴θ_o/3 + tan θ_o ((π/2 − θ_o)/8 + sin 4θ_o/32)]; tangent: (B/2)(2/3 − c/2 + c³/12)
+    float normal, tangent;
+    // ∫ f_r cos θ_i P₂(cos θ_i) dω_i: A/4 + (2B/π)[sin θ_o (sin 2θ_o/8 − θ_o/16 − 3 sin 4θ_o/64)
+    // + tan θ_o (1/30 − sin³θ_o/3 + 3 sin⁵θ_o/10)]
+    float band2;
+};
+inline OrenNayarMoments orenNayarMoments(float roughnessDegrees, float cosOut) {
+    const glm::vec2 ab = orenNayarCoefficients(roughnessDegrees);
+    const float c = std::clamp(cosOut, 1e-4f, 1.0f), s = std::sqrt(1.0f - c * c), t = s / c;
+    const float theta = std::acos(c), sin2 = 2.0f * s * c, sin4 = 2.0f * sin2 * (c * c - s * s), s3 = s * s * s;
+    const float b = 2.0f * ab.y * kInvPi;
+    return {ab.x + b * (s * (0.5f * theta - 0.25f * sin2) + t * (1.0f - s3) / 3.0f),
+            2.0f * ab.x / 3.0f + b * (s3 * s / 3.0f + t * ((0.5f * kPi - theta) / 8.0f + sin4 / 32.0f)),
+            0.5f * ab.y * (2.0f / 3.0f - 0.5f * c + c * c * c / 12.0f),
+            0.25f * ab.x + b * (s * (sin2 / 8.0f - theta / 16.0f - 3.0f * sin4 / 64.0f) + t * (1.0f / 30.0f - s3 / 3.0f + 0.3f * s3 * s * s))};
 }
 
 // Ambient reflectance k_a: the facet albedo ρ, the exact directional albedo at σ = 0 (Lambert).
@@ -72,7 +83,7 @@ struct OrenNayar {
     using Params = OrenNayarParams;
     static constexpr auto eval = evalOrenNayar;
     static constexpr auto ambientReflectance = ambientReflectanceOrenNayar;
-    static constexpr const char* environmentResponse = "ρ·a(θ_o)·E(n)/π (irradiance map × the directional albedo) + the lobe's departure from Lambert at the map's peak lights";
+    static constexpr const char* environmentResponse = "ρ·a(θ_o)·(x E(u) + y E(−u))/π + z L̄: the lobe's bands 0-2, u leaning to the viewer; its own shape at peak lights";
     static MtlForm mtlForm(const Params& p) {
         return {.diffuse = p.albedo, .lost = {"roughness σ is not kept (written as Lambert)"}};
     }

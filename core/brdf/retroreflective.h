@@ -77,6 +77,20 @@ inline glm::vec3 ambientReflectanceRetroreflective(const RetroreflectiveParams& 
     return p.albedo * (0.5f * (1.0f - cosOut * std::log(1.0f + 1.0f / cosOut)));
 }
 
+// The diffuse law's first two Legendre moments per unit k_a (its lobe in ω_i is symmetric about
+// n): band1 = ∫ f_r cos θ_i cos θ_i dω_i / k_a, band2 = ∫ f_r cos θ_i P₂(cos θ_i) dω_i / k_a. Minnaert
+// (μ_i^k): (k+1)/(k+2) and k/(k+3); Lommel-Seeliger (μ_i/(μ_i + μ_o)): I₁/I₀ and (3 I₂/I₀ − 1)/2,
+// I_j = ∫₀¹ μ^(j+1)/(μ + μ_o) dμ = 1/(j+1) − μ_o I_(j−1), I₀ = 1 − μ_o ln(1 + 1/μ_o). Lambert: 2/3, 1/4.
+inline glm::vec2 diffuseMomentsRetroreflective(const RetroreflectiveParams& p, float cosOut) {
+    if (p.limbDarkening == LimbDarkening::Minnaert) {
+        const float k = p.minnaertExponent;
+        return {(k + 1.0f) / (k + 2.0f), k / (k + 3.0f)};
+    }
+    const float mu = std::max(cosOut, 1e-4f);
+    const float i0 = 1.0f - mu * std::log(1.0f + 1.0f / mu), i1 = 0.5f - mu * i0, i2 = 1.0f / 3.0f - mu * i1;
+    return {i1 / i0, 1.5f * i2 / i0 - 0.5f};
+}
+
 struct Retroreflective {
     static constexpr const char *id = "retroreflective", *label = "Moon / retroreflective";
     static constexpr const char* citation =
@@ -87,7 +101,7 @@ struct Retroreflective {
     using Params = RetroreflectiveParams;
     static constexpr auto eval = evalRetroreflective;
     static constexpr auto ambientReflectance = ambientReflectanceRetroreflective;
-    static constexpr const char* environmentResponse = "k_a(ω_o)·E(n)/π + the lobe's departure from Lambert (both lobes) at the map's peak lights";
+    static constexpr const char* environmentResponse = "k_a(ω_o)·(x E(n) + y E(−n))/π + z L̄ (the law's bands 0-2); both lobes at the peak lights";
     static MtlForm mtlForm(const Params& p) {
         return {.diffuse = p.albedo, .lost = {"the limb darkening and retroreflective lobe are not kept (written as Lambert)"}};
     }

@@ -81,7 +81,7 @@ struct Ward {
     using Params = WardParams;
     static constexpr auto eval = evalWard;
     static constexpr auto ambientReflectance = ambientReflectanceWard;
-    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + ρ_s·a(θ_o)·prefiltered radiance at α = √(α_x α_y) (a: the lobe's directional albedo, tabulated)";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + ρ_s·a(θ_o)·prefiltered GGX with the lobe's mean cosine, along its mean direction";
     // Blinn-Phong's exponent for Ward's slopes: n = 2/(α_x α_y) − 2.
     static MtlForm mtlForm(const Params& p) {
         return {.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular,

@@ -13,7 +13,7 @@ namespace glint {
 namespace {
 
 // The precomputed parts of a map, after a header naming the radiance they were made from (its
-// size and a hash of its texels): the irradiance, the prefiltered and residual levels, the peaks.
+// size and a hash of its texels): the irradiance, the prefiltered and residual levels, the peaks, the residual's mean.
 class Writer {
 public:
     template <class T>
@@ -66,6 +66,7 @@ std::string lightingBytes(const EnvironmentMap& map) {
     out.put(static_cast<std::uint32_t>(map.peaks.size()));
     for (const EnvironmentPeakLight& peak : map.peaks) out.put(peak);
     out.put(map.peakMinimumAlpha);
+    out.put(map.residualMean);
     return out.bytes;
 }
 
@@ -89,7 +90,7 @@ std::optional<EnvironmentMap> mapFromBytes(const std::string& bytes, EquirectIma
     map.peaks.resize(peaks);
     for (EnvironmentPeakLight& peak : map.peaks)
         if (!in.get(peak)) return std::nullopt;
-    if (!in.get(map.peakMinimumAlpha) || !in.atEnd()) return std::nullopt;
+    if (!in.get(map.peakMinimumAlpha) || !in.get(map.residualMean) || !in.atEnd()) return std::nullopt;
     map.distribution = EnvironmentDistribution(radiance);
     map.radiance = std::move(radiance);
     return map;

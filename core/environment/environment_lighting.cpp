@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 
 #include "brdf/fresnel.h"
 #include "environment/environment_map.h"
@@ -65,6 +66,10 @@ glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, gl
                                                                perceptualRoughness);
 }
 
+glm::vec3 environmentResidualMeanRadiance(const Environment& environment) {
+    return environment.intensity * environment.map->residualMean;
+}
+
 // --- roughness mapping ----------------------------------------------------------------------
 
 namespace {
@@ -76,26 +81,35 @@ glm::vec3 mirrorDirection(glm::vec3 wo, const ShadingFrame& frame) {
     return 2.0f * frame.cosTheta(wo) * frame.normal - wo;
 }
 
-// The prefiltered radiance for GGX roughness α, of the map less its peaks where the lobe takes them.
-glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha) {
-    return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, std::sqrt(alpha))
-                                          : environmentSpecularRadiance(e, worldDirection, std::sqrt(alpha));
+// The prefiltered radiance at perceptual roughness r, of the map less its peaks where a lobe of GGX
+// roughness α takes them; r = √α unless given.
+glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha, float perceptual = -1.0f) {
+    if (perceptual < 0.0f) perceptual = std::sqrt(alpha);
+    return environmentUsesPeaks(e, alpha) ? environmentResidualSpecularRadiance(e, worldDirection, perceptual)
+                                          : environmentSpecularRadiance(e, worldDirection, perceptual);
 }
 
-// The peaks as lights: Σ_k f_r(ω_k, ω_o; α_k) cos θ_k E_k, `reflectedCos(ω_i, α_k)` giving the
-// glossy lobe's f_r cos θ_i (Fresnel included) widened to GGX roughness α_k for light k's extent;
-// zero where the lobe does not take them. The microfacet lobes take Schlick's Fresnel with the
+// Σ_k term(ω_k, α_k) E_k over every peak light k, α_k the lobe's GGX roughness α widened for the
+// light's extent; zero where the lobe does not take the peaks or ω_o is below the surface.
+template <class Term>
+glm::vec3 sumOverPeaks(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, Term&& term) {
+    glm::vec3 sum(0.0f);
+    if (!environmentUsesPeaks(e, alpha) || frame.cosTheta(wo) <= 0.0f) return sum;
+    for (int k = 0; k < static_cast<int>(e.map->peaks.size()); ++k)
+        sum += term(environmentPeakDirection(e, k), environmentPeakAlpha(e, k, alpha)) * environmentPeakIrradiance(e, k);
+    return sum;
+}
+
+// The peaks as lights: Σ_k f_r(ω_k, ω_o; α_k) cos θ_k E_k over those above the surface,
+// `reflectedCos(ω_i, α_k)` giving the glossy lobe's f_r cos θ_i (Fresnel included) widened to GGX
+// roughness α_k for light k's extent. The microfacet lobes take Schlick's Fresnel with the
 // material's exact F0, as the split sum's F0·A + B does (the exact complex-index equations per
 // light cost a quarter of a studio frame on llvmpipe).
 template <class ReflectedCos>
 glm::vec3 peakLighting(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
-    glm::vec3 sum(0.0f);
-    if (!environmentUsesPeaks(e, alpha) || frame.cosTheta(wo) <= 0.0f) return sum;
-    for (int k = 0; k < static_cast<int>(e.map->peaks.size()); ++k) {
-        const glm::vec3 wi = environmentPeakDirection(e, k);
-        if (frame.cosTheta(wi) > 0.0f) sum += reflectedCos(wi, environmentPeakAlpha(e, k, alpha)) * environmentPeakIrradiance(e, k);
-    }
-    return sum;
+    return sumOverPeaks(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
+        return frame.cosTheta(wi) > 0.0f ? reflectedCos(wi, widened) : glm::vec3(0.0f);
+    });
 }
 
 // A Blinn-Phong or Phong exponent for GGX roughness α (the inverses of blinnAlpha and phongAlpha).
@@ -121,27 +135,51 @@ glm::vec3 lightingOf(const LambertParams& p, glm::vec3, const ShadingFrame& fram
     return p.albedo * environmentDiffuseRadiance(e, frame.normal);
 }
 
-// Diffuse-like lobes that are not Lambert's: their directional albedo k_a(ω_o) × E(n)/π, exact under
-// a uniform map, plus at the map's peak lights the lobe's departure from that Lambert shape,
-// Σ_k (f_r(ω_k, ω_o) − k_a/π) cos θ_k E_k, so that a small bright light meets the lobe's own
-// shape (back-scattering, limb darkening, a retroreflective lobe).
-glm::vec3 diffuseLikeAlbedo(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame) {
-    return p.albedo * directionalAlbedoOrenNayar(p.roughnessDegrees, frame.cosTheta(wo));
+// A diffuse-like lobe's shape as a smooth map sees it: its directional albedo k_a(ω_o), the unit
+// direction u of its first moment ∫ f_r cos θ_i ω_i dω_i, and its first two Legendre moments per
+// unit k_a, band1 = |∫ f_r cos θ_i ω_i dω_i| / k_a (about u) and band2 = ∫ f_r cos θ_i P₂(cos θ_i) dω_i / k_a
+// (about n). Lambert's: u = n, 2/3 and 1/4.
+struct SmoothResponse {
+    glm::vec3 albedo, direction;
+    float band1, band2;
+};
+
+SmoothResponse smoothResponse(const OrenNayarParams& p, glm::vec3 wo, const ShadingFrame& frame) {
+    const OrenNayarMoments m = orenNayarMoments(p.roughnessDegrees, frame.cosTheta(wo));
+    const glm::vec3 moment = m.normal * frame.normal + m.tangent * (wo - frame.cosTheta(wo) * frame.normal);
+    return {p.albedo * m.albedo, glm::normalize(moment), glm::length(moment) / m.albedo, m.band2 / m.albedo};
 }
-glm::vec3 diffuseLikeAlbedo(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame) {
-    return ambientReflectanceRetroreflective(p, wo, frame);
+SmoothResponse smoothResponse(const RetroreflectiveParams& p, glm::vec3 wo, const ShadingFrame& frame) {
+    const glm::vec2 bands = diffuseMomentsRetroreflective(p, frame.cosTheta(wo));
+    return {ambientReflectanceRetroreflective(p, wo, frame), frame.normal, bands.x, bands.y};
 }
 glm::vec3 evalLobe(const OrenNayarParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& f) { return evalOrenNayar(p, wi, wo, f); }
 glm::vec3 evalLobe(const RetroreflectiveParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& f) {
     return evalRetroreflective(p, wi, wo, f);
 }
 
+// The weights (x, y, z) of E(u)/π, E(−u)/π and the mean radiance L̄ whose bands 0-2 are the lobe's
+// (Funk-Hecke: E(u)/π has L's band 1 × 2/3 and band 2 × 1/4): x + y + z = 1, (2/3)(x − y) = band1,
+// (x + y)/4 = band2. Lambert's: (1, 0, 0).
+glm::vec3 smoothWeights(const SmoothResponse& r) {
+    return {0.75f * r.band1 + 2.0f * r.band2, 2.0f * r.band2 - 0.75f * r.band1, 1.0f - 4.0f * r.band2};
+}
+
+// Diffuse-like lobes that are not Lambert's: k_a × (x E(u)/π + y E(−u)/π + z L̄), L̄ of the map less
+// its peaks (exact under a uniform map, and for any map in bands 0-2: Oren-Nayar's lean towards the
+// viewer, limb darkening's wider lobe), plus at each peak light the lobe's own f_r cos θ_k in place of
+// what those lookups gave it, Σ_k (f_r cos⁺θ_k − k_a (x cos⁺(u·ω_k) + y cos⁺(−u·ω_k))/π) E_k.
 template <class Params>
-    requires requires(const Params& p, glm::vec3 w, const ShadingFrame& f) { diffuseLikeAlbedo(p, w, f); }
+    requires requires(const Params& p, glm::vec3 w, const ShadingFrame& f) { smoothResponse(p, w, f); }
 glm::vec3 lightingOf(const Params& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
-    const glm::vec3 albedo = diffuseLikeAlbedo(p, wo, frame);
-    return albedo * environmentDiffuseRadiance(e, frame.normal) + peakLighting(e, 1.0f, wo, frame, [&](glm::vec3 wi, float) {
-               return (evalLobe(p, wi, wo, frame) - albedo * kInvPi) * frame.cosTheta(wi);
+    const SmoothResponse r = smoothResponse(p, wo, frame);
+    const glm::vec3 w = smoothWeights(r);
+    return r.albedo * (w.x * environmentDiffuseRadiance(e, r.direction) + w.y * environmentDiffuseRadiance(e, -r.direction) +
+                       w.z * environmentResidualMeanRadiance(e)) +
+           sumOverPeaks(e, 1.0f, wo, frame, [&](glm::vec3 wi, float) {
+               const float toward = glm::dot(r.direction, wi);
+               return evalLobe(p, wi, wo, frame) * std::max(frame.cosTheta(wi), 0.0f) -
+                      r.albedo * kInvPi * (w.x * std::max(toward, 0.0f) + w.y * std::max(-toward, 0.0f));
            });
 }
 
@@ -179,11 +217,16 @@ glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& fra
            });
 }
 
+// Ward's lobe (Beckmann-like, without GGX's long tails) takes its GGX stand-in (lobe_albedo.h): the
+// prefiltered level with its mean cosine, along its mean direction n + (R − n) t.
 glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
+    const glm::vec2 standIn = sampleLobeAlbedo(kWardStandIn + static_cast<int>(p.normalization),
+                                               std::max(frame.cosTheta(wo), 0.0f), std::sqrt(alpha));
+    const glm::vec3 direction = glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * standIn.y);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * lobeAlbedo(kWardAlbedo + static_cast<int>(p.normalization), wo, frame, alpha) *
-               glossyRadiance(e, mirrorDirection(wo, frame), alpha) +
+               glossyRadiance(e, direction, alpha, standIn.x) +
            peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                WardParams lobe = p;
                lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
@@ -264,7 +307,7 @@ concept SplitSum = requires(const typename M::Params& p) { splitSumAlpha(p); };
 template <class M>
 concept EquivalentLobe = requires(const typename M::Params& p) { lobeAlpha(p); };
 template <class M>
-concept DiffuseLike = requires(const typename M::Params& p, glm::vec3 w, const ShadingFrame& f) { diffuseLikeAlbedo(p, w, f); };
+concept DiffuseLike = requires(const typename M::Params& p, glm::vec3 w, const ShadingFrame& f) { smoothResponse(p, w, f); };
 
 }  // namespace
 
@@ -280,6 +323,7 @@ std::string environmentApproximation(BrdfModel model, std::span<const float> val
     const char* lobe = dispatch(model, []<class M>(M) -> const char* {
         if constexpr (!HasEnvironment<M>) return nullptr;
         else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction";
+        else if constexpr (std::is_same_v<M, Ward>) return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction, × its directional albedo";
         else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R × its directional albedo";
         else return "";
     });
@@ -288,8 +332,9 @@ std::string environmentApproximation(BrdfModel model, std::span<const float> val
     if (!*lobe) {
         const bool diffuseLike = dispatch(model, []<class M>(M) { return DiffuseLike<M>; });
         if (!diffuseLike) return "irradiance map";
-        if (lights == 0) return "irradiance map × the directional albedo";
-        return "irradiance map × the directional albedo + the lobe's departure from Lambert at " + std::to_string(lights) +
+        const std::string smooth = "irradiance map at ±(the lobe's mean direction) and the map's mean, matching the lobe's bands 0-2";
+        if (lights == 0) return smooth;
+        return smooth + " + the lobe's own shape at " + std::to_string(lights) +
                " peak light" + (lights == 1 ? "" : "s");
     }
     const float alpha = environmentRoughness(model, values);

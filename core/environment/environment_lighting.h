@@ -41,6 +41,8 @@ float environmentPeakAlpha(const Environment& environment, int k, float alpha);
 // The prefiltered radiance of the map less its peaks (r clamped to ≥ 1/kPrefilteredLevels).
 glm::vec3 environmentResidualSpecularRadiance(const Environment& environment, glm::vec3 worldDirection,
                                               float perceptualRoughness);
+// The mean radiance over the sphere of the map less its peaks (× the intensity).
+glm::vec3 environmentResidualMeanRadiance(const Environment& environment);
 // The inverse of environmentMapDirection.
 glm::vec3 environmentWorldDirection(const Environment& environment, glm::vec3 mapDirection);
 

@@ -110,6 +110,16 @@ EquirectImage irradianceMap(const std::vector<EquirectImage>& pyramid, StagedPro
 
 // --- peaks --------------------------------------------------------------------------------
 
+// The mean radiance over the sphere: Σ L Ω / 4π over the texels.
+glm::vec3 meanRadiance(const EquirectImage& image) {
+    glm::dvec3 sum(0.0);
+    for (int y = 0; y < image.height; ++y) {
+        const double solidAngle = texelSolidAngle(y, image.width, image.height);
+        for (int x = 0; x < image.width; ++x) sum += solidAngle * glm::dvec3(image.at(x, y));
+    }
+    return glm::vec3(sum / (4.0 * kPi));
+}
+
 // Each texel's radiance above the threshold T = kPeakThreshold × the mean luminance over the
 // sphere, as a share of its luminance Y: L·max(0, 1 − T/Y), so that the peak keeps its colour.
 EquirectImage peakRadiance(const EquirectImage& radiance) {
@@ -263,6 +273,7 @@ std::shared_ptr<const EnvironmentMap> makeEnvironmentMap(EquirectImage radiance,
         map->peakMinimumAlpha = std::max(map->peakMinimumAlpha, kPeakLobeToLight * kPeakWidening * light.sinRadius);
     EquirectImage residual = radiance;
     for (size_t i = 0; i < residual.texels.size(); ++i) residual.texels[i] -= peak.texels[i];
+    map->residualMean = meanRadiance(residual);
     const std::vector<EquirectImage> residualPyramid = pyramidOf(std::move(residual));
     for (int k = 1; k <= kPrefilteredLevels; ++k) {
         const float perceptual = static_cast<float>(k) / kPrefilteredLevels;

@@ -56,6 +56,7 @@ struct EnvironmentMap {
     std::vector<EquirectImage> prefiltered;       // kPrefilteredLevels images, roughness 1/L … 1
     std::vector<EquirectImage> residualPrefiltered;  // the same for the radiance less its peaks
     std::vector<EnvironmentPeakLight> peaks;      // at most kMaxPeakLights; none where no texel is a peak
+    glm::vec3 residualMean{0.0f};                 // mean radiance over the sphere of the map less its peaks
     float peakMinimumAlpha = kPeakMinimumAlpha;   // the GGX roughness from which glossy lobes take the peaks
     EnvironmentDistribution distribution;         // for the Monte-Carlo reference's light sampling
 };

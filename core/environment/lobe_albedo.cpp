@@ -60,7 +60,8 @@ glm::vec2 splitSum(const TableTexel& t) {
 // (4 v·h)), a Phong lobe of the equivalent exponent m = (2/α² − 2)/4 around the mirror direction
 // ((m + 1)/(2π) cos^m δ) and the uniform hemisphere (1/(2π): bounded weights where the forms'
 // 1/cos θ_i makes f_r cos θ_i flat up to the horizon).
-float lobeAlbedo(const TableTexel& t, const std::function<float(glm::vec3 light, glm::vec3 view, float alpha)>& brdf) {
+// Returns (∫ f_r cos θ_i ω_i dω_i, ∫ f_r cos θ_i dω_i).
+glm::vec4 lobeMoments(const TableTexel& t, const std::function<float(glm::vec3 light, glm::vec3 view, float alpha)>& brdf) {
     constexpr int kSamples = 256;  // per strategy
     const float m = (2.0f / (t.alpha * t.alpha) - 2.0f) / 4.0f;
     const glm::vec3 mirror{-t.view.x, -t.view.y, t.view.z};
@@ -73,7 +74,7 @@ float lobeAlbedo(const TableTexel& t, const std::function<float(glm::vec3 light,
         const float phong = cosMirror > 0.0f ? (m + 1.0f) / (2.0f * kPi) * std::pow(cosMirror, m) : 0.0f;
         return (ggx + phong + 0.5f * kInvPi) / 3.0f;
     };
-    double sum = 0.0;
+    glm::dvec4 sum(0.0);
     for (int i = 0; i < kSamples; ++i) {
         const glm::vec2 u = hammersley(i, kSamples);
         const glm::vec3 halfway = sampleGgxHalfVector(u, t.alpha);
@@ -84,9 +85,44 @@ float lobeAlbedo(const TableTexel& t, const std::function<float(glm::vec3 light,
             aroundMirror.toWorld({sinMirror * std::cos(phi), sinMirror * std::sin(phi), cosMirror}),
             {sine * std::cos(phi), sine * std::sin(phi), cosine}};
         for (const glm::vec3& light : lights)
-            if (light.z > 0.0f) sum += brdf(light, t.view, t.alpha) * light.z / density(light);
+            if (light.z > 0.0f) sum += glm::dvec4(light, 1.0) * static_cast<double>(brdf(light, t.view, t.alpha) * light.z / density(light));
     }
-    return static_cast<float>(sum / (3 * kSamples));
+    return glm::vec4(sum / (3.0 * kSamples));
+}
+
+// The mean cosine to R of the GGX prefiltering kernel of roughness α (environment_map.cpp: light
+// directions of density D(h)/4 around R = n = v, weighted by cos θ_l): ∫ D cos² θ dω / ∫ D cos θ dω
+// over the hemisphere of R, θ_h = θ/2; for perceptual roughness r = i/(size − 1), i < size.
+std::vector<float> ggxKernelMeanCosines(int size) {
+    constexpr int kSteps = 4096;
+    std::vector<float> means(size);
+    for (int i = 0; i < size; ++i) {
+        const float r = std::max(static_cast<float>(i) / (size - 1), 1e-3f), alpha = r * r;
+        double weight = 0.0, moment = 0.0;
+        for (int step = 0; step < kSteps; ++step) {
+            const float theta = (step + 0.5f) * 0.5f * kPi / kSteps, cosHalf = std::cos(0.5f * theta);
+            const double w = distributionGgx(cosHalf, 1.0f - cosHalf * cosHalf, alpha) * std::cos(theta) * std::sin(theta);
+            weight += w, moment += w * std::cos(theta);
+        }
+        means[i] = static_cast<float>(moment / weight);
+    }
+    return means;
+}
+
+// Ward's GGX stand-in at a texel (lobe_albedo.h): the perceptual roughness whose kernel's mean
+// cosine (falling with r, interpolated in `means`) is the lobe's |∫ f_r cos ω| / ∫ f_r cos, and the
+// factor t with n + (R − n) t along the lobe's mean direction (q = its x/z, R = (−sin θ_o, 0, cos θ_o)).
+glm::vec2 wardStandIn(const TableTexel& t, const glm::vec4& moments, const std::vector<float>& means) {
+    const float meanCosine = glm::length(glm::vec3(moments)) / moments.w;
+    const auto past = std::find_if(means.begin(), means.end(), [&](float mean) { return mean < meanCosine; });
+    float perceptual = 1.0f;
+    if (past == means.begin()) perceptual = 0.0f;
+    else if (past != means.end()) {
+        const int i = static_cast<int>(past - means.begin());
+        perceptual = (i - 1 + (means[i - 1] - meanCosine) / (means[i - 1] - means[i])) / (means.size() - 1.0f);
+    }
+    const float q = moments.x / moments.z, sinOut = t.view.x, cosOut = t.view.z;
+    return {perceptual, -q / (sinOut + q * (cosOut - 1.0f))};
 }
 
 }  // namespace
@@ -97,7 +133,7 @@ const LobeAlbedoTables& lobeAlbedoTables() {
         result.texels.resize(kLobeAlbedoTables * kLobeAlbedoSize * kLobeAlbedoSize);
         const ShadingFrame frame = ShadingFrame::fromNormalAndTangent({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f});
         const auto lobe = [](auto brdf) {
-            return [brdf](const TableTexel& t) { return glm::vec2(lobeAlbedo(t, brdf), 0.0f); };
+            return [brdf](const TableTexel& t) { return glm::vec2(lobeMoments(t, brdf).w, 0.0f); };
         };
         std::vector<std::function<void()>> jobs{[&] { fillTable(result, kGgxSplitSum, 0.0f, splitSum); }};
         for (int form = 0; form < 4; ++form) {
@@ -117,18 +153,23 @@ const LobeAlbedoTables& lobeAlbedoTables() {
                 }));
             });
         }
-        for (int normalization = 0; normalization < 2; ++normalization)
-            jobs.push_back([&, normalization] {
-                fillTable(result, kWardAlbedo + normalization, kLobeAlbedoMinAlpha, lobe([&, normalization](glm::vec3 l, glm::vec3 v, float alpha) {
-                    const WardParams p{glm::vec3(0.0f), glm::vec3(1.0f), alpha, alpha, static_cast<WardNormalization>(normalization)};
-                    return wardSpecular(p, l, v, frame);
-                }));
+        for (int normalization = 0; normalization < 2; ++normalization) {
+            const auto ward = [&, normalization](glm::vec3 l, glm::vec3 v, float alpha) {
+                const WardParams p{glm::vec3(0.0f), glm::vec3(1.0f), alpha, alpha, static_cast<WardNormalization>(normalization)};
+                return wardSpecular(p, l, v, frame);
+            };
+            jobs.push_back([&, normalization, ward] { fillTable(result, kWardAlbedo + normalization, kLobeAlbedoMinAlpha, lobe(ward)); });
+            jobs.push_back([&, normalization, ward] {
+                const std::vector<float> means = ggxKernelMeanCosines(1024);
+                fillTable(result, kWardStandIn + normalization, kLobeAlbedoMinAlpha,
+                          [&](const TableTexel& t) { return wardStandIn(t, lobeMoments(t, ward), means); });
             });
+        }
         std::atomic<size_t> next{0};
         const auto work = [&] {
             for (size_t job = next++; job < jobs.size(); job = next++) jobs[job]();
         };
-        std::vector<std::thread> threads(std::clamp(std::thread::hardware_concurrency(), 1u, 11u) - 1);
+        std::vector<std::thread> threads(std::clamp(std::thread::hardware_concurrency(), 1u, 13u) - 1);
         for (std::thread& thread : threads) thread = std::thread(work);
         work();
         for (std::thread& thread : threads) thread.join();

@@ -20,9 +20,13 @@ inline constexpr int kLobeAlbedoSize = 32;
 // Blinn-Phong and Phong form (0-3, as BlinnForm and PhongForm; the lecture, max-cosine and
 // half-vector forms × the normalised form's factor (n + c)/(cπ), c = 8 and 2, so that the table
 // stays near 1/cos θ_o: the hooks divide by it) at n = 2/α² − 2 and (2/α² − 2)/4, and per Ward
-// normalisation (0-1, as WardNormalization) at α_x = α_y = α. Lobes take α ≥ kLobeAlbedoMinAlpha.
+// normalisation (0-1, as WardNormalization) at α_x = α_y = α; then per Ward normalisation the GGX
+// stand-in for its lobe on a smooth map (x: the perceptual roughness √α' of the prefiltered level
+// whose GGX kernel (n = v = R) has the lobe's mean cosine to its mean direction, y: that direction
+// as the factor t of n + (R − n) t). Lobes take α ≥ kLobeAlbedoMinAlpha.
 // Computed on first use, a thread per table, and kept in the disk cache (util/disk_cache.h).
-enum LobeAlbedoTable { kGgxSplitSum = 0, kBlinnPhongAlbedo = 1, kPhongAlbedo = 5, kWardAlbedo = 9, kLobeAlbedoTables = 11 };
+enum LobeAlbedoTable { kGgxSplitSum = 0, kBlinnPhongAlbedo = 1, kPhongAlbedo = 5, kWardAlbedo = 9, kWardStandIn = 11,
+                       kLobeAlbedoTables = 13 };
 inline constexpr float kLobeAlbedoMinAlpha = 0.01f;
 
 struct LobeAlbedoTables {

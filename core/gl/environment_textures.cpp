@@ -95,6 +95,7 @@ void EnvironmentTextures::prepare(const Environment& environment) {
     block.flags = {map ? 1 : 0, map && environment.showAsBackground ? 1 : 0, peaks, 0};
     if (map) {
         block.sizes = {map->radiance.width, map->radiance.height, kPrefilteredWidth, kPrefilteredHeight};
+        block.residualMean = glm::vec4(environmentResidualMeanRadiance(environment), 0.0f);
     }
     for (int k = 0; k < peaks; ++k) {
         block.peakDirections[k] = glm::vec4(environmentPeakDirection(environment, k), map->peaks[k].sinRadius);

@@ -1,6 +1,6 @@
 // The environment on the GPU: uploads a scene's environment map (base radiance, prefiltered
 // levels and the irradiance map as a texture array; the lobes' albedo tables once) when the map changes, never per frame, and
-// each frame fills the EnvironmentBlock (rotation, intensity, flags, sizes, peak lights) and binds the textures.
+// each frame fills the EnvironmentBlock (rotation, intensity, flags, sizes, the rest's mean, peak lights) and binds the textures.
 // C++ mirror of the block in shaders/common/environment.glsl. It computes nothing itself.
 #pragma once
 
@@ -19,10 +19,11 @@ struct alignas(16) EnvironmentBlockStd140 {
     glm::vec4 transform;  // x: cos(rotation), y: sin(rotation), z: intensity, w: peaks' minimum α
     glm::ivec4 flags;     // x: enabled, y: shown as background, z: peak lights
     glm::ivec4 sizes;     // x, y: base size; z, w: prefiltered size
+    glm::vec4 residualMean;  // rgb: mean radiance of the map less its peaks, × the intensity
     glm::vec4 peakDirections[kMaxPeakLights];   // xyz: world space (turned by the rotation); w: sine of its radius
     glm::vec4 peakIrradiances[kMaxPeakLights];  // rgb [W/m²], × the intensity
 };
-static_assert(sizeof(EnvironmentBlockStd140) == (3 + 2 * kMaxPeakLights) * 16, "EnvironmentBlock std140 layout");
+static_assert(sizeof(EnvironmentBlockStd140) == (4 + 2 * kMaxPeakLights) * 16, "EnvironmentBlock std140 layout");
 
 // Binding point and texture units, clear of the renderer's blocks 0-2 and low units.
 inline constexpr GLuint kEnvironmentBinding = 6;

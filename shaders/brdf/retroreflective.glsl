@@ -21,13 +21,27 @@ vec3 ambientReflectanceRetroreflective(MaterialParams p, vec3 wo, ShadingFrame f
     return p.albedo * (0.5 * (1.0 - cosOut * log(1.0 + 1.0 / cosOut)));
 }
 
+// Twin of diffuseMomentsRetroreflective() (see retroreflective.h): the diffuse law's band-1 and
+// band-2 moments per unit k_a.
+vec2 diffuseMomentsRetroreflective(MaterialParams p, float cosOut) {
+    if (p.limb_darkening == LIMB_DARKENING_MINNAERT) {
+        float k = p.minnaert_k;
+        return vec2((k + 1.0) / (k + 2.0), k / (k + 3.0));
+    }
+    float mu = max(cosOut, 1e-4);
+    float i0 = 1.0 - mu * log(1.0 + 1.0 / mu), i1 = 0.5 - mu * i0, i2 = 1.0 / 3.0 - mu * i1;
+    return vec2(i1 / i0, 1.5 * i2 / i0 - 0.5);
+}
+
 #ifdef GLINT_HAS_ENVIRONMENT
-// Environment hook: twin of environmentLightingRetroreflective in core/environment/environment_lighting.cpp.
-// The albedo × E(n)/π plus the lobe's departure from Lambert's shape at the peak lights.
+// Environment hook: twin of lightingOf(RetroreflectiveParams) in core/environment/environment_lighting.cpp.
+// The irradiance map at ±n and the mean matching the diffuse law's bands 0-2, both lobes' own
+// shape at the peak lights.
 vec3 environmentLightingRetroreflective(MaterialParams p, vec3 wo, ShadingFrame frame) {
     vec3 albedo = ambientReflectanceRetroreflective(p, wo, frame);
+    vec3 weights = environmentSmoothWeights(diffuseMomentsRetroreflective(p, cosTheta(frame, wo)));
     vec3 peaks = vec3(0.0);
-    ENVIRONMENT_ADD_PEAKS(peaks, 1.0, wo, frame, (evalRetroreflective(p, wi, wo, frame) - albedo * INV_PI) * cosTheta(frame, wi))
-    return albedo * environmentDiffuseRadiance(frame.normal) + peaks;
+    ENVIRONMENT_ADD_SMOOTH_PEAKS(peaks, albedo, frame.normal, weights, wo, frame, evalRetroreflective(p, wi, wo, frame))
+    return environmentSmoothRadiance(albedo, frame.normal, weights) + peaks;
 }
 #endif

@@ -31,13 +31,16 @@ vec3 wardPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float 
     return p.specular * (wardSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
 }
 
-// Environment hook: twin of environmentLightingWard in core/environment/environment_lighting.cpp.
+// Environment hook: twin of lightingOf(WardParams) in core/environment/environment_lighting.cpp: the
+// lobe's GGX stand-in, the prefiltered level with its mean cosine along its mean direction.
 vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float alpha = sqrt(p.roughness_x * p.roughness_y);
+    vec2 standIn = sampleLobeAlbedo(WARD_STAND_IN + p.normalization, max(cosTheta(frame, wo), 0.0), sqrt(alpha));
+    vec3 direction = normalize(frame.normal + (environmentMirrorDirection(wo, frame) - frame.normal) * standIn.y);
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, wardPeakLobe(p, wi, wo, frame, alpha, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
            p.specular * environmentLobeAlbedo(WARD_ALBEDO + p.normalization, wo, frame, alpha) *
-               environmentGlossyRadiance(environmentMirrorDirection(wo, frame), alpha) + peaks;
+               environmentGlossyRadianceAt(direction, alpha, standIn.x) + peaks;
 }
 #endif

@@ -15,6 +15,7 @@ layout(std140) uniform EnvironmentBlock {
     ivec4 environmentFlags;     // x: 1 when the scene has an environment; y: 1 when shown as background;
                                 // z: the map's peak lights
     ivec4 environmentSizes;     // x, y: base level size; z, w: prefiltered level size
+    vec4 environmentResidualMean;  // rgb: mean radiance of the map less its peaks, × the intensity
     vec4 environmentPeakDirections[MAX_PEAK_LIGHTS];  // xyz: world space; w: sine of its radius
     vec4 environmentPeakIrradiances[MAX_PEAK_LIGHTS]; // rgb [W/m²], × the intensity
 };
@@ -22,8 +23,9 @@ uniform sampler2D environmentBase;             // the radiance image
 uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
                                                // layer L + k: roughness k/L of the map less its peaks
 uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: GGX split-sum scale A and bias B,
-                                               // then one albedo (r) per Blinn-Phong, Phong and Ward variant
-const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9;  // LobeAlbedoTable
+                                               // then one albedo (r) per Blinn-Phong, Phong and Ward variant,
+                                               // then Ward's GGX stand-in (r', t) per variant
+const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9, WARD_STAND_IN = 11;  // LobeAlbedoTable
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
 // in a specialised program (gl/shader_specialisation.h), else the block's flags.
@@ -109,30 +111,39 @@ float environmentPeakAlpha(int k, float alpha) {
     return min(1.0, sqrt(alpha * alpha + spread * spread));
 }
 
-// Twin of peakLighting() in environment_lighting.cpp: adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k
-// over the peak lights where a lobe of roughness ALPHA takes them, LOBE being the glossy lobe's
-// f_r cos θ_i (Fresnel included) for the light direction `wi` at the widened roughness `widened`
-// (a macro: GLSL has no callbacks).
-#define ENVIRONMENT_ADD_PEAKS(SUM, ALPHA, WO, FRAME, LOBE)                          \
+// Twin of sumOverPeaks() in environment_lighting.cpp: runs STATEMENT for every peak light k
+// where a lobe of roughness ALPHA takes them, with its direction `wi` and the widened roughness
+// `widened` (a macro: GLSL has no callbacks).
+#define ENVIRONMENT_EACH_PEAK(ALPHA, WO, FRAME, STATEMENT)                          \
     if (environmentUsesPeaks(ALPHA) && cosTheta(FRAME, WO) > 0.0) {                 \
         for (int k = 0; k < environmentPeakCount(); ++k) {                          \
             vec3 wi = environmentPeakDirection(k);                                  \
             float widened = environmentPeakAlpha(k, ALPHA);                         \
-            if (cosTheta(FRAME, wi) > 0.0) SUM += (LOBE) * environmentPeakIrradiance(k); \
+            STATEMENT                                                               \
         }                                                                           \
     }
 
-// Twin of glossyRadiance(): the prefiltered map (environmentSpecularRadiance), less its peaks where
-// the lobe takes them (residualPrefilteredRadiance(), environment_map.cpp: r clamped to ≥ 1/L), as
-// one pair of lookups whose levels are picked (llvmpipe would run both arms of a choice of calls).
-vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
+// Twin of peakLighting(): adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k over the peak lights above the
+// surface, LOBE being the glossy lobe's f_r cos θ_i (Fresnel included) for `wi` at `widened`.
+#define ENVIRONMENT_ADD_PEAKS(SUM, ALPHA, WO, FRAME, LOBE) \
+    ENVIRONMENT_EACH_PEAK(ALPHA, WO, FRAME, if (cosTheta(FRAME, wi) > 0.0) SUM += (LOBE) * environmentPeakIrradiance(k);)
+
+// Twin of glossyRadiance(): the prefiltered map (environmentSpecularRadiance) at perceptual roughness
+// PERCEPTUAL, less its peaks where a lobe of GGX roughness ALPHA takes them (residualPrefilteredRadiance(),
+// environment_map.cpp: r clamped to ≥ 1/L), as one pair of lookups whose levels are picked (llvmpipe
+// would run both arms of a choice of calls).
+vec3 environmentGlossyRadianceAt(vec3 worldDirection, float alpha, float perceptual) {
     bool residual = environmentUsesPeaks(alpha);
     vec3 d = environmentMapDirection(worldDirection);
-    float level = clamp(sqrt(alpha) * float(PREFILTERED_LEVELS), residual ? 1.0 : 0.0, float(PREFILTERED_LEVELS));
+    float level = clamp(perceptual * float(PREFILTERED_LEVELS), residual ? 1.0 : 0.0, float(PREFILTERED_LEVELS));
     int lower = min(int(level), PREFILTERED_LEVELS - 1);
     float t = level - float(lower);
     int first = residual ? PREFILTERED_LEVELS + 1 + lower : lower;
     return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + sampleEnvironmentLevel(first + 1, d) * t);
+}
+
+vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
+    return environmentGlossyRadianceAt(worldDirection, alpha, sqrt(alpha));
 }
 
 // Table TABLE at (cos θ_o, r): twin of sampleLobeAlbedo() in lobe_albedo.cpp.
@@ -155,6 +166,26 @@ vec2 sampleLobeAlbedo(int table, float cosOut, float perceptualRoughness) {
 vec3 environmentMirrorDirection(vec3 wo, ShadingFrame frame) {
     return 2.0 * cosTheta(frame, wo) * frame.normal - wo;
 }
+
+// Twin of smoothWeights(): the weights of E(u)/π, E(−u)/π and the mean radiance matching a
+// diffuse-like lobe's bands 0-2 (BANDS: its first two Legendre moments per unit albedo).
+vec3 environmentSmoothWeights(vec2 bands) {
+    return vec3(0.75 * bands.x + 2.0 * bands.y, 2.0 * bands.y - 0.75 * bands.x, 1.0 - 4.0 * bands.y);
+}
+
+// Twin of the diffuse-like lightingOf(): the lookups for ALBEDO, the lobe's direction U and WEIGHTS,
+// and (a macro) each peak light's own f_r cos θ_k in place of what they gave it, LOBE being f_r for `wi`.
+vec3 environmentSmoothRadiance(vec3 albedo, vec3 u, vec3 weights) {
+    return albedo * (weights.x * environmentDiffuseRadiance(u) + weights.y * environmentDiffuseRadiance(-u) +
+                     weights.z * environmentResidualMean.rgb);
+}
+#define ENVIRONMENT_ADD_SMOOTH_PEAKS(SUM, ALBEDO, U, WEIGHTS, WO, FRAME, LOBE)                                      \
+    ENVIRONMENT_EACH_PEAK(1.0, WO, FRAME, {                                                                         \
+        float toward = dot(U, wi);                                                                                  \
+        SUM += ((LOBE) * max(cosTheta(FRAME, wi), 0.0) -                                                            \
+                (ALBEDO) * INV_PI * ((WEIGHTS).x * max(toward, 0.0) + (WEIGHTS).y * max(-toward, 0.0))) *           \
+               environmentPeakIrradiance(k);                                                                        \
+    })
 
 // Twin of lobeAlbedo(): the directional albedo of table TABLE for a lobe of GGX roughness ALPHA.
 float environmentLobeAlbedo(int table, vec3 wo, ShadingFrame frame, float alpha) {
