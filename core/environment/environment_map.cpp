@@ -123,12 +123,7 @@ glm::vec3 meanRadiance(const EquirectImage& image) {
 // Each texel's radiance above the threshold T = kPeakThreshold × the mean luminance over the
 // sphere, as a share of its luminance Y: L·max(0, 1 − T/Y), so that the peak keeps its colour.
 EquirectImage peakRadiance(const EquirectImage& radiance) {
-    double power = 0.0;
-    for (int y = 0; y < radiance.height; ++y) {
-        const float solidAngle = texelSolidAngle(y, radiance.width, radiance.height);
-        for (int x = 0; x < radiance.width; ++x) power += relativeLuminance(radiance.at(x, y)) * solidAngle;
-    }
-    const float threshold = kPeakThreshold * static_cast<float>(power / (4.0 * kPi));
+    const float threshold = kPeakThreshold * relativeLuminance(meanRadiance(radiance));  // Y is linear in L
     EquirectImage peak(radiance.width, radiance.height);
     for (size_t i = 0; i < peak.texels.size(); ++i) {
         const float y = relativeLuminance(radiance.texels[i]);
