@@ -119,8 +119,6 @@ public:
     void compileInBackground(std::unique_ptr<ProgramCompiler> compiler);
     // Takes the programs the compiler has finished; true when any arrived (the editor redraws).
     bool adoptCompiledPrograms();
-    // Whether the compiler holds programs this renderer asked for.
-    bool compilingPrograms() const { return !pendingPrograms_.empty(); }
     // What drawing the scene at width×height would find (the editor asks before each frame, and
     // keeps the frame on screen rather than draw one that is not All or WithStandIns): every program
     // built; stand-ins for those still compiling; or programs that have no stand-in and would be
