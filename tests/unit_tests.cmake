@@ -1,4 +1,4 @@
-# The unit, property, GPU and editor tests (GoogleTest) and the command-line checks: included by
+# The unit, property and editor tests (GoogleTest) and the command-line checks: included by
 # tests/CMakeLists.txt unless GLINT_UNIT_TESTS is off. The test command runs them in its sanitizer
 # build; its optimised build leaves them out (third_party/bootstrap.sh), so each runs once.
 
@@ -56,18 +56,6 @@ add_executable(gltf_assimp_tests gltf_assimp_test.cpp)
 target_compile_definitions(gltf_assimp_tests PRIVATE ${GLINT_TEST_DEFINITIONS})
 target_link_libraries(gltf_assimp_tests PRIVATE glint_core assimp::assimp GTest::gtest_main)
 glint_add_gtests(gltf_assimp_tests SHARDS 1)
-
-# GPU: one OSMesa context per binary; DISPLAY is unset to prove no X server is needed.
-add_executable(gpu_tests brdf_gpu_sweep_test.cpp classroom_gpu_test.cpp custom_brdf_gpu_test.cpp environment_gpu_test.cpp
-  fused_display_test.cpp gpu_reference_test.cpp lights_gpu_test.cpp merl_gpu_test.cpp snapshot_test.cpp mesh_gpu_test.cpp
-  overlay_canvas_test.cpp overlay_gpu_test.cpp plot_sampling_gpu_test.cpp plots_snapshot_test.cpp shadows_gpu_test.cpp
-  texture_gpu_test.cpp specialisation_gpu_test.cpp)
-target_sources(gpu_tests PRIVATE mesh_detail_gpu_test.cpp)  # large meshes' stand-ins
-target_sources(gpu_tests PRIVATE transmission_gpu_test.cpp)  # glass and openpbr transmission see other objects
-target_compile_definitions(gpu_tests PRIVATE ${GLINT_TEST_DEFINITIONS} GLINT_EXECUTABLE="$<TARGET_FILE:glint>")
-add_dependencies(gpu_tests glint)  # the custom-BRDF probe runs `glint probe-brdf` in a child
-target_link_libraries(gpu_tests PRIVATE glint_app_lib GTest::gtest_main)
-glint_add_gtests(gpu_tests SHARDS 6 ENVIRONMENT DISPLAY= LP_NUM_THREADS=2)
 
 # The editor's document actions (open, drop, save, autosave) without a window.
 add_executable(editor_tests editor_compare_test.cpp editor_document_test.cpp editor_objects_test.cpp editor_interchange_test.cpp

@@ -2,9 +2,9 @@
 # The README's two commands: installs what is missing (Debian packages), configures and builds
 # Glint, then either runs the editor (`run`, with any arguments passed on to glint) or the
 # whole test suite (`test`), each test once: the normal, optimised build runs what users see
-# (pictures, the GUI, the benchmark, the soak), and one clang build runs the unit, GPU, editor and
-# command-line tests under AddressSanitizer + UndefinedBehaviorSanitizer, and the fuzz targets on
-# their corpus. Idempotent; quick when everything is already there.
+# (the GPU tests and other pictures, the GUI, the benchmark, the soak), and one clang build runs
+# the unit, editor and command-line tests under AddressSanitizer + UndefinedBehaviorSanitizer, and
+# the fuzz targets on their corpus. Idempotent; quick when everything is already there.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${GLINT_BUILD_DIR:-$root/build}"
@@ -24,7 +24,7 @@ configure_and_build() {
 # CMakeLists.txt) and -g1 keep the test command's two builds inside CI's time budget.
 # The unit tests are left out here: the sanitizer build below runs them.
 configure_and_build "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
-  -DGLINT_UNITY_BUILD=ON -DGLINT_UNIT_TESTS=OFF
+  -DGLINT_UNITY_BUILD=ON -DGLINT_UNIT_TESTS=OFF -DGLINT_SHARD_GTESTS=ON
 [[ $mode == run ]] && exec "$build/app/glint" "$@"
 
 # test: each suite's ctest summary is collected, then one closing line for all of them.
@@ -37,7 +37,7 @@ run_suite() {  # run_suite NAME DIR [CTEST ARGS…]
   echo "=== $name ==="
   (cd "$dir" && ctest --output-on-failure --timeout 300 "$@") 2>&1 | tee "$logs/$name.log" || suite_failed=1
 }
-# One clang-14 build runs the unit, GPU, editor and command-line tests under AddressSanitizer +
+# One clang-14 build runs the unit, editor and command-line tests under AddressSanitizer +
 # UndefinedBehaviorSanitizer and holds the libFuzzer targets (core instrumented for them), which run
 # on their corpus in the same ctest, and the test that compiles each source of its unity batches on
 # its own (`includes`). -O1, as AddressSanitizer's own documentation advises: the numerical
