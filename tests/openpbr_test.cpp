@@ -34,7 +34,7 @@ glm::vec3 viewAt(float theta) { return {std::sin(theta), 0.0f, std::cos(theta)};
 // ∫ f cos θ_i dω_i parametrised by the half vector around the mirror direction (θ_h = (π/2)t⁴)
 // so that lobes down to α = 0.001 are resolved; diffuse lobes are smooth in it too.
 template <typename Brdf>
-glm::vec3 albedoAroundMirror(const Brdf& brdf, glm::vec3 wo, int thetaSteps = 384, int phiSteps = 192) {
+glm::vec3 albedoAroundMirror(const Brdf& brdf, glm::vec3 wo, int thetaSteps = 256, int phiSteps = 96) {
     glm::dvec3 sum(0.0);
     const double halfPi = 0.5 * M_PI;
     for (int i = 0; i < thetaSteps; ++i) {
