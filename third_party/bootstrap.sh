@@ -40,8 +40,9 @@ run_suite() {  # run_suite NAME DIR [CTEST ARGS…]
 # One clang-14 build runs the unit, editor and command-line tests under AddressSanitizer +
 # UndefinedBehaviorSanitizer and holds the libFuzzer targets (core instrumented for them), which run
 # on their corpus in the same ctest, and the test that compiles each source of its unity batches on
-# its own (`includes`). -O1, as AddressSanitizer's own documentation advises: the numerical
-# property tests run several times faster than at -O0, and every report keeps its file and line.
+# its own (`includes`). The program at -O1, as AddressSanitizer's own documentation advises: the
+# numerical property tests run several times faster than at -O0, and every report keeps its file
+# and line (the tests' own code is compiled at -O0, uninstrumented: tests/CMakeLists.txt).
 # A folder configured by an older test command with another compiler is configured afresh.
 sanitize="$root/build-sanitize"
 if [[ -f "$sanitize/CMakeCache.txt" ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$sanitize/CMakeCache.txt"; then
