@@ -94,6 +94,21 @@ inline glm::vec3 fresnelSchlick(glm::vec3 f0, float cosIncident) {
     return f0 + (1.0f - f0) * (m2 * m2 * m);
 }
 
+// F82-tint (Hoffman, "Generalization of Adobe's Fresnel Model", 2023; OpenPBR §metal): Schlick's
+// form less a·μ(1 − μ)⁶ (μ = cos θ), a chosen so that F(1/7) = tint × Schlick's F(1/7) (θ ≈ 82°,
+// near where a metal's curve dips below Schlick's most).
+inline constexpr float kF82Cosine = 1.0f / 7.0f;
+inline float f82Weight(float cosine) {
+    const float m = std::clamp(1.0f - cosine, 0.0f, 1.0f), m3 = m * m * m;
+    return cosine * m3 * m3;
+}
+inline glm::vec3 f82Coefficient(glm::vec3 f0, glm::vec3 tint) {
+    return fresnelSchlick(f0, kF82Cosine) * (1.0f - tint) / f82Weight(kF82Cosine);
+}
+inline glm::vec3 fresnelF82(glm::vec3 f0, glm::vec3 coefficient, float cosine) {
+    return glm::max(fresnelSchlick(f0, cosine) - coefficient * f82Weight(cosine), glm::vec3(0.0f));
+}
+
 // Brewster's angle, where R_p = 0: tan θ_B = η. Critical angle (η < 1): sin θ_c = η.
 inline float brewsterAngle(float eta) { return std::atan(eta); }
 inline float criticalAngle(float eta) { return eta < 1.0f ? std::asin(eta) : NAN; }

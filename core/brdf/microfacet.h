@@ -33,6 +33,22 @@ inline glm::vec3 microfacetFresnel(FresnelMode mode, float cosDifference, glm::v
     return fresnelComplexIndex(cosDifference, ior, extinction);
 }
 
+// The Fresnel choice as the environment's split sum and peak lights take it: Schlick's form from F0
+// (the split sum integrates it as F0·A + B), in the exact mode the F82-tint form (fresnel.h) fitted
+// to the exact Fresnel at cos θ = 1/7 (Hoffman, "Fresnel Equations Considered Harmful", 2019). On
+// aluminium the largest error over all angles falls from 0.117 to 0.017, on iron from 0.174 to
+// 0.019; the coefficient is 0 in Schlick's mode.
+struct F82Fresnel {
+    glm::vec3 f0, coefficient;
+};
+
+inline F82Fresnel f82FresnelOf(FresnelMode mode, glm::vec3 ior, glm::vec3 extinction) {
+    const glm::vec3 f0 = fresnelF0(ior, extinction);
+    if (mode == FresnelMode::Schlick) return {f0, glm::vec3(0.0f)};
+    const glm::vec3 tint = fresnelComplexIndex(kF82Cosine, ior, extinction) / fresnelSchlick(f0, kF82Cosine);
+    return {f0, f82Coefficient(f0, tint)};
+}
+
 // sin²θ_h from |n × h|², which keeps its precision at the peak of sharp lobes (Filament).
 inline float sinSquared(glm::vec3 normal, glm::vec3 halfway) {
     const glm::vec3 crossed = glm::cross(normal, halfway);

@@ -49,18 +49,6 @@ inline glm::vec3 schlickF90(glm::vec3 f0, glm::vec3 f90, float cosine) {
 // F0 of a dielectric interface of relative index η: ((η − 1)/(η + 1))².
 inline float dielectricF0(float eta) { return ((eta - 1.0f) / (eta + 1.0f)) * ((eta - 1.0f) / (eta + 1.0f)); }
 
-// F82-tint metal (Hoffman, "Generalization of Adobe's Fresnel Model", 2023; OpenPBR §metal):
-// F = Schlick(F0) − a·c(1 − c)^6 with a chosen so that F(1/7) = tint·Schlick(F0)(1/7).
-inline glm::vec3 f82Coefficient(glm::vec3 f0, glm::vec3 tint) {
-    constexpr float cosBar = 1.0f / 7.0f;
-    const float m = 1.0f - cosBar;
-    return schlickF90(f0, glm::vec3(1.0f), cosBar) * (1.0f - tint) / (cosBar * m * m * m * m * m * m);
-}
-inline glm::vec3 fresnelF82(glm::vec3 f0, glm::vec3 coefficient, float cosine) {
-    const float m = std::clamp(1.0f - cosine, 0.0f, 1.0f);
-    return glm::max(schlickF90(f0, glm::vec3(1.0f), cosine) - coefficient * (cosine * m * m * m * m * m * m),
-                    glm::vec3(0.0f));
-}
 
 // EON: energy-preserving Fujii Oren-Nayar (Portsmouth et al., "EON: A practical energy-preserving
 // rough diffuse BRDF", JCGT 14(1), 2025), with its polynomial E_FON; ρ albedo, r ∈ [0, 1].

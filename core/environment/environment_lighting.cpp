@@ -102,9 +102,9 @@ glm::vec3 sumOverPeaks(const Environment& e, float alpha, glm::vec3 wo, const Sh
 
 // The peaks as lights: Σ_k f_r(ω_k, ω_o; α_k) cos θ_k E_k over those above the surface,
 // `reflectedCos(ω_i, α_k)` giving the glossy lobe's f_r cos θ_i (Fresnel included) widened to GGX
-// roughness α_k for light k's extent. The microfacet lobes take Schlick's Fresnel with the
-// material's exact F0, as the split sum's F0·A + B does (the exact complex-index equations per
-// light cost a quarter of a studio frame on llvmpipe).
+// roughness α_k for light k's extent. The microfacet lobes take the Fresnel of f82FresnelOf, as the
+// split sum does (the exact complex-index equations per light cost a quarter of a studio frame on
+// llvmpipe).
 template <class ReflectedCos>
 glm::vec3 peakLighting(const Environment& e, float alpha, glm::vec3 wo, const ShadingFrame& frame, ReflectedCos&& reflectedCos) {
     return sumOverPeaks(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
@@ -243,24 +243,26 @@ glm::vec3 dominantDirection(glm::vec3 wo, const ShadingFrame& frame, float alpha
     return glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * factor);
 }
 
-// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B) with F0
-// from n + iκ; of the map less its peaks where the lobe takes them as directions.
-glm::vec3 splitSumSpecular(glm::vec3 ior, glm::vec3 extinction, float alpha, glm::vec3 wo, const ShadingFrame& frame,
+// Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B − a·C) with
+// the F82 form's F0 and a (f82FresnelOf); of the map less its peaks where the lobe takes them as directions.
+glm::vec3 splitSumSpecular(const F82Fresnel& fresnel, float alpha, glm::vec3 wo, const ShadingFrame& frame,
                            const Environment& e) {
-    const float perceptual = std::sqrt(alpha);
-    const glm::vec2 scaleBias = sampleLobeAlbedo(kGgxSplitSum, std::max(frame.cosTheta(wo), 0.0f), perceptual);
-    return glossyRadiance(e, dominantDirection(wo, frame, alpha), alpha) *
-           (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
+    const float perceptual = std::sqrt(alpha), cosOut = std::max(frame.cosTheta(wo), 0.0f);
+    const glm::vec2 scaleBias = sampleLobeAlbedo(kGgxSplitSum, cosOut, perceptual);
+    const glm::vec3 f82 = fresnel.coefficient == glm::vec3(0.0f)
+                              ? glm::vec3(0.0f)
+                              : fresnel.coefficient * sampleLobeAlbedo(kGgxF82, cosOut, perceptual).x;
+    return glossyRadiance(e, dominantDirection(wo, frame, alpha), alpha) * (fresnel.f0 * scaleBias.x + scaleBias.y - f82);
 }
 
 glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                           const Environment& e) {
-    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           splitSumSpecular(p.ior, p.extinction, p.roughness, wo, frame, e) +
-           peakLighting(e, p.roughness, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+    const F82Fresnel fresnel = f82FresnelOf(p.fresnel, p.ior, p.extinction);
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) + splitSumSpecular(fresnel, p.roughness, wo, frame, e) +
+           peakLighting(e, p.roughness, wo, frame, [&](glm::vec3 wi, float widened) {
                CookTorranceParams lobe = p;
                lobe.roughness = widened;
-               return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
+               return fresnelF82(fresnel.f0, fresnel.coefficient, glm::dot(wi, glm::normalize(wi + wo))) *
                       (cookTorranceSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
            });
 }
@@ -268,12 +270,12 @@ glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFra
 glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                             const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
-    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
-           splitSumSpecular(p.ior, p.extinction, alpha, wo, frame, e) +
-           peakLighting(e, alpha, wo, frame, [&, f0 = fresnelF0(p.ior, p.extinction)](glm::vec3 wi, float widened) {
+    const F82Fresnel fresnel = f82FresnelOf(p.fresnel, p.ior, p.extinction);
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) + splitSumSpecular(fresnel, alpha, wo, frame, e) +
+           peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                GgxAnisotropicParams lobe = p;
                lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;
-               return fresnelSchlick(f0, glm::dot(wi, glm::normalize(wi + wo))) *
+               return fresnelF82(fresnel.f0, fresnel.coefficient, glm::dot(wi, glm::normalize(wi + wo))) *
                       (ggxAnisotropicSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
            });
 }

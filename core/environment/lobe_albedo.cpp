@@ -36,9 +36,9 @@ void fillTable(LobeAlbedoTables& tables, int table, float minAlpha, const std::f
     }
 }
 
-// GGX (A, B): the mean of f_r cos θ_i / pdf = G2 (v·h) / (cos θ_o cos θ_h) over 1024 half vectors of
-// density D cos θ_h, split by Schlick's (1 − v·h)⁵.
-glm::vec2 splitSum(const TableTexel& t) {
+// GGX: the mean of f_r cos θ_i / pdf = G2 (v·h) / (cos θ_o cos θ_h) over 1024 half vectors of
+// density D cos θ_h, each times `fresnelParts` of v·h.
+glm::vec2 ggxIntegral(const TableTexel& t, glm::vec2 (*fresnelParts)(float viewDotHalf)) {
     constexpr int kSamples = 1024;
     glm::vec2 sum(0.0f);
     for (int i = 0; i < kSamples; ++i) {
@@ -47,11 +47,22 @@ glm::vec2 splitSum(const TableTexel& t) {
         const glm::vec3 light = 2.0f * viewDotHalf * halfway - t.view;
         if (light.z <= 0.0f || viewDotHalf <= 0.0f) continue;
         const float geometry = smithHeightCorrelated(lambdaGgx(light.z, t.alpha), lambdaGgx(t.view.z, t.alpha));
-        const float weight = geometry * viewDotHalf / (t.view.z * halfway.z);
-        const float schlick = std::pow(1.0f - viewDotHalf, 5.0f);
-        sum += glm::vec2((1.0f - schlick) * weight, schlick * weight);
+        sum += fresnelParts(viewDotHalf) * (geometry * viewDotHalf / (t.view.z * halfway.z));
     }
     return sum / static_cast<float>(kSamples);
+}
+
+// The split sum's (A, B): Schlick's form split into 1 − (1 − v·h)⁵ and (1 − v·h)⁵.
+glm::vec2 splitSum(const TableTexel& t) {
+    return ggxIntegral(t, [](float viewDotHalf) {
+        const float schlick = std::pow(1.0f - viewDotHalf, 5.0f);
+        return glm::vec2(1.0f - schlick, schlick);
+    });
+}
+
+// The share C of the F82 form's term a·μ(1 − μ)⁶ (fresnel.h), μ = v·h.
+glm::vec2 f82Share(const TableTexel& t) {
+    return ggxIntegral(t, [](float viewDotHalf) { return glm::vec2(f82Weight(viewDotHalf), 0.0f); });
 }
 
 // ∫ f_r cos θ_i dω_i of a lobe (ρ = 1) by multiple importance sampling (balance heuristic, Veach
@@ -135,7 +146,8 @@ const LobeAlbedoTables& lobeAlbedoTables() {
         const auto lobe = [](auto brdf) {
             return [brdf](const TableTexel& t) { return glm::vec2(lobeMoments(t, brdf).w, 0.0f); };
         };
-        std::vector<std::function<void()>> jobs{[&] { fillTable(result, kGgxSplitSum, 0.0f, splitSum); }};
+        std::vector<std::function<void()>> jobs{[&] { fillTable(result, kGgxSplitSum, 0.0f, splitSum); },
+                                                [&] { fillTable(result, kGgxF82, 0.0f, f82Share); }};
         for (int form = 0; form < 4; ++form) {
             // The lecture, max-cosine and half-vector forms × the normalised form's factor (lobe_albedo.h).
             jobs.push_back([&, form] {

@@ -33,9 +33,9 @@ vec3 ambientReflectanceCookTorrance(MaterialParams p, vec3 wo, ShadingFrame fram
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
-// The specular lobe's f_r cos θ_i widened to roughness `widened`, with Schlick's Fresnel from F0.
-vec3 cookTorrancePeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float widened, vec3 f0) {
-    vec3 fresnel = fresnelSchlick(f0, dot(wi, normalize(wi + wo)));
+// The specular lobe's f_r cos θ_i widened to roughness `widened`, with the Fresnel of f82FresnelOf.
+vec3 cookTorrancePeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float widened, F82Fresnel f82) {
+    vec3 fresnel = fresnelF82(f82.f0, f82.coefficient, dot(wi, normalize(wi + wo)));
     p.roughness = widened;
     return fresnel * (cookTorranceSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
 }
@@ -43,10 +43,10 @@ vec3 cookTorrancePeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame
 // Environment hook: twin of environmentLightingCookTorrance in core/environment/environment_lighting.cpp.
 vec3 environmentLightingCookTorrance(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float alpha = p.roughness;
-    vec3 f0 = fresnelF0(p.ior, p.extinction);
+    F82Fresnel f82 = f82FresnelOf(p.fresnel, p.ior, p.extinction);
     vec3 peaks = vec3(0.0);
-    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, cookTorrancePeakLobe(p, wi, wo, frame, widened, f0))
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, cookTorrancePeakLobe(p, wi, wo, frame, widened, f82))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(p.ior, p.extinction, alpha, wo, frame) + peaks;
+           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, wo, frame) + peaks;
 }
 #endif

@@ -57,3 +57,19 @@ vec3 fresnelSchlick(vec3 f0, float cosIncident) {
     float m2 = m * m;
     return f0 + (1.0 - f0) * (m2 * m2 * m);
 }
+
+// The F82-tint form (twin of fresnel.h): Schlick's less a·μ(1 − μ)⁶, F(1/7) = tint × Schlick's F(1/7).
+const float F82_COSINE = 1.0 / 7.0;  // kF82Cosine
+
+float f82Weight(float cosine) {
+    float m = clamp(1.0 - cosine, 0.0, 1.0), m3 = m * m * m;
+    return cosine * m3 * m3;
+}
+
+vec3 f82Coefficient(vec3 f0, vec3 tint) {
+    return fresnelSchlick(f0, F82_COSINE) * (1.0 - tint) / f82Weight(F82_COSINE);
+}
+
+vec3 fresnelF82(vec3 f0, vec3 coefficient, float cosine) {
+    return max(fresnelSchlick(f0, cosine) - coefficient * f82Weight(cosine), vec3(0.0));
+}

@@ -26,10 +26,10 @@ vec3 ambientReflectanceGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame fr
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
-// The specular lobe's f_r cos θ_i widened from roughness `alpha` to `widened`, with Schlick's
-// Fresnel from F0.
-vec3 ggxAnisotropicPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float alpha, float widened, vec3 f0) {
-    vec3 fresnel = fresnelSchlick(f0, dot(wi, normalize(wi + wo)));
+// The specular lobe's f_r cos θ_i widened from roughness `alpha` to `widened`, with the Fresnel
+// of f82FresnelOf.
+vec3 ggxAnisotropicPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float alpha, float widened, F82Fresnel f82) {
+    vec3 fresnel = fresnelF82(f82.f0, f82.coefficient, dot(wi, normalize(wi + wo)));
     p.roughness_x *= widened / alpha;
     p.roughness_y *= widened / alpha;
     return fresnel * (ggxAnisotropicSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
@@ -38,10 +38,10 @@ vec3 ggxAnisotropicPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame fra
 // Environment hook: twin of environmentLightingGgxAnisotropic in core/environment/environment_lighting.cpp.
 vec3 environmentLightingGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float alpha = sqrt(p.roughness_x * p.roughness_y);
-    vec3 f0 = fresnelF0(p.ior, p.extinction);
+    F82Fresnel f82 = f82FresnelOf(p.fresnel, p.ior, p.extinction);
     vec3 peaks = vec3(0.0);
-    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, ggxAnisotropicPeakLobe(p, wi, wo, frame, alpha, widened, f0))
+    ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, ggxAnisotropicPeakLobe(p, wi, wo, frame, alpha, widened, f82))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(p.ior, p.extinction, alpha, wo, frame) + peaks;
+           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, wo, frame) + peaks;
 }
 #endif

@@ -28,17 +28,6 @@ vec3 schlickF90(vec3 f0, vec3 f90, float cosine) {
 
 float dielectricF0(float eta) { return ((eta - 1.0) / (eta + 1.0)) * ((eta - 1.0) / (eta + 1.0)); }
 
-vec3 f82Coefficient(vec3 f0, vec3 tint) {
-    const float cosBar = 1.0 / 7.0;
-    float m = 1.0 - cosBar;
-    return schlickF90(f0, vec3(1.0), cosBar) * (1.0 - tint) / (cosBar * m * m * m * m * m * m);
-}
-
-vec3 fresnelF82(vec3 f0, vec3 coefficient, float cosine) {
-    float m = clamp(1.0 - cosine, 0.0, 1.0);
-    return max(schlickF90(f0, vec3(1.0), cosine) - coefficient * (cosine * m * m * m * m * m * m), vec3(0.0));
-}
-
 const float FON_CONSTANT_1 = 0.5 - 2.0 / (3.0 * PI);
 const float FON_CONSTANT_2 = 2.0 / 3.0 - 28.0 / (15.0 * PI);
 

@@ -24,8 +24,10 @@ uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roug
                                                // layer L + k: roughness k/L of the map less its peaks
 uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: GGX split-sum scale A and bias B,
                                                // then one albedo (r) per Blinn-Phong, Phong and Ward variant,
-                                               // then Ward's GGX stand-in (r', t) per variant
-const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9, WARD_STAND_IN = 11;  // LobeAlbedoTable
+                                               // then Ward's GGX stand-in (r', t) per variant, then
+                                               // GGX's F82 share C (r)
+const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9, WARD_STAND_IN = 11,
+          GGX_F82 = 13;  // LobeAlbedoTable
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
 // in a specialised program (gl/shader_specialisation.h), else the block's flags.
@@ -199,11 +201,14 @@ vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
     return normalize(frame.normal + (environmentMirrorDirection(wo, frame) - frame.normal) * factor);
 }
 
-vec3 environmentSplitSumSpecular(vec3 ior, vec3 extinction, float alpha, vec3 wo, ShadingFrame frame) {
-    float perceptual = sqrt(alpha);
-    vec2 scaleBias = sampleLobeAlbedo(GGX_SPLIT_SUM, max(cosTheta(frame, wo), 0.0), perceptual);
+// Twin of splitSumSpecular(): F0·A + B − a·C with the F82 form's F0 and a (f82FresnelOf).
+vec3 environmentSplitSumSpecular(vec3 f0, vec3 coefficient, float alpha, vec3 wo, ShadingFrame frame) {
+    float perceptual = sqrt(alpha), cosOut = max(cosTheta(frame, wo), 0.0);
+    vec2 scaleBias = sampleLobeAlbedo(GGX_SPLIT_SUM, cosOut, perceptual);
+    vec3 f82 = all(equal(coefficient, vec3(0.0))) ? vec3(0.0)
+                                                   : coefficient * sampleLobeAlbedo(GGX_F82, cosOut, perceptual).x;
     return environmentGlossyRadiance(environmentDominantDirection(wo, frame, alpha), alpha) *
-           (fresnelF0(ior, extinction) * scaleBias.x + scaleBias.y);
+           (f0 * scaleBias.x + scaleBias.y - f82);
 }
 
 // What a secondary ray sees (twin of MissRadiance::operator()), and a primary ray (::primary).
