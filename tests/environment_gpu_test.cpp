@@ -8,6 +8,8 @@
 #include "brdf/cook_torrance.h"
 #include "brdf/glass.h"
 #include "brdf/presets.h"
+#include "environment/environment_lighting.h"
+#include "environment_accuracy_support.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 #include "image/image_compare.h"
@@ -155,6 +157,27 @@ TEST_F(EnvironmentHdrTest, EveryLayeredPresetAgreesWithTheReference) {
                     agreement.compared);
         EXPECT_GT(agreement.compared, 96 * 96 / 4) << preset.name;
         EXPECT_EQ(agreement.disagreeing, 0) << preset.name << ": " << agreement.firstDisagreement;
+    }
+}
+
+TEST_F(EnvironmentHdrTest, OpenPbrsPeakLightsAgreeWithTheReference) {
+    // Under the studio HDRI, whose bright regions are peak lights from GGX α 0.04, the default
+    // OpenPBR and a half-metal under a rough coat: each lobe meets the peaks through its own shape
+    // and the layers above it, the GPU as the CPU to 1e-3.
+    Material coated = Material::withDefaults("coated", BrdfModel::OpenPbr);
+    test::setParam(coated, "base_metalness", {0.5f});
+    test::setParam(coated, "specular_roughness", {0.5f});
+    test::setParam(coated, "coat_weight", {1.0f});
+    test::setParam(coated, "coat_roughness", {0.3f});
+    for (const Material& material : {Material::withDefaults("default", BrdfModel::OpenPbr), coated}) {
+        Scene scene = test::sphereUnderEnvironment(material, EnvironmentKind::File,
+                                                   test::dataPath("environments/studio_small_01_256.exr"));
+        scene.environment.rotationDegrees = 40.0f;
+        ASSERT_TRUE(environmentUsesPeaks(scene.environment, 0.09f)) << "the map's peaks light the lobes";
+        const RadianceImage gpu = renderGpu(scene, 64, 64);
+        const test::PixelAgreement agreement = test::compareWithReference(scene, gpu, 1e-3f, 1e-4f);
+        EXPECT_GT(agreement.compared, 64 * 64 / 4) << material.name;
+        EXPECT_EQ(agreement.disagreeing, 0) << material.name << ": " << agreement.firstDisagreement;
     }
 }
 

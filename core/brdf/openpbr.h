@@ -130,30 +130,37 @@ inline glm::vec3 openPbrLocal(const OpenPbrParams& p, const ShadingFrame& frame,
     return {c * local.x + s * local.y, -s * local.x + c * local.y, local.z};
 }
 
+// The base's specular reflection [1/sr] for the GGX lobe value `lobe` (D·G/(4 cos θ_i cos θ_o)):
+// the tinted dielectric's and the metal's, mixed by metalness, before the layers above.
+inline glm::vec3 openPbrBaseSpecular(const OpenPbrParams& p, const OpenPbrView& v, float cosDifference, float lobe) {
+    const glm::vec3 metalFresnel = glm::mix(fresnelF82(v.metalF0, v.metalF82, cosDifference), v.filmMetal, v.filmWeight);
+    const glm::vec3 dielectricFresnel =
+        glm::mix(schlickF90(glm::vec3(v.dielectricF0), glm::vec3(v.dielectricF90), cosDifference), v.filmDielectric,
+                 v.filmWeight);
+    return glm::mix(p.specularColor * v.dielectricCompensation * dielectricFresnel, v.metalCompensation * metalFresnel,
+                    p.baseMetalness) *
+           lobe;
+}
+
+// The coat's reflection [1/sr] for ω_i, ω_o in the coat's frame (a coat normal map tilts it:
+// frame.coatFrame()), its lobe at GGX roughness `alphas`.
+inline float openPbrCoat(const OpenPbrParams& p, const OpenPbrView& v, glm::vec3 coatIn, glm::vec3 coatOut, glm::vec2 alphas) {
+    if (coatIn.z <= 0.0f || coatOut.z <= 0.0f) return 0.0f;
+    const float coatFresnel = schlickF90(glm::vec3(v.coatF0), glm::vec3(1.0f), glm::dot(coatIn, glm::normalize(coatIn + coatOut))).x;
+    return p.coatWeight * v.coatCompensation * coatFresnel * ggxLobe(coatIn, coatOut, alphas);
+}
+
 // f_r [1/sr] for light from wi seen from wo.
 inline glm::vec3 evalOpenpbr(const OpenPbrParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
     const glm::vec3 in = openPbrLocal(p, frame, wi), out = openPbrLocal(p, frame, wo);
     if (in.z <= 0.0f || out.z <= 0.0f) return glm::vec3(0.0f);
     const OpenPbrView v = openPbrView(p, out.z);
-    const float cosDifference = glm::dot(in, glm::normalize(in + out));
-    const float specular = ggxLobe(in, out, v.specularAlphas);
-    const glm::vec3 metalFresnel =
-        glm::mix(fresnelF82(v.metalF0, v.metalF82, cosDifference), v.filmMetal, v.filmWeight);
-    const glm::vec3 dielectricFresnel =
-        glm::mix(schlickF90(glm::vec3(v.dielectricF0), glm::vec3(v.dielectricF90), cosDifference), v.filmDielectric,
-                 v.filmWeight);
-    const glm::vec3 metal = v.metalCompensation * metalFresnel * specular;
-    const glm::vec3 dielectric =
-        p.specularColor * v.dielectricCompensation * dielectricFresnel * specular +
-        (1.0f - v.dielectricAlbedo) * (1.0f - p.transmissionWeight) *
-            eonLobe(p.baseWeight * p.baseColor, p.baseDiffuseRoughness, in, out);
-    const glm::vec3 base = glm::mix(dielectric, metal, p.baseMetalness);
-    const float coatFresnel = schlickF90(glm::vec3(v.coatF0), glm::vec3(1.0f), cosDifference).x;
-    // The coat lobe about the coat's own normal (a coat normal map tilts it: frame.coatFrame()).
+    const glm::vec3 diffuse = (1.0f - v.dielectricAlbedo) * (1.0f - p.transmissionWeight) *
+                              eonLobe(p.baseWeight * p.baseColor, p.baseDiffuseRoughness, in, out);
+    const glm::vec3 base = openPbrBaseSpecular(p, v, glm::dot(in, glm::normalize(in + out)), ggxLobe(in, out, v.specularAlphas)) +
+                           (1.0f - p.baseMetalness) * diffuse;
     const ShadingFrame coatFrame = frame.coatFrame();
-    const glm::vec3 coatIn = openPbrLocal(p, coatFrame, wi), coatOut = openPbrLocal(p, coatFrame, wo);
-    const float coatLobe = coatIn.z > 0.0f && coatOut.z > 0.0f ? ggxLobe(coatIn, coatOut, v.coatAlphas) : 0.0f;
-    const float coat = p.coatWeight * v.coatCompensation * coatFresnel * coatLobe;
+    const float coat = openPbrCoat(p, v, openPbrLocal(p, coatFrame, wi), openPbrLocal(p, coatFrame, wo), v.coatAlphas);
     const glm::vec3 fuzz = p.fuzzWeight * p.fuzzColor * v.sheenScale * sheenLobe(in, out, p.fuzzRoughness);
     return fuzz + v.underFuzz * (coat + v.underCoat * coatAbsorption(p, in.z, out.z) * base);
 }

@@ -282,14 +282,29 @@ glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingF
 
 // Fuzz and diffuse under the irradiance map, coat and specular each prefiltered at its own
 // roughness along its dominant direction, weighted by the albedos of openPbrResponse (which sum
-// to the directional albedo: exact under a uniform map). Transmission: render/openpbr_transport.h.
+// to the directional albedo: exact under a uniform map); where a lobe takes the map's peaks, it
+// sees the map less them, and each peak light through its own lobe, under the layers above it (as
+// evalOpenpbr). Transmission: render/openpbr_transport.h.
 glm::vec3 lightingOf(const OpenPbrParams& p, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
     const OpenPbrView v = openPbrView(p, frame.cosTheta(wo));
     const OpenPbrResponse r = openPbrResponse(p, v);
     const float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
+    const ShadingFrame coatFrame = frame.coatFrame();
+    const glm::vec3 out = openPbrLocal(p, frame, wo), coatOut = openPbrLocal(p, coatFrame, wo);
+    const glm::vec3 specularPeaks = peakLighting(e, specularAlpha, wo, frame, [&](glm::vec3 wi, float widened) {
+        const glm::vec3 in = openPbrLocal(p, frame, wi);
+        const float lobe = ggxLobe(in, out, v.specularAlphas * (widened / specularAlpha));
+        return v.underFuzz * v.underCoat * coatAbsorption(p, in.z, out.z) *
+               openPbrBaseSpecular(p, v, glm::dot(in, glm::normalize(in + out)), lobe) * in.z;
+    });
+    const glm::vec3 coatPeaks = p.coatWeight > 0.0f ? peakLighting(e, coatAlpha, wo, coatFrame, [&](glm::vec3 wi, float widened) {
+        const glm::vec3 coatIn = openPbrLocal(p, coatFrame, wi);
+        return glm::vec3(v.underFuzz * openPbrCoat(p, v, coatIn, coatOut, v.coatAlphas * (widened / coatAlpha)) * coatIn.z);
+    }) : glm::vec3(0.0f);
     return r.diffuse * environmentDiffuseRadiance(e, frame.normal) +
-           r.coat * environmentSpecularRadiance(e, dominantDirection(wo, frame.coatFrame(), coatAlpha), v.coatRoughness) +
-           r.specular * environmentSpecularRadiance(e, dominantDirection(wo, frame, specularAlpha), v.specularRoughness);
+           r.coat * glossyRadiance(e, dominantDirection(wo, coatFrame, coatAlpha), coatAlpha, v.coatRoughness) + coatPeaks +
+           r.specular * glossyRadiance(e, dominantDirection(wo, frame, specularAlpha), specularAlpha, v.specularRoughness) +
+           specularPeaks;
 }
 
 // The GGX α each glossy lobe is prefiltered with: split sum for microfacet lobes, an equivalent

@@ -93,25 +93,32 @@ vec3 openPbrLocal(MaterialParams p, ShadingFrame frame, vec3 world) {
     return vec3(c * local.x + s * local.y, -s * local.x + c * local.y, local.z);
 }
 
+// Twins of openPbrBaseSpecular and openPbrCoat.
+vec3 openPbrBaseSpecular(MaterialParams p, OpenPbrView v, float cosDifference, float lobe) {
+    vec3 metalFresnel = mix(fresnelF82(v.metalF0, v.metalF82, cosDifference), v.filmMetal, v.filmWeight);
+    vec3 dielectricFresnel = mix(schlickF90(vec3(v.dielectricF0), vec3(v.dielectricF90), cosDifference),
+                                 v.filmDielectric, v.filmWeight);
+    return mix(p.specular_color * v.dielectricCompensation * dielectricFresnel, v.metalCompensation * metalFresnel,
+               p.base_metalness) *
+           lobe;
+}
+
+float openPbrCoat(MaterialParams p, OpenPbrView v, vec3 coatIn, vec3 coatOut, vec2 alphas) {
+    if (coatIn.z <= 0.0 || coatOut.z <= 0.0) return 0.0;
+    float coatFresnel = schlickF90(vec3(v.coatF0), vec3(1.0), dot(coatIn, normalize(coatIn + coatOut))).x;
+    return p.coat_weight * v.coatCompensation * coatFresnel * ggxLobe(coatIn, coatOut, alphas);
+}
+
 vec3 evalOpenpbr(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     vec3 inLocal = openPbrLocal(p, frame, wi), outLocal = openPbrLocal(p, frame, wo);
     if (inLocal.z <= 0.0 || outLocal.z <= 0.0) return vec3(0.0);
     OpenPbrView v = openPbrView(p, outLocal.z);
-    float cosDifference = dot(inLocal, normalize(inLocal + outLocal));
-    float specular = ggxLobe(inLocal, outLocal, v.specularAlphas);
-    vec3 metalFresnel = mix(fresnelF82(v.metalF0, v.metalF82, cosDifference), v.filmMetal, v.filmWeight);
-    vec3 dielectricFresnel = mix(schlickF90(vec3(v.dielectricF0), vec3(v.dielectricF90), cosDifference),
-                                 v.filmDielectric, v.filmWeight);
-    vec3 metal = v.metalCompensation * metalFresnel * specular;
-    vec3 dielectric = p.specular_color * v.dielectricCompensation * dielectricFresnel * specular +
-                      (1.0 - v.dielectricAlbedo) * (1.0 - p.transmission_weight) *
-                          eonLobe(p.base_weight * p.base_color, p.base_diffuse_roughness, inLocal, outLocal);
-    vec3 base = mix(dielectric, metal, p.base_metalness);
-    float coatFresnel = schlickF90(vec3(v.coatF0), vec3(1.0), cosDifference).x;
+    vec3 diffuse = (1.0 - v.dielectricAlbedo) * (1.0 - p.transmission_weight) *
+                   eonLobe(p.base_weight * p.base_color, p.base_diffuse_roughness, inLocal, outLocal);
+    vec3 base = openPbrBaseSpecular(p, v, dot(inLocal, normalize(inLocal + outLocal)), ggxLobe(inLocal, outLocal, v.specularAlphas)) +
+                (1.0 - p.base_metalness) * diffuse;
     ShadingFrame coatFrame = coatFrameOf(frame);
-    vec3 coatIn = openPbrLocal(p, coatFrame, wi), coatOut = openPbrLocal(p, coatFrame, wo);
-    float coatLobe = coatIn.z > 0.0 && coatOut.z > 0.0 ? ggxLobe(coatIn, coatOut, v.coatAlphas) : 0.0;
-    float coat = p.coat_weight * v.coatCompensation * coatFresnel * coatLobe;
+    float coat = openPbrCoat(p, v, openPbrLocal(p, coatFrame, wi), openPbrLocal(p, coatFrame, wo), v.coatAlphas);
     vec3 fuzz = p.fuzz_weight * p.fuzz_color * v.sheenScale * sheenLobe(inLocal, outLocal, p.fuzz_roughness);
     return fuzz + v.underFuzz * (coat + v.underCoat * coatAbsorption(p, inLocal.z, outLocal.z) * base);
 }
@@ -145,16 +152,38 @@ vec3 emissionOpenPbr(MaterialParams p, OpenPbrView v) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
+// The base's specular lobe and the coat's lit by a peak light, under the layers above each
+// (twins of the peak terms of lightingOf(OpenPbrParams)).
+vec3 openPbrSpecularPeakLobe(MaterialParams p, OpenPbrView v, vec3 wi, vec3 outLocal, ShadingFrame frame, float widen) {
+    vec3 inLocal = openPbrLocal(p, frame, wi);
+    float lobe = ggxLobe(inLocal, outLocal, v.specularAlphas * widen);
+    return v.underFuzz * v.underCoat * coatAbsorption(p, inLocal.z, outLocal.z) *
+           openPbrBaseSpecular(p, v, dot(inLocal, normalize(inLocal + outLocal)), lobe) * inLocal.z;
+}
+
+vec3 openPbrCoatPeakLobe(MaterialParams p, OpenPbrView v, vec3 wi, vec3 coatOut, ShadingFrame coatFrame, float widen) {
+    vec3 coatIn = openPbrLocal(p, coatFrame, wi);
+    return vec3(v.underFuzz * openPbrCoat(p, v, coatIn, coatOut, v.coatAlphas * widen) * coatIn.z);
+}
+
 // Environment hook: twin of lightingOf(OpenPbrParams) in core/environment/environment_lighting.cpp.
 vec3 environmentLightingOpenpbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
     OpenPbrView v = openPbrView(p, cosTheta(frame, wo));
     OpenPbrResponse r = openPbrResponse(p, v);
     float coatAlpha = v.coatRoughness * v.coatRoughness, specularAlpha = v.specularRoughness * v.specularRoughness;
+    ShadingFrame coatFrame = coatFrameOf(frame);
+    vec3 outLocal = openPbrLocal(p, frame, wo), coatOut = openPbrLocal(p, coatFrame, wo);
+    vec3 peaks = vec3(0.0);
+    ENVIRONMENT_ADD_PEAKS(peaks, specularAlpha, wo, frame,
+                          openPbrSpecularPeakLobe(p, v, wi, outLocal, frame, widened / specularAlpha))
+    if (p.coat_weight > 0.0) {
+        ENVIRONMENT_ADD_PEAKS(peaks, coatAlpha, wo, coatFrame, openPbrCoatPeakLobe(p, v, wi, coatOut, coatFrame, widened / coatAlpha))
+    }
     return r.diffuse * environmentDiffuseRadiance(frame.normal) +
-           r.coat * environmentSpecularRadiance(environmentDominantDirection(wo, coatFrameOf(frame), coatAlpha),
-                                                v.coatRoughness) +
-           r.specular *
-               environmentSpecularRadiance(environmentDominantDirection(wo, frame, specularAlpha), v.specularRoughness);
+           r.coat * environmentGlossyRadianceAt(environmentDominantDirection(wo, coatFrame, coatAlpha), coatAlpha, v.coatRoughness) +
+           r.specular * environmentGlossyRadianceAt(environmentDominantDirection(wo, frame, specularAlpha), specularAlpha,
+                                                    v.specularRoughness) +
+           peaks;
 }
 #endif
 
