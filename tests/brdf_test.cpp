@@ -148,32 +148,37 @@ TEST(BrdfRegistry, TablesAreConsistent) {
     EXPECT_FALSE(findModel("no_such_model").has_value());
 }
 
+// check(info, values) on 2000 random parameter sets of each model, drawn from `random` (which the
+// check may draw directions from); it stops at the first fatal failure.
+template <class Check>
+void forRandomParameters(std::mt19937& random, Check check) {
+    for (const ModelInfo& info : allModels())
+        for (int trial = 0; trial < 2000; ++trial) {
+            check(info, randomValues(info, random));
+            if (::testing::Test::HasFatalFailure()) return;
+        }
+}
+
 TEST(BrdfProperties, NonNegativeEverywhere) {
     std::mt19937 random(1);
     const ShadingFrame frame;
-    for (const ModelInfo& info : allModels()) {
-        for (int trial = 0; trial < 2000; ++trial) {
-            const auto values = randomValues(info, random);
-            const glm::vec3 f = evalBrdf(info.model, values, uniformHemisphere(random), uniformHemisphere(random), frame);
-            ASSERT_TRUE(f.r >= 0 && f.g >= 0 && f.b >= 0 && std::isfinite(f.r + f.g + f.b)) << info.id;
-        }
-    }
+    forRandomParameters(random, [&](const ModelInfo& info, const std::vector<float>& values) {
+        const glm::vec3 f = evalBrdf(info.model, values, uniformHemisphere(random), uniformHemisphere(random), frame);
+        ASSERT_TRUE(f.r >= 0 && f.g >= 0 && f.b >= 0 && std::isfinite(f.r + f.g + f.b)) << info.id;
+    });
 }
 
 TEST(BrdfProperties, ReciprocalWhereClaimed) {
     std::mt19937 random(2);
     const ShadingFrame frame;
-    for (const ModelInfo& info : allModels()) {
-        for (int trial = 0; trial < 2000; ++trial) {
-            const auto values = randomValues(info, random);
-            if (!isReciprocal(info.model, values)) continue;
-            const glm::vec3 a = uniformHemisphere(random), b = uniformHemisphere(random);
-            const glm::vec3 forward = evalBrdf(info.model, values, a, b, frame);
-            const glm::vec3 backward = evalBrdf(info.model, values, b, a, frame);
-            for (int c = 0; c < 3; ++c)
-                ASSERT_NEAR(forward[c], backward[c], 1e-4f * std::max(1.0f, forward[c])) << info.id;
-        }
-    }
+    forRandomParameters(random, [&](const ModelInfo& info, const std::vector<float>& values) {
+        if (!isReciprocal(info.model, values)) return;
+        const glm::vec3 a = uniformHemisphere(random), b = uniformHemisphere(random);
+        const glm::vec3 forward = evalBrdf(info.model, values, a, b, frame);
+        const glm::vec3 backward = evalBrdf(info.model, values, b, a, frame);
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(forward[c], backward[c], 1e-4f * std::max(1.0f, forward[c])) << info.id;
+    });
 }
 
 TEST(BrdfProperties, LectureBlinnPhongIsNotReciprocal) {

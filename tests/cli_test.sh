@@ -7,7 +7,9 @@ out=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/cli_checks.sh"
 
-scene() {  # scene NAME LIGHT_JSON: writes a scene whose light (line 4) is LIGHT_JSON
+# light_error NAME LIGHT_JSON PATTERN: rendering NAME.json, a scene whose light (line 4) is LIGHT_JSON,
+# fails with an error at that line matching PATTERN.
+light_error() {
   cat >"$out/$1.json" <<JSON
 {
   "format": "glint-scene", "version": 1,
@@ -18,29 +20,21 @@ scene() {  # scene NAME LIGHT_JSON: writes a scene whose light (line 4) is LIGHT
   "objects": [{"shape": "sphere", "material": "m"}]
 }
 JSON
+  expect_error "$1" "$1\.json:4:[0-9]+: $3" -- render "$out/$1.json" -o "$out/x.png"
 }
 
 expect_error missing_file "/no/such/scene.json: cannot open" -- render /no/such/scene.json -o "$out/x.png"
 printf '{\n  "format": "glint-scene",\n  "version": 1\n  "lights": []\n}\n' >"$out/invalid.json"
 expect_error invalid_json "invalid\.json:4:[0-9]+: invalid JSON" -- render "$out/invalid.json" -o "$out/x.png"
-scene unknown_key '{"type": "point", "power": 10, "watts": 5}'
-expect_error unknown_key "unknown_key\.json:4:[0-9]+: .*'watts': unknown key" -- render "$out/unknown_key.json" -o "$out/x.png"
-scene wrong_type '{"type": "point", "power": [10]}'
-expect_error wrong_type "wrong_type\.json:4:[0-9]+: .*'power': expected a number" -- render "$out/wrong_type.json" -o "$out/x.png"
-scene negative '{"type": "directional", "irradiance": -3.14}'
-expect_error negative_irradiance "negative\.json:4:[0-9]+: .*'irradiance': -3\.14 is out of range" -- render "$out/negative.json" -o "$out/x.png"
-scene nan '{"type": "directional", "irradiance": NaN}'
-expect_error nan "nan\.json:4:[0-9]+: invalid JSON" -- render "$out/nan.json" -o "$out/x.png"
-scene unknown_type '{"type": "laser"}'
-expect_error unknown_light_type "unknown_type\.json:4:[0-9]+: .*unknown value 'laser'" -- render "$out/unknown_type.json" -o "$out/x.png"
-scene wide_cone '{"type": "spot", "cone_half_angle_degrees": 120}'
-expect_error spot_cone "wide_cone\.json:4:[0-9]+: .*'cone_half_angle_degrees': 120 is out of range" -- render "$out/wide_cone.json" -o "$out/x.png"
-scene zero_attenuation '{"type": "point", "attenuation": [0, 0, 0]}'
-expect_error zero_attenuation "zero_attenuation\.json:4:[0-9]+: .*'attenuation'.*must not all be zero" -- render "$out/zero_attenuation.json" -o "$out/x.png"
-scene negative_bias '{"type": "directional", "casts_shadows": true, "shadow": {"depth_bias": -1}}'
-expect_error negative_shadow_bias "negative_bias\.json:4:[0-9]+: .*'depth_bias': -1 is out of range" -- render "$out/negative_bias.json" -o "$out/x.png"
-scene zero_resolution '{"type": "point", "casts_shadows": true, "shadow": {"map_resolution": 0}}'
-expect_error zero_shadow_resolution "zero_resolution\.json:4:[0-9]+: .*'map_resolution'" -- render "$out/zero_resolution.json" -o "$out/x.png"
+light_error unknown_key '{"type": "point", "power": 10, "watts": 5}' ".*'watts': unknown key"
+light_error wrong_type '{"type": "point", "power": [10]}' ".*'power': expected a number"
+light_error negative_irradiance '{"type": "directional", "irradiance": -3.14}' ".*'irradiance': -3\.14 is out of range"
+light_error nan '{"type": "directional", "irradiance": NaN}' "invalid JSON"
+light_error unknown_light_type '{"type": "laser"}' ".*unknown value 'laser'"
+light_error spot_cone '{"type": "spot", "cone_half_angle_degrees": 120}' ".*'cone_half_angle_degrees': 120 is out of range"
+light_error zero_attenuation '{"type": "point", "attenuation": [0, 0, 0]}' ".*'attenuation'.*must not all be zero"
+light_error negative_shadow_bias '{"type": "directional", "casts_shadows": true, "shadow": {"depth_bias": -1}}' ".*'depth_bias': -1 is out of range"
+light_error zero_shadow_resolution '{"type": "point", "casts_shadows": true, "shadow": {"map_resolution": 0}}' ".*'map_resolution'"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "g", "model": "glass",\n   "ior": -1.5}],\n "objects": [{"shape": "sphere", "material": "g"}]}\n' >"$out/negative_ior.json"
 expect_error negative_ior "negative_ior\.json:3:[0-9]+: .*'ior': -1\.5 is out of range" -- render "$out/negative_ior.json" -o "$out/x.png"
 mkdir -p "$out/a_directory.json"

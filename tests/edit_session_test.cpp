@@ -22,6 +22,13 @@ namespace {
 
 float sphereFirstValue(const EditSession& session) { return session.scene().materials[0].analytic()->values[0]; }
 
+// A change (labelled `label`) that sets the sphere material's first value; returns the value it had.
+float changeSphereFirstValue(EditSession& session, const char* label, float value) {
+    const float before = sphereFirstValue(session);
+    session.change(label).materials[0].analytic()->values[0] = value;
+    return before;
+}
+
 TEST(EditSession, StartsCleanWithNothingToUndo) {
     EditSession session;
     EXPECT_FALSE(session.dirty());
@@ -32,8 +39,7 @@ TEST(EditSession, StartsCleanWithNothingToUndo) {
 
 TEST(EditSession, OneChangeIsOneStepThatUndoAndRedoRestore) {
     EditSession session;
-    const float original = sphereFirstValue(session);
-    session.change("Edit albedo").materials[0].analytic()->values[0] = 0.25f;
+    const float original = changeSphereFirstValue(session, "Edit albedo", 0.25f);
     EXPECT_TRUE(session.dirty());
     EXPECT_TRUE(session.settle(false));
     EXPECT_EQ(session.undoLabel(), "Edit albedo");
@@ -50,7 +56,7 @@ TEST(EditSession, AGestureIsOneStepHoweverManyFramesItLasts) {
     EditSession session;
     const float original = sphereFirstValue(session);
     for (int frame = 1; frame <= 30; ++frame) {
-        session.change("Drag").materials[0].analytic()->values[0] = frame / 30.0f;
+        changeSphereFirstValue(session, "Drag", frame / 30.0f);
         EXPECT_FALSE(session.settle(/*gestureInProgress=*/true));
     }
     EXPECT_TRUE(session.settle(false));
@@ -61,8 +67,7 @@ TEST(EditSession, AGestureIsOneStepHoweverManyFramesItLasts) {
 
 TEST(EditSession, UndoDuringAGestureClosesItFirst) {
     EditSession session;
-    const float original = sphereFirstValue(session);
-    session.change("Drag").materials[0].analytic()->values[0] = 0.1f;
+    const float original = changeSphereFirstValue(session, "Drag", 0.1f);
     EXPECT_TRUE(session.canUndo());
     ASSERT_TRUE(session.undo());
     EXPECT_FLOAT_EQ(sphereFirstValue(session), original);
@@ -70,9 +75,8 @@ TEST(EditSession, UndoDuringAGestureClosesItFirst) {
 
 TEST(EditSession, AStepThatChangesNothingIsDropped) {
     EditSession session;
-    const float original = sphereFirstValue(session);
-    session.change("Drag").materials[0].analytic()->values[0] = 0.9f;
-    session.change("Drag").materials[0].analytic()->values[0] = original;
+    const float original = changeSphereFirstValue(session, "Drag", 0.9f);
+    changeSphereFirstValue(session, "Drag", original);
     EXPECT_FALSE(session.settle(false));
     EXPECT_FALSE(session.canUndo());
     EXPECT_FALSE(session.dirty());
@@ -138,7 +142,7 @@ TEST(SceneMessage, IsDroppedWhenTheSceneChangesAfterIt) {
     refusal.expire(session.revision());
     refusal.expire(session.revision());
     EXPECT_FALSE(refusal.empty()) << "nothing changed: the refusal still holds";
-    session.change("Edit albedo").materials[0].analytic()->values[0] = 0.25f;
+    changeSphereFirstValue(session, "Edit albedo", 0.25f);
     session.settle(false);
     refusal.expire(session.revision());
     EXPECT_TRUE(refusal.empty());

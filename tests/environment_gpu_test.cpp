@@ -29,17 +29,8 @@ void expectAgreesWithReference(const Scene& scene, int size, float relativeToler
                                         << agreement.worstRelative << ")";
 }
 
-// Pixels inside the unit sphere's disc (orthographic, 2.2 high) with μ = cos θ_o ≥ minCosine.
-template <class Check>
-void forDiscPixels(const RadianceImage& image, float minCosine, Check check) {
-    const float pixelSize = 2.2f / image.height;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            const float px = -1.1f + (x + 0.5f) * pixelSize, py = 1.1f - (y + 0.5f) * pixelSize;
-            const float r2 = px * px + py * py;
-            if (r2 < 0.97f * 0.97f && std::sqrt(1.0f - r2) >= minCosine) check(x, y, std::sqrt(1.0f - r2));
-        }
-}
+// The disc is checked out to 0.97 of its radius: the rasterised sphere's rim pixels are left out.
+constexpr float kInsideTheRim = 0.97f;
 
 TEST(EnvironmentGpu, WhiteOutLambertIsAFlatDisc) {
     Material material = Material::withDefaults("white-out", BrdfModel::Lambert);
@@ -48,9 +39,9 @@ TEST(EnvironmentGpu, WhiteOutLambertIsAFlatDisc) {
     scene.environment.intensity = 2.0f;
     scene.environment.showAsBackground = false;  // the disc on the black constant background
     const RadianceImage image = renderGpu(scene, 64, 64);
-    forDiscPixels(image, 0.0f, [&](int x, int y, float) {
+    test::forDiscPixels(image, 0.0f, [&](int x, int y, float) {
         for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.at(x, y)[c], 1.2f, 1.2f * 2e-4f) << x << "," << y;
-    });
+    }, kInsideTheRim);
     EXPECT_EQ(image.at(0, 0), glm::vec3(0.0f));
 }
 
@@ -96,12 +87,12 @@ TEST(EnvironmentGpu, GgxWhiteFurnaceWithinTheSplitSumTolerance) {
         const Scene scene = test::sphereUnderEnvironment(material, EnvironmentKind::White);
         const RadianceImage gpu = renderGpu(scene, 32, 32);
         const RadianceImage sampled = renderReference(scene, 32, 32, {true, 512});
-        forDiscPixels(gpu, 0.2f, [&](int x, int y, float cosine) {
+        test::forDiscPixels(gpu, 0.2f, [&](int x, int y, float cosine) {
             ASSERT_NEAR(gpu.at(x, y).g, sampled.at(x, y).g, 0.03f) << "α " << roughness << " at " << x << "," << y;
             if (roughness < 0.2f && cosine >= 0.7f) {
                 ASSERT_NEAR(gpu.at(x, y).g, 1.0f, 0.025f) << x << "," << y;
             }
-        });
+        }, kInsideTheRim);
     }
 }
 

@@ -467,20 +467,6 @@ TEST(EnvironmentSampling, TheMonteCarloReferenceIsDeterministicAndItsSeedsIndepe
 
 // --- white-out and white furnace (CPU) -------------------------------------------------------
 
-// Pixels well inside the unit sphere's disc of the 2.2-high orthographic view, with μ = cos θ_o.
-template <class Check>
-void forDiscPixels(const RadianceImage& image, float minCosine, Check check) {
-    const float pixelSize = 2.2f / image.height;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            const float px = -1.1f + (x + 0.5f) * pixelSize, py = 1.1f - (y + 0.5f) * pixelSize;
-            const float r2 = px * px + py * py;
-            if (r2 >= 1.0f) continue;
-            const float cosine = std::sqrt(1.0f - r2);
-            if (cosine >= minCosine) check(x, y, cosine);
-        }
-}
-
 Material lambert(float albedo) {
     Material material = Material::withDefaults("white-out", BrdfModel::Lambert);
     std::fill(material.analytic()->values.begin(), material.analytic()->values.end(), albedo);
@@ -496,7 +482,7 @@ TEST(WhiteOut, LambertUnderUniformWhiteIsAFlatDiscOnTheCpu) {
     for (bool sampled : {false, true}) {
         const RadianceImage image = renderReference(scene, 48, 48, {sampled, 1024});
         const float tolerance = sampled ? 1e-2f : 2e-4f;
-        forDiscPixels(image, 0.0f, [&](int x, int y, float) {
+        test::forDiscPixels(image, 0.0f, [&](int x, int y, float) {
             for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.at(x, y)[c], 1.2f, 1.2f * tolerance) << x << "," << y;
         });
     }
@@ -518,7 +504,7 @@ TEST(WhiteFurnace, GgxConductorUnderUniformWhiteReflectsLOnTheCpu) {
     // lobe dips below the horizon). The sampled reference (512 samples per pixel) is within 2.5%.
     const Scene scene = test::sphereUnderEnvironment(perfectConductor(0.1f), EnvironmentKind::White);
     const RadianceImage image = renderReference(scene, 32, 32, {true, 512});
-    forDiscPixels(image, 0.7f, [&](int x, int y, float) {
+    test::forDiscPixels(image, 0.7f, [&](int x, int y, float) {
         ASSERT_NEAR(image.at(x, y).g, 1.0f, 0.025f) << x << "," << y;
     });
 }

@@ -9,6 +9,7 @@
 
 #include "environment/environment_source.h"
 #include "environment_accuracy_support.h"
+#include "image/image.h"
 #include "scene/scene.h"
 
 namespace glint::test {
@@ -20,6 +21,21 @@ inline Scene sphereUnderEnvironment(const Material& material, EnvironmentKind ki
     scene.environment.file = file;
     if (Status loaded = loadEnvironment(scene.environment); !loaded) ADD_FAILURE() << loaded.error().format();
     return scene;
+}
+
+// Calls check(x, y, μ) for the pixels of sphereUnderEnvironment's 2.2-high orthographic view that
+// lie inside the unit sphere's disc, within `radius` of its centre, and have μ = cos θ_o ≥ minCosine.
+template <class Check>
+void forDiscPixels(const RadianceImage& image, float minCosine, Check check, float radius = 1.0f) {
+    const float pixelSize = 2.2f / image.height;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float px = -1.1f + (x + 0.5f) * pixelSize, py = 1.1f - (y + 0.5f) * pixelSize;
+            const float r2 = px * px + py * py;
+            if (r2 >= radius * radius) continue;
+            const float cosine = std::sqrt(1.0f - r2);
+            if (cosine >= minCosine) check(x, y, cosine);
+        }
 }
 
 // Writes a width×(width/2) float image: a smooth sky (bluish above, brown below) with a bright warm

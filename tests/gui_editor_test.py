@@ -93,6 +93,12 @@ class Editor:
             self.process.kill()
             self.log = self.process.communicate()[0]
 
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exception):
+        self.kill()
+
 
 def lit_sphere(shot):
     red = pixel(shot, *SPHERE_CENTRE)
@@ -145,8 +151,7 @@ def type_path(x, path):
 # --- scenarios ----------------------------------------------------------------------------------
 
 def scenario_undo(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "undo_0_start")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
@@ -172,16 +177,13 @@ def scenario_undo(x, glint, output, state):
         code = editor.wait_exit()
         assert code == 0, f"editor exited with {code}"
         print("ok: drag changed the sphere, undo/redo restored it, added light undone, close asked first")
-    finally:
-        editor.kill()
 
 
 def scenario_save_reopen(x, glint, output, state):
     path = os.path.join(output, "saved_scene.json")
     if os.path.exists(path):
         os.remove(path)
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
@@ -203,11 +205,8 @@ def scenario_save_reopen(x, glint, output, state):
         assert exponent < 60, f"the dragged exponent was not saved: {exponent}"
         close_window(x, editor)  # saved: no prompt
         assert editor.wait_exit() == 0
-    finally:
-        editor.kill()
 
-    editor = Editor(x, glint, output, state, args=[path])
-    try:
+    with Editor(x, glint, output, state, args=[path]) as editor:
         reopened = x.wait_for(matches(before_save, 0.5), "the reopened scene to look as it did when saved")
         save(reopened, output, "save_2_reopened")
         first_write = os.stat(path).st_mtime_ns
@@ -224,8 +223,6 @@ def scenario_save_reopen(x, glint, output, state):
         close_window(x, editor)
         assert editor.wait_exit() == 0
         print(f"ok: saved through the file browser (exponent {exponent:.3g}, 2 lights), reopened identical, re-saved {second:.3g}")
-    finally:
-        editor.kill()
 
 
 def recovery_files(state):
@@ -234,8 +231,7 @@ def recovery_files(state):
 
 
 def scenario_recovery(x, glint, output, state):
-    editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"})
-    try:
+    with Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"}) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
@@ -246,11 +242,8 @@ def scenario_recovery(x, glint, output, state):
         assert recovery_files(state), "autosave wrote no recovery file"
         editor.process.send_signal(signal.SIGKILL)
         editor.process.wait(timeout=10)
-    finally:
-        editor.kill()
 
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         offer = x.wait_for(modal_shown(base), "the offer to recover the unsaved work")
         save(offer, output, "recovery_1_offer")
         x.key("Return")  # Recover
@@ -263,14 +256,11 @@ def scenario_recovery(x, glint, output, state):
         assert editor.wait_exit() == 0
         assert not recovery_files(state), "a clean exit must remove the recovery file"
         print("ok: kill -9 after an edit, the next start offered the work and restored the edit")
-    finally:
-        editor.kill()
 
 
 def scenario_crash_signal(x, glint, output, state):
     """SIGSEGV right after an edit, with autosave far off: the crash guard writes the copy."""
-    editor = Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"})
-    try:
+    with Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"}) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         time.sleep(1.0)  # past the first autosave check (a clean scene writes nothing)
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
@@ -284,10 +274,7 @@ def scenario_crash_signal(x, glint, output, state):
         with open(recovery_files(state)[0]) as saved:
             exponent = json.load(saved)["scene"]["materials"][0]["exponent"]
         assert exponent < 60, f"the recovery file lacks the edit (exponent {exponent})"
-    finally:
-        editor.kill()
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         x.wait_for(modal_shown(base), "the offer to recover")
         x.key("Return")
         x.wait_for(matches(edited, 0.5), "the recovered edit")
@@ -296,8 +283,6 @@ def scenario_crash_signal(x, glint, output, state):
         x.key("n")
         assert editor.wait_exit() == 0
         print(f"ok: SIGSEGV after an edit left a recovery file with exponent {exponent:.3g}, recovered on restart")
-    finally:
-        editor.kill()
 
 
 MATERIAL_COLUMN = (925, 40, 1275, 520)
@@ -331,8 +316,7 @@ def type_into_slider(x, where, text):
 
 
 def scenario_typed_values(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert not refusal_shown(base)
         type_into_slider(x, EXPONENT_SLIDER, "-5")
@@ -349,8 +333,6 @@ def scenario_typed_values(x, glint, output, state):
         close_window(x, editor)
         assert editor.wait_exit() == 0
         print("ok: -5 refused with a message, 20000 kept beyond the slider, undone")
-    finally:
-        editor.kill()
 
 
 ALBEDO_RED_FIELD = (960, 165)    # the diffuse albedo's red channel (its label above)
@@ -362,8 +344,7 @@ def window_title(x, editor):
 
 
 def scenario_typed_commit(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert "●" not in window_title(x, editor)
         start_typing(x, ALBEDO_RED_FIELD, "-0.5")
@@ -400,16 +381,13 @@ def scenario_typed_commit(x, glint, output, state):
         close_window(x, editor)
         assert editor.wait_exit() == 0
         print("ok: typing changed nothing, -0.5 refused on Enter, 5 committed by a click elsewhere, refusal gone after undo")
-    finally:
-        editor.kill()
 
 
 def scenario_corrupt_open(x, glint, output, state):
     corrupt = os.path.join(output, "corrupt_scene.json")
     with open(corrupt, "w") as out:
         out.write('{\n  "format": "glint-scene",\n  "version": 1,\n  "lights": [{"type": "point", "power": -5}]\n}\n')
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
@@ -433,8 +411,6 @@ def scenario_corrupt_open(x, glint, output, state):
         assert editor.wait_exit() == 0
         assert "corrupt_scene.json:4:" in editor.log, f"the error should name file:line, log was:\n{editor.log}"
         print("ok: corrupt scene refused with", [l for l in editor.log.splitlines() if "corrupt_scene" in l][0])
-    finally:
-        editor.kill()
 
 
 def scenario_screenshot(x, glint, output, state):
@@ -442,8 +418,7 @@ def scenario_screenshot(x, glint, output, state):
     for path in (png, exr):
         if os.path.exists(path):
             os.remove(path)
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         for path in (png, exr):
             x.key("F12")
@@ -463,8 +438,6 @@ def scenario_screenshot(x, glint, output, state):
         close_window(x, editor)  # nothing changed: no prompt
         assert editor.wait_exit() == 0
         print(f"ok: F12 wrote the viewport as a {width}x{height} PNG and as an EXR")
-    finally:
-        editor.kill()
 
 
 def find_handle(shot):
@@ -477,8 +450,7 @@ def find_handle(shot):
 
 
 def scenario_light_handle(x, glint, output, state):
-    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
-    try:
+    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         handle = find_handle(base)
         assert handle, "no light handle drawn in the viewport"
@@ -497,13 +469,10 @@ def scenario_light_handle(x, glint, output, state):
         close_window(x, editor)  # back at the opened state: nothing to save, no prompt
         assert editor.wait_exit() == 0
         print(f"ok: handle at {handle} dragged to {moved_to}, undone and redone")
-    finally:
-        editor.kill()
 
 
 def scenario_shadow_toggle(x, glint, output, state):
-    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
-    try:
+    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "shadow_0_start")
         unshadowed = sum(pixel(base, *SHADOW_ON_FLOOR))
@@ -518,13 +487,10 @@ def scenario_shadow_toggle(x, glint, output, state):
         assert editor.wait_exit() == 0
         print(f"ok: shadow on darkened the floor {pixel(base, *SHADOW_ON_FLOOR)} -> "
               f"{pixel(shadowed, *SHADOW_ON_FLOOR)}, undone")
-    finally:
-        editor.kill()
 
 
 def scenario_environment(x, glint, output, state):
-    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
-    try:
+    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "environment_0_start")
         click_after_hover(x, ENVIRONMENT_COMBO)
@@ -551,8 +517,6 @@ def scenario_environment(x, glint, output, state):
         assert editor.wait_exit() == 0
         print(f"ok: studio lit the sphere {pixel(base, *SPHERE_CENTRE)} -> {pixel(studio, *SPHERE_CENTRE)} and "
               "showed behind it; hidden background kept the light; both steps undone")
-    finally:
-        editor.kill()
 
 
 def edges_across_sphere(shot):
@@ -584,8 +548,7 @@ def scenario_texture(x, glint, output, state):
     corrupt = os.path.join(output, "corrupt.png")
     with open(corrupt, "wb") as out:
         out.write(b"\x89PNG\r\n\x1a\n" + b"not a PNG body" * 4)
-    editor = Editor(x, glint, output, state, args=(CLASSIC_SCENE,))
-    try:
+    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert edges_across_sphere(base) == 0, "the untextured sphere should shade smoothly"
         choose_texture(x, TEXTURE_MENU_CHECKER)
@@ -611,8 +574,6 @@ def scenario_texture(x, glint, output, state):
         assert "corrupt.png" in editor.log, "the refusal should name the file:\n" + editor.log
         print(f"ok: checker drew {edges_across_sphere(checker)} edges across the sphere, undone; "
               f"the image tinted it {pixel(tinted, *SPHERE_CENTRE)}; the corrupt image was refused")
-    finally:
-        editor.kill()
 
 
 def blue_sphere(shot):
@@ -624,8 +585,7 @@ def scenario_material_choice(x, glint, output, state):
     library = os.path.join(output, "two_paints.mtl")
     with open(library, "w") as out:
         out.write("newmtl green\nKd 0.1 0.8 0.1\nillum 1\n\nnewmtl blue\nKd 0.1 0.1 0.8\nillum 1\n")
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state):
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
         base = x.wait_stable(VIEWPORT)  # before the modal dims it
         x.key("ctrl+o")
@@ -647,13 +607,10 @@ def scenario_material_choice(x, glint, output, state):
         x.key("Escape")
         x.wait_for(matches(base), "Esc to change nothing")
         print("ok: two materials offered, the second applied and undone, Esc changed nothing")
-    finally:
-        editor.kill()
 
 
 def scenario_model_switch(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
-    try:
+    with Editor(x, glint, output, state):
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
         base = x.wait_stable(VIEWPORT)
         x.click(*MODEL_COMBO)
@@ -672,14 +629,11 @@ def scenario_model_switch(x, glint, output, state):
         x.key("ctrl+z")
         x.wait_for(matches(base), "one Ctrl+Z to bring the Blinn-Phong material back")
         print("ok: Blinn-Phong → Lambert kept the red albedo, one Ctrl+Z undid the switch")
-    finally:
-        editor.kill()
 
 
 def scenario_redraw_changes(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
     window = (0, 0, 1280, 800)
-    try:
+    with Editor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the sphere to change after the slider drag")
@@ -694,8 +648,6 @@ def scenario_redraw_changes(x, glint, output, state):
         difference = region_difference(drawn, whole, window, step=1)
         assert difference == 0, f"the frame drawn in changed parts differs from the whole frame by {difference:.4f} on average"
         print("ok: after a slider drag the window equals the frame drawn whole")
-    finally:
-        editor.kill()
 
 
 if __name__ == "__main__":

@@ -68,8 +68,7 @@ def finish(x, editor):
 
 
 def scenario_overlays(x, glint, output, state):
-    editor = start(x, glint, output, state)
-    try:
+    with start(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.key("w")
         wire = x.wait_for(differs(base, 2.0), "W to draw the wireframe over the sphere")
@@ -85,13 +84,10 @@ def scenario_overlays(x, glint, output, state):
         x.wait_for(matches(base), "Ctrl+Z to undo the normals toggle")
         finish(x, editor)
         print("ok: W toggled the wireframe, N the normals, Ctrl+Z undid the toggle")
-    finally:
-        editor.kill()
 
 
 def scenario_add_object(x, glint, output, state):
-    editor = start(x, glint, output, state)
-    try:
+    with start(x, glint, output, state) as editor:
         shot = x.wait_for(lit_sphere, "the lit sphere")
         pictures = [shot]
         for kind in ("Plane", "Cube", "Torus"):
@@ -109,8 +105,6 @@ def scenario_add_object(x, glint, output, state):
         assert max(counts) > counts[0] + 14, f"a torus adds its tessellation: {counts}"
         assert counts[-1] == counts[0] + 14, f"undo should take the torus away again: {counts}"
         print(f"ok: plane, cube and torus showed; triangle counts {steps}; Ctrl+Z removed the torus")
-    finally:
-        editor.kill()
 
 
 SHADING_COMBO = (1018, 590)
@@ -120,8 +114,7 @@ SHADING_LIST = (935, 628, 1000, 690)  # under the combo, where its list opens: "
 
 
 def scenario_shading(x, glint, output, state):
-    editor = start(x, glint, output, state)
-    try:
+    with start(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         before = x.screenshot()
         slow_click(x, SHADING_COMBO)
@@ -141,8 +134,6 @@ def scenario_shading(x, glint, output, state):
         counts = triangle_counts(editor.log)
         assert min(counts) < counts[0], f"fewer segments should draw fewer triangles: {counts}"
         print(f"ok: flat shading and the segments slider changed the sphere; triangles {sorted(set(counts))}")
-    finally:
-        editor.kill()
 
 
 # A regular octahedron: 6 vertices, 8 triangles.
@@ -155,8 +146,7 @@ def scenario_open_mesh(x, glint, output, state):
     path = os.path.join(output, "octahedron.obj")
     with open(path, "w") as obj:
         obj.write(OCTAHEDRON_OBJ)
-    editor = start(x, glint, output, state)
-    try:
+    with start(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.key("ctrl+m")  # File ▸ Open mesh…: the file browser
         time.sleep(1.0)
@@ -168,8 +158,6 @@ def scenario_open_mesh(x, glint, output, state):
         counts = triangle_counts(editor.log)
         assert counts[-1] == counts[0] + 8, f"the octahedron adds 8 triangles: {counts}"
         print(f"ok: the OBJ loaded through the file browser; triangles {counts[0]} → {counts[-1]}")
-    finally:
-        editor.kill()
 
 
 if __name__ == "__main__":

@@ -428,6 +428,13 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
         if (decoded) texture.image = *decoded;
         return texture;
     };
+    // A scalar parameter read from one channel of data.png, mapped onto `range`.
+    auto dataImage = [&](const std::string& parameter, TextureChannel channel, glm::vec2 range) {
+        MaterialTexture texture = image(parameter, "data.png", TextureColorSpace::Linear);
+        texture.channel = channel;
+        texture.range = range;
+        return texture;
+    };
     std::vector<Material> materials;
     Material paint = test::materialWith("car paint", BrdfModel::OpenPbr,
         {{"base_color", glm::vec3(0.6f, 0.05f, 0.04f)}, {"base_metalness", 0.4f}, {"specular_roughness", 0.35f},
@@ -439,25 +446,15 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     color.rotation = 0.4f;
     color.offset = {0.1f, 0.2f};
     putTexture(*paint.analytic(), color);
-    MaterialTexture rough = image("specular_roughness", "data.png", TextureColorSpace::Linear);
-    rough.channel = TextureChannel::G;
-    rough.range = {0.0f, 0.35f};
-    MaterialTexture metal = rough;
-    metal.parameter = "base_metalness";
-    metal.channel = TextureChannel::B;
-    metal.range = {0.0f, 0.4f};
-    putTexture(*paint.analytic(), rough);
-    putTexture(*paint.analytic(), metal);
+    putTexture(*paint.analytic(), dataImage("specular_roughness", TextureChannel::G, {0.0f, 0.35f}));
+    putTexture(*paint.analytic(), dataImage("base_metalness", TextureChannel::B, {0.0f, 0.4f}));
     MaterialTexture normal = image(kNormalMapKey, "normal.png", TextureColorSpace::Linear);
     normal.normalScale = 0.6f;
     putTexture(*paint.analytic(), normal);
     MaterialTexture coatNormal = image(kCoatNormalMapKey, "normal.png", TextureColorSpace::Linear);
     coatNormal.normalScale = 0.8f;
     putTexture(*paint.analytic(), coatNormal);
-    MaterialTexture coatRough = image("coat_roughness", "data.png", TextureColorSpace::Linear);
-    coatRough.channel = TextureChannel::G;
-    coatRough.range = {0.0f, 0.05f};
-    putTexture(*paint.analytic(), coatRough);
+    putTexture(*paint.analytic(), dataImage("coat_roughness", TextureChannel::G, {0.0f, 0.05f}));
     materials.push_back(paint);
 
     Material velvet = test::materialWith("velvet", BrdfModel::OpenPbr,
@@ -483,13 +480,8 @@ TEST(GltfOpenPbr, GlintToGltfToGlintKeepsParametersAndTextures) {
     setParam(glass, "transmission_color", glm::vec3(0.7f, 0.9f, 0.8f));
     setParam(glass, "transmission_depth", 0.05f);
     setParam(glass, "geometry_thickness", 0.02f);  // glTF's volume needs one (0 is written as the sphere's diameter)
-    MaterialTexture transmission = image("transmission_weight", "data.png", TextureColorSpace::Linear);
-    transmission.range = {0.0f, 1.0f};
-    putTexture(*glass.analytic(), transmission);
-    MaterialTexture thickness = image("geometry_thickness", "data.png", TextureColorSpace::Linear);
-    thickness.channel = TextureChannel::G;
-    thickness.range = {0.0f, 0.02f};
-    putTexture(*glass.analytic(), thickness);
+    putTexture(*glass.analytic(), dataImage("transmission_weight", TextureChannel::R, {0.0f, 1.0f}));
+    putTexture(*glass.analytic(), dataImage("geometry_thickness", TextureChannel::G, {0.0f, 0.02f}));
     materials.push_back(glass);
 
     Material brushed = test::materialWith("brushed steel", BrdfModel::OpenPbr,

@@ -27,6 +27,18 @@ std::string errorOf(const std::string& text) {
 
 std::string document(const std::string& body) { return "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\">\n" + body + "</materialx>\n"; }
 
+// A document's lines for a shader node <category name="name" type="surfaceshader"> of constant
+// inputs {name, value}: color3 where the value lists three numbers, float otherwise.
+std::string shaderNode(const std::string& category, const std::string& name,
+                       std::initializer_list<std::pair<std::string, std::string>> inputs) {
+    std::string text = "  <" + category + " name=\"" + name + "\" type=\"surfaceshader\">\n";
+    for (const auto& [input, value] : inputs) {
+        const char* type = value.find(',') == std::string::npos ? "float" : "color3";
+        text += "    <input name=\"" + input + "\" type=\"" + type + "\" value=\"" + value + "\" />\n";
+    }
+    return text + "  </" + category + ">\n";
+}
+
 std::string warningsText(const ImportedFile& file) {
     std::string text;
     for (const Diagnostic& warning : allWarnings(file)) text += warning.format() + "\n";
@@ -54,18 +66,11 @@ TEST(MaterialX, OpenPbrCarPaintFromTheMaterialXExamples) {
 }
 
 TEST(MaterialX, StandardSurfaceGoldThroughTheTranslationGraph) {
-    const ImportedFile file = parseMaterialXOk(document(R"(
-  <standard_surface name="SR_gold" type="surfaceshader">
-    <input name="base" type="float" value="1" />
-    <input name="base_color" type="color3" value="0.944, 0.776, 0.373" />
-    <input name="specular" type="float" value="0.5" />
-    <input name="specular_roughness" type="float" value="0.02" />
-    <input name="metalness" type="float" value="1" />
-    <input name="sheen_roughness" type="float" value="0.5" />
-    <input name="thin_film_thickness" type="float" value="250" />
-    <input name="emission" type="float" value="0.5" />
-  </standard_surface>
-  <surfacematerial name="Gold" type="material">
+    const ImportedFile file = parseMaterialXOk(document(
+        shaderNode("standard_surface", "SR_gold",
+                   {{"base", "1"}, {"base_color", "0.944, 0.776, 0.373"}, {"specular", "0.5"}, {"specular_roughness", "0.02"},
+                    {"metalness", "1"}, {"sheen_roughness", "0.5"}, {"thin_film_thickness", "250"}, {"emission", "0.5"}}) +
+        R"(  <surfacematerial name="Gold" type="material">
     <input name="surfaceshader" type="surfaceshader" nodename="SR_gold" />
   </surfacematerial>
 )"));
@@ -85,38 +90,20 @@ TEST(MaterialX, StandardSurfaceGoldThroughTheTranslationGraph) {
 }
 
 TEST(MaterialX, StandardSurfaceCoatOnMetalTintsTheBase) {
-    const ImportedFile file = parseMaterialXOk(document(R"(
-  <standard_surface name="copper" type="surfaceshader">
-    <input name="metalness" type="float" value="1" />
-    <input name="base_color" type="color3" value="0.5, 0.5, 0.5" />
-    <input name="coat" type="float" value="1" />
-    <input name="coat_color" type="color3" value="1, 0.5, 0.25" />
-  </standard_surface>
-)"));
+    const ImportedFile file = parseMaterialXOk(document(shaderNode(
+        "standard_surface", "copper", {{"metalness", "1"}, {"base_color", "0.5, 0.5, 0.5"}, {"coat", "1"}, {"coat_color", "1, 0.5, 0.25"}})));
     ASSERT_EQ(file.materials.size(), 1u);
     expectNear(paramValue(file.materials[0].material, "base_color"), {0.5f, 0.25f, 0.125f});
     EXPECT_EQ(paramScalar(file.materials[0].material, "coat_weight"), 0.0f);
 }
 
 TEST(MaterialX, GltfPbrMapsOneToOneWithUnitsConverted) {
-    const ImportedFile file = parseMaterialXOk(document(R"(
-  <gltf_pbr name="SR_glass" type="surfaceshader">
-    <input name="base_color" type="color3" value="1, 1, 1" />
-    <input name="metallic" type="float" value="0" />
-    <input name="roughness" type="float" value="0.1" />
-    <input name="transmission" type="float" value="1" />
-    <input name="ior" type="float" value="1.45" />
-    <input name="thickness" type="float" value="0.02" />
-    <input name="attenuation_color" type="color3" value="0.5, 0.9, 0.5" />
-    <input name="attenuation_distance" type="float" value="0.05" />
-    <input name="iridescence" type="float" value="1" />
-    <input name="iridescence_thickness" type="float" value="400" />
-    <input name="sheen_color" type="color3" value="0.2, 0.2, 0.3" />
-    <input name="anisotropy_rotation" type="float" value="1.5707964" />
-    <input name="emissive" type="color3" value="1, 0.5, 0" />
-    <input name="emissive_strength" type="float" value="2" />
-  </gltf_pbr>
-)"));
+    const ImportedFile file = parseMaterialXOk(document(shaderNode(
+        "gltf_pbr", "SR_glass",
+        {{"base_color", "1, 1, 1"}, {"metallic", "0"}, {"roughness", "0.1"}, {"transmission", "1"}, {"ior", "1.45"},
+         {"thickness", "0.02"}, {"attenuation_color", "0.5, 0.9, 0.5"}, {"attenuation_distance", "0.05"}, {"iridescence", "1"},
+         {"iridescence_thickness", "400"}, {"sheen_color", "0.2, 0.2, 0.3"}, {"anisotropy_rotation", "1.5707964"},
+         {"emissive", "1, 0.5, 0"}, {"emissive_strength", "2"}})));
     ASSERT_EQ(file.materials.size(), 1u);
     const Material& m = file.materials[0].material;
     EXPECT_EQ(paramScalar(m, "specular_roughness"), 0.1f);
@@ -249,11 +236,9 @@ TEST(MaterialX, MalformedDocumentsGiveLocatedErrors) {
     EXPECT_EQ(errorOf("<materialx version=\"1.39\">\n  <open_pbr_surface name=\"a\">\n</materialx>\n"),
               "bad.mtlx:3:3: not well-formed XML: mismatched tag");
     EXPECT_EQ(errorOf("<?xml version=\"1.0\"?>\n<scene/>\n"), "bad.mtlx:2:1: the root element is <scene>, not <materialx>: not a MaterialX document");
-    EXPECT_EQ(errorOf(document("  <open_pbr_surface name=\"a\" type=\"surfaceshader\">\n"
-                               "    <input name=\"base_color\" type=\"color3\" value=\"0.1, x, 0.3\" />\n  </open_pbr_surface>\n")),
+    EXPECT_EQ(errorOf(document(shaderNode("open_pbr_surface", "a", {{"base_color", "0.1, x, 0.3"}}))),
               "bad.mtlx:4:5: '0.1, x, 0.3' is not a color3 (3 comma-separated numbers)");
-    EXPECT_EQ(errorOf(document("  <open_pbr_surface name=\"a\" type=\"surfaceshader\">\n"
-                               "    <input name=\"base_color\" type=\"color3\" value=\"0.1, 0.3\" />\n  </open_pbr_surface>\n")),
+    EXPECT_EQ(errorOf(document(shaderNode("open_pbr_surface", "a", {{"base_color", "0.1, 0.3"}}))),
               "bad.mtlx:4:5: '0.1, 0.3' is not a color3: 3 numbers expected, 2 found");
     EXPECT_EQ(errorOf(document("  <open_pbr_surface name=\"a\" type=\"surfaceshader\">\n"
                                "    <input name=\"base_color\" type=\"color3\" nodegraph=\"NG\" output=\"out\" />\n  </open_pbr_surface>\n")),
@@ -286,11 +271,8 @@ TEST(MaterialX, ValuesOutsideGlintsRangesAreReadAsTheNearestWithAWarning) {
 }
 
 TEST(MaterialX, UnknownInputsAndDroppedLobesAreLocatedWarnings) {
-    const ImportedFile file = parseMaterialXOk(document(R"(  <open_pbr_surface name="a" type="surfaceshader">
-    <input name="subsurface_weight" type="float" value="0.5" />
-    <input name="base_colour" type="color3" value="1, 0, 0" />
-  </open_pbr_surface>
-)"));
+    const ImportedFile file =
+        parseMaterialXOk(document(shaderNode("open_pbr_surface", "a", {{"subsurface_weight", "0.5"}, {"base_colour", "1, 0, 0"}})));
     EXPECT_EQ(warningsText(file),
               "test.mtlx:5:5: warning: 'base_colour' is not an input of open_pbr_surface (ignored)\n"
               "test.mtlx:4:5: warning: 'subsurface_weight' is dropped: Glint's openpbr has no subsurface scattering\n");

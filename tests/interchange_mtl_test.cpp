@@ -156,10 +156,7 @@ TEST(Mtl, OtherToolsQuirksAreWarningsWithLines) {
 }
 
 TEST(Mtl, MalformedFilesGiveLocatedErrors) {
-    const struct {
-        std::string text;
-        const char* expected;
-    } cases[] = {
+    test::expectParseErrors(parseMtl, "test.mtl", {
         {"", "no material in the file"},
         {"# only a comment\n", "no material in the file"},
         {"Kd 1 1 1\n", "test.mtl:1: 'Kd' before the first 'newmtl'"},
@@ -179,13 +176,7 @@ TEST(Mtl, MalformedFilesGiveLocatedErrors) {
         {"newmtl a\nKd 0.5 0.5 0.5 0.5\n", "'Kd' takes one (grey) or three"},
         {"newmtl a\nmap_Kd \x01 -bm 0,5 bump.png\n", "test.mtl:2: control character 0x01"},
         {std::string("newmtl a\nmap_Kd x\0y.png\n", 24), "test.mtl:2: control character 0x00"},
-    };
-    for (const auto& c : cases) {
-        auto parsed = parseMtl(c.text, "test.mtl");
-        ASSERT_FALSE(parsed.ok()) << c.text;
-        EXPECT_NE(parsed.error().format().find(c.expected), std::string::npos)
-            << "input: " << c.text << "\nmessage: " << parsed.error().format();
-    }
+    });
 }
 
 }  // namespace

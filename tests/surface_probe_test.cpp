@@ -28,6 +28,14 @@ Scene probeSphereScene(BrdfModel model) {
     return scene;
 }
 
+// The probe hits a surface that refracts the view ray from index etaIncident into etaTransmitted.
+void expectViewRefraction(const ProbeResult& probe, float etaIncident, float etaTransmitted) {
+    ASSERT_TRUE(probe.hitSurface);
+    ASSERT_TRUE(probe.viewTransmitted.has_value());
+    EXPECT_FLOAT_EQ(probe.viewTransmitted->etaIncident, etaIncident);
+    EXPECT_FLOAT_EQ(probe.viewTransmitted->etaTransmitted, etaTransmitted);
+}
+
 TEST(SurfaceProbe, LambertSunCentreIsTheWorkedExample) {
     const Scene scene = test::loadTestScene("scenes/lambert_sun.json");
     // 255×255: pixel 127's centre is the image centre, whose ray meets the sphere's apex.
@@ -100,11 +108,8 @@ TEST(SurfaceProbe, BlinnPhongPointUnderAPointLight) {
 TEST(SurfaceProbe, GlassRefractsBySnellsLaw) {
     const Scene scene = probeSphereScene(BrdfModel::Glass);  // η = 1.5
     const ProbeResult probe = probeSurface(scene, 44, 40, 65, 65);
-    ASSERT_TRUE(probe.hitSurface);
-    ASSERT_TRUE(probe.viewTransmitted.has_value());
+    ASSERT_NO_FATAL_FAILURE(expectViewRefraction(probe, 1.0f, 1.5f));
     const ProbeRefraction& refraction = *probe.viewTransmitted;
-    EXPECT_FLOAT_EQ(refraction.etaIncident, 1.0f);
-    EXPECT_FLOAT_EQ(refraction.etaTransmitted, 1.5f);
     EXPECT_FALSE(refraction.totalInternalReflection);
     EXPECT_GT(refraction.incidentDegrees, 10.0f);
     const float sinIncident = std::sin(glm::radians(refraction.incidentDegrees));
@@ -121,11 +126,8 @@ TEST(SurfaceProbe, GlassSeenFromInsideReflectsTotallyBeyondTheCriticalAngle) {
     scene.camera.position = {0, 0, 1.5f};  // inside the glass, looking along +x at the wall
     scene.camera.target = {1, 0, 1.5f};
     const ProbeResult probe = probeSurface(scene, 32, 32, 65, 65);
-    ASSERT_TRUE(probe.hitSurface);
-    ASSERT_TRUE(probe.viewTransmitted.has_value());
+    ASSERT_NO_FATAL_FAILURE(expectViewRefraction(probe, 1.5f, 1.0f));
     const ProbeRefraction& refraction = *probe.viewTransmitted;
-    EXPECT_FLOAT_EQ(refraction.etaIncident, 1.5f);
-    EXPECT_FLOAT_EQ(refraction.etaTransmitted, 1.0f);
     ASSERT_TRUE(refraction.criticalDegrees.has_value());
     EXPECT_NEAR(*refraction.criticalDegrees, glm::degrees(std::asin(1.0f / 1.5f)), 1e-3f);  // 41.8°
     // cos θ_i = x/r at x = √(4 − 1.5²): θ_i ≈ 48.6° > 41.8°.

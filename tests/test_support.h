@@ -1,5 +1,5 @@
 // Helpers shared by Glint's tests: where the test data lives, a per-test output folder, a scene
-// loaded from the test data, and a material with some parameters set.
+// loaded from the test data, a material with some parameters set, and bad files an importer refuses.
 #pragma once
 
 #include <filesystem>
@@ -43,6 +43,23 @@ inline Material materialWith(std::string name, BrdfModel model, std::initializer
     Material material = Material::withDefaults(std::move(name), model);
     for (const Setting& setting : settings) setParam(material, setting.param, setting.value);
     return material;
+}
+
+// Text an importer must refuse, with a message that contains `expected`.
+struct BadText {
+    std::string text;
+    const char* expected;
+};
+
+// Each case's text fails to parse as `file` (parse: an importer's parseGltf, parseMtl, …).
+template <class Parse>
+void expectParseErrors(Parse parse, const std::string& file, std::initializer_list<BadText> cases) {
+    for (const BadText& c : cases) {
+        auto parsed = parse(c.text, file);
+        ASSERT_FALSE(parsed.ok()) << c.text;
+        EXPECT_NE(parsed.error().format().find(c.expected), std::string::npos)
+            << "input: " << c.text << "\nmessage: " << parsed.error().format();
+    }
 }
 
 }  // namespace glint::test

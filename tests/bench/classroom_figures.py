@@ -6,14 +6,13 @@ the probe and the plots recomputed); times come from GLINT_LOG_FRAMES.
 usage: /usr/bin/python3 tests/bench/classroom_figures.py build/app/glint [TOGGLES]"""
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from gui_test_support import XServer, write_png  # noqa: E402
-from bench.editor_figures import frames  # noqa: E402
+from gui_test_support import write_png  # noqa: E402
+from bench.editor_figures import frames, logging_editor  # noqa: E402
 
 WIDTH, HEIGHT = 1920, 1080
 
@@ -41,36 +40,28 @@ def main():
     glint = sys.argv[1]
     toggles = int(sys.argv[2]) if len(sys.argv) > 2 else 10
     state = tempfile.mkdtemp(prefix="glint-classroom-figures-")
-    log_path = os.path.join(state, "frames.log")
-    with XServer(WIDTH, HEIGHT) as x, open(log_path, "w") as log:
-        env = dict(x.env, GLINT_STATE_DIR=state, GLINT_LOG_FRAMES="1")
-        editor = subprocess.Popen([glint], env=env, stdout=log, stderr=log)
-        try:
-            window = x.find_window("Glint")
-            x.run("xdotool", "windowsize", window, str(WIDTH), str(HEIGHT))  # the editor opens at 1280×800
-            time.sleep(4)
-            plain = report("plain viewport", toggled_frames(x, log_path, toggles))
+    with logging_editor(glint, WIDTH, HEIGHT, state) as (x, _, window, log_path):
+        x.run("xdotool", "windowsize", window, str(WIDTH), str(HEIGHT))  # the editor opens at 1280×800
+        time.sleep(4)
+        plain = report("plain viewport", toggled_frames(x, log_path, toggles))
 
-            x.key("F11")  # presentation mode: 2× UI, large font; the columns double in width
-            time.sleep(2)
-            centre = (930, 540)
-            x.run("xdotool", "mousemove", "--sync", str(centre[0]), str(centre[1]))
-            time.sleep(0.3)
-            x.run("xdotool", "keydown", "shift")
-            time.sleep(0.3)  # a frame that sees Shift held before the press
-            x.run("xdotool", "click", "1")  # Shift+click: the surface probe on the sphere
-            time.sleep(0.3)
-            x.run("xdotool", "keyup", "shift")
-            time.sleep(1.5)
-            x.key("b")  # the BRDF and Fresnel plots window (polar, lobe, albedo, Fresnel)
-            time.sleep(2)
-            write_png(x.screenshot(), os.path.join(state, "classroom.png"))
-            print(f"screenshot of the measured state: {os.path.join(state, 'classroom.png')}")
-            classroom = report("presentation mode + probe + plots", toggled_frames(x, log_path, toggles))
-            print(f"ratio (presentation + probe + plots) / plain: {classroom / plain:.2f}")
-        finally:
-            editor.kill()
-            editor.wait()
+        x.key("F11")  # presentation mode: 2× UI, large font; the columns double in width
+        time.sleep(2)
+        centre = (930, 540)
+        x.run("xdotool", "mousemove", "--sync", str(centre[0]), str(centre[1]))
+        time.sleep(0.3)
+        x.run("xdotool", "keydown", "shift")
+        time.sleep(0.3)  # a frame that sees Shift held before the press
+        x.run("xdotool", "click", "1")  # Shift+click: the surface probe on the sphere
+        time.sleep(0.3)
+        x.run("xdotool", "keyup", "shift")
+        time.sleep(1.5)
+        x.key("b")  # the BRDF and Fresnel plots window (polar, lobe, albedo, Fresnel)
+        time.sleep(2)
+        write_png(x.screenshot(), os.path.join(state, "classroom.png"))
+        print(f"screenshot of the measured state: {os.path.join(state, 'classroom.png')}")
+        classroom = report("presentation mode + probe + plots", toggled_frames(x, log_path, toggles))
+        print(f"ratio (presentation + probe + plots) / plain: {classroom / plain:.2f}")
 
 
 if __name__ == "__main__":
