@@ -24,10 +24,12 @@ vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
-// The specular lobe's f_r cos θ_i widened from roughness `alpha` to `widened`.
+// The specular lobe's f_r cos θ_i widened for a light whose GGX lobe is widened from `alpha` to
+// `widened`: by half as much variance (twin of wardPeakAlpha).
 vec3 wardPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float alpha, float widened) {
-    p.roughness_x *= widened / alpha;
-    p.roughness_y *= widened / alpha;
+    float wardWidened = sqrt(alpha * alpha + 0.5 * (widened * widened - alpha * alpha));
+    p.roughness_x *= wardWidened / alpha;
+    p.roughness_y *= wardWidened / alpha;
     return p.specular * (wardSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
 }
 
