@@ -169,7 +169,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     // The first autosave comes one interval after start, not at the first edit.
     state.lastAutosaveSeconds = glfwGetTime();
     const double autosaveInterval = autosaveIntervalSeconds();
-    // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time and input-to-frame time.
+    // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time, input-to-frame time and
+    // when it was presented (glfwGetTime).
     const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
 
     IMGUI_CHECKVERSION();
@@ -455,10 +456,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             std::fprintf(stderr,
                          "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
                          "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
+                         "presented %.1f ms at %.3f s, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
                          viewportPixels.x, viewportPixels.y, renderedScale, renderMilliseconds, ms(frameStart, now),
                          state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
-                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), pixelsPresented, plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
+                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), glfwGetTime(), pixelsPresented,
+                         plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
         }
         if (logFrames && !plan.render && !waitedForPrograms)  // the UI alone (a progress bar, a menu)
             std::fprintf(stderr, "glint ui frame: input to presented %.1f ms\n",

@@ -54,6 +54,8 @@ def frames(log_path, start_line):
         frame = {"size": words[3], "scale": words[5], "render": float(words[7]), "total": float(words[13])}
         if "presented" in words[14:]:  # the phases: ui built, displayed, ui drawn, presented [ms]
             frame.update(ui=float(words[23]), display=float(words[26]), drawn=float(words[30]), present=float(words[33]))
+        if "at" in words:  # when it was presented [s]
+            frame["at"] = float(words[words.index("at") + 1])
         if "band" in words:
             frame["band"] = words[words.index("band") + 1].rstrip(",")
         parsed.append(frame)
@@ -122,8 +124,17 @@ def main():
         previews = [f for f in dragged if f["scale"] != "1/1"]
         print(f"slider drag with 4 lights ({width}x{height} window): {len(dragged)} frames, "
               f"sizes {sorted(set(f['size'] + ' ' + f['scale'] for f in dragged))}")
-        print(f"  frames per second during the drag: {(len(dragged) - 1) / drag_seconds:.1f} "
-              f"({len(dragged) - 1} frames in {drag_seconds:.2f} s of pointer motion)")
+        # The rate the editor drew at: the frames between the first and the last reduced one, by the
+        # times they were presented; the pointer's whole gesture (xdotool's start, its pauses before
+        # and after the motion) is longer.
+        if len(previews) > 1 and "at" in previews[0]:
+            drawing = previews[-1]["at"] - previews[0]["at"]
+            print(f"  frames per second during the drag: {(len(previews) - 1) / drawing:.1f} "
+                  f"({len(previews) - 1} frame intervals in {drawing:.2f} s between the first and the last reduced frame; "
+                  f"{len(dragged) - 1} frames in {drag_seconds:.2f} s of the whole gesture)")
+        else:
+            print(f"  frames per second during the drag: {(len(dragged) - 1) / drag_seconds:.1f} "
+                  f"({len(dragged) - 1} frames in {drag_seconds:.2f} s of the whole gesture)")
         print("  " + summary("input to presented frame during the drag", [f["total"] for f in dragged[:-1]]))
         print("  " + summary("render only during the drag", [f["render"] for f in dragged[:-1]]))
         for phase, name in (("ui", "ui built (input, panels)"), ("display", "display pass (clear, radiance to screen)"),
