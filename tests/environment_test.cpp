@@ -390,8 +390,9 @@ TEST(EnvironmentMap, TheSplitSumWithTheF82TermMatchesAMetalsExactFresnel) {
                 const glm::vec2 scaleBias = sampleLobeAlbedo(kGgxSplitSum, cosOut, perceptual);
                 const glm::vec3 schlick = fresnel.f0 * scaleBias.x + scaleBias.y;
                 const glm::vec3 splitSum = schlick - fresnel.coefficient * sampleLobeAlbedo(kGgxF82, cosOut, perceptual).x;
-                SCOPED_TRACE("n " + std::to_string(ior.r) + ", r " + std::to_string(perceptual) + ", cos θ_o " + std::to_string(cosOut));
-                const glm::dvec3 exact = hemisphereAlbedo(300, [&](glm::vec3 wi) { return glm::dvec3(evalCookTorrance(metal, wi, wo, frame)); });
+                SCOPED_TRACE(testing::Message() << "n " << ior.r << ", r " << perceptual << ", cos θ_o " << cosOut);
+                const glm::dvec3 exact =
+                    hemisphereAlbedo(300, [&](glm::vec3 wi) { return glm::dvec3(evalCookTorrance(metal, wi, wo, frame)); });
                 for (int c = 0; c < 3; ++c) {
                     EXPECT_NEAR(splitSum[c], exact[c], tolerance * exact[c]) << "channel " << c;
                     worstSchlick = std::max(worstSchlick, static_cast<float>(std::abs(schlick[c] - exact[c]) / exact[c]));

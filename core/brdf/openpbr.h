@@ -146,7 +146,8 @@ inline glm::vec3 openPbrBaseSpecular(const OpenPbrParams& p, const OpenPbrView& 
 // frame.coatFrame()), its lobe at GGX roughness `alphas`.
 inline float openPbrCoat(const OpenPbrParams& p, const OpenPbrView& v, glm::vec3 coatIn, glm::vec3 coatOut, glm::vec2 alphas) {
     if (coatIn.z <= 0.0f || coatOut.z <= 0.0f) return 0.0f;
-    const float coatFresnel = schlickF90(glm::vec3(v.coatF0), glm::vec3(1.0f), glm::dot(coatIn, glm::normalize(coatIn + coatOut))).x;
+    const float cosDifference = glm::dot(coatIn, glm::normalize(coatIn + coatOut));
+    const float coatFresnel = schlickF90(glm::vec3(v.coatF0), glm::vec3(1.0f), cosDifference).x;
     return p.coatWeight * v.coatCompensation * coatFresnel * ggxLobe(coatIn, coatOut, alphas);
 }
 
@@ -157,8 +158,9 @@ inline glm::vec3 evalOpenpbr(const OpenPbrParams& p, glm::vec3 wi, glm::vec3 wo,
     const OpenPbrView v = openPbrView(p, out.z);
     const glm::vec3 diffuse = (1.0f - v.dielectricAlbedo) * (1.0f - p.transmissionWeight) *
                               eonLobe(p.baseWeight * p.baseColor, p.baseDiffuseRoughness, in, out);
-    const glm::vec3 base = openPbrBaseSpecular(p, v, glm::dot(in, glm::normalize(in + out)), ggxLobe(in, out, v.specularAlphas)) +
-                           (1.0f - p.baseMetalness) * diffuse;
+    const float cosDifference = glm::dot(in, glm::normalize(in + out));
+    const glm::vec3 base =
+        openPbrBaseSpecular(p, v, cosDifference, ggxLobe(in, out, v.specularAlphas)) + (1.0f - p.baseMetalness) * diffuse;
     const ShadingFrame coatFrame = frame.coatFrame();
     const float coat = openPbrCoat(p, v, openPbrLocal(p, coatFrame, wi), openPbrLocal(p, coatFrame, wo), v.coatAlphas);
     const glm::vec3 fuzz = p.fuzzWeight * p.fuzzColor * v.sheenScale * sheenLobe(in, out, p.fuzzRoughness);

@@ -49,7 +49,6 @@ inline glm::vec3 schlickF90(glm::vec3 f0, glm::vec3 f90, float cosine) {
 // F0 of a dielectric interface of relative index η: ((η − 1)/(η + 1))².
 inline float dielectricF0(float eta) { return ((eta - 1.0f) / (eta + 1.0f)) * ((eta - 1.0f) / (eta + 1.0f)); }
 
-
 // EON: energy-preserving Fujii Oren-Nayar (Portsmouth et al., "EON: A practical energy-preserving
 // rough diffuse BRDF", JCGT 14(1), 2025), with its polynomial E_FON; ρ albedo, r ∈ [0, 1].
 inline constexpr float kFonConstant1 = 0.5f - 2.0f / (3.0f * kPi);

@@ -221,8 +221,10 @@ glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& fra
 // angular radius ρ spreads the half vector's slope uniformly over a disc of radius ρ/2, of variance
 // ρ²/16 per axis, and variances add: α_w² = α² + ρ²/8, half the (0.5 sin ρ)² GGX's lobes are
 // widened by (environmentPeakAlpha; GGX's long tails make its best factor measured, not derived).
-// On the studio HDRI at α 0.05 the ratio went from 1.028 with GGX's widening to 1.000.
-float wardPeakAlpha(float alpha, float widened) { return std::sqrt(alpha * alpha + 0.5f * (widened * widened - alpha * alpha)); }
+// On the studio HDRI at α 0.05 the ratio went from 1.028 with GGX's widening to 0.997.
+float wardPeakAlpha(float alpha, float widened) {
+    return std::sqrt(alpha * alpha + 0.5f * (widened * widened - alpha * alpha));
+}
 
 // Ward's lobe (Beckmann-like, without GGX's long tails) takes its GGX stand-in (lobe_albedo.h): the
 // prefiltered level with its mean cosine, along its mean direction n + (R − n) t.

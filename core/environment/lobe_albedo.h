@@ -26,8 +26,8 @@ inline constexpr int kLobeAlbedoSize = 32;
 // whose GGX kernel (n = v = R) has the lobe's mean cosine to its mean direction, y: that direction
 // as the factor t of n + (R − n) t); last GGX's F82 share C. Lobes take α ≥ kLobeAlbedoMinAlpha.
 // Computed on first use, a thread per table, and kept in the disk cache (util/disk_cache.h).
-enum LobeAlbedoTable { kGgxSplitSum = 0, kBlinnPhongAlbedo = 1, kPhongAlbedo = 5, kWardAlbedo = 9, kWardStandIn = 11, kGgxF82 = 13,
-                       kLobeAlbedoTables = 14 };
+enum LobeAlbedoTable { kGgxSplitSum = 0, kBlinnPhongAlbedo = 1, kPhongAlbedo = 5, kWardAlbedo = 9, kWardStandIn = 11,
+                       kGgxF82 = 13, kLobeAlbedoTables = 14 };
 inline constexpr float kLobeAlbedoMinAlpha = 0.01f;
 
 struct LobeAlbedoTables {

@@ -105,7 +105,8 @@ vec3 openPbrBaseSpecular(MaterialParams p, OpenPbrView v, float cosDifference, f
 
 float openPbrCoat(MaterialParams p, OpenPbrView v, vec3 coatIn, vec3 coatOut, vec2 alphas) {
     if (coatIn.z <= 0.0 || coatOut.z <= 0.0) return 0.0;
-    float coatFresnel = schlickF90(vec3(v.coatF0), vec3(1.0), dot(coatIn, normalize(coatIn + coatOut))).x;
+    float cosDifference = dot(coatIn, normalize(coatIn + coatOut));
+    float coatFresnel = schlickF90(vec3(v.coatF0), vec3(1.0), cosDifference).x;
     return p.coat_weight * v.coatCompensation * coatFresnel * ggxLobe(coatIn, coatOut, alphas);
 }
 
@@ -115,7 +116,8 @@ vec3 evalOpenpbr(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {
     OpenPbrView v = openPbrView(p, outLocal.z);
     vec3 diffuse = (1.0 - v.dielectricAlbedo) * (1.0 - p.transmission_weight) *
                    eonLobe(p.base_weight * p.base_color, p.base_diffuse_roughness, inLocal, outLocal);
-    vec3 base = openPbrBaseSpecular(p, v, dot(inLocal, normalize(inLocal + outLocal)), ggxLobe(inLocal, outLocal, v.specularAlphas)) +
+    float cosDifference = dot(inLocal, normalize(inLocal + outLocal));
+    vec3 base = openPbrBaseSpecular(p, v, cosDifference, ggxLobe(inLocal, outLocal, v.specularAlphas)) +
                 (1.0 - p.base_metalness) * diffuse;
     ShadingFrame coatFrame = coatFrameOf(frame);
     float coat = openPbrCoat(p, v, openPbrLocal(p, coatFrame, wi), openPbrLocal(p, coatFrame, wo), v.coatAlphas);
@@ -177,7 +179,8 @@ vec3 environmentLightingOpenpbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
     ENVIRONMENT_ADD_PEAKS(peaks, specularAlpha, wo, frame,
                           openPbrSpecularPeakLobe(p, v, wi, outLocal, frame, widened / specularAlpha))
     if (p.coat_weight > 0.0) {
-        ENVIRONMENT_ADD_PEAKS(peaks, coatAlpha, wo, coatFrame, openPbrCoatPeakLobe(p, v, wi, coatOut, coatFrame, widened / coatAlpha))
+        ENVIRONMENT_ADD_PEAKS(peaks, coatAlpha, wo, coatFrame,
+                              openPbrCoatPeakLobe(p, v, wi, coatOut, coatFrame, widened / coatAlpha))
     }
     return r.diffuse * environmentDiffuseRadiance(frame.normal) +
            r.coat * environmentGlossyRadianceAt(environmentDominantDirection(wo, coatFrame, coatAlpha), coatAlpha, v.coatRoughness) +
