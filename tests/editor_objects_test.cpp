@@ -92,20 +92,20 @@ std::string writeFile(const std::string& name, const std::string& text) {
     return path;
 }
 
-// Loads the mesh file `path` into `state`: no error, one object more. Returns the count before.
-size_t loadAsOneMoreObject(EditorState& state, const std::string& path) {
+// Loads the mesh file `path` into `state`: no error, one object more (fatal if not).
+void loadAsOneMoreObject(EditorState& state, const std::string& path) {
     const size_t objects = state.session.scene().objects.size();
     test::loadMeshAndSettle(state, path);
     EXPECT_TRUE(state.errorMessage.empty()) << state.errorMessage;
-    EXPECT_EQ(state.session.scene().objects.size(), objects + 1);
-    return objects;
+    ASSERT_EQ(state.session.scene().objects.size(), objects + 1);
 }
 
 TEST(EditorMeshLoad, AMeshFileBecomesAnObjectInOneUndoStep) {
     const std::string path = writeFile("tetrahedron.obj",
                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
     EditorState state;
-    const size_t objects = loadAsOneMoreObject(state, path);
+    const size_t objects = state.session.scene().objects.size();
+    ASSERT_NO_FATAL_FAILURE(loadAsOneMoreObject(state, path));
     const Scene& scene = state.session.scene();
     const auto* mesh = std::get_if<MeshShape>(&scene.objects.back().shape);
     ASSERT_NE(mesh, nullptr);
@@ -138,7 +138,7 @@ TEST(EditorMeshLoad, AnObjGetsTheMaterialItsMtlLibraryNames) {
 TEST(EditorMeshLoad, AnObjWhoseMtlLibraryIsMissingLoadsWithTheDefaultMaterialAndSaysWhy) {
     const std::string path = writeFile("unpainted.obj", "mtllib missing.mtl\nusemtl paint\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     EditorState state;
-    loadAsOneMoreObject(state, path);
+    ASSERT_NO_FATAL_FAILURE(loadAsOneMoreObject(state, path));
     const Scene& scene = state.session.scene();
     const Material& material = scene.materials.at(scene.objects.back().materialIndex);
     EXPECT_EQ(material.analytic()->model, BrdfModel::Lambert);

@@ -29,7 +29,7 @@ void expectAgreesWithReference(const Scene& scene, int size, float relativeToler
                                         << agreement.worstRelative << ")";
 }
 
-// The disc is checked out to 0.97 of its radius: the rasterised sphere's rim pixels are left out.
+// The GPU's disc is checked out to 0.97 of its radius, clear of the silhouette's pixels.
 constexpr float kInsideTheRim = 0.97f;
 
 TEST(EnvironmentGpu, WhiteOutLambertIsAFlatDisc) {

@@ -373,8 +373,8 @@ TEST(EnvironmentMap, EachLobesAlbedoTableMatchesQuadrature) {
 TEST(EnvironmentMap, TheSplitSumWithTheF82TermMatchesAMetalsExactFresnel) {
     // GGX Cook-Torrance with the exact Fresnel of aluminium and of iron: the split sum's
     // F0·A + B − a·C (f82FresnelOf) against ∫ f_r cos θ_i dω_i by the midpoint rule, per channel,
-    // within 1.5% (3% at the grazing edge, cos θ_o 0.08); Schlick's F0·A + B alone misses by up to
-    // 6% there.
+    // within 1.5% (3% at the grazing edge, cos θ_o 0.08); Schlick's F0·A + B alone misses by more
+    // than 4% somewhere.
     const ShadingFrame frame = ShadingFrame::fromNormalAndTangent({0, 0, 1}, {1, 0, 0});
     const std::pair<glm::vec3, glm::vec3> metals[] = {{{1.3456f, 0.96521f, 0.61722f}, {7.4746f, 6.3995f, 5.3031f}},
                                                       {{2.87f, 2.95f, 2.65f}, {3.05f, 2.93f, 2.81f}}};

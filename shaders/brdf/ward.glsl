@@ -24,10 +24,12 @@ vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
-// The specular lobe's f_r cos θ_i widened for a light whose GGX lobe is widened from `alpha` to
-// `widened`: by half as much variance (twin of wardPeakAlpha).
+// Twin of wardPeakAlpha: Ward's lobe widened for a light by half the variance GGX's is.
+float wardPeakAlpha(float alpha, float widened) { return sqrt(alpha * alpha + 0.5 * (widened * widened - alpha * alpha)); }
+
+// The specular lobe's f_r cos θ_i widened for a light whose GGX lobe is widened from `alpha` to `widened`.
 vec3 wardPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float alpha, float widened) {
-    float wardWidened = sqrt(alpha * alpha + 0.5 * (widened * widened - alpha * alpha));
+    float wardWidened = wardPeakAlpha(alpha, widened);
     p.roughness_x *= wardWidened / alpha;
     p.roughness_y *= wardWidened / alpha;
     return p.specular * (wardSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
