@@ -89,6 +89,30 @@ glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float a
                                           : environmentSpecularRadiance(e, worldDirection, perceptual);
 }
 
+// A glossy lobe seen at θ_o is narrower across the plane of incidence than along it, by cos θ_o (a
+// half vector tilted across the plane by δ turns the reflection by 2δ·cos θ_o, along it by 2δ),
+// but the prefiltered levels hold round lobes (n = v = R). So the lobe along `direction` is read as
+// two lookups either side of it in the plane of incidence, α·sin θ_o away, each at the width
+// α·cos θ_o; faded out toward α = kObliqueFadeAlpha, where the round levels read better (measured:
+// docs/environment-lighting.md), a rough lobe taking one lookup. `perceptual`: the round lobe's
+// level, r = √α unless given.
+constexpr float kObliqueFadeAlpha = 0.6f;
+
+glm::vec3 obliqueGlossyRadiance(const Environment& e, glm::vec3 direction, const ShadingFrame& frame, glm::vec3 wo,
+                                float alpha, float perceptual = -1.0f) {
+    if (perceptual < 0.0f) perceptual = std::sqrt(alpha);
+    const float cosOut = std::clamp(frame.cosTheta(wo), 0.0f, 1.0f);
+    const float fade = std::clamp(1.0f - alpha / kObliqueFadeAlpha, 0.0f, 1.0f);
+    if (fade == 0.0f) return glossyRadiance(e, direction, alpha, perceptual);
+    const glm::vec3 across = frame.normal - direction * glm::dot(frame.normal, direction);  // in the plane of incidence
+    const float acrossLength = glm::length(across);
+    const glm::vec3 offset = acrossLength > 1e-6f ? across * (fade * alpha * std::sqrt(1.0f - cosOut * cosOut) / acrossLength)
+                                                  : glm::vec3(0.0f);
+    const float narrowed = perceptual * std::sqrt(1.0f - fade + fade * cosOut);
+    return 0.5f * (glossyRadiance(e, glm::normalize(direction + offset), alpha, narrowed) +
+                   glossyRadiance(e, glm::normalize(direction - offset), alpha, narrowed));
+}
+
 // Σ_k term(ω_k, α_k) E_k over every peak light k, α_k the lobe's GGX roughness α widened for the
 // light's extent; zero where the lobe does not take the peaks or ω_o is below the surface.
 template <class Term>
@@ -235,7 +259,7 @@ glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& fram
     const glm::vec3 direction = glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * standIn.y);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * lobeAlbedo(kWardAlbedo + static_cast<int>(p.normalization), wo, frame, alpha) *
-               glossyRadiance(e, direction, alpha, standIn.x) +
+               obliqueGlossyRadiance(e, direction, frame, wo, alpha, standIn.x) +
            peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                WardParams lobe = p;
                const float wardWidened = wardPeakAlpha(alpha, widened);
@@ -262,7 +286,8 @@ glm::vec3 splitSumSpecular(const F82Fresnel& fresnel, float alpha, glm::vec3 wo,
     const glm::vec3 f82 = fresnel.coefficient == glm::vec3(0.0f)
                               ? glm::vec3(0.0f)
                               : fresnel.coefficient * sampleLobeAlbedo(kGgxF82, cosOut, perceptual).x;
-    return glossyRadiance(e, dominantDirection(wo, frame, alpha), alpha) * (fresnel.f0 * scaleBias.x + scaleBias.y - f82);
+    return obliqueGlossyRadiance(e, dominantDirection(wo, frame, alpha), frame, wo, alpha) *
+           (fresnel.f0 * scaleBias.x + scaleBias.y - f82);
 }
 
 glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
@@ -312,8 +337,10 @@ glm::vec3 lightingOf(const OpenPbrParams& p, glm::vec3 wo, const ShadingFrame& f
         return glm::vec3(v.underFuzz * openPbrCoat(p, v, coatIn, coatOut, v.coatAlphas * (widened / coatAlpha)) * coatIn.z);
     }) : glm::vec3(0.0f);
     return r.diffuse * environmentDiffuseRadiance(e, frame.normal) +
-           r.coat * glossyRadiance(e, dominantDirection(wo, coatFrame, coatAlpha), coatAlpha, v.coatRoughness) + coatPeaks +
-           r.specular * glossyRadiance(e, dominantDirection(wo, frame, specularAlpha), specularAlpha, v.specularRoughness) +
+           r.coat * obliqueGlossyRadiance(e, dominantDirection(wo, coatFrame, coatAlpha), coatFrame, wo, coatAlpha, v.coatRoughness) +
+           coatPeaks +
+           r.specular * obliqueGlossyRadiance(e, dominantDirection(wo, frame, specularAlpha), frame, wo, specularAlpha,
+                                              v.specularRoughness) +
            specularPeaks;
 }
 
@@ -349,8 +376,10 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
 std::string environmentApproximation(BrdfModel model, std::span<const float> values, const Environment& environment) {
     const char* lobe = dispatch(model, []<class M>(M) -> const char* {
         if constexpr (!HasEnvironment<M>) return nullptr;
-        else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction";
-        else if constexpr (std::is_same_v<M, Ward>) return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction, × its directional albedo";
+        else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction (narrowed across the plane of incidence)";
+        else if constexpr (std::is_same_v<M, Ward>)
+            return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction (narrowed across the "
+                   "plane of incidence) × its directional albedo";
         else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R × its directional albedo";
         else return "";
     });

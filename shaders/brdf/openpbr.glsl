@@ -183,9 +183,10 @@ vec3 environmentLightingOpenpbr(MaterialParams p, vec3 wo, ShadingFrame frame) {
                               openPbrCoatPeakLobe(p, v, wi, coatOut, coatFrame, widened / coatAlpha))
     }
     return r.diffuse * environmentDiffuseRadiance(frame.normal) +
-           r.coat * environmentGlossyRadianceAt(environmentDominantDirection(wo, coatFrame, coatAlpha), coatAlpha, v.coatRoughness) +
-           r.specular * environmentGlossyRadianceAt(environmentDominantDirection(wo, frame, specularAlpha), specularAlpha,
-                                                    v.specularRoughness) +
+           r.coat * environmentObliqueGlossyRadiance(environmentDominantDirection(wo, coatFrame, coatAlpha), coatFrame, wo,
+                                                     coatAlpha, v.coatRoughness) +
+           r.specular * environmentObliqueGlossyRadiance(environmentDominantDirection(wo, frame, specularAlpha), frame, wo,
+                                                         specularAlpha, v.specularRoughness) +
            peaks;
 }
 #endif

@@ -45,6 +45,6 @@ vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, wardPeakLobe(p, wi, wo, frame, alpha, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
            p.specular * environmentLobeAlbedo(WARD_ALBEDO + p.normalization, wo, frame, alpha) *
-               environmentGlossyRadianceAt(direction, alpha, standIn.x) + peaks;
+               environmentObliqueGlossyRadiance(direction, frame, wo, alpha, standIn.x) + peaks;
 }
 #endif

@@ -148,6 +148,26 @@ vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
     return environmentGlossyRadianceAt(worldDirection, alpha, sqrt(alpha));
 }
 
+// Twin of obliqueGlossyRadiance(): the lobe along `direction` seen at θ_o, narrower across the plane
+// of incidence by cos θ_o, as two lookups either side of it in that plane.
+const float OBLIQUE_FADE_ALPHA = 0.6;  // kObliqueFadeAlpha
+
+vec3 environmentObliqueGlossyRadiance(vec3 direction, ShadingFrame frame, vec3 wo, float alpha, float perceptual) {
+    float cosOut = clamp(cosTheta(frame, wo), 0.0, 1.0);
+    float fade = clamp(1.0 - alpha / OBLIQUE_FADE_ALPHA, 0.0, 1.0);
+    vec3 across = frame.normal - direction * dot(frame.normal, direction);  // in the plane of incidence
+    float acrossLength = length(across);
+    vec3 offset = acrossLength > 1e-6 ? across * (fade * alpha * sqrt(1.0 - cosOut * cosOut) / acrossLength) : vec3(0.0);
+    float narrowed = perceptual * sqrt(1.0 - fade + fade * cosOut);
+    // A rough lobe (fade 0) takes one lookup; a loop, so that llvmpipe skips the second where no
+    // pixel needs it (it runs both arms of a choice).
+    int lookups = fade > 0.0 ? 2 : 1;
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < lookups; ++i)
+        sum += environmentGlossyRadianceAt(normalize(i == 0 ? direction + offset : direction - offset), alpha, narrowed);
+    return sum / float(lookups);
+}
+
 // Table TABLE at (cos θ_o, r): twin of sampleLobeAlbedo() in lobe_albedo.cpp.
 vec2 sampleLobeAlbedo(int table, float cosOut, float perceptualRoughness) {
     float last = float(LOBE_ALBEDO_SIZE - 1);
@@ -207,7 +227,7 @@ vec3 environmentSplitSumSpecular(vec3 f0, vec3 coefficient, float alpha, vec3 wo
     vec2 scaleBias = sampleLobeAlbedo(GGX_SPLIT_SUM, cosOut, perceptual);
     vec3 f82 = all(equal(coefficient, vec3(0.0))) ? vec3(0.0)
                                                    : coefficient * sampleLobeAlbedo(GGX_F82, cosOut, perceptual).x;
-    return environmentGlossyRadiance(environmentDominantDirection(wo, frame, alpha), alpha) *
+    return environmentObliqueGlossyRadiance(environmentDominantDirection(wo, frame, alpha), frame, wo, alpha, perceptual) *
            (f0 * scaleBias.x + scaleBias.y - f82);
 }
 
