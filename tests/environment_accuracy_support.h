@@ -11,8 +11,10 @@
 #include <cstdio>
 #include <initializer_list>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "brdf/cook_torrance.h"
 #include "brdf/model_registry.h"
 #include "brdf/param_table.h"
 #include "environment/environment_map.h"
@@ -62,6 +64,7 @@ struct AccuracyMaterial {
     std::string name;
     Material material;
     float alpha = 0.0f;  // the glossy lobe's GGX roughness (0: a diffuse model)
+    bool options = false;  // a model's options other than its defaults
 };
 
 inline void setParam(Material& material, const char* name, std::initializer_list<float> values) {
@@ -105,7 +108,7 @@ inline bool isGlossyModel(BrdfModel model) {
 inline constexpr float kAccuracyAlphas[] = {0.05f, 0.2f, 0.5f, 1.0f};
 
 // Every model with an environment hook: the diffuse ones with their defaults (Lambert at ρ 0.8),
-// the glossy ones at each α of kAccuracyAlphas.
+// the glossy ones at each α of kAccuracyAlphas, cook_torrance also with its other D × G pairs.
 inline std::vector<AccuracyMaterial> accuracyMaterials() {
     std::vector<AccuracyMaterial> materials;
     for (const ModelInfo& info : allModels()) {
@@ -116,6 +119,21 @@ inline std::vector<AccuracyMaterial> accuracyMaterials() {
                 std::snprintf(name, sizeof name, "%s α %.2g", info.id, alpha);
                 materials.push_back({name, glossyMaterial(info.model, alpha), alpha});
             }
+            if (info.model != BrdfModel::CookTorrance) continue;
+            // Its other microfacet D × G pairs, each with its own split-sum tables.
+            const std::tuple<const char*, MicrofacetDistribution, MicrofacetGeometry> pairs[] = {
+                {"beckmann smith", MicrofacetDistribution::Beckmann, MicrofacetGeometry::Smith},
+                {"beckmann v_cavity", MicrofacetDistribution::Beckmann, MicrofacetGeometry::VCavity},
+                {"ggx v_cavity", MicrofacetDistribution::Ggx, MicrofacetGeometry::VCavity}};
+            for (const auto& [pairName, distribution, geometry] : pairs)
+                for (float alpha : kAccuracyAlphas) {
+                    char name[64];
+                    std::snprintf(name, sizeof name, "%s %s α %.2g", info.id, pairName, alpha);
+                    Material material = glossyMaterial(info.model, alpha);
+                    setParam(material, "distribution", {static_cast<float>(distribution)});
+                    setParam(material, "geometry", {static_cast<float>(geometry)});
+                    materials.push_back({name, material, alpha, true});
+                }
         } else {
             Material material = Material::withDefaults("m", info.model);
             if (info.model == BrdfModel::Lambert) setParam(material, "albedo", {0.8f, 0.8f, 0.8f});

@@ -104,7 +104,7 @@ struct CookTorrance {
     using Params = CookTorranceParams;
     static constexpr auto eval = evalCookTorrance;
     static constexpr auto ambientReflectance = ambientReflectanceCookTorrance;
-    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + prefiltered radiance at α × (F0·A + B − a·C), GGX split sum for both distributions";
+    static constexpr const char* environmentResponse = "ρ_d·E(n)/π + prefiltered radiance × (F0·A + B − a·C), split-sum tables of the chosen D and G";
     static MtlForm mtlForm(const Params& p) { return mtlMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, p.roughness); }
     static GltfForm gltfForm(const Params& p) {
         GltfForm form = gltfMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, p.roughness);

@@ -81,6 +81,11 @@ glm::vec3 mirrorDirection(glm::vec3 wo, const ShadingFrame& frame) {
     return 2.0f * frame.cosTheta(wo) * frame.normal - wo;
 }
 
+// n + (R − n) t, normalised: from the normal (t = 0) to the mirror direction (t = 1).
+glm::vec3 towardsMirror(glm::vec3 wo, const ShadingFrame& frame, float t) {
+    return glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * t);
+}
+
 // The prefiltered radiance at perceptual roughness r, of the map less its peaks where a lobe of GGX
 // roughness α takes them; r = √α unless given.
 glm::vec3 glossyRadiance(const Environment& e, glm::vec3 worldDirection, float alpha, float perceptual = -1.0f) {
@@ -241,12 +246,13 @@ glm::vec3 lightingOf(const PhongParams& p, glm::vec3 wo, const ShadingFrame& fra
            });
 }
 
-// Ward's lobe is a Gaussian in slopes, exp(−tan²θ_h/α²), per axis of variance α²/2; a light of
-// angular radius ρ spreads the half vector's slope uniformly over a disc of radius ρ/2, of variance
-// ρ²/16 per axis, and variances add: α_w² = α² + ρ²/8, half the (0.5 sin ρ)² GGX's lobes are
-// widened by (environmentPeakAlpha; GGX's long tails make its best factor measured, not derived).
-// On the studio HDRI at α 0.05 the ratio went from 1.028 with GGX's widening to 0.997.
-float wardPeakAlpha(float alpha, float widened) {
+// Ward's lobe and Beckmann's D are Gaussians in slopes, exp(−tan²θ_h/α²), per axis of variance
+// α²/2; a light of angular radius ρ spreads the half vector's slope uniformly over a disc of radius
+// ρ/2, of variance ρ²/16 per axis, and variances add: α_w² = α² + ρ²/8, half the (0.5 sin ρ)² GGX's
+// lobes are widened by (environmentPeakAlpha; GGX's long tails make its best factor measured, not
+// derived). On the studio HDRI at α 0.05 Ward's ratio went from 1.028 with GGX's widening to 0.997,
+// Beckmann's from 1.039 to 1.002 (CPU twin).
+float gaussianSlopePeakAlpha(float alpha, float widened) {
     return std::sqrt(alpha * alpha + 0.5f * (widened * widened - alpha * alpha));
 }
 
@@ -256,13 +262,13 @@ glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& fram
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     const glm::vec2 standIn = sampleLobeAlbedo(kWardStandIn + static_cast<int>(p.normalization),
                                                std::max(frame.cosTheta(wo), 0.0f), std::sqrt(alpha));
-    const glm::vec3 direction = glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * standIn.y);
+    const glm::vec3 direction = towardsMirror(wo, frame, standIn.y);
     return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
            p.specular * lobeAlbedo(kWardAlbedo + static_cast<int>(p.normalization), wo, frame, alpha) *
                obliqueGlossyRadiance(e, direction, frame, wo, alpha, standIn.x) +
            peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                WardParams lobe = p;
-               const float wardWidened = wardPeakAlpha(alpha, widened);
+               const float wardWidened = gaussianSlopePeakAlpha(alpha, widened);
                lobe.roughnessX *= wardWidened / alpha, lobe.roughnessY *= wardWidened / alpha;
                return p.specular * (wardSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
            });
@@ -274,29 +280,41 @@ glm::vec3 lightingOf(const WardParams& p, glm::vec3 wo, const ShadingFrame& fram
 glm::vec3 dominantDirection(glm::vec3 wo, const ShadingFrame& frame, float alpha) {
     const float smoothness = std::clamp(1.0f - alpha, 0.0f, 1.0f);
     const float factor = smoothness * (std::sqrt(smoothness) + alpha);
-    return glm::normalize(frame.normal + (mirrorDirection(wo, frame) - frame.normal) * factor);
+    return towardsMirror(wo, frame, factor);
 }
 
 // Split sum (Karis 2013): ∫ f_spec L cos ≈ prefiltered(dominant direction, α) · (F0·A + B − a·C) with
-// the F82 form's F0 and a (f82FresnelOf); of the map less its peaks where the lobe takes them as directions.
-glm::vec3 splitSumSpecular(const F82Fresnel& fresnel, float alpha, glm::vec3 wo, const ShadingFrame& frame,
-                           const Environment& e) {
+// the F82 form's F0 and a (f82FresnelOf) and the tables of the lobe's D × G pair (microfacetPair);
+// of the map less its peaks where the lobe takes them as directions. A lobe other than GGX with
+// Smith, whose shape the levels hold, takes its GGX stand-in: the level with its mean cosine along
+// its mean direction, as Ward's does.
+glm::vec3 splitSumSpecular(const F82Fresnel& fresnel, float alpha, MicrofacetDistribution distribution,
+                           MicrofacetGeometry geometry, glm::vec3 wo, const ShadingFrame& frame, const Environment& e) {
+    const int pair = microfacetPair(distribution, geometry);
     const float perceptual = std::sqrt(alpha), cosOut = std::max(frame.cosTheta(wo), 0.0f);
-    const glm::vec2 scaleBias = sampleLobeAlbedo(kGgxSplitSum, cosOut, perceptual);
+    const glm::vec2 scaleBias = sampleLobeAlbedo(kMicrofacetSplitSum + pair, cosOut, perceptual);
     const glm::vec3 f82 = fresnel.coefficient == glm::vec3(0.0f)
                               ? glm::vec3(0.0f)
-                              : fresnel.coefficient * sampleLobeAlbedo(kGgxF82, cosOut, perceptual).x;
-    return obliqueGlossyRadiance(e, dominantDirection(wo, frame, alpha), frame, wo, alpha) *
-           (fresnel.f0 * scaleBias.x + scaleBias.y - f82);
+                              : fresnel.coefficient * sampleLobeAlbedo(kMicrofacetF82 + pair, cosOut, perceptual).x;
+    glm::vec3 direction = dominantDirection(wo, frame, alpha);
+    float level = perceptual;
+    if (pair != kGgxSmithPair) {
+        const glm::vec2 standIn = sampleLobeAlbedo(kMicrofacetStandIn + pair, cosOut, perceptual);
+        direction = towardsMirror(wo, frame, standIn.y);
+        level = standIn.x;
+    }
+    return obliqueGlossyRadiance(e, direction, frame, wo, alpha, level) * (fresnel.f0 * scaleBias.x + scaleBias.y - f82);
 }
 
 glm::vec3 lightingOf(const CookTorranceParams& p, glm::vec3 wo, const ShadingFrame& frame,
                                           const Environment& e) {
     const F82Fresnel fresnel = f82FresnelOf(p.fresnel, p.ior, p.extinction);
-    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) + splitSumSpecular(fresnel, p.roughness, wo, frame, e) +
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           splitSumSpecular(fresnel, p.roughness, p.distribution, p.geometry, wo, frame, e) +
            peakLighting(e, p.roughness, wo, frame, [&](glm::vec3 wi, float widened) {
                CookTorranceParams lobe = p;
-               lobe.roughness = widened;
+               lobe.roughness = p.distribution == MicrofacetDistribution::Beckmann ? gaussianSlopePeakAlpha(p.roughness, widened)
+                                                                                  : widened;
                return fresnelF82(fresnel.f0, fresnel.coefficient, glm::dot(wi, glm::normalize(wi + wo))) *
                       (cookTorranceSpecular(lobe, wi, wo, frame) * frame.cosTheta(wi));
            });
@@ -306,7 +324,8 @@ glm::vec3 lightingOf(const GgxAnisotropicParams& p, glm::vec3 wo, const ShadingF
                                             const Environment& e) {
     const float alpha = std::sqrt(p.roughnessX * p.roughnessY);
     const F82Fresnel fresnel = f82FresnelOf(p.fresnel, p.ior, p.extinction);
-    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) + splitSumSpecular(fresnel, alpha, wo, frame, e) +
+    return p.diffuseAlbedo * environmentDiffuseRadiance(e, frame.normal) +
+           splitSumSpecular(fresnel, alpha, MicrofacetDistribution::Ggx, MicrofacetGeometry::Smith, wo, frame, e) +
            peakLighting(e, alpha, wo, frame, [&](glm::vec3 wi, float widened) {
                GgxAnisotropicParams lobe = p;
                lobe.roughnessX *= widened / alpha, lobe.roughnessY *= widened / alpha;

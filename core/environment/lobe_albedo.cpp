@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "brdf/blinn_phong.h"
+#include "brdf/cook_torrance.h"
 #include "brdf/microfacet.h"
 #include "brdf/phong.h"
 #include "brdf/ward.h"
@@ -36,34 +37,51 @@ void fillTable(LobeAlbedoTables& tables, int table, float minAlpha, const std::f
     }
 }
 
-// GGX: the mean of f_r cos θ_i / pdf = G2 (v·h) / (cos θ_o cos θ_h) over 1024 half vectors of
-// density D cos θ_h, each times `fresnelParts` of v·h.
-glm::vec2 ggxIntegral(const TableTexel& t, glm::vec2 (*fresnelParts)(float viewDotHalf)) {
+// cook_torrance's lobe (F = 1, brdf/cook_torrance.h) of a D × G pair (microfacetPair) at α.
+CookTorranceParams microfacetLobe(int pair, float alpha) {
+    return {.roughness = alpha, .distribution = static_cast<MicrofacetDistribution>(pair / 2),
+            .geometry = static_cast<MicrofacetGeometry>(pair % 2)};
+}
+
+// A half vector of density D cos θ_h: GGX's, or Beckmann's (tan² θ_h = −α² ln(1 − u)).
+glm::vec3 sampleHalfVector(MicrofacetDistribution distribution, glm::vec2 u, float alpha) {
+    if (distribution == MicrofacetDistribution::Ggx) return sampleGgxHalfVector(u, alpha);
+    const float cos2 = 1.0f / (1.0f - alpha * alpha * std::log(1.0f - u.x));
+    const float cosTheta = std::sqrt(cos2), sinTheta = std::sqrt(std::max(0.0f, 1.0f - cos2));
+    const float phi = 2.0f * kPi * u.y;
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+}
+
+// The mean of f_r cos θ_i / pdf over 1024 half vectors of density D cos θ_h (the light's density
+// D cos θ_h / (4 v·h)), each times `fresnelParts` of v·h: for GGX with Smith G2 (v·h) / (cos θ_o cos θ_h).
+glm::vec2 microfacetIntegral(const TableTexel& t, int pair, glm::vec2 (*fresnelParts)(float viewDotHalf)) {
     constexpr int kSamples = 1024;
+    const CookTorranceParams lobe = microfacetLobe(pair, t.alpha);
+    const ShadingFrame frame = ShadingFrame::fromNormalAndTangent({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f});
     glm::vec2 sum(0.0f);
     for (int i = 0; i < kSamples; ++i) {
-        const glm::vec3 halfway = sampleGgxHalfVector(hammersley(i, kSamples), t.alpha);
+        const glm::vec3 halfway = sampleHalfVector(lobe.distribution, hammersley(i, kSamples), t.alpha);
         const float viewDotHalf = glm::dot(t.view, halfway);
         const glm::vec3 light = 2.0f * viewDotHalf * halfway - t.view;
         if (light.z <= 0.0f || viewDotHalf <= 0.0f) continue;
-        const float geometry = smithHeightCorrelated(lambdaGgx(light.z, t.alpha), lambdaGgx(t.view.z, t.alpha));
-        sum += fresnelParts(viewDotHalf) * (geometry * viewDotHalf / (t.view.z * halfway.z));
+        const float sin2Half = std::max(0.0f, 1.0f - halfway.z * halfway.z);
+        const float distribution = lobe.distribution == MicrofacetDistribution::Ggx
+                                       ? distributionGgx(halfway.z, sin2Half, t.alpha)
+                                       : distributionBeckmann(halfway.z, sin2Half, t.alpha);
+        const float density = distribution * halfway.z / (4.0f * viewDotHalf);
+        sum += fresnelParts(viewDotHalf) * (cookTorranceSpecular(lobe, light, t.view, frame) * light.z / density);
     }
     return sum / static_cast<float>(kSamples);
 }
 
 // The split sum's (A, B): Schlick's form split into 1 − (1 − v·h)⁵ and (1 − v·h)⁵.
-glm::vec2 splitSum(const TableTexel& t) {
-    return ggxIntegral(t, [](float viewDotHalf) {
-        const float schlick = std::pow(1.0f - viewDotHalf, 5.0f);
-        return glm::vec2(1.0f - schlick, schlick);
-    });
+glm::vec2 splitSumParts(float viewDotHalf) {
+    const float schlick = std::pow(1.0f - viewDotHalf, 5.0f);
+    return {1.0f - schlick, schlick};
 }
 
 // The share C of the F82 form's term a·μ(1 − μ)⁶ (fresnel.h), μ = v·h.
-glm::vec2 f82Share(const TableTexel& t) {
-    return ggxIntegral(t, [](float viewDotHalf) { return glm::vec2(f82Weight(viewDotHalf), 0.0f); });
-}
+glm::vec2 f82Part(float viewDotHalf) { return {f82Weight(viewDotHalf), 0.0f}; }
 
 // ∫ f_r cos θ_i dω_i of a lobe (ρ = 1) by multiple importance sampling (balance heuristic, Veach
 // 1997) of three strategies in equal shares, so that narrow lobes and wide ones, cut by the
@@ -120,10 +138,10 @@ std::vector<float> ggxKernelMeanCosines(int size) {
     return means;
 }
 
-// Ward's GGX stand-in at a texel (lobe_albedo.h): the perceptual roughness whose kernel's mean
+// A lobe's GGX stand-in at a texel (lobe_albedo.h; Ward's, a microfacet pair's): the perceptual roughness whose kernel's mean
 // cosine (falling with r, interpolated in `means`) is the lobe's |∫ f_r cos ω| / ∫ f_r cos, and the
 // factor t with n + (R − n) t along the lobe's mean direction (q = its x/z, R = (−sin θ_o, 0, cos θ_o)).
-glm::vec2 wardStandIn(const TableTexel& t, const glm::vec4& moments, const std::vector<float>& means) {
+glm::vec2 ggxStandIn(const TableTexel& t, const glm::vec4& moments, const std::vector<float>& means) {
     const float meanCosine = glm::length(glm::vec3(moments)) / moments.w;
     const auto past = std::find_if(means.begin(), means.end(), [&](float mean) { return mean < meanCosine; });
     float perceptual = 1.0f;
@@ -146,8 +164,15 @@ const LobeAlbedoTables& lobeAlbedoTables() {
         const auto lobe = [](auto brdf) {
             return [brdf](const TableTexel& t) { return glm::vec2(lobeMoments(t, brdf).w, 0.0f); };
         };
-        std::vector<std::function<void()>> jobs{[&] { fillTable(result, kGgxSplitSum, 0.0f, splitSum); },
-                                                [&] { fillTable(result, kGgxF82, 0.0f, f82Share); }};
+        std::vector<std::function<void()>> jobs;
+        for (int pair = 0; pair < 4; ++pair) {
+            jobs.push_back([&, pair] {
+                fillTable(result, kMicrofacetSplitSum + pair, 0.0f, [pair](const TableTexel& t) { return microfacetIntegral(t, pair, splitSumParts); });
+            });
+            jobs.push_back([&, pair] {
+                fillTable(result, kMicrofacetF82 + pair, 0.0f, [pair](const TableTexel& t) { return microfacetIntegral(t, pair, f82Part); });
+            });
+        }
         for (int form = 0; form < 4; ++form) {
             // The lecture, max-cosine and half-vector forms × the normalised form's factor (lobe_albedo.h).
             jobs.push_back([&, form] {
@@ -174,7 +199,17 @@ const LobeAlbedoTables& lobeAlbedoTables() {
             jobs.push_back([&, normalization, ward] {
                 const std::vector<float> means = ggxKernelMeanCosines(1024);
                 fillTable(result, kWardStandIn + normalization, kLobeAlbedoMinAlpha,
-                          [&](const TableTexel& t) { return wardStandIn(t, lobeMoments(t, ward), means); });
+                          [&](const TableTexel& t) { return ggxStandIn(t, lobeMoments(t, ward), means); });
+            });
+        }
+        for (int pair = 0; pair < kGgxSmithPair; ++pair) {
+            jobs.push_back([&, pair] {
+                const std::vector<float> means = ggxKernelMeanCosines(1024);
+                const auto microfacet = [&, pair](glm::vec3 l, glm::vec3 v, float alpha) {
+                    return cookTorranceSpecular(microfacetLobe(pair, alpha), l, v, frame);
+                };
+                fillTable(result, kMicrofacetStandIn + pair, kLobeAlbedoMinAlpha,
+                          [&](const TableTexel& t) { return ggxStandIn(t, lobeMoments(t, microfacet), means); });
             });
         }
         std::atomic<size_t> next{0};

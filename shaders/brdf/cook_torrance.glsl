@@ -36,7 +36,7 @@ vec3 ambientReflectanceCookTorrance(MaterialParams p, vec3 wo, ShadingFrame fram
 // The specular lobe's f_r cos θ_i widened to roughness `widened`, with the Fresnel of f82FresnelOf.
 vec3 cookTorrancePeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float widened, F82Fresnel f82) {
     vec3 fresnel = fresnelF82(f82.f0, f82.coefficient, dot(wi, normalize(wi + wo)));
-    p.roughness = widened;
+    p.roughness = p.distribution == DISTRIBUTION_BECKMANN ? environmentGaussianSlopePeakAlpha(p.roughness, widened) : widened;
     return fresnel * (cookTorranceSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
 }
 
@@ -46,7 +46,9 @@ vec3 environmentLightingCookTorrance(MaterialParams p, vec3 wo, ShadingFrame fra
     F82Fresnel f82 = f82FresnelOf(p.fresnel, p.ior, p.extinction);
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, cookTorrancePeakLobe(p, wi, wo, frame, widened, f82))
+    int pair = 2 * p.distribution + p.geometry;  // microfacetPair
+    int standIn = pair == GGX_SMITH_PAIR ? NO_STAND_IN : MICROFACET_STAND_IN + pair;
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, wo, frame) + peaks;
+           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, pair, standIn, wo, frame) + peaks;
 }
 #endif

@@ -24,12 +24,9 @@ vec3 ambientReflectanceWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
 }
 
 #ifdef GLINT_HAS_ENVIRONMENT
-// Twin of wardPeakAlpha: Ward's lobe widened for a light by half the variance GGX's is.
-float wardPeakAlpha(float alpha, float widened) { return sqrt(alpha * alpha + 0.5 * (widened * widened - alpha * alpha)); }
-
 // The specular lobe's f_r cos θ_i widened for a light whose GGX lobe is widened from `alpha` to `widened`.
 vec3 wardPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float alpha, float widened) {
-    float wardWidened = wardPeakAlpha(alpha, widened);
+    float wardWidened = environmentGaussianSlopePeakAlpha(alpha, widened);
     p.roughness_x *= wardWidened / alpha;
     p.roughness_y *= wardWidened / alpha;
     return p.specular * (wardSpecular(p, wi, wo, frame) * cosTheta(frame, wi));
@@ -40,7 +37,7 @@ vec3 wardPeakLobe(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame, float 
 vec3 environmentLightingWard(MaterialParams p, vec3 wo, ShadingFrame frame) {
     float alpha = sqrt(p.roughness_x * p.roughness_y);
     vec2 standIn = sampleLobeAlbedo(WARD_STAND_IN + p.normalization, max(cosTheta(frame, wo), 0.0), sqrt(alpha));
-    vec3 direction = normalize(frame.normal + (environmentMirrorDirection(wo, frame) - frame.normal) * standIn.y);
+    vec3 direction = environmentTowardsMirror(wo, frame, standIn.y);
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, wardPeakLobe(p, wi, wo, frame, alpha, widened))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +

@@ -26,8 +26,10 @@ uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: GGX spl
                                                // then one albedo (r) per Blinn-Phong, Phong and Ward variant,
                                                // then Ward's GGX stand-in (r', t) per variant, then
                                                // GGX's F82 share C (r)
-const int GGX_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 1, PHONG_ALBEDO = 5, WARD_ALBEDO = 9, WARD_STAND_IN = 11,
-          GGX_F82 = 13;  // LobeAlbedoTable
+const int MICROFACET_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 4, PHONG_ALBEDO = 8, WARD_ALBEDO = 12, WARD_STAND_IN = 14,
+          MICROFACET_F82 = 16, MICROFACET_STAND_IN = 20;  // LobeAlbedoTable
+const int GGX_SMITH_PAIR = 3;  // microfacetPair(Ggx, Smith)
+const int NO_STAND_IN = -1;
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
 // in a specialised program (gl/shader_specialisation.h), else the block's flags.
@@ -111,6 +113,12 @@ const float PEAK_WIDENING = 0.5;  // kPeakWidening
 float environmentPeakAlpha(int k, float alpha) {
     float spread = PEAK_WIDENING * environmentPeakDirections[k].w;
     return min(1.0, sqrt(alpha * alpha + spread * spread));
+}
+
+// Twin of gaussianSlopePeakAlpha(): a Gaussian slope lobe (Ward's, Beckmann's) widened for a light by
+// half the variance GGX's is.
+float environmentGaussianSlopePeakAlpha(float alpha, float widened) {
+    return sqrt(alpha * alpha + 0.5 * (widened * widened - alpha * alpha));
 }
 
 // Twin of sumOverPeaks() in environment_lighting.cpp: runs STATEMENT for every peak light k
@@ -214,21 +222,35 @@ float environmentLobeAlbedo(int table, vec3 wo, ShadingFrame frame, float alpha)
     return sampleLobeAlbedo(table, max(cosTheta(frame, wo), 0.0), sqrt(alpha)).x;
 }
 
+// Twin of towardsMirror(): n + (R − n) t, normalised.
+vec3 environmentTowardsMirror(vec3 wo, ShadingFrame frame, float t) {
+    return normalize(frame.normal + (environmentMirrorDirection(wo, frame) - frame.normal) * t);
+}
+
 // Twin of dominantDirection() (Lagarde & de Rousiers 2014).
 vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
     float smoothness = clamp(1.0 - alpha, 0.0, 1.0);
     float factor = smoothness * (sqrt(smoothness) + alpha);
-    return normalize(frame.normal + (environmentMirrorDirection(wo, frame) - frame.normal) * factor);
+    return environmentTowardsMirror(wo, frame, factor);
 }
 
-// Twin of splitSumSpecular(): F0·A + B − a·C with the F82 form's F0 and a (f82FresnelOf).
-vec3 environmentSplitSumSpecular(vec3 f0, vec3 coefficient, float alpha, vec3 wo, ShadingFrame frame) {
+// Twin of splitSumSpecular(): F0·A + B − a·C with the F82 form's F0 and a (f82FresnelOf) from the
+// tables of the lobe's D × G pair (microfacetPair), along the dominant direction, or along the GGX
+// stand-in of table STAND_IN_TABLE (a pair's but GGX with Smith; NO_STAND_IN: none).
+vec3 environmentSplitSumSpecular(vec3 f0, vec3 coefficient, float alpha, int pair, int standInTable, vec3 wo,
+                                 ShadingFrame frame) {
     float perceptual = sqrt(alpha), cosOut = max(cosTheta(frame, wo), 0.0);
-    vec2 scaleBias = sampleLobeAlbedo(GGX_SPLIT_SUM, cosOut, perceptual);
+    vec2 scaleBias = sampleLobeAlbedo(MICROFACET_SPLIT_SUM + pair, cosOut, perceptual);
     vec3 f82 = all(equal(coefficient, vec3(0.0))) ? vec3(0.0)
-                                                   : coefficient * sampleLobeAlbedo(GGX_F82, cosOut, perceptual).x;
-    return environmentObliqueGlossyRadiance(environmentDominantDirection(wo, frame, alpha), frame, wo, alpha, perceptual) *
-           (f0 * scaleBias.x + scaleBias.y - f82);
+                                                   : coefficient * sampleLobeAlbedo(MICROFACET_F82 + pair, cosOut, perceptual).x;
+    vec3 direction = environmentDominantDirection(wo, frame, alpha);
+    float level = perceptual;
+    if (standInTable != NO_STAND_IN) {
+        vec2 standIn = sampleLobeAlbedo(standInTable, cosOut, perceptual);
+        direction = environmentTowardsMirror(wo, frame, standIn.y);
+        level = standIn.x;
+    }
+    return environmentObliqueGlossyRadiance(direction, frame, wo, alpha, level) * (f0 * scaleBias.x + scaleBias.y - f82);
 }
 
 // What a secondary ray sees (twin of MissRadiance::operator()), and a primary ray (::primary).
