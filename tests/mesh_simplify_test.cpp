@@ -12,19 +12,6 @@
 namespace glint {
 namespace {
 
-struct Box {
-    glm::vec3 min{INFINITY}, max{-INFINITY};
-};
-
-Box boundsOf(const Mesh& mesh) {
-    Box box;
-    for (const Vertex& vertex : mesh.vertices) {
-        box.min = glm::min(box.min, vertex.position);
-        box.max = glm::max(box.max, vertex.position);
-    }
-    return box;
-}
-
 // An n×n grid of quads in the plane z = `z`, facing +z (or −z when `down`).
 Mesh gridAt(int n, float z, bool down) {
     Mesh mesh;
@@ -58,12 +45,12 @@ TEST(MeshSimplify, SphereMeetsTheBudgetAndStaysOnItsSurface) {
         EXPECT_NEAR(glm::length(vertex.tangent), 1.0f, 1e-5f);
         EXPECT_NEAR(glm::dot(vertex.tangent, vertex.normal), 0.0f, 1e-5f);
     }
-    const Box before = boundsOf(sphere), after = boundsOf(proxy);
+    const MeshBounds before = meshBounds(sphere), after = meshBounds(proxy);
     for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_GE(after.min[axis], before.min[axis]);  // never grows
-        EXPECT_LE(after.max[axis], before.max[axis]);
-        EXPECT_LE(after.min[axis] - before.min[axis], simplified.cellSize);  // shrinks by at most a cell
-        EXPECT_LE(before.max[axis] - after.max[axis], simplified.cellSize);
+        EXPECT_GE(after.low[axis], before.low[axis]);  // never grows
+        EXPECT_LE(after.high[axis], before.high[axis]);
+        EXPECT_LE(after.low[axis] - before.low[axis], simplified.cellSize);  // shrinks by at most a cell
+        EXPECT_LE(before.high[axis] - after.high[axis], simplified.cellSize);
     }
     for (uint32_t index : proxy.indices) ASSERT_LT(index, proxy.vertices.size());
 }

@@ -1,4 +1,4 @@
-// Metal spectra (core/colour/metal_spectra.h), the D65 colorimetry they are integrated with
+// Metal spectra (metal_spectra.h), the D65 colorimetry they are integrated with
 // (reflectance_colour.h) and the per-channel indices fitted to them (metal_index_fit.h): the metal
 // presets' numbers must be exactly what the fit computes from the spectra.
 #include <gtest/gtest.h>
@@ -9,10 +9,10 @@
 
 #include "brdf/cook_torrance.h"
 #include "brdf/presets.h"
-#include "colour/metal_index_fit.h"
-#include "colour/metal_spectra.h"
-#include "colour/reflectance_colour.h"
 #include "math/constants.h"
+#include "metal_index_fit.h"
+#include "metal_spectra.h"
+#include "reflectance_colour.h"
 
 namespace glint {
 namespace {

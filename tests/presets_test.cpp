@@ -45,7 +45,7 @@ glm::vec3 presetF0(const char* name) {
 TEST(Presets, MetalF0MatchesPublishedValues) {
     // Published F0 (linear sRGB) of Akenine-Möller et al., Real-Time Rendering 4th ed. (2018),
     // Table 9.2: integrated over the visible spectrum and clipped to [0, 1] (gold's red). The presets'
-    // F0 is the same integration of measured spectra (D65, CIE 1931; core/colour/metal_spectra.h,
+    // F0 is the same integration of measured spectra (D65, CIE 1931; metal_spectra.h,
     // exact to float precision: tests/metal_spectra_test.cpp). All within 0.01 but iron, measured
     // (+0.0125, +0.0022, -0.0154) off with Querry's data, the closest we found (Johnson & Christy
     // 1974: -0.084 in blue; Werner 2009: +0.33).

@@ -30,7 +30,9 @@ add_executable(core_tests
   shader_sources_test.cpp
   texture_test.cpp)
 target_sources(core_tests PRIVATE classroom_lessons_test.cpp colour_test.cpp)  # classroom: lessons, CIE colour
-target_sources(core_tests PRIVATE metal_spectra_test.cpp)  # metal spectra and the presets fitted to them
+# Metal spectra and the presets' per-channel indices fitted to them (issue 3): the program holds
+# the presets' numbers (core/brdf/presets.cpp), the tests compute them again from the spectra.
+target_sources(core_tests PRIVATE metal_spectra_test.cpp metal_index_fit.cpp metal_spectra.cpp reflectance_colour.cpp)
 target_sources(core_tests PRIVATE mesh_simplify_test.cpp mesh_topology_test.cpp)  # large meshes: stand-ins, culling
 target_sources(core_tests PRIVATE wild_files_test.cpp)  # files other tools wrote (tests/files/README.md)
 target_sources(core_tests PRIVATE model_machinery_test.cpp)  # the model machinery on a test-only model; docs/models.md

@@ -1,8 +1,6 @@
 // The compare panes' scene copies (see compare_scenes.h).
 #include "classroom/compare_scenes.h"
 
-#include <string>
-
 #include "brdf/model_registry.h"
 
 namespace glint {

@@ -13,6 +13,7 @@
 #include "brdf/presets.h"
 #include "editor/editor_state.h"
 #include "editor/window_placement.h"
+#include "gl/display_texture.h"
 
 namespace glint {
 namespace {
@@ -193,13 +194,7 @@ bool updateCompareView(EditorState& state, Renderer& renderer) {
                                       view.width, view.height);
     if (!composite) return view.message = composite.error().format(), rendering;
     view.message.clear();
-    if (!view.texture) glGenTextures(1, &view.texture);
-    glBindTexture(GL_TEXTURE_2D, view.texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, view.width, view.height, 0, GL_RGB, GL_UNSIGNED_BYTE, composite->display.pixels.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    view.texture = uploadDisplayTexture(composite->display, GL_NEAREST, view.texture);
     return rendering;
 }
 

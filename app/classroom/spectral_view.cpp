@@ -14,6 +14,7 @@
 #include "display/display_chain.h"
 #include "interchange/custom_brdf.h"
 #include "editor/window_placement.h"
+#include "gl/display_texture.h"
 
 namespace glint {
 namespace {
@@ -33,13 +34,7 @@ SpectralTexture& spectralTexture() {
 void uploadSpectralImage(const DisplayImage& image, std::uint64_t revision) {
     SpectralTexture& texture = spectralTexture();
     if (texture.revision == revision || image.pixels.empty()) return;
-    if (texture.name == 0) glGenTextures(1, &texture.name);
-    glBindTexture(GL_TEXTURE_2D, texture.name);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
+    texture.name = uploadDisplayTexture(image, GL_NEAREST, texture.name);
     texture.revision = revision;
     texture.width = image.width;
     texture.height = image.height;

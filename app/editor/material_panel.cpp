@@ -29,6 +29,17 @@ std::string formatRange(const ParamSpec& spec) {
     return spec.validMax == kUnbounded ? least : least + " and at most " + formatNumber(spec.validMax);
 }
 
+// Takes three typed channels into `value` when each is valid; otherwise says why in `refusal`.
+bool takeChannels(const ParamSpec& spec, const float typed[3], float* value, std::string& refusal) {
+    if (!std::all_of(typed, typed + 3, [&](float channel) { return spec.accepts(channel); })) {
+        refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
+        return false;
+    }
+    std::copy(typed, typed + 3, value);
+    refusal.clear();
+    return true;
+}
+
 // A positive channel below this reads "≈ 0" (dragChannels).
 constexpr float kShownAsZero = 1e-4f;
 
@@ -117,7 +128,7 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
                     return ImGui::SliderFloat(label, typed, spec.sliderMin, spec.sliderMax, format.c_str(), flags);
                 })) {
                 // Ctrl+click typing may go past the slider but never past the valid range.
-                if ((spec.validMinExclusive ? edited > spec.validMin : edited >= spec.validMin) && edited <= spec.validMax) {
+                if (spec.accepts(edited)) {
                     *value = edited, changed = true;
                     refusal.clear();
                 } else {
@@ -131,18 +142,8 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
             float edited[3] = {value[0], value[1], value[2]};
             if (editNumbers(spec.label, edited, 3, [&](float* typed) {
                     return dragChannels(label, typed, spec.sliderMin, spec.sliderMax);
-                })) {
-                bool valid = true;
-                for (float channel : edited)
-                    valid &= (spec.validMinExclusive ? channel > spec.validMin : channel >= spec.validMin) &&
-                             channel <= spec.validMax;
-                if (valid) {
-                    std::copy(edited, edited + 3, value), changed = true;
-                    refusal.clear();
-                } else {
-                    refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
-                }
-            }
+                }))
+                changed = takeChannels(spec, edited, value, refusal);
             break;
         }
         case ParamKind::Color: {
@@ -150,19 +151,8 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
             if (editNumbers(spec.label, encoded, 3, [&](float* typed) {
                     return ImGui::ColorEdit3(label, typed, ImGuiColorEditFlags_Float);
                 })) {
-                float linear[3];
-                bool valid = true;
-                for (int c = 0; c < 3; ++c) {
-                    linear[c] = decodeSrgb(encoded[c]);
-                    valid = valid && linear[c] >= spec.validMin && linear[c] <= spec.validMax;
-                }
-                if (valid) {
-                    std::copy(linear, linear + 3, value);
-                    changed = true;
-                    refusal.clear();
-                } else {
-                    refusal = std::string(spec.label) + ": each channel must be " + formatRange(spec);
-                }
+                const float linear[3] = {decodeSrgb(encoded[0]), decodeSrgb(encoded[1]), decodeSrgb(encoded[2])};
+                changed = takeChannels(spec, linear, value, refusal);
             }
             break;
         }

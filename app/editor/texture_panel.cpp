@@ -28,10 +28,6 @@ bool combo(const char* label, Enum& value, const char* const (&labels)[N]) {
     return true;
 }
 
-bool inRange(float value, const ParamSpec& spec) {
-    return (spec.validMinExclusive ? value > spec.validMin : value >= spec.validMin) && value <= spec.validMax;
-}
-
 // One of the two values of a procedural texture: an sRGB picker for colours, a slider for scalars.
 bool drawValue(const char* label, glm::vec3& value, const ParamSpec& spec, std::string& refusal) {
     if (spec.kind == ParamKind::Color) {
@@ -45,7 +41,7 @@ bool drawValue(const char* label, glm::vec3& value, const ParamSpec& spec, std::
     const ImGuiSliderFlags flags = spec.scale == ParamScale::Log ? ImGuiSliderFlags_Logarithmic : 0;
     if (!editNumbers(label, &edited, 1, [&](float* typed) { return ImGui::SliderFloat(label, typed, spec.sliderMin, spec.sliderMax, "%.4g", flags); }))
         return false;
-    if (!inRange(edited, spec)) {
+    if (!spec.accepts(edited)) {
         refusal = std::string(spec.label) + " texture: " + std::to_string(edited) + " is outside the valid range";
         return false;
     }

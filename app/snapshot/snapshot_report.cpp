@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 
-
 namespace glint {
 namespace {
 

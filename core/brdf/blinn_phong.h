@@ -16,13 +16,26 @@
 
 namespace glint {
 
-// How the lobe k_s·cos^n δ (δ = angle between N and H) becomes a BRDF.
+// How the lobe k_s·cos^n δ becomes a BRDF: here δ = angle between N and H; Phong's (phong.h) takes
+// the same forms, δ between the mirrored light direction R and ω_o.
 enum class BlinnForm {
     Lecture = 0,     // k_s·cos^n δ / cos θ'       (θ' to the light; not reciprocal)
     MaxCosine = 1,   // k_s·cos^n δ / max(cos θ, cos θ')   (reciprocal repair)
     HalfVector = 2,  // k_s·cos^n δ / |L+V|²       (reciprocal repair)
-    Normalized = 3,  // k_s·(n+8)/(8π)·cos^n δ     (energy-normalised; Akenine-Möller et al.)
+    Normalized = 3,  // k_s·(n+c)/(cπ)·cos^n δ     (energy-normalised; c = 8: Akenine-Möller et al.)
 };
+
+// The lobe cos^n δ made a BRDF by `form` (c: the normalised form's constant).
+inline float lobeAsBrdf(BlinnForm form, float lobe, float exponent, float c, glm::vec3 wi, glm::vec3 wo, float cosIn,
+                        float cosOut) {
+    switch (form) {
+        case BlinnForm::Lecture: return lobe / cosIn;
+        case BlinnForm::MaxCosine: return lobe / std::max(cosIn, cosOut);
+        case BlinnForm::HalfVector: return lobe / glm::dot(wi + wo, wi + wo);
+        case BlinnForm::Normalized: return lobe * (exponent + c) / (c * kPi);
+    }
+    return 0.0f;
+}
 
 inline constexpr EnumOption kBlinnFormOptions[] = {
     {"lecture", "k_s cos^n δ / cos θ' (lecture)"},
@@ -56,17 +69,9 @@ inline glm::vec3 evalBlinnPhong(const BlinnPhongParams& p, glm::vec3 wi, glm::ve
     const float cosIn = frame.cosTheta(wi);
     const float cosOut = frame.cosTheta(wo);
     if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
-    const glm::vec3 sum = wi + wo;
-    const glm::vec3 halfway = glm::normalize(sum);
+    const glm::vec3 halfway = glm::normalize(wi + wo);
     const float lobe = std::pow(std::max(frame.cosTheta(halfway), 0.0f), p.exponent);
-    float specularScale = 0.0f;
-    switch (p.form) {
-        case BlinnForm::Lecture: specularScale = lobe / cosIn; break;
-        case BlinnForm::MaxCosine: specularScale = lobe / std::max(cosIn, cosOut); break;
-        case BlinnForm::HalfVector: specularScale = lobe / glm::dot(sum, sum); break;
-        case BlinnForm::Normalized: specularScale = lobe * (p.exponent + 8.0f) / (8.0f * kPi); break;
-    }
-    return p.diffuseAlbedo * kInvPi + p.specular * specularScale;
+    return p.diffuseAlbedo * kInvPi + p.specular * lobeAsBrdf(p.form, lobe, p.exponent, 8.0f, wi, wo, cosIn, cosOut);
 }
 
 // Ambient reflectance k_a: the diffuse albedo ρ_d, the exact answer for the Lambert term; the

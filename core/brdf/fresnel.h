@@ -36,7 +36,7 @@ inline float fresnelDielectric(float cosIncident, float eta) {
 }
 
 // Conductor: complex relative index η = n + iκ; the same equations in complex arithmetic, in the
-// precision Real (float to render; colour/metal_index_fit.cpp fits in double). Returns (R_s, R_p).
+// precision Real (float to render; tests/metal_index_fit.cpp fits in double). Returns (R_s, R_p).
 template <typename Real>
 inline std::pair<Real, Real> fresnelConductorSP(Real cosIncident, Real n, Real k) {
     using Complex = std::complex<Real>;

@@ -160,7 +160,6 @@ std::string glslModelName(std::string_view id);
 // for option "ggx" of parameter "distribution" (material_glsl.h declares them).
 std::string glslOptionConstant(std::string_view param, std::string_view option);
 
-
 enum class BrdfModel : int;  // a model's position in the list (model_registry.h)
 
 // A model as code that picks it at run time sees it. The GLSL names are derived by convention.

@@ -37,6 +37,11 @@ struct ParamSpec {
     ParamScale scale = ParamScale::Linear;
     std::span<const EnumOption> options{};  // Enum only
     const char* help = "";
+
+    // Whether files and typed values may hold `value` (validMin, validMax and validMinExclusive).
+    bool accepts(float value) const {
+        return (validMinExclusive ? value > validMin : value >= validMin) && value <= validMax;
+    }
 };
 
 inline constexpr float kUnbounded = std::numeric_limits<float>::infinity();

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "brdf/appearance.h"
+#include "brdf/blinn_phong.h"
 #include "brdf/export_forms.h"
 #include "brdf/microfacet.h"
 #include "brdf/model.h"
@@ -16,13 +17,9 @@
 
 namespace glint {
 
-// How the lobe k_s·cos^n δ (δ = angle between the mirrored light direction R and ω_o) becomes a BRDF.
-enum class PhongForm {
-    Lecture = 0,     // k_s·cos^n δ / cos θ'       (θ' to the light; not reciprocal)
-    MaxCosine = 1,   // k_s·cos^n δ / max(cos θ, cos θ')   (reciprocal repair)
-    HalfVector = 2,  // k_s·cos^n δ / |L+V|²       (reciprocal repair)
-    Normalized = 3,  // k_s·(n+2)/(2π)·cos^n δ     (energy-normalised; Lewis 1994)
-};
+// How the lobe k_s·cos^n δ (δ = angle between the mirrored light direction R and ω_o) becomes a
+// BRDF: Blinn-Phong's four forms, the normalised one k_s·(n+2)/(2π)·cos^n δ (Lewis 1994).
+using PhongForm = BlinnForm;
 
 inline constexpr EnumOption kPhongFormOptions[] = {
     {"lecture", "k_s cos^n δ / cos θ' (lecture)"},
@@ -58,18 +55,7 @@ inline glm::vec3 evalPhong(const PhongParams& p, glm::vec3 wi, glm::vec3 wo, con
     if (cosIn <= 0.0f || cosOut <= 0.0f) return glm::vec3(0.0f);
     const float cosMirror = 2.0f * cosIn * cosOut - glm::dot(wi, wo);
     const float lobe = std::pow(std::max(cosMirror, 0.0f), p.exponent);
-    float specularScale = 0.0f;
-    switch (p.form) {
-        case PhongForm::Lecture: specularScale = lobe / cosIn; break;
-        case PhongForm::MaxCosine: specularScale = lobe / std::max(cosIn, cosOut); break;
-        case PhongForm::HalfVector: {
-            const glm::vec3 sum = wi + wo;
-            specularScale = lobe / glm::dot(sum, sum);
-            break;
-        }
-        case PhongForm::Normalized: specularScale = lobe * (p.exponent + 2.0f) / (2.0f * kPi); break;
-    }
-    return p.diffuseAlbedo * kInvPi + p.specular * specularScale;
+    return p.diffuseAlbedo * kInvPi + p.specular * lobeAsBrdf(p.form, lobe, p.exponent, 2.0f, wi, wo, cosIn, cosOut);
 }
 
 // Ambient reflectance k_a: the diffuse albedo ρ_d, exact for the Lambert term; the specular

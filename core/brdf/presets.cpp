@@ -1,5 +1,5 @@
 // The preset table (see presets.h). Metals: per-channel n + iκ fitted to measured spectra
-// (colour/metal_index_fit.h; tests/metal_spectra_test.cpp recomputes them); dielectrics: κ = 0
+// (tests/metal_index_fit.h; tests/metal_spectra_test.cpp recomputes them); dielectrics: κ = 0
 // and n at 589 nm (the clear ones refract: the `glass` model); natural surfaces: broadband
 // albedo as Lambert; layered materials: the OpenPBR model's coat, fuzz, thin film and transmission.
 #include "brdf/presets.h"
@@ -40,7 +40,7 @@ constexpr Preset lambertian(const char* name, float albedo, const char* source) 
     return {name, "natural", BrdfModel::Lambert, {{"albedo", glm::vec3(albedo)}}, source};
 }
 
-// What the metals' numbers are (the measurements' full references: colour/metal_spectra.cpp).
+// What the metals' numbers are (the measurements' full references: tests/metal_spectra.cpp).
 #define GLINT_FITTED_TO \
     "n, κ fitted per sRGB channel to the spectrally integrated Fresnel reflectance (D65, CIE 1931; F0 exact) of "
 constexpr const char* kRakic1998 = GLINT_FITTED_TO

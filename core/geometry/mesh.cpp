@@ -9,6 +9,15 @@
 
 namespace glint {
 
+MeshBounds meshBounds(const Mesh& mesh) {
+    MeshBounds bounds;
+    for (const Vertex& vertex : mesh.vertices) {
+        bounds.low = glm::min(bounds.low, vertex.position);
+        bounds.high = glm::max(bounds.high, vertex.position);
+    }
+    return bounds;
+}
+
 Mesh makeUvSphere(glm::vec3 center, float radius, int segments, int rings) {
     GLINT_CHECK(segments >= 3 && rings >= 2 && radius > 0.0f);
     Mesh mesh;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -22,6 +23,12 @@ struct Mesh {
     std::vector<uint32_t> indices;  // three per triangle
     size_t triangleCount() const { return indices.size() / 3; }
 };
+
+// The smallest axis-aligned box holding a mesh's vertex positions (low > high: no vertices).
+struct MeshBounds {
+    glm::vec3 low{std::numeric_limits<float>::max()}, high{-std::numeric_limits<float>::max()};
+};
+MeshBounds meshBounds(const Mesh& mesh);
 
 // What the importer found in a mesh file (geometry/mesh_import.h); shown in the editor.
 // Which of the file's axes points up: Y (glTF, OBJ from most tools) or Z (CAD, 3ds Max, Blender

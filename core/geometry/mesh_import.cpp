@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string_view>
-#include <limits>
 #include <optional>
 #include <regex>
 #include <stdexcept>
@@ -237,11 +236,10 @@ void turnZUpToYUp(Mesh& mesh) {
 
 // Centre of the bounding box to the origin, farthest vertex to distance 1.
 std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
-    glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
-    for (const Vertex& vertex : mesh.vertices) low = glm::min(low, vertex.position), high = glm::max(high, vertex.position);
-    statistics.boundsMin = low;
-    statistics.boundsMax = high;
-    const glm::vec3 centre = 0.5f * (low + high);
+    const MeshBounds bounds = meshBounds(mesh);
+    statistics.boundsMin = bounds.low;
+    statistics.boundsMax = bounds.high;
+    const glm::vec3 centre = 0.5f * (bounds.low + bounds.high);
     float radius = 0.0f;
     for (const Vertex& vertex : mesh.vertices) radius = std::max(radius, glm::distance(vertex.position, centre));
     if (!(radius > 0.0f) || !std::isfinite(radius)) return "the mesh has no extent (all vertices coincide)";

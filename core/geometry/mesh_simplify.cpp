@@ -27,11 +27,8 @@ struct Grid {
 
 Grid gridOver(const Mesh& mesh, int cellsPerAxis) {
     Grid grid;
-    grid.boundsMin = grid.boundsMax = mesh.vertices[0].position;
-    for (const Vertex& vertex : mesh.vertices) {
-        grid.boundsMin = glm::min(grid.boundsMin, vertex.position);
-        grid.boundsMax = glm::max(grid.boundsMax, vertex.position);
-    }
+    const MeshBounds bounds = meshBounds(mesh);
+    grid.boundsMin = bounds.low, grid.boundsMax = bounds.high;
     const glm::vec3 extent = grid.boundsMax - grid.boundsMin;
     const float longest = std::max({extent.x, extent.y, extent.z});
     grid.cellsPerAxis = cellsPerAxis;

@@ -12,21 +12,6 @@
 namespace glint {
 namespace {
 
-struct Box {
-    glm::vec3 min{0.0f}, max{0.0f};
-};
-
-Box boundsOf(const Mesh& mesh) {
-    Box box;
-    if (mesh.vertices.empty()) return box;
-    box.min = box.max = mesh.vertices[0].position;
-    for (const Vertex& vertex : mesh.vertices) {
-        box.min = glm::min(box.min, vertex.position);
-        box.max = glm::max(box.max, vertex.position);
-    }
-    return box;
-}
-
 }  // namespace
 
 // --- welding ----------------------------------------------------------------------------------
@@ -127,10 +112,10 @@ MeshClosure orientationOfParts(const Mesh& mesh, const std::vector<uint32_t>& we
 MeshClosure meshClosure(const Mesh& mesh) {
     GLINT_CHECK(mesh.vertices.size() < (1u << 31));
     if (mesh.indices.empty()) return MeshClosure::Open;
-    const Box box = boundsOf(mesh);
+    const MeshBounds bounds = meshBounds(mesh);
     const std::vector<uint32_t> welded = weldPositions(mesh);
     if (!everyEdgeHasTwoOppositeTriangles(mesh.indices, welded)) return MeshClosure::Open;
-    return orientationOfParts(mesh, welded, 0.5f * (box.min + box.max));
+    return orientationOfParts(mesh, welded, 0.5f * (bounds.low + bounds.high));
 }
 
 }  // namespace glint

@@ -1,4 +1,4 @@
-// An 8-bit display image as a new GL texture, top row first (as ImGui's UVs run), for the
+// An 8-bit display image as a GL texture, top row first (as ImGui's UVs run), for the
 // editor's pictures drawn with ImGui::Image. The caller owns the texture.
 #pragma once
 
@@ -8,10 +8,10 @@
 
 namespace glint {
 
-// `filter`: GL_NEAREST to show pixels as they are, GL_LINEAR where the picture is scaled.
-inline GLuint uploadDisplayTexture(const DisplayImage& image, GLint filter) {
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
+// `filter`: GL_NEAREST to show pixels as they are, GL_LINEAR where the picture is scaled. Into
+// `texture` when one is given (its old image replaced), else into a new one.
+inline GLuint uploadDisplayTexture(const DisplayImage& image, GLint filter, GLuint texture = 0) {
+    if (!texture) glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());

@@ -28,6 +28,16 @@ GLuint attachTexture(GLenum format, GLenum attachment, int width, int height) {
     return texture;
 }
 
+// A multisample renderbuffer of `format` attached to the bound framebuffer at `attachment`.
+GLuint attachRenderbuffer(GLenum format, GLenum attachment, int width, int height, int samples) {
+    GLuint renderbuffer = 0;
+    glGenRenderbuffers(1, &renderbuffer);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, renderbuffer);
+    return renderbuffer;
+}
+
 }  // namespace
 
 void RenderTarget::ensure(int width, int height, int samples) {
@@ -36,22 +46,12 @@ void RenderTarget::ensure(int width, int height, int samples) {
     width_ = width, height_ = height, samples_ = samples;
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    if (samples == 1) {
-        colorTexture_ = attachTexture(colorFormat_, GL_COLOR_ATTACHMENT0, width, height);
-    } else {
-        glGenRenderbuffers(1, &colorRenderbuffer_);
-        glBindRenderbuffer(GL_RENDERBUFFER, colorRenderbuffer_);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colorFormat_, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRenderbuffer_);
-    }
-    if (withDepth_ && samples == 1) {
+    if (samples == 1) colorTexture_ = attachTexture(colorFormat_, GL_COLOR_ATTACHMENT0, width, height);
+    else colorRenderbuffer_ = attachRenderbuffer(colorFormat_, GL_COLOR_ATTACHMENT0, width, height, samples);
+    if (withDepth_ && samples == 1)
         depthTexture_ = attachTexture(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT, width, height);
-    } else if (withDepth_) {
-        glGenRenderbuffers(1, &depthRenderbuffer_);
-        glBindRenderbuffer(GL_RENDERBUFFER, depthRenderbuffer_);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthRenderbuffer_);
-    }
+    else if (withDepth_)
+        depthRenderbuffer_ = attachRenderbuffer(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT, width, height, samples);
     GLINT_CHECK(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
     allocatedSamples_ = samples;
     if (samples > 1) glGetIntegerv(GL_SAMPLES, &allocatedSamples_);

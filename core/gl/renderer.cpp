@@ -290,12 +290,16 @@ bool Renderer::reloadChangedShaders() {
     if (!sources_.readsFromDisk()) return false;
     bool changed = false;
     std::string error;
+    // Whether `files` changed since `builtAt`, which then becomes their newest modification.
+    const auto outdated = [&](const std::vector<std::string>& files, long long& builtAt) {
+        const long long newest = newestModification(files);
+        if (newest <= builtAt) return false;
+        builtAt = newest;
+        return changed = true;
+    };
     // A program whose files changed is rebuilt; when that fails, the last good one stays.
     for (auto& [key, entry] : surfacePrograms_) {
-        const long long newest = newestModification(entry.files);
-        if (newest <= entry.builtAt) continue;
-        changed = true;
-        entry.builtAt = newest;
+        if (!outdated(entry.files, entry.builtAt)) continue;
         const auto& [model, variant, textured] = key;
         if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) {
             rebuilt->lastUsed = entry.lastUsed;
@@ -303,25 +307,17 @@ bool Renderer::reloadChangedShaders() {
         }
         else error = rebuilt.error().format();
     }
-    const long long newestDisplay = newestModification(displayFiles_);
-    if (newestDisplay > displayBuiltAt_) {
-        changed = true;
-        displayBuiltAt_ = newestDisplay;
+    if (outdated(displayFiles_, displayBuiltAt_))
         for (auto& [prelude, program] : displayPrograms_) {
             if (auto rebuilt = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude))
                 program = std::move(*rebuilt);
             else error = rebuilt.error().format();
         }
-    }
-    const long long newestBackground = newestModification(backgroundFiles_);
-    if (newestBackground > backgroundBuiltAt_) {
-        changed = true;
-        backgroundBuiltAt_ = newestBackground;
+    if (outdated(backgroundFiles_, backgroundBuiltAt_))
         for (auto& [prelude, entry] : backgroundPrograms_) {
             if (auto rebuilt = buildBackgroundProgram(prelude)) entry.program = std::move(*rebuilt);
             else error = rebuilt.error().format();
         }
-    }
     if (changed) shaderError_ = error;
     if (changed) held_[0].reset(), held_[1].reset();
     return changed;

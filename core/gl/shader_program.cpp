@@ -25,44 +25,21 @@ Result<GLuint> compileStage(GLenum stage, const AssembledShader& source, const s
     return makeError("shader compile failed:\n" + mapped, {path});
 }
 
-}  // namespace
-
-ShaderProgram::~ShaderProgram() {
-    if (program_) glDeleteProgram(program_);
-}
-
-ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
-    if (this != &other) {
-        if (program_) glDeleteProgram(program_);
-        program_ = other.program_;
-        other.program_ = 0;
-    }
-    return *this;
-}
-
-namespace {
-
 struct StageFile {
     GLenum stage;
     std::string path;
 };
 
-}  // namespace
-
 // Assembles, compiles and links the stages in order; the first failure is returned.
-static Result<GLuint> linkStages(const ShaderSources& sources, const std::vector<StageFile>& stages,
-                                 const std::string& prelude, const GeneratedShaderFiles& generated) {
+Result<GLuint> linkStages(const ShaderSources& sources, const std::vector<StageFile>& stages,
+                          const std::string& prelude, const GeneratedShaderFiles& generated) {
     std::vector<GLuint> compiled;
     auto release = [&] {
         for (GLuint shader : compiled) glDeleteShader(shader);
     };
     for (const StageFile& stage : stages) {
         auto source = assembleShader(sources, stage.path, prelude, generated);
-        if (!source) {
-            release();
-            return source.error();
-        }
-        auto shader = compileStage(stage.stage, *source, stage.path);
+        auto shader = source ? compileStage(stage.stage, *source, stage.path) : Result<GLuint>(source.error());
         if (!shader) {
             release();
             return shader.error();
@@ -84,6 +61,21 @@ static Result<GLuint> linkStages(const ShaderSources& sources, const std::vector
         return makeError("shader link failed: " + std::string(log.data()), {stages.back().path});
     }
     return program;
+}
+
+}  // namespace
+
+ShaderProgram::~ShaderProgram() {
+    if (program_) glDeleteProgram(program_);
+}
+
+ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
+    if (this != &other) {
+        if (program_) glDeleteProgram(program_);
+        program_ = other.program_;
+        other.program_ = 0;
+    }
+    return *this;
 }
 
 Result<ShaderProgram> ShaderProgram::build(const ShaderSources& sources, const std::string& vertexPath,

@@ -42,12 +42,7 @@ void append(std::vector<uint8_t>& bytes, const T& value) {
 void addSphere(json& gltf) {
     const Mesh sphere = makeUvSphere(glm::vec3(0.0f), 1.0f, kSphereSegments, kSphereRings);
     std::vector<uint8_t> bytes;
-    glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
-    for (const Vertex& vertex : sphere.vertices) {
-        append(bytes, vertex.position);
-        low = glm::min(low, vertex.position);
-        high = glm::max(high, vertex.position);
-    }
+    for (const Vertex& vertex : sphere.vertices) append(bytes, vertex.position);
     const size_t positionBytes = bytes.size();
     for (const Vertex& vertex : sphere.vertices) append(bytes, vertex.normal);
     const size_t normalBytes = bytes.size() - positionBytes;
@@ -57,6 +52,7 @@ void addSphere(json& gltf) {
     const size_t indexBytes = bytes.size() - positionBytes - normalBytes - uvBytes;
     while (bytes.size() % 4) bytes.push_back(0);  // buffer length a multiple of 4 (§5.9)
     const int vertexCount = static_cast<int>(sphere.vertices.size());
+    const MeshBounds bounds = meshBounds(sphere);
     gltf["buffers"] = json::array({{{"byteLength", bytes.size()},
                                     {"uri", "data:application/octet-stream;base64," + encodeBase64(bytes)}}});
     gltf["bufferViews"] = json::array({
@@ -67,7 +63,7 @@ void addSphere(json& gltf) {
     });
     gltf["accessors"] = json::array({
         {{"bufferView", 0}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"},
-         {"min", {low.x, low.y, low.z}}, {"max", {high.x, high.y, high.z}}},
+         {"min", {bounds.low.x, bounds.low.y, bounds.low.z}}, {"max", {bounds.high.x, bounds.high.y, bounds.high.z}}},
         {{"bufferView", 1}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}},
         {{"bufferView", 2}, {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC2"}},
         {{"bufferView", 3}, {"componentType", kUnsignedShort}, {"count", sphere.indices.size()}, {"type", "SCALAR"}},

@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "interchange/gltf_openpbr.h"
+#include "interchange/gltf_textures.h"
 #include "light/photometry.h"
 #include "math/constants.h"
 #include "scene/json_object_reader.h"
@@ -103,15 +104,13 @@ PunctualLight readPunctualLight(const Context& context, ObjectReader& reader, in
         light.coneHalfAngleDegrees = static_cast<float>(glm::degrees(outer));
         light.edgeWidthDegrees = static_cast<float>(glm::degrees(outer - inner));
         light.falloffExponent = 0.0f;
-        spot.expect({"extras"});
-        spot.rejectUnknownKeys();
+        rejectUnknownGltfKeys(spot);
     }
     if (!std::isfinite(light.power) || !std::isfinite(light.irradiance) || !std::isfinite(intensity))
         reader.fail("intensity", "is too large for Glint (single-precision watts)");
     if (relativeLuminance(light.color) <= 0.0f && intensity > 0.0f)
         context.warn(reader.pointer(), "a colour of zero luminance carries no power at 683 lm/W; imported dark");
-    reader.expect({"extras"});
-    reader.rejectUnknownKeys();
+    rejectUnknownGltfKeys(reader);
     return {light, reader.pointer()};
 }
 
@@ -152,8 +151,7 @@ void readLights(const Context& context, ObjectReader& root, ImportedFile& result
                 lightOf[i] = reference.integer("light", -1, 0, 1'000'000);
                 if (lightOf[i] < 0 || lightOf[i] >= static_cast<int>(punctual.size()))
                     reference.fail("light", "no such light in KHR_lights_punctual.lights");
-                reference.expect({"extras"});
-                reference.rejectUnknownKeys();
+                rejectUnknownGltfKeys(reference);
             }
         }
     }

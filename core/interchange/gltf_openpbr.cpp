@@ -111,11 +111,6 @@ float number(ObjectReader& reader, const char* key, double fallback, Bounds boun
     return static_cast<float>(reader.number(key, fallback, bounds));
 }
 
-void finish(ObjectReader& reader) {
-    reader.expect({"extras"});
-    reader.rejectUnknownKeys();
-}
-
 }  // namespace
 
 bool isGltfMaterialExtension(const std::string& name) { return kMaterialExtensions.count(name) > 0; }
@@ -146,7 +141,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
     colorFactors["base_color"] = glm::vec3(baseColor);
     if (pbr) {
         reading.readSlots(*pbr, "pbrMetallicRoughness", ranges, colorFactors);
-        finish(*pbr);
+        rejectUnknownGltfKeys(*pbr);
     }
 
     const glm::vec3 emissive = reader.vec3("emissiveFactor", glm::vec3(0.0f), Bounds::between(0, 1));
@@ -175,7 +170,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
 
     if (auto ior = extension("KHR_materials_ior")) {
         setParam(m, "specular_ior", number(*ior, "ior", 1.5, Bounds::between(1, 1e6)));
-        finish(*ior);
+        rejectUnknownGltfKeys(*ior);
     }
     if (auto specular = extension("KHR_materials_specular")) {
         factor(*specular, "specularFactor", 1.0, Bounds::between(0, 1), "specular_weight");
@@ -187,7 +182,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         setParam(m, "specular_color", color);
         colorFactors["specular_color"] = color;
         reading.readSlots(*specular, "KHR_materials_specular", ranges, colorFactors);
-        finish(*specular);
+        rejectUnknownGltfKeys(*specular);
     }
     if (auto coat = extension("KHR_materials_clearcoat")) {
         factor(*coat, "clearcoatFactor", 0.0, Bounds::between(0, 1), "coat_weight");
@@ -195,7 +190,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         setParam(m, "coat_ior", kGltfCoatIor);
         setParam(m, "coat_darkening", 0.0f);  // glTF's coat only attenuates by its Fresnel: no internal reflections
         reading.readSlots(*coat, "KHR_materials_clearcoat", ranges, colorFactors);
-        finish(*coat);
+        rejectUnknownGltfKeys(*coat);
     }
     if (auto sheen = extension("KHR_materials_sheen")) {
         const glm::vec3 color = sheen->vec3("sheenColorFactor", glm::vec3(0.0f), Bounds::between(0, 1));
@@ -204,13 +199,13 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         setParam(m, "fuzz_color", color);
         colorFactors["fuzz_color"] = color;
         reading.readSlots(*sheen, "KHR_materials_sheen", ranges, colorFactors);
-        finish(*sheen);
+        rejectUnknownGltfKeys(*sheen);
     }
     bool transmits = false;
     if (auto transmission = extension("KHR_materials_transmission")) {
         factor(*transmission, "transmissionFactor", 0.0, Bounds::between(0, 1), "transmission_weight");
         reading.readSlots(*transmission, "KHR_materials_transmission", ranges, colorFactors);
-        finish(*transmission);
+        rejectUnknownGltfKeys(*transmission);
         transmits = true;
         // glTF tints transmitted light by the base colour; without a volume, so does transmission_color.
         setParam(m, "transmission_color", glm::vec3(baseColor));
@@ -222,7 +217,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         const float distance = number(*volume, "attenuationDistance", std::numeric_limits<double>::max(), Bounds::positive());
         const glm::vec3 color = volume->vec3("attenuationColor", glm::vec3(1.0f), Bounds::between(0, 1));
         reading.readSlots(*volume, "KHR_materials_volume", ranges, colorFactors);
-        finish(*volume);
+        rejectUnknownGltfKeys(*volume);
         if (thickness > 0.0f) setParam(m, "geometry_thin_walled", 0.0f);
         if (std::isfinite(distance) && distance < std::numeric_limits<float>::max()) {
             setParam(m, "transmission_color", color);
@@ -246,7 +241,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
                                                    [](const MaterialTexture& t) { return t.parameter == "thin_film_thickness"; });
         if (!thicknessTextured && iridescence->has("iridescenceThicknessMinimum"))
             reading.keptAt("KHR_materials_iridescence")["iridescenceThicknessMinimum"] = minimum;
-        finish(*iridescence);
+        rejectUnknownGltfKeys(*iridescence);
     }
     if (auto anisotropy = extension("KHR_materials_anisotropy")) {
         factor(*anisotropy, "anisotropyStrength", 0.0, Bounds::between(0, 1), "specular_roughness_anisotropy");
@@ -255,12 +250,12 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
             reading.warn(appendPointer(pointerOf("KHR_materials_anisotropy"), "anisotropyTexture"),
                          "its blue channel (strength) is used; the direction in red and green is not (one tangent rotation per material)");
         reading.readSlots(*anisotropy, "KHR_materials_anisotropy", ranges, colorFactors);
-        finish(*anisotropy);
+        rejectUnknownGltfKeys(*anisotropy);
     }
     float emissiveStrength = 1.0f;
     if (auto strength = extension("KHR_materials_emissive_strength")) {
         emissiveStrength = number(*strength, "emissiveStrength", 1.0, Bounds::nonNegative());
-        finish(*strength);
+        rejectUnknownGltfKeys(*strength);
     }
     if (emissive != glm::vec3(0.0f)) {
         setParam(m, "emission_color", emissive);
@@ -274,10 +269,10 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
             reading.note(pointerOf("KHR_materials_dispersion"),
                          "dispersion " + std::to_string(value) + " (Abbe number " + std::to_string(20.0f / value) +
                              ") is kept for export, not rendered: Glint refracts every wavelength alike");
-        finish(*dispersion);
+        rejectUnknownGltfKeys(*dispersion);
     }
     if (auto unlit = extension("KHR_materials_unlit")) {
-        finish(*unlit);
+        rejectUnknownGltfKeys(*unlit);
         // Closest form: no reflection, emitting the base colour as radiance (1 = the display's white).
         setParam(m, "base_weight", 0.0f);
         setParam(m, "specular_weight", 0.0f);
@@ -294,8 +289,7 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
         for (const auto& [key, value] : reader.take("extensions").items())
             if (!isGltfMaterialExtension(key)) reading.warn(appendPointer(extensions->pointer(), key), "extension not supported by Glint; ignored");
     }
-    reader.expect({"extras"});
-    reader.rejectUnknownKeys();
+    rejectUnknownGltfKeys(reader);
 
     // The textures, table order; Glint binds at most kMaxMaterialTextures.
     for (MaterialTexture& texture : reading.textures) {

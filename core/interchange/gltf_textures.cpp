@@ -141,14 +141,11 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
             info.transform.scale = transform.vec2("scale", info.transform.scale);
             info.transform.rotation = static_cast<float>(transform.number("rotation", 0.0));
             info.texCoord = transform.integer("texCoord", info.texCoord, 0, 1'000'000);
-            transform.expect({"extras"});
-            transform.rejectUnknownKeys();
+            rejectUnknownGltfKeys(transform);
         }
-        extensions.expect({"extras"});
-        extensions.rejectUnknownKeys();
+        rejectUnknownGltfKeys(extensions);
     }
-    reader.expect({"extras"});
-    reader.rejectUnknownKeys();
+    rejectUnknownGltfKeys(reader);
     return info;
 }
 

@@ -17,6 +17,12 @@
 
 namespace glint {
 
+// Refuses the keys of a glTF object nobody read, "extras" (free for any application) aside.
+inline void rejectUnknownGltfKeys(ObjectReader& reader) {
+    reader.expect({"extras"});
+    reader.rejectUnknownKeys();
+}
+
 // KHR_texture_transform's values (glTF UV, v down; rotation in radians).
 struct GltfUvTransform {
     glm::vec2 offset{0.0f}, scale{1.0f};

@@ -43,8 +43,7 @@ std::optional<std::string> findOutOfRange(const Material& material) {
         const float* value = analytic->values.data() + packedOffset(table, static_cast<int>(i));
         for (int c = 0; c < componentCount(spec.kind); ++c) {
             const float v = value[c];
-            const bool below = spec.validMinExclusive ? !(v > spec.validMin) : !(v >= spec.validMin);
-            if (std::isfinite(v) && !below && v <= spec.validMax) continue;
+            if (std::isfinite(v) && spec.accepts(v)) continue;
             std::ostringstream message;
             message << "'" << spec.name << "'";
             if (componentCount(spec.kind) == 3) message << "[" << c << "]";

@@ -1,7 +1,6 @@
 // standard_surface, gltf_pbr and open_pbr_surface inputs as OpenPBR inputs (see materialx_shaders.h).
 #include "interchange/materialx_shaders.h"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <span>

@@ -80,9 +80,6 @@ std::string hexByte(char c) {
     return text;
 }
 
-// White space as splitWords sees it (std::isspace in the C locale).
-std::string trim(std::string_view text) { return std::string(trimmed(text)); }
-
 // --- statements -----------------------------------------------------------------------------
 
 // Valid MTL that Glint reads but does not use: a warning each.
@@ -300,11 +297,11 @@ Result<ImportedFile> parseMtl(const std::string& text, const std::string& file) 
                 result.warnings.push_back(makeError("warning: the line is not UTF-8; read as Latin-1 (ISO 8859-1)", {file, number, 0}));
             }
             const size_t comment = raw.find('#');
-            const std::string content = trim(comment == std::string::npos ? raw : raw.substr(0, comment));
+            const std::string content(trimmed(std::string_view(raw).substr(0, comment)));
             if (content.empty()) continue;
             Line line{&file, number, splitWords(content), ""};
             if (line.words.empty()) continue;
-            line.rest = trim(content.substr(line.words[0].size()));
+            line.rest = trimmed(std::string_view(content).substr(line.words[0].size()));
             if (line.words[0] == "newmtl") {
                 MtlBlock block{.name = line.rest, .line = number};
                 if (block.name.empty()) {  // Blender writes `newmtl` with no name for a slot without a material
@@ -338,8 +335,8 @@ std::string numbers(glm::vec3 value) { return number(value.r) + " " + number(val
 std::string oneLine(std::string name) {
     for (char& c : name)
         if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-    name = trim(name);
-    return name.empty() ? "material" : name;
+    const std::string_view kept = trimmed(name);
+    return kept.empty() ? "material" : std::string(kept);
 }
 
 }  // namespace

@@ -320,7 +320,6 @@ Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment)
     return scene;
 }
 
-
 }  // namespace
 
 // --- writers and entry points ---------------------------------------------------------------

@@ -1,11 +1,11 @@
 // Per-channel complex indices for the RGB renderer, fitted to a metal's measured spectrum
 // (metal_spectra.h): the (n, κ) whose exact conductor Fresnel reproduces the spectrally integrated
-// reflectance. It computes the numbers of the metal presets; it does not hold them (brdf/presets.cpp).
+// reflectance. It computes the numbers of the metal presets; it does not hold them (core/brdf/presets.cpp).
 #pragma once
 
 #include <glm/glm.hpp>
 
-#include "colour/metal_spectra.h"
+#include "metal_spectra.h"
 
 namespace glint {
 

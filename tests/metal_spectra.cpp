@@ -11,12 +11,12 @@
 // aluminium Rakić 1998, copper Hagemann 1975 (pbrt's copper in the visible), iron Querry 1985
 // (Johnson & Christy 1974 is 0.084 off in blue), chromium Johnson & Christy 1974. Their F0 and
 // distance from the table: tests/presets_test.cpp.
-#include "colour/metal_spectra.h"
+#include "metal_spectra.h"
 
 #include <algorithm>
 
 #include "brdf/fresnel.h"
-#include "colour/reflectance_colour.h"
+#include "reflectance_colour.h"
 #include "util/diagnostic.h"
 
 namespace glint {

@@ -1,5 +1,5 @@
 // Reflectance spectrum → linear sRGB under D65 (see reflectance_colour.h).
-#include "colour/reflectance_colour.h"
+#include "reflectance_colour.h"
 
 #include <array>
 

@@ -1,13 +1,13 @@
 // Fitting per-channel (n, κ) to a metal's integrated reflectance (see metal_index_fit.h).
-#include "colour/metal_index_fit.h"
+#include "metal_index_fit.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "brdf/fresnel.h"
-#include "colour/reflectance_colour.h"
 #include "math/constants.h"
+#include "reflectance_colour.h"
 #include "util/diagnostic.h"
 
 namespace glint {
