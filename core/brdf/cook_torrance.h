@@ -59,21 +59,23 @@ inline constexpr ParamSpec kCookTorranceTable[] = {
      .options = kFresnelModeOptions, .help = "Schlick's approximation or the exact equations"},
 };
 
+// The masking-shadowing term G of the chosen geometry (and, for Smith, distribution).
+inline float cookTorranceGeometry(const CookTorranceParams& p, float cosHalf, float cosIn, float cosOut, float cosDifference) {
+    if (p.geometry == MicrofacetGeometry::VCavity) return maskingVCavity(cosHalf, cosIn, cosOut, cosDifference);
+    if (p.distribution == MicrofacetDistribution::Ggx)
+        return smithHeightCorrelated(lambdaGgx(cosIn, p.roughness), lambdaGgx(cosOut, p.roughness));
+    return smithHeightCorrelated(lambdaBeckmann(cosIn, p.roughness), lambdaBeckmann(cosOut, p.roughness));
+}
+
 // D·G / (4 cos θ_i cos θ_o) without Fresnel: the specular term of a perfect (F = 1) reflector.
 inline float cookTorranceSpecular(const CookTorranceParams& p, glm::vec3 wi, glm::vec3 wo, const ShadingFrame& frame) {
     const float cosIn = frame.cosTheta(wi), cosOut = frame.cosTheta(wo);
     const glm::vec3 halfway = glm::normalize(wi + wo);
     const float cosHalf = frame.cosTheta(halfway);
-    const float cosDifference = glm::dot(wo, halfway);
     const float sin2Half = sinSquared(frame.normal, halfway);
-    const bool ggx = p.distribution == MicrofacetDistribution::Ggx;
-    const float distribution = ggx ? distributionGgx(cosHalf, sin2Half, p.roughness)
-                                   : distributionBeckmann(cosHalf, sin2Half, p.roughness);
-    float geometry;
-    if (p.geometry == MicrofacetGeometry::VCavity) geometry = maskingVCavity(cosHalf, cosIn, cosOut, cosDifference);
-    else if (ggx) geometry = smithHeightCorrelated(lambdaGgx(cosIn, p.roughness), lambdaGgx(cosOut, p.roughness));
-    else geometry = smithHeightCorrelated(lambdaBeckmann(cosIn, p.roughness), lambdaBeckmann(cosOut, p.roughness));
-    return distribution * geometry / (4.0f * cosIn * cosOut);
+    const float distribution = p.distribution == MicrofacetDistribution::Ggx ? distributionGgx(cosHalf, sin2Half, p.roughness)
+                                                                             : distributionBeckmann(cosHalf, sin2Half, p.roughness);
+    return distribution * cookTorranceGeometry(p, cosHalf, cosIn, cosOut, glm::dot(wo, halfway)) / (4.0f * cosIn * cosOut);
 }
 
 // f_r = ρ_d/π + D·G·F(ω_i·h) / (4 cos θ_i cos θ_o) (Cook & Torrance 1982; Walter et al. 2007, eq. 20).

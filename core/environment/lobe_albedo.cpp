@@ -52,24 +52,19 @@ glm::vec3 sampleHalfVector(MicrofacetDistribution distribution, glm::vec2 u, flo
     return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
 
-// The mean of f_r cos θ_i / pdf over 1024 half vectors of density D cos θ_h (the light's density
-// D cos θ_h / (4 v·h)), each times `fresnelParts` of v·h: for GGX with Smith G2 (v·h) / (cos θ_o cos θ_h).
+// The mean of f_r cos θ_i / pdf = G (v·h) / (cos θ_o cos θ_h) over 1024 half vectors of density
+// D cos θ_h (the pair's G: cookTorranceGeometry), each times `fresnelParts` of v·h.
 glm::vec2 microfacetIntegral(const TableTexel& t, int pair, glm::vec2 (*fresnelParts)(float viewDotHalf)) {
     constexpr int kSamples = 1024;
     const CookTorranceParams lobe = microfacetLobe(pair, t.alpha);
-    const ShadingFrame frame = ShadingFrame::fromNormalAndTangent({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f});
     glm::vec2 sum(0.0f);
     for (int i = 0; i < kSamples; ++i) {
         const glm::vec3 halfway = sampleHalfVector(lobe.distribution, hammersley(i, kSamples), t.alpha);
         const float viewDotHalf = glm::dot(t.view, halfway);
         const glm::vec3 light = 2.0f * viewDotHalf * halfway - t.view;
         if (light.z <= 0.0f || viewDotHalf <= 0.0f) continue;
-        const float sin2Half = std::max(0.0f, 1.0f - halfway.z * halfway.z);
-        const float distribution = lobe.distribution == MicrofacetDistribution::Ggx
-                                       ? distributionGgx(halfway.z, sin2Half, t.alpha)
-                                       : distributionBeckmann(halfway.z, sin2Half, t.alpha);
-        const float density = distribution * halfway.z / (4.0f * viewDotHalf);
-        sum += fresnelParts(viewDotHalf) * (cookTorranceSpecular(lobe, light, t.view, frame) * light.z / density);
+        const float geometry = cookTorranceGeometry(lobe, halfway.z, light.z, t.view.z, viewDotHalf);
+        sum += fresnelParts(viewDotHalf) * (geometry * viewDotHalf / (t.view.z * halfway.z));
     }
     return sum / static_cast<float>(kSamples);
 }
