@@ -32,7 +32,7 @@ inline constexpr int kLobeAlbedoSize = 32;
 // (util/disk_cache.h).
 enum LobeAlbedoTable { kMicrofacetSplitSum = 0, kBlinnPhongAlbedo = 4, kPhongAlbedo = 8, kWardAlbedo = 12, kWardStandIn = 14,
                        kMicrofacetF82 = 16, kMicrofacetStandIn = 20, kLobeAlbedoTables = 23 };
-// A microfacet D × G pair's offset in kMicrofacetSplitSum and kMicrofacetF82.
+// A microfacet D × G pair's offset in kMicrofacetSplitSum, kMicrofacetF82 and (but GGX with Smith) kMicrofacetStandIn.
 inline constexpr int microfacetPair(MicrofacetDistribution distribution, MicrofacetGeometry geometry) {
     return 2 * static_cast<int>(distribution) + static_cast<int>(geometry);
 }
