@@ -133,9 +133,10 @@ std::vector<float> ggxKernelMeanCosines(int size) {
     return means;
 }
 
-// A lobe's GGX stand-in at a texel (lobe_albedo.h; Ward's, a microfacet pair's): the perceptual roughness whose kernel's mean
-// cosine (falling with r, interpolated in `means`) is the lobe's |∫ f_r cos ω| / ∫ f_r cos, and the
-// factor t with n + (R − n) t along the lobe's mean direction (q = its x/z, R = (−sin θ_o, 0, cos θ_o)).
+// A lobe's GGX stand-in at a texel (lobe_albedo.h; Ward's, a microfacet pair's): the perceptual
+// roughness whose kernel's mean cosine (falling with r, interpolated in `means`) is the lobe's
+// |∫ f_r cos ω| / ∫ f_r cos, and the factor t with n + (R − n) t along the lobe's mean direction
+// (q = its x/z, R = (−sin θ_o, 0, cos θ_o)).
 glm::vec2 ggxStandIn(const TableTexel& t, const glm::vec4& moments, const std::vector<float>& means) {
     const float meanCosine = glm::length(glm::vec3(moments)) / moments.w;
     const auto past = std::find_if(means.begin(), means.end(), [&](float mean) { return mean < meanCosine; });
@@ -159,13 +160,16 @@ const LobeAlbedoTables& lobeAlbedoTables() {
         const auto lobe = [](auto brdf) {
             return [brdf](const TableTexel& t) { return glm::vec2(lobeMoments(t, brdf).w, 0.0f); };
         };
+        const std::vector<float> means = ggxKernelMeanCosines(1024);  // the stand-ins'
         std::vector<std::function<void()>> jobs;
         for (int pair = 0; pair < 4; ++pair) {
             jobs.push_back([&, pair] {
-                fillTable(result, kMicrofacetSplitSum + pair, 0.0f, [pair](const TableTexel& t) { return microfacetIntegral(t, pair, splitSumParts); });
+                fillTable(result, kMicrofacetSplitSum + pair, 0.0f,
+                          [pair](const TableTexel& t) { return microfacetIntegral(t, pair, splitSumParts); });
             });
             jobs.push_back([&, pair] {
-                fillTable(result, kMicrofacetF82 + pair, 0.0f, [pair](const TableTexel& t) { return microfacetIntegral(t, pair, f82Part); });
+                fillTable(result, kMicrofacetF82 + pair, 0.0f,
+                          [pair](const TableTexel& t) { return microfacetIntegral(t, pair, f82Part); });
             });
         }
         for (int form = 0; form < 4; ++form) {
@@ -192,14 +196,12 @@ const LobeAlbedoTables& lobeAlbedoTables() {
             };
             jobs.push_back([&, normalization, ward] { fillTable(result, kWardAlbedo + normalization, kLobeAlbedoMinAlpha, lobe(ward)); });
             jobs.push_back([&, normalization, ward] {
-                const std::vector<float> means = ggxKernelMeanCosines(1024);
                 fillTable(result, kWardStandIn + normalization, kLobeAlbedoMinAlpha,
                           [&](const TableTexel& t) { return ggxStandIn(t, lobeMoments(t, ward), means); });
             });
         }
         for (int pair = 0; pair < kGgxSmithPair; ++pair) {
             jobs.push_back([&, pair] {
-                const std::vector<float> means = ggxKernelMeanCosines(1024);
                 const auto microfacet = [&, pair](glm::vec3 l, glm::vec3 v, float alpha) {
                     return cookTorranceSpecular(microfacetLobe(pair, alpha), l, v, frame);
                 };

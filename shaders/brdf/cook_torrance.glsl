@@ -47,8 +47,7 @@ vec3 environmentLightingCookTorrance(MaterialParams p, vec3 wo, ShadingFrame fra
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, cookTorrancePeakLobe(p, wi, wo, frame, widened, f82))
     int pair = 2 * p.distribution + p.geometry;  // microfacetPair
-    int standIn = pair == GGX_SMITH_PAIR ? NO_STAND_IN : MICROFACET_STAND_IN + pair;
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, pair, standIn, wo, frame) + peaks;
+           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, pair, wo, frame) + peaks;
 }
 #endif

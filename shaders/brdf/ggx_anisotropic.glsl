@@ -42,6 +42,6 @@ vec3 environmentLightingGgxAnisotropic(MaterialParams p, vec3 wo, ShadingFrame f
     vec3 peaks = vec3(0.0);
     ENVIRONMENT_ADD_PEAKS(peaks, alpha, wo, frame, ggxAnisotropicPeakLobe(p, wi, wo, frame, alpha, widened, f82))
     return p.diffuse_albedo * environmentDiffuseRadiance(frame.normal) +
-           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, GGX_SMITH_PAIR, NO_STAND_IN, wo, frame) + peaks;
+           environmentSplitSumSpecular(f82.f0, f82.coefficient, alpha, GGX_SMITH_PAIR, wo, frame) + peaks;
 }
 #endif

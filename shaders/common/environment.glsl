@@ -22,14 +22,13 @@ layout(std140) uniform EnvironmentBlock {
 uniform sampler2D environmentBase;             // the radiance image
 uniform sampler2DArray environmentPrefiltered; // layer k − 1: perceptual roughness k/L; layer L: E(n)/π;
                                                // layer L + k: roughness k/L of the map less its peaks
-uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: GGX split-sum scale A and bias B,
-                                               // then one albedo (r) per Blinn-Phong, Phong and Ward variant,
-                                               // then Ward's GGX stand-in (r', t) per variant, then
-                                               // GGX's F82 share C (r)
+uniform sampler2D environmentLobeTables;      // lobe_albedo.h's tables: split-sum scale A and bias B per
+                                               // microfacet pair, one albedo (r) per Blinn-Phong, Phong and
+                                               // Ward variant, Ward's GGX stand-in (r', t) per variant, the
+                                               // F82 share C (r) per pair, the pairs' stand-ins but GGX-Smith's
 const int MICROFACET_SPLIT_SUM = 0, BLINN_PHONG_ALBEDO = 4, PHONG_ALBEDO = 8, WARD_ALBEDO = 12, WARD_STAND_IN = 14,
           MICROFACET_F82 = 16, MICROFACET_STAND_IN = 20;  // LobeAlbedoTable
 const int GGX_SMITH_PAIR = 3;  // microfacetPair(Ggx, Smith)
-const int NO_STAND_IN = -1;
 
 // Whether the scene has an environment, and shows it as the background: compile-time constants
 // in a specialised program (gl/shader_specialisation.h), else the block's flags.
@@ -235,18 +234,17 @@ vec3 environmentDominantDirection(vec3 wo, ShadingFrame frame, float alpha) {
 }
 
 // Twin of splitSumSpecular(): F0·A + B − a·C with the F82 form's F0 and a (f82FresnelOf) from the
-// tables of the lobe's D × G pair (microfacetPair), along the dominant direction, or along the GGX
-// stand-in of table STAND_IN_TABLE (a pair's but GGX with Smith; NO_STAND_IN: none).
-vec3 environmentSplitSumSpecular(vec3 f0, vec3 coefficient, float alpha, int pair, int standInTable, vec3 wo,
-                                 ShadingFrame frame) {
+// tables of the lobe's D × G pair (microfacetPair), along the dominant direction, or for a pair but
+// GGX with Smith along its GGX stand-in.
+vec3 environmentSplitSumSpecular(vec3 f0, vec3 coefficient, float alpha, int pair, vec3 wo, ShadingFrame frame) {
     float perceptual = sqrt(alpha), cosOut = max(cosTheta(frame, wo), 0.0);
     vec2 scaleBias = sampleLobeAlbedo(MICROFACET_SPLIT_SUM + pair, cosOut, perceptual);
     vec3 f82 = all(equal(coefficient, vec3(0.0))) ? vec3(0.0)
                                                    : coefficient * sampleLobeAlbedo(MICROFACET_F82 + pair, cosOut, perceptual).x;
     vec3 direction = environmentDominantDirection(wo, frame, alpha);
     float level = perceptual;
-    if (standInTable != NO_STAND_IN) {
-        vec2 standIn = sampleLobeAlbedo(standInTable, cosOut, perceptual);
+    if (pair != GGX_SMITH_PAIR) {
+        vec2 standIn = sampleLobeAlbedo(MICROFACET_STAND_IN + pair, cosOut, perceptual);
         direction = environmentTowardsMirror(wo, frame, standIn.y);
         level = standIn.x;
     }
