@@ -205,7 +205,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     // Frames drawn whole and swapped after the window was exposed or resized: llvmpipe gives a
     // resized window a new back buffer only at a swap, with no pixels of the frame before.
     int wholeFrames = 0;
-    RenderTarget reducedFrame{GL_RGBA8, false};  // on screen while the full frame is refined in bands
+    // On screen while the full frame is refined in bands: the frame before, at its own resolution
+    // (copied as it is, and scaled as it is put on screen, as it was shown).
+    RenderTarget reducedFrame{GL_RGBA8, false};
+    int reducedScale = 1;
     int refinedRows = 0;  // the full frame's rows drawn so far, from the top
     double refinedMilliseconds = 0.0;  // the full frame's bands so far
     const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
@@ -349,8 +352,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
             if (plan.bands > 1) {
                 if (plan.band == 0) {
-                    reducedFrame.ensure(viewportPixels.x, viewportPixels.y, 1);
-                    renderer.displayToScreen(drawn->display, {0, 0}, renderedScale, reducedFrame.framebuffer());
+                    reducedScale = renderedScale;
+                    const glm::ivec2 reducedPixels = (viewportPixels + reducedScale - 1) / reducedScale;
+                    reducedFrame.ensure(reducedPixels.x, reducedPixels.y, 1);
+                    renderer.displayToScreen(drawn->display, {0, 0}, 1, reducedFrame.framebuffer());
                 }
                 const int top = renderPixels.y - renderPixels.y * plan.band / plan.bands;
                 rows.first = renderPixels.y - renderPixels.y * (plan.band + 1) / plan.bands;
@@ -427,10 +432,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             glClear(GL_COLOR_BUFFER_BIT);
             PixelRegion viewportPart = intersectionOf(rect, shownViewport);
             if (viewportPart.width > 0 && viewportPart.height > 0 && refresh.refining()) {
+                glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);  // its last pixel may reach further
                 glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
                 glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
-                                  viewportLowerLeft.x + reducedFrame.width(), viewportLowerLeft.y + reducedFrame.height(),
-                                  GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                                  viewportLowerLeft.x + reducedFrame.width() * reducedScale,
+                                  viewportLowerLeft.y + reducedFrame.height() * reducedScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 viewportPart = intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows,
                                                              renderedSize.x, refinedRows});

@@ -14,7 +14,6 @@
 #include "gl/material_glsl.h"
 #include "gl/material_textures.h"
 #include "gl/shader_specialisation.h"
-#include "render/material_change.h"
 #include "render/sphere_occlusion.h"
 #include "render/transmission_backdrop.h"
 #include "scene/plane_edge_fade.h"
@@ -319,7 +318,10 @@ bool Renderer::reloadChangedShaders() {
             else error = rebuilt.error().format();
         }
     if (changed) shaderError_ = error;
-    if (changed) held_[0].reset(), held_[1].reset();
+    if (changed) {
+        for (SingleSampleTargets& kept : singleSample_) kept.held.reset();
+        multisampleHeld_.reset();
+    }
     return changed;
 }
 
@@ -379,11 +381,28 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
 
 // --- drawing --------------------------------------------------------------------------------
 
-std::optional<PixelRegion> Renderer::changedPixels(const HeldFrame& frame) const {
-    const std::optional<HeldFrame>& held = held_[frame.samples > 1 ? 1 : 0];
+std::optional<MaterialChange> Renderer::changeFromHeld(const HeldFrame& frame) const {
+    const std::optional<HeldFrame>& held = frame.samples > 1 ? multisampleHeld_ : targets().held;
     if (!redrawOnlyChanges_ || !held || held->standIns || !held->sameTargets(frame)) return std::nullopt;
-    const std::optional<PixelRegion> changed = materialChangeRect(held->scene, frame.scene, frame.width, frame.height);
-    return changed && held->newer ? boundsOf(*changed, *held->newer) : changed;
+    std::optional<MaterialChange> change = materialChange(held->scene, frame.scene, frame.width, frame.height);
+    if (change && held->newer) change->rect = boundsOf(change->rect, *held->newer);
+    return change;
+}
+
+void Renderer::useTargetsOfSize(int width, int height) {
+    const auto ofSize = [&](const SingleSampleTargets& kept) { return kept.radiance.width() == width && kept.radiance.height() == height; };
+    const auto found = std::find_if(std::begin(singleSample_), std::end(singleSample_), ofSize);
+    // Else the least recently used targets are remade at this size.
+    const auto chosen = found != std::end(singleSample_)
+                            ? found
+                            : std::min_element(std::begin(singleSample_), std::end(singleSample_),
+                                               [](const SingleSampleTargets& a, const SingleSampleTargets& b) { return a.lastUsed < b.lastUsed; });
+    current_ = static_cast<int>(chosen - std::begin(singleSample_));
+    targets().lastUsed = framesRendered_;
+    if (found != std::end(singleSample_)) return;
+    targets().radiance.ensure(width, height, 1);
+    targets().held.reset();
+    targets().resolveHeld = false;
 }
 
 Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail, RowBand rows) {
@@ -397,13 +416,13 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     int dragResolution = 256;
     while (dragResolution < 2 * std::max(width, height)) dragResolution *= 2;
     shadowMaps_->update(scene, meshOf, detail, dragResolution);
-    radianceTarget_.ensure(width, height, 1);
+    useTargetsOfSize(width, height);
     const int requested = samplesFor(scene.msaaSamples);
     if (requested > 1) multisampleTarget_.ensure(width, height, requested);
     // The implementation may allocate more samples than asked (a count it has): the shaders and
     // sample positions follow what it allocated.
     const int samples = requested > 1 ? multisampleTarget_.allocatedSamples() : 1;
-    RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : radianceTarget_;
+    RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : targets().radiance;
     // Transmissive objects are drawn last, after the backdrop of the opaque ones is captured:
     // by this frame (a whole frame, or the band with the top row, whose opaque pass then covers the
     // whole frame) or by the band above.
@@ -417,7 +436,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
     fusedDisplay_.reset();
     if (fusesDisplay(scene, samples)) {
-        displayTarget_.ensure(width, height, 1);
+        targets().display.ensure(width, height, 1);
         fusedDisplay_ = scene.display;
     }
     // The float image is written unless the render is fused and nobody reads it (setRadianceKept).
@@ -425,15 +444,19 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     // Only the pixels a material change reaches, when the target holds the frame before it.
     std::optional<HeldFrame> frame;
     if (redrawOnlyChanges_) frame = HeldFrame{scene, width, height, samples, radianceWritten_, fusedDisplay_.has_value()};
-    std::optional<HeldFrame>& held = held_[samples > 1 ? 1 : 0];
-    std::optional<PixelRegion> region = frame ? changedPixels(*frame) : std::nullopt;
-    const bool changesOnly = region.has_value();
+    std::optional<HeldFrame>& held = samples > 1 ? multisampleHeld_ : targets().held;
+    const std::optional<MaterialChange> change = frame ? changeFromHeld(*frame) : std::nullopt;
+    std::optional<PixelRegion> region;
+    if (change) region = change->rect;
+    const bool changesOnly = change.has_value();
     if (rows.count > 0) region = intersectionOf(region.value_or(PixelRegion{0, 0, width, height}), {0, rows.first, width, rows.count});
+    // Only the changed objects, where the region holds the held frame's pixels (setRedrawOnlyChanges).
+    const bool objectsOnly = changesOnly && (!held->newer || intersectionOf(*region, *held->newer).empty());
     drewOnlyChanges_ = changesOnly;
     drawnPixels_ = capturesBackdrop ? std::nullopt : region;  // the backdrop's opaque pass draws every pixel
     // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
-    glBindFramebuffer(GL_FRAMEBUFFER, radianceTarget_.framebuffer());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? displayTarget_.colorTexture() : 0, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets().radiance.framebuffer());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? targets().display.colorTexture() : 0, 0);
     const GLenum drawBuffers[2] = {radianceWritten_ ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE}, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(fusedDisplay_ ? 2 : 1, drawBuffers);
 
@@ -454,11 +477,14 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     scissorTo(capturesBackdrop ? std::nullopt : region);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
+    // GL_LEQUAL: an object drawn again over the held frame (objectsOnly) passes where it was drawn
+    // before, its depth being the same. One depth function for every frame, as llvmpipe compiles a
+    // program again for another (a stall of about 300 ms on the first such frame).
+    glDepthFunc(GL_LEQUAL);
     if (samples > 1) glEnable(GL_MULTISAMPLE);
     // Depth is cleared before the first draw that tests it, not when nothing is drawn (an empty
     // frame is then one clear of the 8-bit image); only what was drawn reads it (the overlays).
-    bool depthCleared = false;
+    bool depthCleared = objectsOnly;
     const auto clearDepthOnce = [&depthCleared] {
         if (!depthCleared) glClear(GL_DEPTH_BUFFER_BIT);
         depthCleared = true;
@@ -475,7 +501,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     const bool uniformBackground = !capturesBackdrop && scene.background.kind == BackgroundKind::Constant &&
                                    !(scene.environment.enabled() && scene.environment.showAsBackground) &&
                                    (!fusedDisplay_ || fusedDisplay_->dither == Dither::None);
-    if (uniformBackground) {
+    if (uniformBackground && !objectsOnly) {
         const GLfloat radiance[4] = {scene.background.color.r, scene.background.color.g, scene.background.color.b, 1.0f};
         if (radianceWritten_) glClearBufferfv(GL_COLOR, 0, radiance);
         if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
@@ -515,7 +541,6 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
             result = background.error();
         } else if (*background) {
             glDepthMask(GL_FALSE);
-            glDepthFunc(GL_LEQUAL);
             glDepthRange(1.0, 1.0);
             clearDepthOnce();
             glUseProgram((*background)->id());
@@ -523,10 +548,15 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
             glBindVertexArray(emptyVertexArray_);
             glDrawArrays(GL_TRIANGLES, 0, 3);
             glDepthRange(0.0, 1.0);
-            glDepthFunc(GL_LESS);
             glDepthMask(GL_TRUE);
             glBindVertexArray(0);
         }
+    };
+    // Each object in the frame, drawn or held, for the overlays.
+    const auto remember = [this](const GpuMesh& mesh, const SceneObject& object) {
+        const MeshPlacement placement = placementOf(object.shape);
+        drawnMeshes_.push_back({mesh.vertexArray, mesh.indexCount, !std::holds_alternative<PlaneShape>(object.shape),
+                                glm::vec4(placement.offset, placement.scale)});
     };
     for (auto next = drawOrder.begin(); next != drawOrder.end(); ++next) {
         if (next == firstTransmissive && capturesBackdrop) {
@@ -546,6 +576,10 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         const BoundingSphere bounds =
             sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
         if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
+        if (objectsOnly && !change->materials[object.materialIndex]) {  // its pixels are held
+            remember(meshes_->forObject(i, object, kEveryTriangle), object);
+            continue;
+        }
         const Material& material = scene.materials.at(object.materialIndex);
         const bool seesBackdrop = next >= firstTransmissive && transmission_->shows();
         const SurfaceVariant variant = surfaceVariant(object, material, samples, frameDefines, seesBackdrop);
@@ -601,27 +635,25 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
         trianglesDrawn_ += mesh.indexCount / 3;
         if (mesh.simplified) ++simplifiedMeshesDrawn_;
-        const MeshPlacement placement = placementOf(object.shape);
-        drawnMeshes_.push_back({mesh.vertexArray, mesh.indexCount, !std::holds_alternative<PlaneShape>(object.shape),
-                                glm::vec4(placement.offset, placement.scale)});
+        remember(mesh, object);
     }
     glDisable(GL_CULL_FACE);
-    if (!backgroundDrawn) drawBackground();
+    if (!backgroundDrawn && !objectsOnly) drawBackground();
     if (samples > 1) {
         // The whole frame when the resolve target does not hold the last resolve (a frame without
         // MSAA drew into it since).
-        if (changesOnly && !resolveHeld_) {
+        if (changesOnly && !targets().resolveHeld) {
             glDisable(GL_SCISSOR_TEST);
             drawnPixels_.reset();
         }
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, radianceTarget_.framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets().radiance.framebuffer());
         // Depth too: the overlay pass hides lines behind the surface with it.
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     glDisable(GL_SCISSOR_TEST);
-    resolveHeld_ = samples > 1 && (!region || changesOnly);
-    if (samples > 1) held_[0].reset();  // the resolve overwrote the single-sample frame's float image
+    targets().resolveHeld = samples > 1 && (!region || changesOnly);
+    if (samples > 1) targets().held.reset();  // the resolve overwrote the single-sample frame's float image
     if (frame) frame->standIns = simplifiedMeshesDrawn_ > 0 || shadowMaps_->provisional();
     if (!result || !frame || frame->standIns || (rows.count > 0 && !changesOnly)) held.reset();
     else if (rows.count > 0) held->newer = held->newer ? boundsOf(*held->newer, *region) : *region;  // a band: the rest holds `held`
@@ -658,36 +690,36 @@ void runDisplayPass(const ShaderProgram& program, GLuint radianceTexture, GLuint
 
 void Renderer::displayOffscreen(const DisplaySettings& display) {
     platform_.makeCurrent();
-    displayTarget_.ensure(radianceTarget_.width(), radianceTarget_.height(), 1);
-    glBindFramebuffer(GL_FRAMEBUFFER, displayTarget_.framebuffer());
-    glViewport(0, 0, radianceTarget_.width(), radianceTarget_.height());
+    targets().display.ensure(targets().radiance.width(), targets().radiance.height(), 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets().display.framebuffer());
+    glViewport(0, 0, targets().radiance.width(), targets().radiance.height());
     // Skipped when the radiance pass already wrote the encoded image with these settings (fused).
     if (!fusedDisplay_ || !sameDisplay(*fusedDisplay_, display)) {
         GLINT_CHECK(radianceWritten_);  // a render that kept no float image: its display settings only
-        runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
+        runDisplayPass(displayProgram(display), targets().radiance.colorTexture(), emptyVertexArray_, display, {0, 0}, 1);
     }
-    overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), {0, 0}, 1);
+    overlayPass_.draw(display.overlays, drawnMeshes_, targets().radiance.depthTexture(), {0, 0}, 1);
     fusedDisplay_.reset();  // the target now holds the overlays too: not the fused image any more
-    held_[0].reset();
+    targets().held.reset();
 }
 
 void Renderer::displayToScreen(const DisplaySettings& display, glm::ivec2 lowerLeft, int pixelScale, GLuint framebuffer) {
     platform_.makeCurrent();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    const int width = radianceTarget_.width(), height = radianceTarget_.height();
+    const int width = targets().radiance.width(), height = targets().radiance.height();
     glViewport(lowerLeft.x, lowerLeft.y, width * pixelScale, height * pixelScale);
     if (fusedDisplay_ && sameDisplay(*fusedDisplay_, display)) {
         // The radiance pass wrote this very image (fused): each pixel copied to pixelScale² screen pixels.
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, displayTarget_.framebuffer());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, targets().display.framebuffer());
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glBlitFramebuffer(0, 0, width, height, lowerLeft.x, lowerLeft.y, lowerLeft.x + width * pixelScale,
                           lowerLeft.y + height * pixelScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     } else {
         GLINT_CHECK(radianceWritten_);
-        runDisplayPass(displayProgram(display), radianceTarget_.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
+        runDisplayPass(displayProgram(display), targets().radiance.colorTexture(), emptyVertexArray_, display, lowerLeft, pixelScale);
     }
-    overlayPass_.draw(display.overlays, drawnMeshes_, radianceTarget_.depthTexture(), lowerLeft, pixelScale);
+    overlayPass_.draw(display.overlays, drawnMeshes_, targets().radiance.depthTexture(), lowerLeft, pixelScale);
 }
 
 // --- readback -------------------------------------------------------------------------------
@@ -712,8 +744,8 @@ void readFlipped(GLuint framebuffer, int width, int height, GLenum type, std::ve
 RadianceImage Renderer::readRadiance() const {
     platform_.makeCurrent();
     GLINT_CHECK(radianceWritten_);  // setRadianceKept(false) renders have no float image
-    RadianceImage image(radianceTarget_.width(), radianceTarget_.height());
-    readFlipped(radianceTarget_.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
+    RadianceImage image(targets().radiance.width(), targets().radiance.height());
+    readFlipped(targets().radiance.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
     return image;
 }
 
@@ -724,8 +756,8 @@ OpaquePassImage Renderer::readTransmissionBackdrop() const {
 
 DisplayImage Renderer::readDisplay() const {
     platform_.makeCurrent();
-    DisplayImage image(displayTarget_.width(), displayTarget_.height());
-    readFlipped(displayTarget_.framebuffer(), image.width, image.height, GL_UNSIGNED_BYTE, image.pixels);
+    DisplayImage image(targets().display.width(), targets().display.height());
+    readFlipped(targets().display.framebuffer(), image.width, image.height, GL_UNSIGNED_BYTE, image.pixels);
     return image;
 }
 

@@ -30,6 +30,7 @@
 #include "gl/shadow_maps.h"
 #include "gl/transmission_pass.h"
 #include "image/image.h"
+#include "render/material_change.h"
 #include "render/visibility.h"
 #include "scene/scene.h"
 
@@ -98,7 +99,11 @@ public:
     // targets hold a frame of the same scene but for material values, at the same size and samples,
     // drawn with no stand-in (simplified mesh, shadow map drawn for a drag), renderRadiance draws
     // only the pixels of the changed materials' objects (render/material_change.h), a band of rows
-    // only those within it, and the rest stays as held. The picture is the whole frame's.
+    // only those within it, and the rest stays as held. The picture is the whole frame's. Where
+    // none of those pixels was drawn since from another scene (a band of the full frame after a
+    // drag, a drag frame), only the changed objects are drawn again, over the held frame: each
+    // sample passes the depth test (GL_LEQUAL) where the object was drawn before, as its depth is
+    // the same, and the other objects and the background in its rectangle are not drawn at all.
     void setRedrawOnlyChanges(bool enabled) { redrawOnlyChanges_ = enabled; }
     // Whether the last renderRadiance drew only such pixels (the editor does not take its time for
     // a whole frame's), and the pixels it drew: its band, the changed objects' rectangle within it;
@@ -201,8 +206,9 @@ private:
     };
 
     Renderer(GlPlatform& platform, ShaderSources sources);
-    // The pixels a frame must draw when its target holds `frame` but for material values; none: all.
-    std::optional<PixelRegion> changedPixels(const HeldFrame& frame) const;
+    // What a frame must draw when its target holds `frame` but for material values (the changed
+    // objects' rectangle, with the pixels drawn since from a newer scene); none: all of it.
+    std::optional<MaterialChange> changeFromHeld(const HeldFrame& frame) const;
     // Whether a frame with these samples writes the display image in the radiance pass (the levels
     // ramp is drawn by the display pass).
     bool fusesDisplay(const Scene& scene, int samples) const { return fuseDisplay_ && samples == 1 && !scene.display.levelsRamp; }
@@ -270,14 +276,26 @@ private:
     bool redrawOnlyChanges_ = false;
     bool drewOnlyChanges_ = false;
     std::optional<PixelRegion> drawnPixels_;
-    // What the single-sample targets (float and 8-bit, drawn directly) and the multisample target hold.
-    std::optional<HeldFrame> held_[2];
-    bool resolveHeld_ = false;  // the float target holds the multisample target's frame, resolved
+    // A single-sample frame: the float radiance (with depth) and the 8-bit display image, and what
+    // they hold (drawn directly, or the multisample target's frame resolved).
+    struct SingleSampleTargets {
+        RenderTarget radiance{kRadianceFormat, true};
+        RenderTarget display{GL_RGBA8, false};
+        std::optional<HeldFrame> held;
+        bool resolveHeld = false;
+        std::uint64_t lastUsed = 0;  // framesRendered_ of the last frame drawn into them
+    };
+    // Three sizes are kept: the editor's full frames and its reduced frames while dragging (½ and
+    // ¼ resolution) each draw into targets that still hold their last frame, with no reallocation.
+    SingleSampleTargets& targets() { return singleSample_[current_]; }
+    const SingleSampleTargets& targets() const { return singleSample_[current_]; }
+    void useTargetsOfSize(int width, int height);
+    SingleSampleTargets singleSample_[3];
+    int current_ = 0;  // the targets the last renderRadiance drew into
+    std::optional<HeldFrame> multisampleHeld_;
     bool radianceWritten_ = true;  // by the last renderRadiance
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};
-    RenderTarget radianceTarget_{kRadianceFormat, true};
-    RenderTarget displayTarget_{GL_RGBA8, false};
     std::unique_ptr<Renderer> warmUp_;  // made, used and deleted on the compiler's worker only
     std::unique_ptr<ProgramCompiler> compiler_;  // last: its worker stops before the rest goes
 };

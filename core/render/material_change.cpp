@@ -2,6 +2,7 @@
 #include "render/material_change.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "geometry/shape_mesh.h"
@@ -10,7 +11,7 @@
 
 namespace glint {
 
-std::optional<PixelRegion> materialChangeRect(const Scene& before, const Scene& after, int width, int height) {
+std::optional<MaterialChange> materialChange(const Scene& before, const Scene& after, int width, int height) {
     if (before.materials.size() != after.materials.size() || before.environment.map != after.environment.map) return std::nullopt;
     Scene valuesAsAfter = before;  // everything else must be the same
     std::vector<bool> changed(after.materials.size(), false);
@@ -27,10 +28,11 @@ std::optional<PixelRegion> materialChangeRect(const Scene& before, const Scene& 
     }
     if (std::none_of(changed.begin(), changed.end(), [](bool c) { return c; })) return std::nullopt;
     if (drawsTransmissionBackdrop(after) || sceneToJson(valuesAsAfter) != sceneToJson(after)) return std::nullopt;
-    PixelRegion region;  // empty when no changed object is in the frame
+    MaterialChange change{{}, std::move(changed)};
     for (const SceneObject& object : after.objects)
-        if (changed[object.materialIndex]) region = boundsOf(region, coveredRect(after.camera, boundingSphere(object.shape), width, height));
-    return region;
+        if (change.materials[object.materialIndex])
+            change.rect = boundsOf(change.rect, coveredRect(after.camera, boundingSphere(object.shape), width, height));
+    return change;
 }
 
 }  // namespace glint

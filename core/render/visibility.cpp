@@ -60,8 +60,8 @@ PixelRegion intersectionOf(const PixelRegion& a, const PixelRegion& b) {
 }
 
 PixelRegion boundsOf(const PixelRegion& a, const PixelRegion& b) {
-    if (a.width == 0 || a.height == 0) return b;
-    if (b.width == 0 || b.height == 0) return a;
+    if (a.empty()) return b;
+    if (b.empty()) return a;
     const int x = std::min(a.x, b.x), y = std::min(a.y, b.y);
     return {x, y, std::max(a.x + a.width, b.x + b.width) - x, std::max(a.y + a.height, b.y + b.height) - y};
 }

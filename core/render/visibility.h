@@ -44,6 +44,7 @@ double coveredPixels(const Camera& camera, const BoundingSphere& bounds, int wid
 // A rectangle of a frame's pixels, in GL's convention: x from the left column, y from the bottom row.
 struct PixelRegion {
     int x = 0, y = 0, width = 0, height = 0;
+    bool empty() const { return width <= 0 || height <= 0; }
 };
 PixelRegion intersectionOf(const PixelRegion& a, const PixelRegion& b);
 PixelRegion boundsOf(const PixelRegion& a, const PixelRegion& b);  // the smallest region holding both
