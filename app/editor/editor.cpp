@@ -432,7 +432,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             glClear(GL_COLOR_BUFFER_BIT);
             PixelRegion viewportPart = intersectionOf(rect, shownViewport);
             if (viewportPart.width > 0 && viewportPart.height > 0 && refresh.refining()) {
-                glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);  // its last pixel may reach further
+                // Scaled, its last column and row may reach past the viewport (up to scale − 1 pixels).
+                glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);
                 glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
                 glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
                                   viewportLowerLeft.x + reducedFrame.width() * reducedScale,

@@ -10,9 +10,6 @@
 #include "util/diagnostic.h"
 
 namespace glint {
-namespace {
-
-}  // namespace
 
 // --- welding ----------------------------------------------------------------------------------
 
