@@ -1,5 +1,5 @@
 // Specialised programs (gl/shader_specialisation.h) draw the same pictures as the generic ones:
-// for every light kind (directional, point, spot, classic attenuation), a shadowed light, a sky
+// for every light kind (directional, point, spot, classic attenuation), each kind of shadow map, a sky
 // and a constant background (a clear), the fused display's choices and a material's enum choices,
 // and OpenPBR's layers weighted zero, the radiance agrees to float rounding and the 8-bit display
 // image byte for byte.
@@ -18,7 +18,8 @@ namespace glint {
 namespace {
 
 // The default stage (sphere on a floor) without its environment and MSAA, lit by one light of
-// each kind, the key light shadowed.
+// each kind; the key, fill and spot lights cast shadows (an orthographic, a cube and a perspective
+// map, in three slots).
 Scene everyLightKind() {
     Scene scene = defaultScene();
     scene.environment = Environment{};
@@ -29,12 +30,14 @@ Scene everyLightKind() {
     fill.name = "fill";
     fill.type = LightType::Point;
     fill.position = {-2.0f, 1.5f, 2.0f};
+    fill.castsShadows = true;
     Light spot;
     spot.name = "spot";
     spot.type = LightType::Spot;
     spot.position = {-1.5f, 2.5f, 1.5f};
     spot.direction = glm::normalize(glm::vec3(1.5f, -2.5f, -1.5f));
     spot.falloffExponent = 2.0f;
+    spot.castsShadows = true;
     Light classic;
     classic.name = "classic";
     classic.type = LightType::Point;
@@ -128,10 +131,12 @@ TEST(Specialisation, TheFramesChoicesBecomeConstants) {
     const Scene scene = everyLightKind();
     ShadowBlockStd140 shadows{};
     for (glm::ivec4& entry : shadows.mapOfLight) entry = glm::ivec4(-1);
-    shadows.mapOfLight[0][0] = 0;  // the key light has map 0
+    shadows.mapOfLight[0][0] = 0;  // the key light has map 0 (orthographic)
+    shadows.mapOfLight[0][1] = 2;  // the point light has map 2, a cube map
+    shadows.origin[2].w = static_cast<float>(ShadowMapKind::Cube);
     const std::string text = frameSpecialisation(packFrameUniforms(scene, 64, 64), shadows, scene.environment, scene.display);
-    EXPECT_NE(text.find("#define GLINT_LIGHT_SUM(term) (term(0, LIGHT_DIRECTIONAL, true) + term(1, LIGHT_POINT, false) + "
-                        "term(2, LIGHT_ANY, false) + term(3, LIGHT_ANY, false))"),
+    EXPECT_NE(text.find("#define GLINT_LIGHT_SUM(term) (term(0, LIGHT_DIRECTIONAL, 0, 0) + term(1, LIGHT_POINT, 2, 2) + "
+                        "term(2, LIGHT_ANY, -1, 0) + term(3, LIGHT_ANY, -1, 0))"),
               std::string::npos)
         << text;
     EXPECT_NE(text.find("#define GLINT_FUSED_DISPLAY 1"), std::string::npos);

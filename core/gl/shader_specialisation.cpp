@@ -26,16 +26,17 @@ const char* lightKind(const GpuLightStd140& light) {
     return inverseSquare && noCone ? "LIGHT_POINT" : "LIGHT_ANY";
 }
 
-// GLINT_LIGHT_SUM(term): term(i, kind, shadowed) summed over the lights in LightBlock order
-// (shaders/common/shading.glsl), or nothing when there are too many to unroll.
+// GLINT_LIGHT_SUM(term): term(i, kind, shadow-map slot or −1, map kind) summed over the lights in
+// LightBlock order (shaders/common/shading.glsl), or nothing when there are too many to unroll.
 std::string lightSum(const FrameUniforms& frame, const ShadowBlockStd140& shadows) {
     const int count = frame.frame.lightCount.x;
     if (count > kMaxSpecialisedLights) return "";
     std::string sum;
     for (int i = 0; i < count; ++i) {
-        const bool shadowed = shadows.mapOfLight[i / 4][i % 4] >= 0;
+        const int slot = shadows.mapOfLight[i / 4][i % 4];
+        const int mapKind = slot >= 0 ? static_cast<int>(shadows.origin[slot].w) : 0;
         sum += (i ? " + term(" : "term(") + std::to_string(i) + ", " + lightKind(frame.lights.lights[i]) + ", " +
-               (shadowed ? "true" : "false") + ")";
+               std::to_string(slot) + ", " + std::to_string(mapKind) + ")";
     }
     return define("GLINT_LIGHT_SUM(term)", count == 0 ? "vec3(0.0)" : "(" + sum + ")");
 }

@@ -50,25 +50,47 @@ vec3 fetchEnvironmentLevel(int level, ivec2 texel) {
     return texelFetch(environmentPrefiltered, ivec3(texel, level - 1), 0).rgb;
 }
 
-// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance, L + 1 + k: residual k):
-// twin of sampleEquirect().
-vec3 sampleEnvironmentLevel(int level, vec3 d) {
-    ivec2 size = level == 0 ? environmentSizes.xy : environmentSizes.zw;
+// The four texels around direction d (map axes) in a size.x × size.y equirect image and the
+// bilinear weights between them: twin of sampleEquirect().
+struct EquirectTexels {
+    ivec4 corners;  // column0, row0, column1, row1
+    vec2 weight;    // towards column1, towards row1
+};
+
+EquirectTexels equirectTexels(vec3 d, ivec2 size) {
     float u = 0.5 + atan(d.x, -d.z) * (0.5 * INV_PI);
     float v = acos(clamp(d.y, -1.0, 1.0)) * INV_PI;
     float x = u * float(size.x) - 0.5, y = v * float(size.y) - 0.5;
     float x0 = floor(x), y0 = floor(y);
-    float fx = x - x0, fy = y - y0;
     int column0 = int(x0);
     if (column0 < 0) column0 += size.x;
     if (column0 >= size.x) column0 -= size.x;
     int column1 = column0 + 1 == size.x ? 0 : column0 + 1;
     int row0 = clamp(int(y0), 0, size.y - 1), row1 = clamp(int(y0) + 1, 0, size.y - 1);
-    vec3 top = fetchEnvironmentLevel(level, ivec2(column0, row0)) * (1.0 - fx) +
-               fetchEnvironmentLevel(level, ivec2(column1, row0)) * fx;
-    vec3 bottom = fetchEnvironmentLevel(level, ivec2(column0, row1)) * (1.0 - fx) +
-                  fetchEnvironmentLevel(level, ivec2(column1, row1)) * fx;
-    return top * (1.0 - fy) + bottom * fy;
+    return EquirectTexels(ivec4(column0, row0, column1, row1), vec2(x - x0, y - y0));
+}
+
+vec3 bilinear(vec3 c00, vec3 c10, vec3 c01, vec3 c11, vec2 weight) {
+    vec3 top = c00 * (1.0 - weight.x) + c10 * weight.x, bottom = c01 * (1.0 - weight.x) + c11 * weight.x;
+    return top * (1.0 - weight.y) + bottom * weight.y;
+}
+
+// Bilinear at one level (0: base, k: prefiltered k, L + 1: irradiance, L + 1 + k: residual k).
+vec3 sampleEnvironmentLevel(int level, vec3 d) {
+    EquirectTexels e = equirectTexels(d, level == 0 ? environmentSizes.xy : environmentSizes.zw);
+    return bilinear(fetchEnvironmentLevel(level, e.corners.xy), fetchEnvironmentLevel(level, e.corners.zy),
+                    fetchEnvironmentLevel(level, e.corners.xw), fetchEnvironmentLevel(level, e.corners.zw), e.weight);
+}
+
+// The same at a level k ≥ 1 of the prefiltered array: one fetch a texel where a level that may be
+// the base takes two (llvmpipe runs both arms of a choice).
+vec3 samplePrefilteredLevel(int level, vec3 d) {
+    EquirectTexels e = equirectTexels(d, environmentSizes.zw);
+    int layer = level - 1;
+    return bilinear(texelFetch(environmentPrefiltered, ivec3(e.corners.xy, layer), 0).rgb,
+                    texelFetch(environmentPrefiltered, ivec3(e.corners.zy, layer), 0).rgb,
+                    texelFetch(environmentPrefiltered, ivec3(e.corners.xw, layer), 0).rgb,
+                    texelFetch(environmentPrefiltered, ivec3(e.corners.zw, layer), 0).rgb, e.weight);
 }
 
 // Radiance arriving from a world direction: intensity × base level.
@@ -88,7 +110,7 @@ vec3 environmentSpecularRadiance(vec3 worldDirection, float perceptualRoughness)
     int lower = min(int(level), PREFILTERED_LEVELS - 1);
     float t = level - float(lower);
     return environmentTransform.z * (sampleEnvironmentLevel(lower, d) * (1.0 - t) +
-                                     sampleEnvironmentLevel(lower + 1, d) * t);
+                                     samplePrefilteredLevel(lower + 1, d) * t);
 }
 
 // The map's peak lights (twins of environmentUsesPeaks, environmentPeakDirection and
@@ -122,14 +144,20 @@ float environmentGaussianSlopePeakAlpha(float alpha, float widened) {
 
 // Twin of sumOverPeaks() in environment_lighting.cpp: runs STATEMENT for every peak light k
 // where a lobe of roughness ALPHA takes them, with its direction `wi` and the widened roughness
-// `widened` (a macro: GLSL has no callbacks).
-#define ENVIRONMENT_EACH_PEAK(ALPHA, WO, FRAME, STATEMENT)                          \
-    if (environmentUsesPeaks(ALPHA) && cosTheta(FRAME, WO) > 0.0) {                 \
-        for (int k = 0; k < environmentPeakCount(); ++k) {                          \
-            vec3 wi = environmentPeakDirection(k);                                  \
-            float widened = environmentPeakAlpha(k, ALPHA);                         \
-            STATEMENT                                                               \
-        }                                                                           \
+// `widened` (a macro: GLSL has no callbacks). A do-while loop with a dynamic count, so that a lobe
+// below the map's peak-light α costs llvmpipe one masked pass, not every light's: it runs both arms
+// of a choice (an unrolled sum inside an if), and a for loop's body once more after its last pass.
+#define ENVIRONMENT_EACH_PEAK(ALPHA, WO, FRAME, STATEMENT)                                                  \
+    {                                                                                                     \
+        int peakCount = environmentUsesPeaks(ALPHA) && cosTheta(FRAME, WO) > 0.0 ? environmentPeakCount() : 0; \
+        int k = 0;                                                                                        \
+        do {                                                                                              \
+            if (k < peakCount) {                                                                          \
+                vec3 wi = environmentPeakDirection(k);                                                    \
+                float widened = environmentPeakAlpha(k, ALPHA);                                           \
+                STATEMENT                                                                                 \
+            }                                                                                             \
+        } while (++k < peakCount);                                                                        \
     }
 
 // Twin of peakLighting(): adds to SUM Σ_k f_r(ω_k; α_k) cos θ_k E_k over the peak lights above the
@@ -148,7 +176,7 @@ vec3 environmentGlossyRadianceAt(vec3 worldDirection, float alpha, float percept
     int lower = min(int(level), PREFILTERED_LEVELS - 1);
     float t = level - float(lower);
     int first = residual ? PREFILTERED_LEVELS + 1 + lower : lower;
-    return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + sampleEnvironmentLevel(first + 1, d) * t);
+    return environmentTransform.z * (sampleEnvironmentLevel(first, d) * (1.0 - t) + samplePrefilteredLevel(first + 1, d) * t);
 }
 
 vec3 environmentGlossyRadiance(vec3 worldDirection, float alpha) {
@@ -166,12 +194,15 @@ vec3 environmentObliqueGlossyRadiance(vec3 direction, ShadingFrame frame, vec3 w
     float acrossLength = length(across);
     vec3 offset = acrossLength > 1e-6 ? across * (fade * alpha * sqrt(1.0 - cosOut * cosOut) / acrossLength) : vec3(0.0);
     float narrowed = perceptual * sqrt(1.0 - fade + fade * cosOut);
-    // A rough lobe (fade 0) takes one lookup; a loop, so that llvmpipe skips the second where no
-    // pixel needs it (it runs both arms of a choice).
+    // A rough lobe (fade 0) takes one lookup. A do-while loop, so that llvmpipe runs the second only
+    // where a pixel needs it: it runs both arms of a choice, and a for loop's body once more (masked)
+    // after its last pass.
     int lookups = fade > 0.0 ? 2 : 1;
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < lookups; ++i)
+    int i = 0;
+    do {
         sum += environmentGlossyRadianceAt(normalize(i == 0 ? direction + offset : direction - offset), alpha, narrowed);
+    } while (++i < lookups);
     return sum / float(lookups);
 }
 

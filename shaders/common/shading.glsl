@@ -5,15 +5,15 @@
 #include "common/shadows.glsl"
 #include "common/sphere_occlusion.glsl"
 
-// One delta light's L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadows.glsl). `kind` and
-// `shadowed` are constants in a specialised program (gl/shader_specialisation.h), so the compiler
-// keeps only the code this light needs.
-vec3 lightTerm(MaterialParams params, int i, int kind, bool shadowed, vec3 position, ShadingFrame frame,
+// One delta light's L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadows.glsl). `kind`, the shadow
+// map's `shadowSlot` (−1: none) and `shadowKind` are constants in a specialised program
+// (gl/shader_specialisation.h), so the compiler keeps only the code this light needs.
+vec3 lightTerm(MaterialParams params, int i, int kind, int shadowSlot, int shadowKind, vec3 position, ShadingFrame frame,
                vec3 towardsViewer) {
     LightArrival arrival = lightArrival(lights[i], position, kind);
     float cosIn = cosTheta(frame, arrival.towardsLight);
     if (cosIn <= 0.0) return vec3(0.0);
-    float visibility = shadowed ? shadowVisibility(i, position, frame.normal, arrival.towardsLight) : 1.0;
+    float visibility = shadowVisibility(shadowSlot, shadowKind, position, frame.normal, arrival.towardsLight);
     if (visibility == 0.0) return vec3(0.0);
     return GLINT_EVAL_BRDF(params, arrival.towardsLight, towardsViewer, frame) * arrival.normalIrradiance * cosIn *
            visibility;
@@ -23,12 +23,14 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     MaterialParams params = loadMaterialParams();
     vec3 radiance = vec3(0.0);
 #ifdef GLINT_LIGHT_SUM
-    // Specialised: the frame's lights unrolled, GLINT_LIGHT_SUM(term) = term(0, kind, shadowed) + ...
-#define GLINT_LIGHT_TERM(i, kind, shadowed) lightTerm(params, i, kind, shadowed, position, frame, towardsViewer)
+    // Specialised: the frame's lights unrolled, GLINT_LIGHT_SUM(term) = term(0, kind, slot, map kind) + ...
+#define GLINT_LIGHT_TERM(i, kind, slot, mapKind) lightTerm(params, i, kind, slot, mapKind, position, frame, towardsViewer)
     radiance += GLINT_LIGHT_SUM(GLINT_LIGHT_TERM);
 #else
-    for (int i = 0; i < lightCount.x; ++i)
-        radiance += lightTerm(params, i, LIGHT_ANY, true, position, frame, towardsViewer);
+    for (int i = 0; i < lightCount.x; ++i) {
+        int slot = shadowSlotOfLight(i);
+        radiance += lightTerm(params, i, LIGHT_ANY, slot, slot < 0 ? 0 : shadowKindOfSlot(slot), position, frame, towardsViewer);
+    }
 #endif
     // The occlusion map (glTF's occlusionTexture) scales the ambient and environment light only.
 #ifdef GLINT_OCCLUSION_SLOT

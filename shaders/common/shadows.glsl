@@ -33,7 +33,8 @@ const vec2 kPoissonDisk[16] = vec2[](
 const int kEarlyTaps = 4;
 
 // Sampler arrays are indexed by constants only (GLSL 4.10 allows dynamically uniform indices, but
-// not every driver handles them well).
+// not every driver handles them well). llvmpipe runs every arm of a choice, so a slot that is not a
+// compile-time constant costs four lookups a tap: a specialised program passes constants.
 float compare2D(int slot, vec3 uvDepth) {
     if (slot == 0) return texture(shadowMaps[0], uvDepth);
     if (slot == 1) return texture(shadowMaps[1], uvDepth);
@@ -48,12 +49,15 @@ float compareCube(int slot, vec4 directionDistance) {
     return texture(shadowCubes[3], directionDistance);
 }
 
-// Fraction of the PCF kernel that sees the light from `position` (1 lit, 0 in shadow).
-// `normal` faces the viewer; `towardsLight` is unit.
-float shadowVisibility(int lightIndex, vec3 position, vec3 normal, vec3 towardsLight) {
-    int slot = shadowMapOfLight[lightIndex / 4][lightIndex % 4];
+// The shadow-map slot of light `lightIndex` (−1: none) and its map's kind, from the block.
+int shadowSlotOfLight(int lightIndex) { return shadowMapOfLight[lightIndex / 4][lightIndex % 4]; }
+int shadowKindOfSlot(int slot) { return int(shadowOrigin[slot].w); }
+
+// Fraction of the PCF kernel that sees the light from `position` (1 lit, 0 in shadow), through map
+// `slot` of kind `kind` (both compile-time constants in a specialised program). `normal` faces the
+// viewer; `towardsLight` is unit.
+float shadowVisibility(int slot, int kind, vec3 position, vec3 normal, vec3 towardsLight) {
     if (slot < 0) return 1.0;
-    int kind = int(shadowOrigin[slot].w);
     vec4 settings = shadowSettings[slot];
     int taps = settings.z > 0.0 ? 16 : 1;
     float visible = 0.0;
