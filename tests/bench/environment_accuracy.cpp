@@ -4,7 +4,8 @@
 // preview's image-based lighting (the CPU twin of the GPU's, equal to it to 79 dB and better)
 // against the CPU reference's Monte-Carlo integral: PSNR over the sphere's interior and the ratio
 // of means, and the reference's own noise (two seeds: PSNR between them − 3 dB).
-// usage: environment_accuracy [--samples N] [--size S] [--all | --model ID]. Not run by ctest.
+// usage: environment_accuracy [--samples N] [--size S] [--all | --model ID | --material NAME] (NAME as the
+// tests name it, e.g. "cook_torrance beckmann smith α 0.5"). Not run by ctest.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,15 +20,17 @@ using namespace glint;
 int main(int argc, char** argv) {
     int samples = 4096, size = 64;
     bool all = false;
-    std::string only;  // a model id: that model alone
+    std::string only;      // a model id: that model alone
+    std::string material;  // a material's name: that material alone
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument == "--samples" && i + 1 < argc) samples = std::atoi(argv[++i]);
         else if (argument == "--size" && i + 1 < argc) size = std::atoi(argv[++i]);
         else if (argument == "--all") all = true;
         else if (argument == "--model" && i + 1 < argc) only = argv[++i];
+        else if (argument == "--material" && i + 1 < argc) material = argv[++i];
         else {
-            std::fprintf(stderr, "usage: environment_accuracy [--samples N] [--size S] [--all | --model ID]\n");
+            std::fprintf(stderr, "usage: environment_accuracy [--samples N] [--size S] [--all | --model ID | --material NAME]\n");
             return 2;
         }
     }
@@ -45,10 +48,14 @@ int main(int argc, char** argv) {
     for (const auto& map : maps) std::printf(" | %-24s", map.name.c_str());
     std::printf("\n");
     const auto start = std::chrono::steady_clock::now();
+    bool any = false;
     for (const auto& entry : test::accuracyMaterials()) {
         const BrdfModel model = entry.material.analytic()->model;
-        if (!only.empty() ? only != modelInfo(model).id : !all && model != BrdfModel::Lambert && model != BrdfModel::CookTorrance)
+        if (!material.empty() ? material != entry.name
+            : !only.empty() ? only != modelInfo(model).id
+                            : !all && model != BrdfModel::Lambert && model != BrdfModel::CookTorrance)
             continue;
+        any = true;
         std::printf("%-28s", entry.name.c_str());
         for (const auto& map : maps) {
             const Scene scene = test::accuracyScene(entry.material, map.environment);
@@ -61,6 +68,10 @@ int main(int argc, char** argv) {
             std::fflush(stdout);
         }
         std::printf("\n");
+    }
+    if (!any) {
+        std::fprintf(stderr, "no material matches '%s'\n", !material.empty() ? material.c_str() : only.c_str());
+        return 2;
     }
     std::printf("%.0f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return 0;
