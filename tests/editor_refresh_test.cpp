@@ -2,6 +2,10 @@
 // drawn with simplified meshes and at reduced resolution while dragging, the full frame follows
 // the drag's end with no further input, a change outside a drag is refined after a pause, fast
 // scenes and the setting turned off are drawn in full.
+#include <optional>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "editor/viewport_refresh.h"
@@ -85,6 +89,28 @@ TEST(ViewportRefresh, ADragThatRedrawsOnlyAMaterialKeepsItsScale) {
     EXPECT_EQ(plan.band + 1, ViewportRefresh::kMostRefineBands);
     EXPECT_TRUE(refresh.fullFramesAreSlow());
     EXPECT_EQ(refresh.plan(change(11.0, true)).pixelScale, 2);
+}
+
+// The bands of a refined full frame share out the rows where it has its work (the changed objects'
+// rectangle), top first; together they are every row once.
+TEST(ViewportRefresh, TheBandsShareOutTheBusyRows) {
+    using Rows = std::vector<std::pair<int, int>>;
+    const auto rowsOf = [](int bands, int height, std::optional<RowBand> busy) {
+        Rows rows;
+        for (int band = 0; band < bands; ++band) {
+            const RowBand r = refineBandRows(band, bands, height, busy);
+            rows.emplace_back(r.first, r.count);
+        }
+        return rows;
+    };
+    // No busy rows known: even bands of the whole height.
+    EXPECT_EQ(rowsOf(4, 100, std::nullopt), (Rows{{75, 25}, {50, 25}, {25, 25}, {0, 25}}));
+    // Rows 30-89 busy: 20 each, the first band also the rows above, the last those below.
+    EXPECT_EQ(rowsOf(3, 100, RowBand{30, 60}), (Rows{{70, 30}, {50, 20}, {0, 50}}));
+    // Busy rows reaching past the frame are clipped to it; fewer busy rows than bands: even bands.
+    EXPECT_EQ(rowsOf(2, 100, RowBand{60, 100}), (Rows{{80, 20}, {0, 80}}));
+    EXPECT_EQ(rowsOf(4, 100, RowBand{10, 3}), rowsOf(4, 100, std::nullopt));
+    EXPECT_EQ(rowsOf(1, 100, RowBand{30, 60}), (Rows{{0, 100}}));
 }
 
 TEST(ViewportRefresh, ADragDuringTheBandsAbandonsThem) {

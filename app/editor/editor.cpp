@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "classroom/classroom_editor.h"
 #include "classroom/lesson_document.h"
@@ -210,6 +211,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     RenderTarget reducedFrame{GL_RGBA8, false};
     int reducedScale = 1;
     int refinedRows = 0;  // the full frame's rows drawn so far, from the top
+    // The full-resolution rows of the changed objects' rectangle of the last frame that redrew only
+    // them (a drag's), and of the full frame being refined: its bands split these rows evenly.
+    std::optional<RowBand> changedRows, refineBusyRows;
     double refinedMilliseconds = 0.0;  // the full frame's bands so far
     const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
@@ -356,10 +360,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                     const glm::ivec2 reducedPixels = (viewportPixels + reducedScale - 1) / reducedScale;
                     reducedFrame.ensure(reducedPixels.x, reducedPixels.y, 1);
                     renderer.displayToScreen(drawn->display, {0, 0}, 1, reducedFrame.framebuffer());
+                    refineBusyRows = changedRows;
                 }
-                const int top = renderPixels.y - renderPixels.y * plan.band / plan.bands;
-                rows.first = renderPixels.y - renderPixels.y * (plan.band + 1) / plan.bands;
-                rows.count = top - rows.first;
+                rows = refineBandRows(plan.band, plan.bands, renderPixels.y, refineBusyRows);
                 refinedRows = renderPixels.y - rows.first;
             }
             if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
@@ -374,6 +377,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             // Only a material's objects redrawn: its time says nothing of a whole frame's.
             refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0,
                              renderer.drewOnlyChanges());
+            if (const auto& drawnPixels = renderer.drawnPixels(); renderer.drewOnlyChanges() && drawnPixels)
+                changedRows = RowBand{drawnPixels->y * plan.pixelScale, drawnPixels->height * plan.pixelScale};
+            else
+                changedRows.reset();
             // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
             if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
                 renderer.prepareSimplifiedMeshes(state.session.scene());
@@ -431,15 +438,22 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
             glClear(GL_COLOR_BUFFER_BIT);
             PixelRegion viewportPart = intersectionOf(rect, shownViewport);
-            if (viewportPart.width > 0 && viewportPart.height > 0 && refresh.refining()) {
-                // Scaled, its last column and row may reach past the viewport (up to scale − 1 pixels).
-                glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);
-                glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
-                glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
-                                  viewportLowerLeft.x + reducedFrame.width() * reducedScale,
-                                  viewportLowerLeft.y + reducedFrame.height() * reducedScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                viewportPart = intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y + renderedSize.y - refinedRows,
+            if (!viewportPart.empty() && refresh.refining()) {
+                // The reduced frame where no band is drawn yet, the bands above it. Scaled, the
+                // reduced frame's last column and row may reach past the viewport (up to scale − 1
+                // pixels): the scissor keeps it inside.
+                const int unrefinedRows = renderedSize.y - refinedRows;
+                const PixelRegion unrefined =
+                    intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y, renderedSize.x, unrefinedRows});
+                if (!unrefined.empty()) {
+                    glScissor(unrefined.x, unrefined.y, unrefined.width, unrefined.height);
+                    glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
+                    glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
+                                      viewportLowerLeft.x + reducedFrame.width() * reducedScale,
+                                      viewportLowerLeft.y + reducedFrame.height() * reducedScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                }
+                viewportPart = intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y + unrefinedRows,
                                                              renderedSize.x, refinedRows});
                 glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);
             }

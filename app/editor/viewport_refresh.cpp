@@ -81,4 +81,15 @@ double ViewportRefresh::secondsToRefine(double nowSeconds, bool waitingForProgra
     return std::max(0.0, lastChangeSeconds_ + kSettleSeconds - nowSeconds);
 }
 
+RowBand refineBandRows(int band, int bands, int height, std::optional<RowBand> busy) {
+    int low = busy ? std::clamp(busy->first, 0, height) : 0;
+    int high = busy ? std::clamp(busy->first + busy->count, low, height) : height;
+    if (high - low < bands) {  // too few busy rows to give each band some
+        low = 0;
+        high = height;
+    }
+    const auto boundary = [&](int k) { return k == 0 ? height : k == bands ? 0 : high - (high - low) * k / bands; };
+    return {boundary(band + 1), boundary(band) - boundary(band + 1)};
+}
+
 }  // namespace glint

@@ -9,7 +9,10 @@
 // Pure bookkeeping: it renders nothing and reads no input (tests/editor_refresh_test.cpp).
 #pragma once
 
+#include <optional>
+
 #include "gl/gpu_mesh_cache.h"
+#include "render/visibility.h"
 
 namespace glint {
 
@@ -78,5 +81,11 @@ private:
     int bands_ = 1;     // its bands
     double bandsMilliseconds_ = 0.0;  // its bands' render times so far
 };
+
+// The rows of band `band` of `bands` of a full frame `height` rows high, top first (bands together:
+// every row once). The rows `busy` (where the frame has its work: the changed objects' rectangle;
+// none: all) are split evenly among the bands; the first band also takes the rows above them, the
+// last those below. Each band has a row at least when height ≥ bands.
+RowBand refineBandRows(int band, int bands, int height, std::optional<RowBand> busy);
 
 }  // namespace glint

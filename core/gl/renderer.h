@@ -36,12 +36,6 @@
 
 namespace glint {
 
-// Rows [first, first + count) of a frame, counted from its bottom row; count 0: every row.
-struct RowBand {
-    int first = 0;
-    int count = 0;
-};
-
 class Renderer {
 public:
     // The radiance targets' format (the bare shading pass of `glint bench` writes the same).

@@ -49,6 +49,12 @@ struct PixelRegion {
 PixelRegion intersectionOf(const PixelRegion& a, const PixelRegion& b);
 PixelRegion boundsOf(const PixelRegion& a, const PixelRegion& b);  // the smallest region holding both
 
+// Rows [first, first + count) of a frame, counted from its bottom row; count 0: every row.
+struct RowBand {
+    int first = 0;
+    int count = 0;
+};
+
 // The pixels of a width × height frame of the camera that the sphere may cover, any MSAA sample
 // of them: the bounds of its projected outline, widened by a pixel; the whole frame when the
 // sphere holds the eye or reaches behind it.
