@@ -28,8 +28,8 @@ vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     radiance += GLINT_LIGHT_SUM(GLINT_LIGHT_TERM);
 #else
     for (int i = 0; i < lightCount.x; ++i) {
-        int slot = shadowSlotOfLight(i);
-        radiance += lightTerm(params, i, LIGHT_ANY, slot, slot < 0 ? 0 : shadowKindOfSlot(slot), position, frame, towardsViewer);
+        int slot = shadowSlotOfLight(i);  // −1: no map, and the kind read for slot 0 is unused
+        radiance += lightTerm(params, i, LIGHT_ANY, slot, shadowKindOfSlot(max(slot, 0)), position, frame, towardsViewer);
     }
 #endif
     // The occlusion map (glTF's occlusionTexture) scales the ambient and environment light only.
