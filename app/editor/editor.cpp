@@ -211,9 +211,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     RenderTarget reducedFrame{GL_RGBA8, false};
     int reducedScale = 1;
     int refinedRows = 0;  // the full frame's rows drawn so far, from the top
-    // The full-resolution rows of the changed objects' rectangle of the last frame that redrew only
-    // them (a drag's), and of the full frame being refined: its bands split these rows evenly.
-    std::optional<RowBand> changedRows, refineBusyRows;
+    // The full-resolution rows of the changed objects' rectangle of the last frame not drawn in
+    // bands that redrew only them (a drag's): the bands of the full frame after it split these rows evenly.
+    std::optional<RowBand> changedRows;
     double refinedMilliseconds = 0.0;  // the full frame's bands so far
     const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
@@ -360,9 +360,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                     const glm::ivec2 reducedPixels = (viewportPixels + reducedScale - 1) / reducedScale;
                     reducedFrame.ensure(reducedPixels.x, reducedPixels.y, 1);
                     renderer.displayToScreen(drawn->display, {0, 0}, 1, reducedFrame.framebuffer());
-                    refineBusyRows = changedRows;
                 }
-                rows = refineBandRows(plan.band, plan.bands, renderPixels.y, refineBusyRows);
+                rows = refineBandRows(plan.band, plan.bands, renderPixels.y, changedRows);
                 refinedRows = renderPixels.y - rows.first;
             }
             if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
@@ -377,10 +376,12 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             // Only a material's objects redrawn: its time says nothing of a whole frame's.
             refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0,
                              renderer.drewOnlyChanges());
-            if (const auto& drawnPixels = renderer.drawnPixels(); renderer.drewOnlyChanges() && drawnPixels)
-                changedRows = RowBand{drawnPixels->y * plan.pixelScale, drawnPixels->height * plan.pixelScale};
-            else
+            if (plan.bands == 1) {  // (a band's drawn pixels are only its own part of the rectangle)
+                const std::optional<PixelRegion>& drawnPixels = renderer.drawnPixels();
                 changedRows.reset();
+                if (renderer.drewOnlyChanges() && drawnPixels)
+                    changedRows = RowBand{drawnPixels->y * plan.pixelScale, drawnPixels->height * plan.pixelScale};
+            }
             // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
             if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
                 renderer.prepareSimplifiedMeshes(state.session.scene());

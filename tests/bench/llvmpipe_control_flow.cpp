@@ -8,13 +8,14 @@
 #include <glad/gl.h>  // before osmesa.h, which would pull in GL/gl.h
 #include <GL/osmesa.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "frame_timing.h"
+
+namespace glint {
 namespace {
 
 constexpr int kWidth = 1230, kHeight = 1032;  // the editor's viewport at 1920×1080
@@ -83,19 +84,15 @@ double medianDrawMs(GLuint id) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glFinish();
     std::vector<double> times;
-    for (int i = 0; i < 9; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glFinish();
-        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
+    for (int i = 0; i < 9; ++i) times.push_back(timeFrame([] { glDrawArrays(GL_TRIANGLES, 0, 3); }));
+    return medianMs(times);
 }
 
 }  // namespace
+}  // namespace glint
 
 int main() {
+    using namespace glint;
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 1, 0};
     OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
