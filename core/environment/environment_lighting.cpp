@@ -393,9 +393,16 @@ float environmentRoughness(BrdfModel model, std::span<const float> values) {
 }
 
 std::string environmentApproximation(BrdfModel model, std::span<const float> values, const Environment& environment) {
-    const char* lobe = dispatch(model, []<class M>(M) -> const char* {
+    static constexpr const char* kSplitSum = "GGX split sum along the dominant direction (narrowed across the plane of incidence)";
+    const char* lobe = dispatch(model, [&]<class M>(M) -> const char* {
         if constexpr (!HasEnvironment<M>) return nullptr;
-        else if constexpr (SplitSum<M>) return "GGX split sum along the dominant direction (narrowed across the plane of incidence)";
+        else if constexpr (std::is_same_v<M, CookTorrance>) {
+            const CookTorranceParams p = unpack<M>(values.data());
+            if (microfacetPair(p.distribution, p.geometry) != kGgxSmithPair)
+                return "split sum of the lobe's own D and G, prefiltered through its GGX stand-in with the lobe's mean "
+                       "cosine, along its mean direction (narrowed across the plane of incidence)";
+            return kSplitSum;
+        } else if constexpr (SplitSum<M>) return kSplitSum;
         else if constexpr (std::is_same_v<M, Ward>)
             return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction (narrowed across the "
                    "plane of incidence) × its directional albedo";

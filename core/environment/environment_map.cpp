@@ -7,8 +7,6 @@
 #include <cmath>
 #include <thread>
 
-#include "brdf/microfacet.h"
-#include "environment/ggx_sampling.h"
 #include "light/photometry.h"
 #include "math/constants.h"
 #include "math/frame.h"
@@ -210,29 +208,20 @@ glm::vec3 samplePyramid(const std::vector<EquirectImage>& pyramid, glm::vec3 dir
     return sampleEquirectAt(pyramid[lower], coordinates) * (1.0f - t) + sampleEquirectAt(pyramid[upper], coordinates) * t;
 }
 
-// One prefiltered level: for each texel direction R (taking n = v = R, Karis 2013), the mean of
-// the radiance over GGX-sampled light directions weighted by cos θ_i; each sample reads the
-// pyramid level whose texels match the sample's solid angle (Colbert & Křivánek, "GPU-Based
-// Importance Sampling", GPU Gems 3, ch. 20).
+// One prefiltered level: for each texel direction R, the cos θ_l-weighted mean of the radiance
+// over the level's samples (prefilter_kernel.h), each read from the pyramid level whose texels
+// cover kPrefilterTexelsPerSample × its solid angle.
 EquirectImage prefilterLevel(const std::vector<EquirectImage>& pyramid, float alpha, StagedProgress& progress) {
-    // The samples in the local frame (z the mirror direction), the same for every texel.
     struct LocalSample {
         glm::vec3 light;
         float pyramidLevel;
     };
-    std::vector<LocalSample> samples;
+    std::vector<LocalSample> samples;  // the same for every texel
     float weightSum = 0.0f;
     const float texelSolidAngleMean = 4.0f * kPi / (pyramid[0].width * pyramid[0].height);
-    for (int i = 0; i < kPrefilterSamples; ++i) {
-        const glm::vec3 halfLocal = sampleGgxHalfVector(hammersley(i, kPrefilterSamples), alpha);
-        const glm::vec3 lightLocal = 2.0f * halfLocal.z * halfLocal - glm::vec3(0, 0, 1);
-        if (lightLocal.z <= 0.0f) continue;
-        // pdf of the light direction with n = v: D(h) cos θ_h / (4 v·h) = D(h)/4.
-        const float sin2Half = std::max(0.0f, 1.0f - halfLocal.z * halfLocal.z);
-        const float pdf = distributionGgx(halfLocal.z, sin2Half, alpha) * 0.25f;
-        const float sampleSolidAngle = 1.0f / (kPrefilterSamples * pdf);
-        samples.push_back({lightLocal, 0.5f * std::log2(sampleSolidAngle / texelSolidAngleMean) + 1.0f});
-        weightSum += lightLocal.z;
+    for (const PrefilterSample& sample : prefilterSamples(alpha)) {
+        samples.push_back({sample.light, 0.5f * std::log2(kPrefilterTexelsPerSample * sample.solidAngle / texelSolidAngleMean)});
+        weightSum += sample.light.z;
     }
     EquirectImage level(kPrefilteredWidth, kPrefilteredHeight);
     forEachRow(level.height, [&](int y) {

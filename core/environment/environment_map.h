@@ -15,6 +15,7 @@
 
 #include "environment/environment_distribution.h"
 #include "environment/equirect.h"
+#include "environment/prefilter_kernel.h"
 
 namespace glint {
 
@@ -22,8 +23,6 @@ namespace glint {
 // (α = r²); level 0 is the radiance image itself (r = 0, a mirror).
 inline constexpr int kPrefilteredLevels = 5;
 inline constexpr int kPrefilteredWidth = 128, kPrefilteredHeight = 64;
-// GGX samples per prefiltered texel (Hammersley points, filtered importance sampling).
-inline constexpr int kPrefilterSamples = 128;
 
 // The map's concentrated light (its "peaks": each texel's radiance above kPeakThreshold × the
 // map's mean luminance, as a share of its luminance, so that a peak keeps its colour) is taken out

@@ -13,6 +13,7 @@
 #include "brdf/phong.h"
 #include "brdf/ward.h"
 #include "environment/ggx_sampling.h"
+#include "environment/prefilter_kernel.h"
 #include "math/constants.h"
 #include "math/frame.h"
 #include "util/disk_cache.h"
@@ -114,21 +115,13 @@ glm::vec4 lobeMoments(const TableTexel& t, const std::function<float(glm::vec3 l
     return glm::vec4(sum / (3.0 * kSamples));
 }
 
-// The mean cosine to R of the GGX prefiltering kernel of roughness α (environment_map.cpp: light
-// directions of density D(h)/4 around R = n = v, weighted by cos θ_l): ∫ D cos² θ dω / ∫ D cos θ dω
-// over the hemisphere of R, θ_h = θ/2; for perceptual roughness r = i/(size − 1), i < size.
+// The mean cosine to R of the kernel the prefiltered level of perceptual roughness r = i/(size − 1)
+// would hold (prefilter_kernel.h), i < size.
 std::vector<float> ggxKernelMeanCosines(int size) {
-    constexpr int kSteps = 4096;
     std::vector<float> means(size);
     for (int i = 0; i < size; ++i) {
-        const float r = std::max(static_cast<float>(i) / (size - 1), 1e-3f), alpha = r * r;
-        double weight = 0.0, moment = 0.0;
-        for (int step = 0; step < kSteps; ++step) {
-            const float theta = (step + 0.5f) * 0.5f * kPi / kSteps, cosHalf = std::cos(0.5f * theta);
-            const double w = distributionGgx(cosHalf, 1.0f - cosHalf * cosHalf, alpha) * std::cos(theta) * std::sin(theta);
-            weight += w, moment += w * std::cos(theta);
-        }
-        means[i] = static_cast<float>(moment / weight);
+        const float r = std::max(static_cast<float>(i) / (size - 1), 1e-3f);
+        means[i] = prefilterKernelMeanCosine(r * r);
     }
     return means;
 }

@@ -25,8 +25,8 @@ inline constexpr int kLobeAlbedoSize = 32;
 // 2, so that the table stays near 1/cos θ_o: the hooks divide by it) at n = 2/α² − 2 and
 // (2/α² − 2)/4, and per Ward normalisation (0-1, as WardNormalization) at α_x = α_y = α; then per
 // Ward normalisation the GGX stand-in for its lobe on a smooth map (x: the perceptual roughness
-// √α' of the prefiltered level whose GGX kernel (n = v = R) has the lobe's mean cosine to its mean
-// direction, y: that direction as the factor t of n + (R − n) t); then the F82 shares; last the
+// √α' of the prefiltered level whose kernel (n = v = R; by the stand-ins' measure,
+// prefilter_kernel.h) has the lobe's mean cosine to its mean direction, y: that direction as the factor t of n + (R − n) t); then the F82 shares; last the
 // same stand-in for each microfacet pair but GGX with Smith (whose lobe the levels hold). Lobes take α ≥
 // kLobeAlbedoMinAlpha. Computed on first use, a thread per table, and kept in the disk cache
 // (util/disk_cache.h).
