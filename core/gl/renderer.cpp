@@ -200,7 +200,8 @@ SurfaceVariant Renderer::surfaceVariant(const SceneObject& object, const Materia
     const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
     const bool sphere = !triangles && std::holds_alternative<SphereShape>(object.shape);
     const AnalyticMaterial* analytic = material.analytic();
-    return {samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere,
+    const auto* plane = std::get_if<PlaneShape>(&object.shape);
+    return {samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere, plane && planeEdgeFadeRadii(*plane).y > 0.0f,
             (specialise_ && analytic ? frameDefines + materialSpecialisation(*analytic) : frameDefines) +
                 (seesBackdrop ? TransmissionPass::kProgramDefine : "")};
 }
@@ -612,12 +613,14 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
                    material.kind);
         if (next >= firstTransmissive) transmission_->bind(shader);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
-        const auto* plane = std::get_if<PlaneShape>(&object.shape);
-        const glm::vec2 fadeRadii = plane ? planeEdgeFadeRadii(*plane) : glm::vec2(0.0f);
-        glUniform2f(shader.uniform("fadeRadii"), fadeRadii.x, fadeRadii.y);
         glUniform1i(shader.uniform("occludingSphereCount"), static_cast<GLint>(occluders.size()));
         if (!occluders.empty()) glUniform4fv(shader.uniform("occludingSpheres"), static_cast<GLsizei>(occluders.size()), &occluders[0].x);
-        if (plane) glUniform3f(shader.uniform("fadeCenter"), plane->center.x, plane->center.y, plane->center.z);
+        if (variant.fadesEdge) {
+            const auto& plane = std::get<PlaneShape>(object.shape);
+            const glm::vec2 fadeRadii = planeEdgeFadeRadii(plane);
+            glUniform2f(shader.uniform("fadeRadii"), fadeRadii.x, fadeRadii.y);
+            glUniform3f(shader.uniform("fadeCenter"), plane.center.x, plane.center.y, plane.center.z);
+        }
         // A drag frame draws a large mesh by the stand-in with about as many triangles as the
         // pixels it may cover: more would be smaller than a pixel.
         const size_t budget = detail == MeshDetail::Full ? kEveryTriangle

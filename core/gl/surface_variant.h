@@ -14,12 +14,14 @@ struct SurfaceVariant {
     int samples = 1;             // MSAA samples (GLINT_MSAA_SAMPLES when > 1)
     bool gouraud = false;        // shaded per vertex (GLINT_GOURAUD)
     bool rayCastSphere = false;  // the exact sphere inside its proxy (GLINT_RAY_CAST_SPHERE)
+    bool fadesEdge = false;      // a plane whose edge fades into the background (GLINT_PLANE_EDGE_FADE)
     std::string specialisation;  // what the frame and material fix (gl/shader_specialisation.h)
 
     std::string prelude() const {
         std::string text = samples > 1 ? "#define GLINT_MSAA_SAMPLES " + std::to_string(samples) + "\n" : "";
         if (gouraud) text += "#define GLINT_GOURAUD 1\n";
         if (rayCastSphere) text += "#define GLINT_RAY_CAST_SPHERE 1\n";
+        if (fadesEdge) text += "#define GLINT_PLANE_EDGE_FADE 1\n";
         return text + specialisation;
     }
     auto operator<=>(const SurfaceVariant&) const = default;
