@@ -117,7 +117,7 @@ glm::vec4 lobeMoments(const TableTexel& t, const std::function<float(glm::vec3 l
 
 // The mean cosine to R of the kernel the prefiltered level of perceptual roughness r = i/(size − 1)
 // would hold (prefilter_kernel.h), i < size.
-std::vector<float> ggxKernelMeanCosines(int size) {
+std::vector<float> levelKernelMeanCosines(int size) {
     std::vector<float> means(size);
     for (int i = 0; i < size; ++i) {
         const float r = std::max(static_cast<float>(i) / (size - 1), 1e-3f);
@@ -153,7 +153,7 @@ const LobeAlbedoTables& lobeAlbedoTables() {
         const auto lobe = [](auto brdf) {
             return [brdf](const TableTexel& t) { return glm::vec2(lobeMoments(t, brdf).w, 0.0f); };
         };
-        const std::vector<float> means = ggxKernelMeanCosines(1024);  // the stand-ins'
+        const std::vector<float> means = levelKernelMeanCosines(1024);  // the stand-ins'
         std::vector<std::function<void()>> jobs;
         for (int pair = 0; pair < 4; ++pair) {
             jobs.push_back([&, pair] {

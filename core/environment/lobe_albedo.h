@@ -26,10 +26,10 @@ inline constexpr int kLobeAlbedoSize = 32;
 // (2/α² − 2)/4, and per Ward normalisation (0-1, as WardNormalization) at α_x = α_y = α; then per
 // Ward normalisation the GGX stand-in for its lobe on a smooth map (x: the perceptual roughness
 // √α' of the prefiltered level whose kernel (n = v = R; by the stand-ins' measure,
-// prefilter_kernel.h) has the lobe's mean cosine to its mean direction, y: that direction as the factor t of n + (R − n) t); then the F82 shares; last the
-// same stand-in for each microfacet pair but GGX with Smith (whose lobe the levels hold). Lobes take α ≥
-// kLobeAlbedoMinAlpha. Computed on first use, a thread per table, and kept in the disk cache
-// (util/disk_cache.h).
+// prefilter_kernel.h) has the lobe's mean cosine to its mean direction, y: that direction as the
+// factor t of n + (R − n) t); then the F82 shares; last the same stand-in for each microfacet pair
+// but GGX with Smith (whose lobe the levels hold). Lobes take α ≥ kLobeAlbedoMinAlpha. Computed
+// on first use, a thread per table, and kept in the disk cache (util/disk_cache.h).
 enum LobeAlbedoTable { kMicrofacetSplitSum = 0, kBlinnPhongAlbedo = 4, kPhongAlbedo = 8, kWardAlbedo = 12, kWardStandIn = 14,
                        kMicrofacetF82 = 16, kMicrofacetStandIn = 20, kLobeAlbedoTables = 23 };
 // A microfacet D × G pair's offset in kMicrofacetSplitSum, kMicrofacetF82 and (but GGX with Smith) kMicrofacetStandIn.

@@ -24,7 +24,7 @@ std::vector<PrefilterSample> prefilterSamples(float alpha) {
 // A direction spread about its place by a small isotropic blur of variance σ² (both axes together)
 // keeps E[cos] = cos θ (1 − σ²/2) to R. The bilinear read of box-filtered pyramid texels of solid
 // angle A spreads it by about σ² = A/2, and the levels hold that (a linear map's level r = 1 reads a
-// mean cosine of 0.593; the samples alone 0.660, with σ² = A/4 0.634), but one mean cosine is not
+// mean cosine of 0.593; the samples alone 0.667, with σ² = A/4 0.634), but one mean cosine is not
 // the whole lobe: σ² = A/4 fits the lobes best (measured against A/2, the held kernel and none,
 // docs/environment-lighting.md).
 float prefilterKernelMeanCosine(float alpha) {
