@@ -74,6 +74,9 @@ glint_add_gtests(editor_tests SHARDS 2 ENVIRONMENT DISPLAY=)
 # The manual: every relative link in README.md and docs/*.md resolves.
 add_test(NAME doc_links COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/doc_links_test.py ${PROJECT_SOURCE_DIR})
 
+# Commit messages: the repository's hook judges the subject's length and the blank line.
+add_test(NAME commit_msg_hook COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/commit_msg_hook_test.sh ${PROJECT_SOURCE_DIR})
+
 # Layering: core must not include GL, GLFW or ImGui headers.
 add_test(NAME core_has_no_gl_includes
   COMMAND ${CMAKE_COMMAND} -DCORE_DIR=${PROJECT_SOURCE_DIR}/core -P ${CMAKE_CURRENT_SOURCE_DIR}/check_core_layering.cmake)

@@ -20,6 +20,8 @@ configure_and_build() {
 }
 
 "$root/third_party/install-deps.sh"
+# Commit messages are checked by the repository's hook (docs/contributing.md).
+if git -C "$root" rev-parse --git-dir >/dev/null 2>&1; then git -C "$root" config core.hooksPath .githooks; fi
 # Optimised; line tables only (-g1): stack traces keep file and line. Unity batches (see
 # CMakeLists.txt) and -g1 keep the test command's two builds inside CI's time budget.
 # The unit tests are left out here: the sanitizer build below runs them.
