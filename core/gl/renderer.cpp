@@ -574,12 +574,18 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
+        Status textured = success();
         std::visit(Overloaded{[&](const AnalyticMaterial& analytic) {
-                                  if (!analytic.textures.empty()) bindMaterialTextures(shader, analytic, object.shape, textureCache_);
+                                  if (!analytic.textures.empty())
+                                      textured = bindMaterialTextures(shader, analytic, object.shape, textureCache_);
                               },
                               [&](const CustomMaterial& custom) { setCustomBrdfUniforms(shader, *custom.brdf, custom.values); },
                               [&](const MeasuredMaterial& measured) { measured_.bind(shader, measured.brdf); }},
                    material.kind);
+        if (!textured) {  // a texture larger than the GPU takes: the object is not drawn
+            result = textured.error();
+            continue;
+        }
         if (next >= firstTransmissive) transmission_->bind(shader);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         glUniform1i(shader.uniform("occludingSphereCount"), static_cast<GLint>(occluders.size()));
