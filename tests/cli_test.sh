@@ -79,6 +79,13 @@ if ! "$glint" render "$here/scenes/environment_studio.json" --reference --sample
 else
   pass "reference progress off a terminal: $(grep -c "glint render: reference" "$out/progress.txt") lines"
 fi
+# glint spectral reports after each wavelength, the same way.
+if ! "$glint" spectral "$here/../examples/spectral/sodium_lamp.json" -o "$out/spectral.png" --size 24x18 --wavelengths 4 \
+     >/dev/null 2>"$out/spectral.txt" || ! progress_lines "glint spectral: wavelengths" "$out/spectral.txt"; then
+  fail "spectral progress off a terminal: '$(cat -A "$out/spectral.txt" | head -c 600)'"
+else
+  pass "spectral progress off a terminal: $(grep -c "glint spectral" "$out/spectral.txt") lines"
+fi
 # Limits stated, not met by surprise: a texture larger than 16384 texels a side (OpenGL 4.1's least
 # GL_MAX_TEXTURE_SIZE) is refused naming its size and the limit; a PLY header declaring 10^12
 # vertices is refused before anything is allocated; 65 lights name the limit of 64.
