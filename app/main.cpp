@@ -1,6 +1,7 @@
 // glint: the command-line front. `glint render …` renders headless; `glint [FILE]` opens the
 // editor on FILE (as File ▸ Open would), or, with no display, renders it headless and says where
 // the image went.
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -72,6 +73,9 @@ int runPresentation(const std::string& presentList) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported as any failed save, instead
+    // of killing the process (the default for SIGXFSZ).
+    std::signal(SIGXFSZ, SIG_IGN);
     glint::reportSlowEnvironmentPrecomputes();  // headless runs (the editor turns it off)
     CLI::App glint("Glint " GLINT_VERSION ": a material editor for physically based shading.", "glint");
     glint.set_version_flag("--version", "glint " GLINT_VERSION);

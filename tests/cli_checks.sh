@@ -21,6 +21,17 @@ expect_error() {
   fi
 }
 
+# progress_lines LABEL FILE: FILE (stderr off a terminal) holds LABEL's progress as
+# app/runtime/progress_line.h writes it there: whole lines without carriage returns, rising, at
+# most 25 of them, the last at 100%.
+progress_lines() {
+  local lines
+  lines=$(grep -F "$1" "$2")
+  ! grep -q $'\r' "$2" && [[ -n $lines ]] && (($(wc -l <<<"$lines") <= 25)) &&
+    [[ $(tail -n1 <<<"$lines") == "$1 100%" ]] &&
+    sed "s/^.* \([0-9]*\)%$/\1/" <<<"$lines" | sort -n -u -c 2>/dev/null
+}
+
 # The counts; the script's exit status is 0 when nothing failed.
 summary() {
   echo "$passes passed, $failures failed"

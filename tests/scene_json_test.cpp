@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include "brdf/blinn_phong.h"
@@ -51,7 +52,8 @@ TEST(SceneJson, SaveAndLoadRoundTrip) {
     ASSERT_TRUE(loaded.ok()) << loaded.error().format();
     EXPECT_EQ(sceneToJson(*loaded), sceneToJson(original));
     EXPECT_EQ(loaded->materials[1].analytic()->values[7], static_cast<float>(BlinnForm::MaxCosine));
-    EXPECT_FALSE(std::filesystem::exists(path + ".tmp-" + std::to_string(::getpid())));
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
+        EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << "temporary left: " << entry.path();
 }
 
 TEST(SceneJson, DefaultSceneRoundTrips) {

@@ -12,6 +12,7 @@
 #include "cli/classroom_options.h"
 #include "cli/command_line.h"
 #include "runtime/headless.h"
+#include "runtime/progress_line.h"
 #include "classroom/probe_text.h"
 #include "classroom/surface_probe.h"
 #include "cli/plot_overlay.h"
@@ -103,13 +104,9 @@ int render(RenderOptions& options) {
         if (options.environmentSamples > 0) {
             reference.sampleEnvironment = true;
             reference.environmentSamples = options.environmentSamples;
-            // Progress for renders long enough to wonder about: whole percents, one line at the end.
-            reference.progress = [lastPercent = -1](float done) mutable {
-                const int percent = static_cast<int>(done * 100.0f);
-                if (percent == lastPercent) return;
-                lastPercent = percent;
-                std::fprintf(stderr, "\rglint render: reference %3d%%%s", percent, percent == 100 ? "\n" : "");
-                std::fflush(stderr);
+            // Progress for renders long enough to wonder about (runtime/progress_line.h).
+            reference.progress = [line = std::make_shared<ProgressLine>("glint render: reference")](float done) {
+                line->update(done);
             };
         }
         images.radiance = renderReference(*scene, width, height, reference);

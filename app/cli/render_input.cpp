@@ -83,7 +83,7 @@ Result<Scene> loadRenderInput(const std::string& path, const RenderInputOptions&
         if (!imported->lights.empty()) {
             if (scene.lights.size() + imported->lights.size() > static_cast<size_t>(kMaxLights))
                 return makeError("the file's " + std::to_string(imported->lights.size()) + " lights and the stage's " +
-                                     std::to_string(scene.lights.size()) + " pass the limit of " + std::to_string(kMaxLights),
+                                     std::to_string(scene.lights.size()) + " are too many: " + lightLimitExplanation(),
                                  {path});
             scene.lights.insert(scene.lights.end(), imported->lights.begin(), imported->lights.end());
             notes.push_back(path + ": its " + std::to_string(imported->lights.size()) + " light(s) added to the stage's " +

@@ -37,17 +37,6 @@ struct SnapshotOptions {
 
 // --- one case -------------------------------------------------------------------------------
 
-// Writes a golden atomically: a temporary PNG beside it, renamed over it.
-Status writeGolden(const DisplayImage& image, const std::string& goldenPath) {
-    const fs::path golden(goldenPath);
-    const std::string temporary = (golden.parent_path() / ("." + golden.stem().string() + ".writing.png")).string();
-    if (Status written = writeDisplayImage(image, temporary); !written) return written;
-    std::error_code error;
-    fs::rename(temporary, golden, error);
-    if (error) return makeError("cannot write the golden: " + error.message(), {goldenPath});
-    return success();
-}
-
 CaseResult runCase(HeadlessRenderer& headless, const SnapshotSuite& suite, const SnapshotCase& snapshotCase,
                    const SnapshotOptions& options) {
     CaseResult result;
@@ -71,7 +60,7 @@ CaseResult runCase(HeadlessRenderer& headless, const SnapshotSuite& suite, const
     result.comparison = check.comparison;
 
     if (options.updateNamed.count(snapshotCase.name) || (options.updateFailing && check.outcome == CaseOutcome::Failed)) {
-        if (Status written = writeGolden(images->display, goldenPath); !written) {
+        if (Status written = writeDisplayImage(images->display, goldenPath); !written) {
             result.message = written.error().format();
             return result;
         }

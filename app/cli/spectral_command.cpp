@@ -10,6 +10,7 @@
 
 #include "cli/command_line.h"
 #include "runtime/headless.h"
+#include "runtime/progress_line.h"
 #include "colour/spectral_render.h"
 #include "display/display_chain.h"
 #include "interchange/custom_brdf.h"
@@ -38,7 +39,8 @@ int renderSpectral(SpectralOptions& options) {
     auto scene = loadRenderable(options.scenePath);
     if (!scene) return commandFailed("spectral", scene.error().format());
     if (Status cpu = referenceCanRender(*scene); !cpu) return commandFailed("spectral", cpu.error().format());
-    auto xyz = renderSpectralXyz(*scene, settings, options.width, options.height);
+    ProgressLine line("glint spectral: wavelengths");  // runtime/progress_line.h
+    auto xyz = renderSpectralXyz(*scene, settings, options.width, options.height, [&](float done) { line.update(done); });
     if (!xyz) return commandFailed("spectral", xyz.error().format());
     RenderedImages images;
     images.radiance = spectralImageToRgb(*xyz);

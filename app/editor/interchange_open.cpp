@@ -17,8 +17,8 @@ std::string refusal(const EditorState& state, const ImportedFile& imported) {
     if (!imported.materials.empty() && scene.objects.empty())
         return "The scene has no object to put the material on; your work is unchanged.";
     if (scene.lights.size() + imported.lights.size() > static_cast<size_t>(kMaxLights))
-        return "The file's " + std::to_string(imported.lights.size()) + " lights would pass the limit of " +
-               std::to_string(kMaxLights) + " lights per scene; your work is unchanged.";
+        return "The file's " + std::to_string(imported.lights.size()) + " lights and the scene's " +
+               std::to_string(scene.lights.size()) + " are too many: " + lightLimitExplanation() + ". Your work is unchanged.";
     return {};
 }
 

@@ -1,7 +1,7 @@
 // Headless runs (`glint render`, `glint FILE` without a display, snapshots, thumbnails) say on
 // stderr when an environment map's precompute is slow: nothing for one done within 0.5 s (or
-// GLINT_PROGRESS_AFTER_SECONDS), then "precomputing NAME …" and its percentage, updated in place
-// when stderr is a terminal, else one line at each of 25, 50, 75 and 100%.
+// GLINT_PROGRESS_AFTER_SECONDS), then "precomputing NAME N%" as a ProgressLine
+// (runtime/progress_line.h: live on a terminal, a line every few percent otherwise).
 #pragma once
 
 namespace glint {

@@ -106,7 +106,8 @@ RadianceImage spectralImageToRgb(const RadianceImage& xyzImage) {
 
 // --- rendering ------------------------------------------------------------------------------
 
-Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettings& settings, int width, int height) {
+Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettings& settings, int width, int height,
+                                        const std::function<void(float)>& progress) {
     if (Status valid = checkSpectralSettings(settings); !valid) return valid.error();
     const int outputWidth = width > 0 ? width : scene.width;
     const int outputHeight = height > 0 ? height : scene.height;
@@ -122,7 +123,10 @@ Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettin
     }
     Scene atWavelength = scene;
     RadianceImage xyzImage(outputWidth, outputHeight);
-    for (const WavelengthSample& sample : spectralSamples(settings)) {
+    const std::vector<WavelengthSample> samples = spectralSamples(settings);
+    for (size_t rendered = 0; rendered < samples.size(); ++rendered) {
+        if (progress) progress(static_cast<float>(rendered) / samples.size());
+        const WavelengthSample& sample = samples[rendered];
         for (size_t index = 0; index < scene.materials.size(); ++index) {
             const Material& material = scene.materials[index];
             if (!material.analytic() || material.analytic()->model != BrdfModel::Glass) continue;
@@ -145,6 +149,7 @@ Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettin
                 xyzImage.set(x, y, xyzImage.at(x, y) + radianceAtWavelength * weightedMatching);
             }
     }
+    if (progress) progress(1.0f);
     return xyzImage;
 }
 

@@ -4,6 +4,7 @@
 // follow a flat (equal-energy) or narrow-band spectrum. It does not touch the GL renderer.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -58,7 +59,9 @@ glm::vec3 spectralXyzToRgb(glm::vec3 xyz);
 // background and material colours act as their grey mean), and the weighted sum against the
 // matching functions gives XYZ (relative to equal-energy white, as spectrumXyz; with a flat
 // spectrum each component is corrected for the N-sample quadrature, so grey stays grey).
-Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettings& settings, int width = 0, int height = 0);
+// `progress` (when set) hears the fraction of wavelengths rendered after each one.
+Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettings& settings, int width = 0, int height = 0,
+                                        const std::function<void(float)>& progress = {});
 // The XYZ image as linear sRGB radiance (spectralXyzToRgb per pixel).
 RadianceImage spectralImageToRgb(const RadianceImage& xyzImage);
 

@@ -1,5 +1,5 @@
 // Mesh-file checks before assimp reads them (see mesh_file_checks.h).
-// Sections: PLY · OBJ · glTF.
+// Sections: words and numbers · PLY · OBJ · glTF.
 #include "geometry/mesh_file_checks.h"
 
 #include <algorithm>
@@ -18,6 +18,30 @@
 #include "util/text.h"
 
 namespace glint {
+
+// --- words and numbers ---------------------------------------------------------------------
+
+namespace {
+
+// The line's words (split at white space).
+std::vector<std::string_view> wordsOf(std::string_view text) {
+    std::vector<std::string_view> words;
+    size_t position = 0;
+    while (position < text.size()) {
+        while (position < text.size() && std::isspace(static_cast<unsigned char>(text[position]))) ++position;
+        const size_t start = position;
+        while (position < text.size() && !std::isspace(static_cast<unsigned char>(text[position]))) ++position;
+        if (position > start) words.push_back(text.substr(start, position - start));
+    }
+    return words;
+}
+
+bool parseIndex(std::string_view text, long long& value) {
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size();
+}
+
+}  // namespace
 
 // --- PLY ------------------------------------------------------------------------------------
 
@@ -43,6 +67,15 @@ std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, con
             return makeError("cannot load mesh: malformed PLY header: '" + std::string(text.substr(0, 40)) +
                                  "' is not a PLY header line (format, comment, element, property, end_header)",
                              {name, line, 1});
+        if (word == "element") {
+            const std::vector<std::string_view> words = wordsOf(text);
+            long long count = 0;
+            if (words.size() == 3 && parseIndex(words[2], count) && count > kMaxMeshElements)
+                return makeError("cannot load mesh: the PLY header declares " + std::to_string(count) + " " + std::string(words[1]) +
+                                     " elements; Glint loads at most " + std::to_string(kMaxMeshElements) +
+                                     " (a larger mesh would not fit in memory): simplify the mesh or split it",
+                                 {name, line, 1});
+        }
     }
     if (!whole) return std::nullopt;
     return makeError("cannot load mesh: the PLY header ends without end_header (the file is cut short)", {name, line, 1});
@@ -51,24 +84,6 @@ std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, con
 // --- OBJ ------------------------------------------------------------------------------------
 
 namespace {
-
-// The statement's words after the keyword.
-std::vector<std::string_view> wordsOf(std::string_view text) {
-    std::vector<std::string_view> words;
-    size_t position = 0;
-    while (position < text.size()) {
-        while (position < text.size() && std::isspace(static_cast<unsigned char>(text[position]))) ++position;
-        const size_t start = position;
-        while (position < text.size() && !std::isspace(static_cast<unsigned char>(text[position]))) ++position;
-        if (position > start) words.push_back(text.substr(start, position - start));
-    }
-    return words;
-}
-
-bool parseIndex(std::string_view text, long long& value) {
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return error == std::errc() && end == text.data() + text.size();
-}
 
 // Calls `visit(statement, line)` for each logical line (a trailing backslash joins the next).
 template <class Visit>

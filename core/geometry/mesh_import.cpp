@@ -315,7 +315,7 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
     } catch (const CancelImport&) {
         return makeError(kCancelledMessage, {name});
     } catch (const std::bad_alloc&) {
-        return makeError("cannot load mesh: out of memory", {name});
+        return makeError("cannot load mesh: out of memory (the mesh needs more memory than is free): close other programs or load a simplified mesh", {name});
     } catch (const std::exception& error) {
         return importError(name, error.what());
     }

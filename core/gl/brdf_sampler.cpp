@@ -94,7 +94,7 @@ BrdfSampler::~BrdfSampler() {
 }
 
 Status BrdfSampler::prepare(const CustomBrdf& brdf) {
-    auto program = programs_.samplingProgram(sources_, brdf);
+    auto program = programs_.samplingProgram(sources_, brdf, ++calls_);
     if (!program) return program.error();
     return success();
 }
@@ -103,7 +103,7 @@ Result<std::vector<glm::vec3>> BrdfSampler::sample(const CustomBrdf& brdf, const
                                                    std::span<const glm::vec3> incident,
                                                    std::span<const glm::vec3> outgoing) {
     GLINT_CHECK(incident.size() == outgoing.size());
-    auto program = programs_.samplingProgram(sources_, brdf);
+    auto program = programs_.samplingProgram(sources_, brdf, ++calls_);
     if (!program) return program.error();
     if (incident.empty()) return std::vector<glm::vec3>{};
     const int count = static_cast<int>(incident.size());

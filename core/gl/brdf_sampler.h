@@ -4,6 +4,7 @@
 // prove that the shader finishes (app/runtime/brdf_probe.h): hand it only BRDFs that passed the probe.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,7 @@ private:
 
     ShaderSources sources_;
     CustomBrdfPrograms programs_;
+    std::uint64_t calls_ = 0;  // prepare() and sample() calls: the programs' "frames"
     GLuint directionTextures_[2] = {0, 0}, emptyVertexArray_ = 0;
     int width_ = 0, height_ = 0;  // the direction textures' size (0: not made yet)
     RenderTarget result_{GL_RGBA32F, false};  // f_r per pair

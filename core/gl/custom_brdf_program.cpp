@@ -84,36 +84,36 @@ GeneratedShaderFiles customBrdfShaderFiles(const CustomBrdf& brdf) {
 }
 
 Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& sources, const CustomBrdf& brdf,
-                                                        SurfaceVariant variant) {
-    return cached(sources, brdf, "surface.vert", "surface.frag", variant.prelude());
+                                                        SurfaceVariant variant, std::uint64_t frame) {
+    return cached(sources, brdf, "surface.vert", "surface.frag", variant.prelude(), frame);
 }
 
-Result<const ShaderProgram*> CustomBrdfPrograms::samplingProgram(const ShaderSources& sources, const CustomBrdf& brdf) {
-    return cached(sources, brdf, "fullscreen.vert", "brdf_sampler.frag", "");
+Result<const ShaderProgram*> CustomBrdfPrograms::samplingProgram(const ShaderSources& sources, const CustomBrdf& brdf,
+                                                                std::uint64_t frame) {
+    return cached(sources, brdf, "fullscreen.vert", "brdf_sampler.frag", "", frame);
 }
 
 Result<const ShaderProgram*> CustomBrdfPrograms::cached(const ShaderSources& sources, const CustomBrdf& brdf,
                                                        const std::string& vertexPath, const std::string& fragmentPath,
-                                                       const std::string& prelude) {
+                                                       const std::string& prelude, std::uint64_t frame) {
     const GeneratedShaderFiles files = customBrdfShaderFiles(brdf);
     std::string key;
     for (const auto& [path, text] : files) key += path + '\n' + text + '\0';
     const std::pair<std::string, std::string> id{key, vertexPath + '\n' + fragmentPath + '\n' + prelude};
-    const auto found = programs_.find(id);
-    auto& entry = found != programs_.end() ? found->second : programs_[id];
-    if (found == programs_.end()) {
+    auto* entry = programs_.use(id, frame);
+    if (!entry) {
         auto built = ShaderProgram::build(sources, vertexPath, fragmentPath, prelude, files);
         if (built) {
             built->bindBlock("FrameBlock", kFrameBinding);
             built->bindBlock("LightBlock", kLightBinding);
             built->bindBlock("MaterialBlock", kMaterialBinding);
-            entry = std::move(*built);
+            entry = &programs_.insert(id, std::move(*built), frame);
         } else {
-            entry = makeError(renameBrdfLines(built.error().message, brdf.file.path), {brdf.file.path});
+            entry = &programs_.insert(id, makeError(renameBrdfLines(built.error().message, brdf.file.path), {brdf.file.path}), frame);
         }
     }
-    if (const auto* error = std::get_if<Diagnostic>(&entry)) return *error;
-    return &std::get<ShaderProgram>(entry);
+    if (const auto* error = std::get_if<Diagnostic>(entry)) return *error;
+    return &std::get<ShaderProgram>(*entry);
 }
 
 void setCustomBrdfUniforms(const ShaderProgram& program, const CustomBrdf& brdf, const std::vector<float>& values) {

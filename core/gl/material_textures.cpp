@@ -7,7 +7,7 @@
 
 namespace glint {
 
-void bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& material, const Shape& shape, TextureCache& cache) {
+Status bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& material, const Shape& shape, TextureCache& cache) {
     const glm::vec3 center = shapeCenter(shape);
     glUniform3f(program.uniform("objectCenter"), center.x, center.y, center.z);
     // material.textures is in table order with the normal map last: its index is the slot.
@@ -17,7 +17,11 @@ void bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& 
             return program.uniform((std::string(name) + "[" + std::to_string(slot) + "]").c_str());
         };
         const int unit = kFirstMaterialTextureUnit + static_cast<int>(slot);
-        if (texture.kind == TextureKind::Image) cache.bind(GL_TEXTURE0 + unit, texture);
+        if (texture.kind == TextureKind::Image)
+            if (Status bound = cache.bind(GL_TEXTURE0 + unit, texture); !bound) {
+                glActiveTexture(GL_TEXTURE0);
+                return bound;
+            }
         glUniform1i(uniform("textureImages"), unit);
         glUniform4i(uniform("textureSettings"), static_cast<int>(texture.kind), static_cast<int>(texture.channel),
                     texture.octaves, 0);
@@ -29,6 +33,7 @@ void bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& 
         glUniform3f(uniform("textureColorFactor"), texture.colorFactor.r, texture.colorFactor.g, texture.colorFactor.b);
     }
     glActiveTexture(GL_TEXTURE0);
+    return success();
 }
 
 }  // namespace glint

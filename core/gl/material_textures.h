@@ -12,6 +12,7 @@ namespace glint {
 // First texture unit of the material textures (unit 0 stays with the display pass).
 inline constexpr int kFirstMaterialTextureUnit = 1;
 
-void bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& material, const Shape& shape, TextureCache& cache);
+// Error: an image the context cannot take (TextureCache::bind).
+Status bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& material, const Shape& shape, TextureCache& cache);
 
 }  // namespace glint

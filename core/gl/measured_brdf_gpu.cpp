@@ -36,8 +36,9 @@ MeasuredBrdfGpu::~MeasuredBrdfGpu() {
     for (auto& [key, upload] : textures_) glDeleteTextures(1, &upload.texture);
 }
 
-Result<const ShaderProgram*> MeasuredBrdfGpu::program(const ShaderSources& sources, SurfaceVariant variant) {
-    if (auto found = programs_.find(variant); found != programs_.end()) return &found->second;
+Result<const ShaderProgram*> MeasuredBrdfGpu::program(const ShaderSources& sources, SurfaceVariant variant,
+                                                      std::uint64_t frame) {
+    if (ShaderProgram* found = programs_.use(variant, frame)) return found;
     auto built = ShaderProgram::build(sources, "surface.vert", "surface.frag", variant.prelude(),
                                       {{"generated/material.glsl", kMeasuredMaterialGlsl}});
     if (!built) return built.error();
@@ -45,7 +46,7 @@ Result<const ShaderProgram*> MeasuredBrdfGpu::program(const ShaderSources& sourc
     built->bindBlock("LightBlock", kLightBinding);
     built->bindBlock("MaterialBlock", kMaterialBinding);
     EnvironmentTextures::connect(*built);
-    return &programs_.insert_or_assign(variant, std::move(*built)).first->second;
+    return &programs_.insert(variant, std::move(*built), frame);
 }
 
 void MeasuredBrdfGpu::bind(const ShaderProgram& program, const std::shared_ptr<const MeasuredBrdf>& brdf) {

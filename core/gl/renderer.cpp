@@ -124,33 +124,11 @@ Result<ShaderProgram> Renderer::buildBackgroundProgram(const std::string& prelud
     return program;
 }
 
-namespace {
-
-// Erases the least recently used entries (by their lastUsed frame) until the cache has room for one
-// more, sparing those the current frame has used.
-template <class Cache>
-void makeRoom(Cache& cache, size_t capacity, std::uint64_t currentFrame) {
-    while (cache.size() >= capacity) {
-        const auto oldest = std::min_element(cache.begin(), cache.end(), [](const auto& a, const auto& b) {
-            return a.second.lastUsed < b.second.lastUsed;
-        });
-        if (oldest == cache.end() || oldest->second.lastUsed >= currentFrame) return;
-        cache.erase(oldest);
-    }
-}
-
-}  // namespace
-
 Result<const ShaderProgram*> Renderer::backgroundProgram(const std::string& prelude) {
-    if (auto found = backgroundPrograms_.find(prelude); found != backgroundPrograms_.end()) {
-        found->second.lastUsed = framesRendered_;
-        return &found->second.program;
-    }
+    if (ShaderProgram* found = backgroundPrograms_.use(prelude, framesRendered_)) return found;
     auto built = buildBackgroundProgram(prelude);
     if (!built) return built.error();
-    makeRoom(backgroundPrograms_, kBackgroundProgramCapacity, framesRendered_);
-    BackgroundProgram entry{std::move(*built), framesRendered_};
-    return &backgroundPrograms_.insert_or_assign(prelude, std::move(entry)).first->second.program;
+    return &backgroundPrograms_.insert(prelude, std::move(*built), framesRendered_);
 }
 
 Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, SurfaceVariant variant,
@@ -174,25 +152,21 @@ Result<Renderer::SurfaceProgram> Renderer::buildSurfaceProgram(BrdfModel model, 
 
 Result<const ShaderProgram*> Renderer::surfaceProgram(BrdfModel model, SurfaceVariant variant, TexturedParams textured) {
     const SurfaceKey key{model, variant, textured.mask};
-    if (auto found = surfacePrograms_.find(key); found != surfacePrograms_.end()) {
-        found->second.lastUsed = framesRendered_;
-        found->second.drawn = true;
-        return &found->second.program;
+    if (SurfaceProgram* found = surfacePrograms_.use(key, framesRendered_)) {
+        found->drawn = true;
+        return &found->program;
     }
     if (compiler_ && !failedInBackground_.count(key)) {
         if (SurfaceProgram* standIn = standInFor(key)) {
             requestPrograms({key}, nullptr);
-            standIn->lastUsed = framesRendered_;
             ++standInProgramsDrawn_;
             return &standIn->program;
         }
     }
     auto built = buildSurfaceProgram(model, variant, textured);
     if (!built) return built.error();
-    makeRoom(surfacePrograms_, kSurfaceProgramCapacity, framesRendered_);
-    built->lastUsed = framesRendered_;
     built->drawn = true;
-    return &surfacePrograms_.insert_or_assign(key, std::move(*built)).first->second.program;
+    return &surfacePrograms_.insert(key, std::move(*built), framesRendered_).program;
 }
 
 SurfaceVariant Renderer::surfaceVariant(const SceneObject& object, const Material& material, int samples,
@@ -212,8 +186,8 @@ Renderer::SurfaceProgram* Renderer::standInFor(const SurfaceKey& key) {
     auto generic = key;
     std::get<SurfaceVariant>(generic).specialisation.clear();
     if (generic == key) return nullptr;
-    const auto found = surfacePrograms_.find(generic);
-    return found == surfacePrograms_.end() || !found->second.drawn ? nullptr : &found->second;
+    SurfaceProgram* found = surfacePrograms_.use(generic, framesRendered_);  // used as the stand-in
+    return found && found->drawn ? found : nullptr;
 }
 
 void Renderer::compileInBackground(std::unique_ptr<ProgramCompiler> compiler) {
@@ -224,7 +198,7 @@ void Renderer::compileInBackground(std::unique_ptr<ProgramCompiler> compiler) {
 void Renderer::requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_ptr<const Scene> warmUpScene) {
     std::vector<std::pair<SurfaceKey, std::shared_ptr<PendingSurfaceProgram>>> batch;
     for (const SurfaceKey& key : keys) {
-        if (surfacePrograms_.count(key) || pendingPrograms_.count(key)) continue;
+        if (surfacePrograms_.contains(key) || pendingPrograms_.count(key)) continue;
         batch.emplace_back(key, std::make_shared<PendingSurfaceProgram>());
         pendingPrograms_.insert(batch.back());
     }
@@ -263,11 +237,9 @@ bool Renderer::adoptCompiledPrograms() {
         }
         if (!*pending.result) {
             failedInBackground_.insert(entry->first);
-        } else if (!surfacePrograms_.count(entry->first)) {
+        } else if (!surfacePrograms_.contains(entry->first)) {
             platform_.makeCurrent();
-            makeRoom(surfacePrograms_, kSurfaceProgramCapacity, framesRendered_);
-            (*pending.result)->lastUsed = framesRendered_;
-            surfacePrograms_.insert_or_assign(entry->first, std::move(**pending.result));
+            surfacePrograms_.insert(entry->first, std::move(**pending.result), framesRendered_);
             arrived = true;
         }
         entry = pendingPrograms_.erase(entry);
@@ -298,15 +270,12 @@ bool Renderer::reloadChangedShaders() {
         return changed = true;
     };
     // A program whose files changed is rebuilt; when that fails, the last good one stays.
-    for (auto& [key, entry] : surfacePrograms_) {
-        if (!outdated(entry.files, entry.builtAt)) continue;
+    surfacePrograms_.forEach([&](const SurfaceKey& key, SurfaceProgram& entry) {
+        if (!outdated(entry.files, entry.builtAt)) return;
         const auto& [model, variant, textured] = key;
-        if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) {
-            rebuilt->lastUsed = entry.lastUsed;
-            entry = std::move(*rebuilt);
-        }
+        if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) entry = std::move(*rebuilt);
         else error = rebuilt.error().format();
-    }
+    });
     if (outdated(displayFiles_, displayBuiltAt_))
         for (auto& [prelude, program] : displayPrograms_) {
             if (auto rebuilt = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude))
@@ -314,10 +283,10 @@ bool Renderer::reloadChangedShaders() {
             else error = rebuilt.error().format();
         }
     if (outdated(backgroundFiles_, backgroundBuiltAt_))
-        for (auto& [prelude, entry] : backgroundPrograms_) {
-            if (auto rebuilt = buildBackgroundProgram(prelude)) entry.program = std::move(*rebuilt);
+        backgroundPrograms_.forEach([&](const std::string& prelude, ShaderProgram& program) {
+            if (auto rebuilt = buildBackgroundProgram(prelude)) program = std::move(*rebuilt);
             else error = rebuilt.error().format();
-        }
+        });
     if (changed) shaderError_ = error;
     if (changed) {
         for (SingleSampleTargets& kept : singleSample_) kept.held.reset();
@@ -371,7 +340,7 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
         if (!analytic) continue;
         const SurfaceKey key{analytic->model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmitsLight(material)),
                              TexturedParams::of(*analytic).mask};
-        if (surfacePrograms_.count(key) || failedInBackground_.count(key)) continue;
+        if (surfacePrograms_.contains(key) || failedInBackground_.count(key)) continue;
         missing.push_back(key);
         warmUpScene->objects.push_back(object);
         ready = standInFor(key) && ready != ProgramsReady::No ? ProgramsReady::WithStandIns : ProgramsReady::No;
@@ -408,7 +377,7 @@ void Renderer::useTargetsOfSize(int width, int height) {
 
 Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshDetail detail, RowBand rows) {
     platform_.makeCurrent();
-    ++framesRendered_;  // programs looked up from here on belong to this frame (makeRoom spares them)
+    ++framesRendered_;  // programs looked up from here on belong to this frame (the program caches spare them)
     GLINT_CHECK(width > 0 && height > 0);
     // Drag frames draw the shadow maps (when they must be drawn at all) from the finest stand-ins,
     // with about two texels a side per pixel of the frame's larger side.
@@ -586,8 +555,8 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         const SurfaceVariant variant = surfaceVariant(object, material, samples, frameDefines, seesBackdrop);
         auto program = std::visit(
             Overloaded{[&](const AnalyticMaterial& analytic) { return surfaceProgram(analytic.model, variant, TexturedParams::of(analytic)); },
-                       [&](const CustomMaterial& custom) { return customPrograms_.program(sources_, *custom.brdf, variant); },
-                       [&](const MeasuredMaterial&) { return measured_.program(sources_, variant); }},
+                       [&](const CustomMaterial& custom) { return customPrograms_.program(sources_, *custom.brdf, variant, framesRendered_); },
+                       [&](const MeasuredMaterial&) { return measured_.program(sources_, variant, framesRendered_); }},
             material.kind);
         if (!program) {
             shaderError_ = program.error().format();
@@ -605,12 +574,18 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
         glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
         setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
+        Status textured = success();
         std::visit(Overloaded{[&](const AnalyticMaterial& analytic) {
-                                  if (!analytic.textures.empty()) bindMaterialTextures(shader, analytic, object.shape, textureCache_);
+                                  if (!analytic.textures.empty())
+                                      textured = bindMaterialTextures(shader, analytic, object.shape, textureCache_);
                               },
                               [&](const CustomMaterial& custom) { setCustomBrdfUniforms(shader, *custom.brdf, custom.values); },
                               [&](const MeasuredMaterial& measured) { measured_.bind(shader, measured.brdf); }},
                    material.kind);
+        if (!textured) {  // a texture larger than the GPU takes: the object is not drawn
+            result = textured.error();
+            continue;
+        }
         if (next >= firstTransmissive) transmission_->bind(shader);
         if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
         glUniform1i(shader.uniform("occludingSphereCount"), static_cast<GLint>(occluders.size()));

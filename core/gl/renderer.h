@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "gl/bounded_program_cache.h"
 #include "gl/material_glsl.h"
 #include "gl/custom_brdf_program.h"
 #include "gl/measured_brdf_gpu.h"
@@ -157,6 +158,10 @@ public:
     long long trianglesDrawn() const { return trianglesDrawn_; }
     // Objects the last renderRadiance drew with a simplified stand-in.
     int simplifiedMeshesDrawn() const { return simplifiedMeshesDrawn_; }
+    // Programs held for materials with a .brdf file and for measured materials (each bounded:
+    // gl/bounded_program_cache.h).
+    size_t customBrdfProgramCount() const { return customPrograms_.size(); }
+    size_t measuredProgramCount() const { return measured_.programCount(); }
     // Material texture images on the GPU (uploaded once per file version).
     TextureCache& textureCache() { return textureCache_; }
     const ShaderSources& sources() const { return sources_; }
@@ -170,18 +175,11 @@ private:
         ShaderProgram program;
         std::vector<std::string> files;
         long long builtAt = 0;  // newest modification time of its files when built
-        std::uint64_t lastUsed = 0;  // the radiance frame (framesRendered_) that last drew with it
         // Drawn in this context: llvmpipe compiles a program's machine code per context at its
         // first draw, so only a program drawn before is a quick stand-in.
         bool drawn = false;
     };
-    struct BackgroundProgram {
-        ShaderProgram program;
-        std::uint64_t lastUsed = 0;
-    };
-    // Specialised programs multiply with the scene's choices (lights, enums, display), so the
-    // caches are bounded: the least recently used program goes when a new one needs room, but
-    // never one the frame being drawn has used (a frame that needs more grows the cache).
+    // The program caches' capacities (gl/bounded_program_cache.h says how they are bounded).
     static constexpr size_t kSurfaceProgramCapacity = 64;
     static constexpr size_t kBackgroundProgramCapacity = 16;
 
@@ -238,7 +236,7 @@ private:
     ShaderSources sources_;
     std::string description_;
     std::string shaderError_;
-    std::map<SurfaceKey, SurfaceProgram> surfacePrograms_;
+    BoundedProgramCache<SurfaceKey, SurfaceProgram> surfacePrograms_{kSurfaceProgramCapacity};
     std::map<SurfaceKey, std::shared_ptr<PendingSurfaceProgram>> pendingPrograms_;
     std::set<SurfaceKey> failedInBackground_;  // built here instead, which reports the error
     int standInProgramsDrawn_ = 0;
@@ -247,7 +245,7 @@ private:
     std::map<std::string, ShaderProgram> displayPrograms_;  // by specialisation prelude
     std::vector<std::string> displayFiles_;
     long long displayBuiltAt_ = 0;
-    std::map<std::string, BackgroundProgram> backgroundPrograms_;  // by specialisation prelude
+    BoundedProgramCache<std::string, ShaderProgram> backgroundPrograms_{kBackgroundProgramCapacity};  // by specialisation prelude
     std::uint64_t framesRendered_ = 0;  // radiance frames begun
     std::vector<std::string> backgroundFiles_;
     long long backgroundBuiltAt_ = 0;

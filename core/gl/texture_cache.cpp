@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace glint {
 
@@ -83,14 +84,28 @@ GLuint TextureCache::upload(const TextureImage& image) {
     return texture;
 }
 
-void TextureCache::bind(GLenum unit, const MaterialTexture& texture) {
+int TextureCache::maxTextureSize() {
+    if (maxTextureSize_ == 0) glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize_);
+    return maxTextureSize_;
+}
+
+Status TextureCache::bind(GLenum unit, const MaterialTexture& texture) {
     const TextureImage& image = *texture.image;
     glActiveTexture(unit);
     auto found = textures_.find({image.path, image.modifiedAt, image.colorSpace});
-    if (found != textures_.end()) glBindTexture(GL_TEXTURE_2D, found->second);
-    else upload(image);
+    if (found != textures_.end()) {
+        glBindTexture(GL_TEXTURE_2D, found->second);
+    } else {
+        if (image.width > maxTextureSize() || image.height > maxTextureSize())
+            return makeError("texture image is " + std::to_string(image.width) + "×" + std::to_string(image.height) +
+                                 " texels, larger than this GPU's limit of " + std::to_string(maxTextureSize()) +
+                                 " a side (GL_MAX_TEXTURE_SIZE); objects with this texture are not drawn: scale the image down",
+                             {image.path});
+        upload(image);
+    }
     // A sampler object, not the texture's own state: one image may be sampled two ways at once.
     glBindSampler(unit - GL_TEXTURE0, sampler(texture));
+    return success();
 }
 
 GLuint TextureCache::sampler(const MaterialTexture& texture) {

@@ -12,6 +12,7 @@
 #include <glad/gl.h>
 
 #include "texture/material_texture.h"
+#include "util/diagnostic.h"
 
 namespace glint {
 
@@ -23,9 +24,12 @@ public:
     TextureCache& operator=(const TextureCache&) = delete;
 
     // Binds the texture's image to `unit` with its sampler state. An image whose file changed
-    // since it was uploaded replaces the old upload.
-    void bind(GLenum unit, const MaterialTexture& texture);
+    // since it was uploaded replaces the old upload. Error: the image is larger than the context's
+    // GL_MAX_TEXTURE_SIZE (then nothing is bound).
+    Status bind(GLenum unit, const MaterialTexture& texture);
 
+    // Largest texture side the context takes (GL_MAX_TEXTURE_SIZE); queried on first use.
+    int maxTextureSize();
     // Largest anisotropy the context supports (1 when the extension is absent); queried on first use.
     float maxAnisotropy();
     // Images uploaded so far (the same image twice counts once).
@@ -41,6 +45,7 @@ private:
     std::map<SamplerKey, GLuint> samplers_;
     int uploads_ = 0;
     float maxAnisotropy_ = 0.0f;  // 0: not queried yet
+    int maxTextureSize_ = 0;  // 0: not queried yet
 };
 
 }  // namespace glint

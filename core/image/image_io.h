@@ -1,5 +1,6 @@
 // Image files through OpenImageIO: EXR keeps linear radiance as float; PNG (and other 8-bit
-// formats) hold display-encoded values. Errors name the file.
+// formats) hold display-encoded values. Errors name the file. Writes are atomic (util/file_io.h):
+// a temporary beside the file, renamed over it, so a full disk never leaves half an image.
 #pragma once
 
 #include <string>

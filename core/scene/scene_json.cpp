@@ -313,7 +313,7 @@ Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment)
     for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader, document.file()));
     for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
-        root.fail("lights", "at most " + std::to_string(kMaxLights) + " lights are supported");
+        root.fail("lights", std::to_string(scene.lights.size()) + " lights: " + lightLimitExplanation());
     checkShadowedLightCount(root, scene.lights);
     for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials, document.file()));
     root.rejectUnknownKeys();

@@ -7,9 +7,12 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <new>
+#include <string>
 #include <tuple>
 
 #include "display/display_chain.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -27,20 +30,30 @@ Result<std::shared_ptr<const TextureImage>> decode(const std::string& path, long
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
         return makeError("texture image has no pixels (" + std::to_string(spec.width) + "×" +
                              std::to_string(spec.height) + ")", {path});
+    const std::string size = std::to_string(spec.width) + "×" + std::to_string(spec.height);
     if (spec.width > kMaxTextureSize || spec.height > kMaxTextureSize)
-        return makeError("texture image is " + std::to_string(spec.width) + "×" + std::to_string(spec.height) +
-                             "; at most " + std::to_string(kMaxTextureSize) + " texels a side are supported", {path});
+        return makeError("texture image is " + size + " texels, larger than Glint's limit of " + std::to_string(kMaxTextureSize) +
+                             " a side (OpenGL 4.1's least GL_MAX_TEXTURE_SIZE); the texture is refused: scale the image down",
+                         {path});
     const int channels = spec.nchannels;
-    std::vector<float> all(static_cast<size_t>(spec.width) * spec.height * channels);
+    std::vector<float> all;
+    auto image = std::make_shared<TextureImage>();
+    try {
+        all.resize(static_cast<size_t>(spec.width) * spec.height * channels);
+        image->rgba.resize(static_cast<size_t>(spec.width) * spec.height * 4);
+    } catch (const std::bad_alloc&) {
+        const double gibibytes = static_cast<double>(spec.width) * spec.height * (channels + 4) * sizeof(float) / (1 << 30);
+        return makeError("texture image is " + size + " texels: decoding it needs " + formatNumber(gibibytes, "%.1f") +
+                             " GiB of memory (linear float texels), more than is free; scale the image down",
+                         {path});
+    }
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data()))
         return makeError("texture image is truncated or corrupt: " + input->geterror(), {path});
-    auto image = std::make_shared<TextureImage>();
     image->path = path;
     image->modifiedAt = modifiedAt;
     image->colorSpace = colorSpace;
     image->width = spec.width;
     image->height = spec.height;
-    image->rgba.resize(static_cast<size_t>(spec.width) * spec.height * 4);
     // Grey images fill r, g and b; a missing alpha is 1. Rows are flipped to bottom-up.
     for (int y = 0; y < spec.height; ++y) {
         for (int x = 0; x < spec.width; ++x) {

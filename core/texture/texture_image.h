@@ -11,7 +11,9 @@
 
 namespace glint {
 
-// Largest side accepted [texels] (OpenGL 4.1 guarantees 16384).
+// Largest side accepted [texels]: the least GL_MAX_TEXTURE_SIZE that OpenGL 4.1 allows, so every
+// GPU Glint runs on takes it (gl/texture_cache.h checks the context's own limit too). A larger
+// image is refused, not downscaled: the CPU reference and the GPU would otherwise see other texels.
 inline constexpr int kMaxTextureSize = 16384;
 
 // Decodes `path` (sRGB-encoded values are decoded to linear, decodeSrgb() of display_chain.h).

@@ -1,7 +1,9 @@
 // Whole-file reads and atomic writes, with user-facing errors. Saves never leave a half-written
-// file behind: they write a temporary file beside the target, then rename it over the target.
+// file behind: they write a temporary file beside the target, flush it to the disk, then rename it
+// over the target; on any error the temporary is removed and the target is as it was.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "util/diagnostic.h"
@@ -10,6 +12,11 @@ namespace glint {
 
 Result<std::string> readTextFile(const std::string& path);
 Status writeFileAtomically(const std::string& path, const std::string& contents);
+
+// Replaces `path` with what `write(temporary)` writes to a temporary file in the same folder (with
+// the same extension, for writers that choose the format by it, such as OpenImageIO's). Errors:
+// write()'s, or the flush or rename's, naming `path` and the system's reason.
+Status replaceFileAtomically(const std::string& path, const std::function<Status(const std::string& temporary)>& write);
 
 // `parse(text, path)` of the file at `path`, or why the file could not be read.
 template <class Parse>

@@ -74,8 +74,13 @@ void drawLightButtons(EditorState& state) {
         addLight(state, std::move(copy), "Duplicate light");
     }
     ImGui::EndDisabled();
-    if (!room && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("At most %d lights", kMaxLights);
+    if (!room && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+        ImGui::Text("%s.", lightLimitExplanation().c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
     ImGui::BeginDisabled(!selected);
     sameLineIfFits(buttonWidth("Remove"));
     if (ImGui::Button("Remove")) {
