@@ -87,6 +87,11 @@ set_tests_properties(probe_cli PROPERTIES ENVIRONMENT "DISPLAY=")
 # .mtl and .gltf through `glint export` and `glint render`: round trips, renders, located errors.
 add_test(NAME interchange_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/interchange_cli_test.sh $<TARGET_FILE:glint> ${CMAKE_CURRENT_BINARY_DIR}/output/interchange_cli)
 set_tests_properties(interchange_cli PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 480)
+# Files naming files outside their folder, in every format that names files: refused by name,
+# read with --allow-outside-references, never quoted (tests/files/hostile/).
+add_test(NAME hostile_references COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hostile_references_test.sh $<TARGET_FILE:glint>
+         ${CMAKE_CURRENT_BINARY_DIR}/output/hostile_references)
+set_tests_properties(hostile_references PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 300)
 
 # Classroom plots through `glint render --overlay polar|lobe|albedo|fresnel`: PNGs and bad options.
 add_test(NAME plots_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/plots_cli_test.sh $<TARGET_FILE:glint>
