@@ -1,7 +1,8 @@
 // The modal that asks about referenced files refused outside a file's folder
 // (core/util/reference_confinement.h): "Allow once" allows the files that named them for this run
 // and opens the file again, "Always allow" also ticks the setting, "Keep refused" leaves them out.
-// It waits while another modal is open, so that two modals never compete for the same frame.
+// It waits while another modal is open, so that two modals never compete for the same frame. No
+// Enter default: a key meant for something else must not read what was refused.
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -52,7 +53,7 @@ void drawReferencePrompt(EditorState& state) {
     for (const RefusedReference& refused : state.refusedReferences)
         ImGui::BulletText("%s names %s", refused.referencingFile.c_str(), refused.written.c_str());
     ImGui::Spacing();
-    if (ImGui::Button("Allow once")) {
+    if (ImGui::Button("Allow once (O)") || takeKeyPress(GLFW_KEY_O)) {
         for (const RefusedReference& refused : state.refusedReferences) allowOutsideReferencesOf(refused.referencingFile);
         ImGui::CloseCurrentPopup();
         openAgain(state);
