@@ -2,9 +2,9 @@
 # Files that name files outside their own folder (core/util/reference_confinement.h), one of each
 # format that names files (tests/files/hostile/): an .obj's mtllib, an .mtl's map_Kd, a glTF's
 # image and buffer, a MaterialX image, a scene's mesh, texture and environment, a material's
-# .brdf, a lesson's scene. Each names a target outside as an absolute path, through ../ and
-# through a symlink; the targets hold a marker line. Refused by default (by name, located), read
-# with --allow-outside-references, and no message ever holds the marker.
+# .brdf, a lesson's scene, a .bparam's .brdf. Each names a target outside as an absolute path,
+# through ../ and through a symlink; the targets hold a marker line. Refused by default (by name,
+# located), read with --allow-outside-references, and no message ever holds the marker.
 # usage: hostile_references_test.sh GLINT OUTPUT_DIR
 set -u
 glint=$1
@@ -60,10 +60,12 @@ for variant in absolute dotdot symlink; do
   run "gltf_buffer_$variant" buffer.gltf 2 "6:[0-9]+: cannot load mesh: /buffers/0/uri: " info "$asset/scene_gltf_buffer.json"
   run "material_brdf_$variant" material_brdf.json 2 "1:[0-9]+: .*'brdf_file': " info "$asset/material_brdf.json"
   run "lessons_$variant" lessons.json 2 "3:[0-9]+: .*'scene': " lessons "$asset/lessons.json"
+  run "bparam_brdf_$variant" brdf_explorer.bparam 2 "1:1: " render "$asset/brdf_explorer.bparam" -o "$out/x.png"
   # Allowed, each target is read and found invalid: said without its bytes.
   for scene in scene_mesh scene_texture scene_environment scene_gltf_buffer material_brdf; do
     run "${scene}_${variant}_allowed" "$scene.json" 2 - info --allow-outside-references "$asset/$scene.json"
   done
   run "lessons_${variant}_allowed" lessons.json 0 - lessons --allow-outside-references "$asset/lessons.json"
+  run "bparam_brdf_${variant}_allowed" brdf_explorer.bparam 2 - render --allow-outside-references "$asset/brdf_explorer.bparam" -o "$out/x.png"
 done
 summary
