@@ -67,7 +67,8 @@ ObjMaterial readObjMaterial(const std::string& objPath) {
         }
         auto loaded = loadMtl(confined->string());
         if (!loaded) {
-            result.warnings.push_back(makeError("material library '" + library + "' not used: " + referencedFileProblem(confined->string(), loaded.error(), ".mtl file"), statement));
+            const std::string problem = referencedFileProblem(confined->string(), loaded.error(), ".mtl file");
+            result.warnings.push_back(makeError("material library '" + library + "' not used: " + problem, statement));
             continue;
         }
         auto named = std::find_if(loaded->materials.begin(), loaded->materials.end(),
