@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::atomic<bool> allowedBySetting{false};
-std::atomic<int> allowances{0};
+thread_local int allowances = 0;  // OutsideReferencesAllowance: this thread's only
 
 std::mutex mutex;  // guards the two below
 std::set<std::string> allowedReferencingFiles;

@@ -15,8 +15,9 @@ namespace glint {
 // The process-wide choice, from the command line or the editor's settings; refused by default.
 void setOutsideReferencesAllowed(bool allowed);
 
-// Allows outside references while it lives, whatever the setting, in every thread: for Glint's own
-// recovery file, which names the user's files by absolute path.
+// Allows outside references while it lives, whatever the setting, on this thread only (a file
+// opened meanwhile on a worker stays confined): for Glint's own recovery file, which names the
+// user's files by absolute path and is read whole on one thread, meshes included.
 class OutsideReferencesAllowance {
 public:
     OutsideReferencesAllowance();
