@@ -109,6 +109,10 @@ int main(int argc, char** argv) {
     probe->add_option("NAME", probeName)->required();
     probe->add_option("--values", probeValues)->required();
 
+    glint::addOutsideReferencesFlag(glint);  // the editor's FILE
+    for (const char* opensFiles : {"info", "render", "snapshot", "thumbnails", "export", "present", "lessons", "spectral"})
+        glint::addOutsideReferencesFlag(*glint.get_subcommand(opensFiles));
+
     bool chosen = false;
     const int exitCode = glint::runCommandLine(glint, argc, argv, chosen);
     if (chosen) return exitCode;

@@ -61,8 +61,9 @@ fi
 # A slow map's precompute is reported on stderr (after 0.5 s: GLINT_PROGRESS_AFTER_SECONDS=0 makes
 # any map slow), as stderr is no terminal a line every 5% (app/runtime/progress_line.h) ending at
 # 100%. A map done sooner (one hour, here) says nothing.
+cp "$here/environments/studio_small_01_256.exr" "$out/"  # beside the scene: a scene reads files from its folder
 printf '{"format": "glint-scene", "version": 1, "environment": {"type": "file", "file": "%s"},\n "materials": [{"name": "m", "model": "lambert"}], "objects": [{"shape": "sphere", "material": "m"}]}\n' \
-  "$here/environments/studio_small_01_256.exr" >"$out/exr_map.json"
+  studio_small_01_256.exr >"$out/exr_map.json"
 sed 's/"type": "file", "file": "[^"]*"/"type": "white"/' "$out/exr_map.json" >"$out/white_map.json"
 GLINT_PROGRESS_AFTER_SECONDS=0 "$glint" render "$out/exr_map.json" -o "$out/exr_map.png" --size 32x32 2>"$out/exr_map.txt"
 GLINT_PROGRESS_AFTER_SECONDS=3600 "$glint" render "$out/white_map.json" -o "$out/white_map.png" --size 32x32 2>"$out/white_map.txt"

@@ -23,6 +23,7 @@
 #include "interchange/merl.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
 #include "editor_test_support.h"
 #include "environment_test_support.h"
 #include "test_support.h"
@@ -310,6 +311,9 @@ TEST_F(EditorDocument, FilesOpenedByRelativePathsAreRecoveredAndSavedRelativeToT
     EXPECT_EQ(saved["environment"]["file"], "../work/sky.hdr");
     EXPECT_EQ(saved["materials"][1]["brdf_file"], "../work/tinted.brdf");
     EXPECT_EQ(saved["materials"][2]["merl_file"], "../work/plaster.binary");
+    // Outside the folder of the copy: refused unless allowed (util/reference_confinement.h).
+    ASSERT_FALSE(loadScene(copy).ok());
+    const OutsideReferencesAllowance allowed;
     auto reopened = loadScene(copy);
     ASSERT_TRUE(reopened.ok()) << reopened.error().format();
     EXPECT_EQ(sceneToJson(*reopened), sceneToJson(scene));

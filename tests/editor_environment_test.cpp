@@ -14,6 +14,7 @@
 #include "environment/environment_map.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
 
 namespace glint {
 namespace {
@@ -118,6 +119,7 @@ TEST_F(EditorEnvironment, AnOpenedSceneShowsAtOnceAndItsMapJoinsWithoutAStep) {
 }
 
 TEST_F(EditorEnvironment, SaveWhileTheMapIsMadeKeepsTheEnvironmentAndRecoveryMakesItToo) {
+    const OutsideReferencesAllowance allowed;  // the scene names the test data's map, outside its folder
     const std::string path = write("lit.json", sceneNaming(R"({"type": "file", "file": ")" + kStudioFile + R"("})"));
     EditorState state;
     openSceneFile(state, path);

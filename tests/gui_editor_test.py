@@ -609,6 +609,43 @@ def scenario_material_choice(x, glint, output, state):
         print("ok: two materials offered, the second applied and undone, Esc changed nothing")
 
 
+def scenario_outside_reference(x, glint, output, state):
+    """A glTF whose blue texture lies outside its folder: after the warning, the editor asks; Esc
+    keeps it refused (the material comes without it), Allow once (O) opens the file again with it."""
+    asset, outside = os.path.join(output, "asset"), os.path.join(output, "outside")
+    os.makedirs(asset, exist_ok=True)
+    os.makedirs(outside, exist_ok=True)
+    write_png((4, 4, bytes([20, 40, 230] * 16)), os.path.join(outside, "blue.png"))
+    gltf = os.path.join(asset, "blue.gltf")
+    with open(gltf, "w") as out:
+        json.dump({"asset": {"version": "2.0"}, "images": [{"uri": "../outside/blue.png"}], "textures": [{"source": 0}],
+                   "materials": [{"name": "blue", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]}, out)
+
+    def open_and_answer(key, name):
+        x.key("ctrl+o")
+        type_path(x, gltf)
+        warned = x.wait_for(modal_shown(base), "the warning naming ../outside/blue.png")
+        time.sleep(0.3)
+        x.key("Escape")
+        asked = x.wait_for(lambda shot: modal_shown(base)(shot) and region_difference(shot, warned, DIALOG_BOX) > 15,
+                           "the question about ../outside/blue.png, after the warning")
+        save(asked, output, name)
+        time.sleep(0.3)
+        x.key(key)
+
+    with Editor(x, glint, output, state):
+        x.wait_for(lit_sphere, "the lit sphere (red plastic)")
+        base = x.wait_stable(VIEWPORT)  # before the modal dims it
+        open_and_answer("Escape", "outside_reference_1_asked")
+        kept = x.wait_for(lambda shot: not modal_shown(base)(shot) and not lit_sphere(shot),
+                          "Esc: the glTF's material without its refused texture")
+        assert not blue_sphere(kept), "Esc should keep the texture refused"
+        open_and_answer("o", "outside_reference_2_asked_again")
+        allowed = x.wait_for(blue_sphere, "Allow once: the blue texture on the sphere")
+        save(allowed, output, "outside_reference_3_allowed")
+        print("ok: the outside texture was asked about, kept refused with Esc, read after Allow once")
+
+
 def scenario_model_switch(x, glint, output, state):
     with Editor(x, glint, output, state):
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")

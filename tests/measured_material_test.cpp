@@ -13,6 +13,7 @@
 #include "scene/scene_json.h"
 #include "test_support.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
 
 namespace glint {
 namespace {
@@ -54,6 +55,11 @@ TEST(MeasuredMaterial, JsonReadsTheFileRelativeToItselfAndWritesItBack) {
     const nlohmann::json written = materialToJson(*material, folder + "/sub/again.json");
     EXPECT_EQ(written["model"], "merl");
     EXPECT_EQ(written["merl_file"], "../lambert.binary");
+    // Outside the folder of again.json: refused unless allowed (util/reference_confinement.h).
+    auto refused = parseMaterial(written.dump(), folder + "/sub/again.json");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("refused '../lambert.binary'"), std::string::npos) << refused.error().format();
+    const OutsideReferencesAllowance allowed;
     auto again = parseMaterial(written.dump(), folder + "/sub/again.json");
     ASSERT_TRUE(again.ok()) << again.error().format();
     EXPECT_EQ(again->measured()->brdf->table.reflectance, material->measured()->brdf->table.reflectance);

@@ -13,6 +13,7 @@
 #include "scene/plane_edge_fade.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
+#include "util/reference_confinement.h"
 
 namespace glint {
 namespace {
@@ -111,6 +112,11 @@ TEST(SceneShapes, MeshPathIsRelativeToTheSceneAndFollowsASaveElsewhere) {
     EXPECT_EQ(mesh.smoothingAngleDegrees, 30.0f);
     EXPECT_EQ(boundingSphere(mesh).radius, 2.0f);
     ASSERT_TRUE(saveScene(*scene, folder + "/elsewhere/deeper/copy.json").ok());
+    // The mesh is now outside the scene's folder: refused unless allowed (util/reference_confinement.h).
+    auto refused = loadScene(folder + "/elsewhere/deeper/copy.json");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("refused '../../assets/grid.obj'"), std::string::npos) << refused.error().format();
+    const OutsideReferencesAllowance allowed;
     auto copy = loadScene(folder + "/elsewhere/deeper/copy.json");
     ASSERT_TRUE(copy.ok()) << copy.error().format();
     EXPECT_EQ(std::get<MeshShape>(copy->objects[0].shape).path, "../../assets/grid.obj");

@@ -38,6 +38,7 @@ target_sources(core_tests PRIVATE wild_files_test.cpp)  # files other tools wrot
 target_sources(core_tests PRIVATE model_machinery_test.cpp)  # the model machinery on a test-only model; docs/models.md
 target_sources(core_tests PRIVATE interchange_gltf_openpbr_test.cpp)  # glTF materials ↔ openpbr
 target_sources(core_tests PRIVATE disk_cache_test.cpp)  # the disk cache of computed tables
+target_sources(core_tests PRIVATE reference_confinement_test.cpp)  # files that files name: confined to their folder
 target_sources(core_tests PRIVATE interchange_materialx_test.cpp model_switch_test.cpp)  # MaterialX; switching models
 target_sources(core_tests PRIVATE material_change_test.cpp)  # the pixels a material change reaches
 target_compile_definitions(core_tests PRIVATE ${GLINT_TEST_DEFINITIONS})
@@ -90,6 +91,11 @@ set_tests_properties(probe_cli PROPERTIES ENVIRONMENT "DISPLAY=")
 # .mtl and .gltf through `glint export` and `glint render`: round trips, renders, located errors.
 add_test(NAME interchange_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/interchange_cli_test.sh $<TARGET_FILE:glint> ${CMAKE_CURRENT_BINARY_DIR}/output/interchange_cli)
 set_tests_properties(interchange_cli PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 480)
+# Files naming files outside their folder, in every format that names files: refused by name,
+# read with --allow-outside-references, never quoted (tests/files/hostile/).
+add_test(NAME hostile_references COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/hostile_references_test.sh $<TARGET_FILE:glint>
+         ${CMAKE_CURRENT_BINARY_DIR}/output/hostile_references)
+set_tests_properties(hostile_references PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 300)
 
 # Classroom plots through `glint render --overlay polar|lobe|albedo|fresnel`: PNGs and bad options.
 add_test(NAME plots_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/plots_cli_test.sh $<TARGET_FILE:glint>

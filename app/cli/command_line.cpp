@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "util/reference_confinement.h"
+
 namespace glint {
 namespace {
 
@@ -96,6 +98,12 @@ int commandFailed(const std::string& command, const std::string& message, int ex
 
 int usageError(const std::string& command, const std::string& message) {
     return commandFailed(command, message + "\nRun `glint " + command + " --help` for the options.");
+}
+
+void addOutsideReferencesFlag(CLI::App& command) {
+    command.add_flag_callback("--allow-outside-references", [] { setOutsideReferencesAllowed(true); },
+                              "read files that a file names outside its own folder (a material library, texture, "
+                              "buffer, mesh or environment: refused by default)");
 }
 
 void refuse(const std::string& message) { throw CLI::ValidationError(message); }

@@ -25,6 +25,10 @@ CLI::Validator needsWholeNumber(const std::string& what, int low, int high);
 // WIDTHxHEIGHT into `width` and `height`, each in [low, high].
 CLI::Option* addPixelSize(CLI::App& command, int& width, int& height, int low, int high, const std::string& description);
 
+// --allow-outside-references, for a command that opens files: those files may then name files
+// outside their own folder (core/util/reference_confinement.h), for this run.
+void addOutsideReferencesFlag(CLI::App& command);
+
 // A refusal found while taking an option's value (an option function): printed as it is.
 [[noreturn]] void refuse(const std::string& message);
 

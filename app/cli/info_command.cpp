@@ -69,7 +69,7 @@ int describeFile(const std::string& path) {
         auto brdf = findBparamBrdf(*file, path);
         std::printf("%s: BRDF Explorer parameter values for %s (%s)\n", path.c_str(),
                     file->brdfPath.empty() ? "(no .brdf named)" : file->brdfPath.c_str(),
-                    brdf ? ("found: " + *brdf).c_str() : "not found");
+                    (brdf ? "found: " + *brdf : "not read: " + brdf.error().message).c_str());
         printParams(file->params);
         printWarnings(file->warnings);
         return 0;

@@ -10,6 +10,7 @@
 #include "runtime/brdf_probe.h"
 #include "interchange/bparam_file.h"
 #include "util/file_io.h"
+#include "util/referenced_file_error.h"
 #include "util/text.h"
 
 namespace glint {
@@ -134,7 +135,8 @@ void openBparamFile(EditorState& state, const std::string& path) {
         }
         auto brdf = loadBrdfFile(*brdfPath);
         if (!brdf) {
-            state.errorMessage = "Could not open the BRDF the file names; your work is unchanged.\n\n" + brdf.error().format();
+            state.errorMessage = "Could not open the BRDF the file names; your work is unchanged.\n\n" +
+                                 referencedFileProblem(*brdfPath, brdf.error(), ".brdf file");
             return;
         }
         auto named = makeCustomBrdf(std::move(*brdf));

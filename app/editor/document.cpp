@@ -105,6 +105,7 @@ bool saveMaterialTo(EditorState& state, const std::string& path) {
 }
 
 void openDroppedFile(EditorState& state, const std::string& path) {
+    state.lastOpenedPath = path;
     if (isBrdfFilePath(path)) return openBrdfFile(state, path);  // BRDF Explorer files
     if (isBparamFilePath(path)) return openBparamFile(state, path);
     // .mtl, .gltf: a material (and glTF lights), by extension (interchange/import_formats.h). A

@@ -162,6 +162,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
 
     EditorState state;  // the default scene
     state.settings = loadSettings();
+    if (state.settings.allowOutsideReferences) setOutsideReferencesAllowed(true);  // else as --allow-outside-references says
     state.rendererDescription = renderer.description();
     state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
     if (!openPath.empty()) openDroppedFile(state, openPath);  // `glint FILE`: as File ▸ Open
@@ -276,6 +277,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                                                state.showRightPanel, windowSize.x, windowSize.y));
         drawDialogs(state);
         drawMeshLoadDialog(state);
+        drawReferencePrompt(state);
         drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);

@@ -21,6 +21,7 @@
 #include "editor/preset_swatches.h"
 #include "editor/settings.h"
 #include "interchange/imported.h"
+#include "util/reference_confinement.h"
 
 namespace glint {
 
@@ -74,6 +75,8 @@ struct EditorState {
     bool continueAfterSaveAs = false;   // Save chosen in the prompt for a scene with no file yet
     std::string errorMessage;
     std::vector<RecoveredWork> recoveryOffer;  // crashed editors' work, newest first; a modal at start
+    std::string lastOpenedPath;  // the file last opened as File > Open does: opened again once references are allowed
+    std::vector<RefusedReference> refusedReferences;  // asked about in a modal (panels/reference_prompt.cpp)
     FileBrowser fileBrowser;
     int textureMaterialIndex = -1;  // the material and parameter an image file is being chosen for
     std::string textureParameter;

@@ -16,6 +16,7 @@
 
 #include "scene/scene_json.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
 
 namespace glint {
 
@@ -99,6 +100,7 @@ Result<RecoveredWork> loadRecovery(const std::string& path) {
         !document.contains("scene") || !document["scene"].is_object() ||
         !document.contains("scene_path") || !document["scene_path"].is_string())
         return makeError("not a Glint recovery file (damaged or from another program)", {path});
+    const OutsideReferencesAllowance ownFile;  // Glint wrote it, naming the user's files by absolute path
     auto scene = parseScene(document["scene"].dump(2), path + " (scene)", EnvironmentMapLoading::Later);
     if (!scene) return scene.error();
     return RecoveredWork{std::move(*scene), document["scene_path"].get<std::string>(), path};

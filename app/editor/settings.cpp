@@ -37,6 +37,8 @@ Settings loadSettings() {
     }
     if (auto simplify = document.find("simplify_meshes_while_dragging"); simplify != document.end() && simplify->is_boolean())
         settings.simplifyMeshesWhileDragging = simplify->get<bool>();
+    if (auto outside = document.find("allow_outside_references"); outside != document.end() && outside->is_boolean())
+        settings.allowOutsideReferences = outside->get<bool>();
     return settings;
 }
 
@@ -44,7 +46,8 @@ void saveSettings(const Settings& settings) {
     const nlohmann::json document = {{"recent_files", settings.recentFiles}, {"ui_scale", settings.uiScale},
                                      {"presentation_mode", settings.presentationMode},
                                      {"presentation_scale", settings.presentationScale},
-                                     {"simplify_meshes_while_dragging", settings.simplifyMeshesWhileDragging}};
+                                     {"simplify_meshes_while_dragging", settings.simplifyMeshesWhileDragging},
+                                     {"allow_outside_references", settings.allowOutsideReferences}};
     if (ensureParentDirectory(settingsPath())) (void)writeFileAtomically(settingsPath(), document.dump(2) + "\n");
 }
 

@@ -1,5 +1,6 @@
-// Editor settings kept between runs: recent files, the UI scale, presentation mode and whether
-// large meshes are simplified while dragging, in
+// Editor settings kept between runs: recent files, the UI scale, presentation mode, whether
+// large meshes are simplified while dragging and whether files may name files outside their
+// folder, in
 // stateDirectory()/settings.json (see app/editor/recovery.h for the directory). A damaged or
 // missing file gives the defaults; writes are atomic.
 #pragma once
@@ -16,6 +17,7 @@ struct Settings {
     bool presentationMode = false;         // classroom: large font, high contrast (app/classroom/presentation.h)
     float presentationScale = 2.0f;        // UI scale in presentation mode, 1.5–3
     bool simplifyMeshesWhileDragging = true;  // stand-ins and coarser shadow maps during drags (editor/viewport_refresh.h)
+    bool allowOutsideReferences = false;  // read files a file names outside its folder (util/reference_confinement.h)
 };
 
 Settings loadSettings();

@@ -28,16 +28,14 @@ LessonList readLessonList(const JsonDocument& document) {
     if (version > kLessonListVersion)
         root.fail("version", "version " + std::to_string(version) + " is newer than this Glint reads (1)");
     if (!root.has("lessons")) root.failHere("the lesson list needs a \"lessons\" array");
-    const fs::path folder = fs::path(document.file()).parent_path();
     LessonList list;
     list.path = document.file();
     for (ObjectReader& entry : root.objectArray("lessons")) {
         Lesson lesson;
         lesson.title = entry.requiredString("title");
         if (lesson.title.empty()) entry.fail("title", "a lesson needs a non-empty title");
-        const std::string scene = entry.requiredString("scene");
-        if (scene.empty()) entry.fail("scene", "a lesson needs a scene file");
-        lesson.scenePath = (folder / scene).lexically_normal().string();
+        if (entry.requiredString("scene").empty()) entry.fail("scene", "a lesson needs a scene file");
+        lesson.scenePath = entry.referencedFile("scene").string();
         lesson.note = entry.string("note", "");
         if (entry.has("probe")) lesson.probePoint = entry.vec2("probe", glm::vec2(0.5f), Bounds::between(0.0, 1.0));
         entry.rejectUnknownKeys();

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
-#include <filesystem>
 #include <map>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "interchange/glb.h"
 #include "scene/json_document.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
 #include "util/text.h"
 
 namespace glint {
@@ -186,9 +186,11 @@ long long integerOr(const Json* value, long long fallback) {
     return value && value->is_number_integer() ? value->get<long long>() : fallback;
 }
 
-// The bytes of buffer `index`: a data URI, a file beside the .gltf, or a .glb's BIN chunk; nothing
-// when they cannot be had here (assimp then says why).
-std::optional<std::string> bufferBytes(const Json& buffer, std::string_view bin, const std::string& folder) {
+// The bytes of buffer `index`: a data URI, a file in the .gltf's folder or below, or a .glb's BIN
+// chunk; nothing when they cannot be had here (assimp then says why) or the file is refused
+// (`refusal` then says why: util/reference_confinement.h).
+std::optional<std::string> bufferBytes(const Json& buffer, std::string_view bin, const std::string& meshFile,
+                                       std::optional<Diagnostic>& refusal) {
     const Json* uri = member(buffer, "uri");
     if (!uri) return std::string(bin);
     if (!uri->is_string()) return std::nullopt;
@@ -200,15 +202,20 @@ std::optional<std::string> bufferBytes(const Json& buffer, std::string_view bin,
         if (!decoded) return std::nullopt;
         return std::string(decoded->begin(), decoded->end());
     }
-    if (folder.empty()) return std::nullopt;
-    auto read = readTextFile((std::filesystem::path(folder) / text).string());
+    if (meshFile.empty()) return std::nullopt;
+    auto confined = confinedReference(text, {meshFile});
+    if (!confined) {
+        refusal = confined.error();
+        return std::nullopt;
+    }
+    auto read = readTextFile(confined->string());
     if (!read) return std::nullopt;
     return std::move(*read);
 }
 
 }  // namespace
 
-std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, const std::string& folder,
+std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, const std::string& meshFile,
                                            const std::string& name) {
     std::string jsonText;
     std::string_view bin;
@@ -252,7 +259,12 @@ std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, 
             const long long bufferIndex = integerOr(member(view, "buffer"), -1);
             if (bufferIndex < 0 || bufferIndex >= static_cast<long long>(buffers->size())) continue;
             auto& data = loaded.try_emplace(bufferIndex, std::nullopt).first->second;
-            if (!data) data = bufferBytes((*buffers)[bufferIndex], bin, folder);
+            std::optional<Diagnostic> refusal;
+            if (!data) data = bufferBytes((*buffers)[bufferIndex], bin, meshFile, refusal);
+            if (refusal) {
+                const std::string uri = "/buffers/" + std::to_string(bufferIndex) + "/uri";
+                return makeError("cannot load mesh: " + uri + ": " + refusal->message, document->locate(uri));
+            }
             if (!data) continue;
             const long long start = integerOr(member(view, "byteOffset"), 0) + integerOr(member(accessor, "byteOffset"), 0);
             const long long stride = std::max<long long>(size, integerOr(member(view, "byteStride"), size));

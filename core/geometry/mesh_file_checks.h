@@ -24,9 +24,9 @@ inline constexpr long long kMaxMeshElements = 50'000'000;
 // count above kMaxMeshElements.
 std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, const std::string& name);
 std::optional<Diagnostic> checkObjText(std::string_view text, const std::string& name);
-// `bytes`: a .gltf's JSON text or a .glb's bytes (`binary`); `folder` resolves external buffers
-// (empty: they are not checked).
-std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, const std::string& folder,
+// `bytes`: a .gltf's JSON text or a .glb's bytes (`binary`) of `meshFile`, whose folder holds its
+// external buffers (confined to it: util/reference_confinement.h; "": they are not checked).
+std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, const std::string& meshFile,
                                            const std::string& name);
 
 }  // namespace glint

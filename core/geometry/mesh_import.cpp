@@ -25,6 +25,7 @@
 
 #include "geometry/mesh_builder.h"
 #include "geometry/mesh_file_checks.h"
+#include "geometry/mesh_io_system.h"
 #include "geometry/ply_strips.h"
 #include "util/file_io.h"
 #include "util/text.h"
@@ -67,8 +68,15 @@ private:
 
 // --- messages -------------------------------------------------------------------------------
 
-// Assimp's messages carry the line where its text parsers know one ("line 12", "Line: 12").
-Diagnostic importError(const std::string& name, const std::string& assimpMessage) {
+// Assimp's messages carry the line where its text parsers know one ("line 12", "Line: 12"). Where
+// the import opened a file the mesh names, the message may quote that file: it is replaced by one
+// that names the file.
+Diagnostic importError(const std::string& name, const std::string& assimpMessage, const MeshIoSystem& files) {
+    if (files.refusal()) return *files.refusal();
+    if (!files.referencedFilesOpened().empty())
+        return makeError("cannot load mesh: it, or a file it names ('" + files.referencedFilesOpened().back() +
+                             "'), is not valid mesh data (assimp's message is left out: it may quote that file)",
+                         {name});
     static const std::regex linePattern(R"([Ll]ine:?\s*(\d+))");
     std::smatch match;
     SourceLocation where{name, 0, 0};
@@ -252,30 +260,33 @@ std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
 // OBJ and glTF are read whole by Glint's own checks first (mesh_file_checks.h).
 bool needsWholeFileCheck(const std::string& extension) { return extension == "obj" || extension == "gltf" || extension == "glb"; }
 
-std::optional<Diagnostic> checkWholeFile(std::string_view bytes, const std::string& extension, const std::string& folder,
+// `meshFile`: the file the bytes are, "" for bytes in memory.
+std::optional<Diagnostic> checkWholeFile(std::string_view bytes, const std::string& extension, const std::string& meshFile,
                                          const std::string& name) {
     if (extension == "obj") return checkObjText(bytes, name);
-    return checkGltfIndices(bytes, extension == "glb", folder, name);
+    return checkGltfIndices(bytes, extension == "glb", meshFile, name);
 }
 
 using ReadFunction = std::function<const aiScene*(Assimp::Importer&, unsigned flags)>;
 
-// `format`: the extension, lower case, without the dot.
-Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& name, const std::string& format,
-                                const MeshImportOptions& options, const MeshImportProgress& progress) {
+// `format`: the extension, lower case, without the dot; `meshFile`: the file read, "" for bytes in memory.
+Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& name, const std::string& meshFile,
+                                const std::string& format, const MeshImportOptions& options, const MeshImportProgress& progress) {
     const auto start = std::chrono::steady_clock::now();
     if (!(options.smoothingAngleDegrees >= 0.0f && options.smoothingAngleDegrees <= 180.0f))
         return makeError("smoothing angle must be in [0°, 180°]", {name});
     Assimp::Importer importer;
     auto* relay = new ProgressRelay(progress);
     importer.SetProgressHandler(relay);  // the importer owns and deletes it
+    auto* files = new MeshIoSystem(meshFile);
+    importer.SetIOHandler(files);  // the importer owns and deletes it too
     try {
         // Triangulate (where there are polygons, after the checks) is the only step asked of
         // assimp: welding, normals, tangents and the checks are Glint's own (checkMesh,
         // MeshBuilder), the same for every format.
         const aiScene* scene = read(importer, 0);
         if (relay->cancelled()) return makeError(kCancelledMessage, {name});
-        if (!scene) return importError(name, importer.GetErrorString());
+        if (!scene) return importError(name, importer.GetErrorString(), *files);
         if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
             return makeError("cannot load mesh: the file holds no triangles", {name});
         bool hasPolygons = false;
@@ -286,7 +297,7 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
         if (hasPolygons) {
             scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
             if (relay->cancelled()) return makeError(kCancelledMessage, {name});
-            if (!scene) return importError(name, importer.GetErrorString());
+            if (!scene) return importError(name, importer.GetErrorString(), *files);
         }
         Merger merger{*scene, *relay, name, format == "stl", MeshBuilder(options.smoothingAngleDegrees), {}};
         merger.run();
@@ -317,7 +328,7 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
     } catch (const std::bad_alloc&) {
         return makeError("cannot load mesh: out of memory (the mesh needs more memory than is free): close other programs or load a simplified mesh", {name});
     } catch (const std::exception& error) {
-        return importError(name, error.what());
+        return importError(name, error.what(), *files);
     }
 }
 
@@ -330,7 +341,7 @@ Result<ImportedMesh> importStrips(std::string_view bytes, const std::string& nam
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(faces->data(), faces->size(), flags, "ply");
         },
-        name, "ply", options, progress);
+        name, "", "ply", options, progress);
 }
 
 }  // namespace
@@ -359,11 +370,11 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
     if (const std::string extension = lowerExtension(path); needsWholeFileCheck(extension)) {
         auto bytes = readTextFile(path);  // reads bytes as they are
         if (!bytes) return bytes.error();
-        if (auto error = checkWholeFile(*bytes, extension, std::filesystem::path(path).parent_path().string(), path))
+        if (auto error = checkWholeFile(*bytes, extension, path, path))
             return *error;
     }
     return importWith([&](Assimp::Importer& importer, unsigned flags) { return importer.ReadFile(path, flags); }, path,
-                      lowerExtension(path), options, progress);
+                      path, lowerExtension(path), options, progress);
 }
 
 Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const std::string& formatHint,
@@ -380,7 +391,7 @@ Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const s
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(data, size, flags, formatHint.c_str());
         },
-        name, lowerExtension("data." + formatHint), options, progress);
+        name, "", lowerExtension("data." + formatHint), options, progress);
 }
 
 bool isImportCancellation(const Diagnostic& diagnostic) { return diagnostic.message == kCancelledMessage; }

@@ -8,6 +8,8 @@
 #include "scene/preview_stage.h"
 #include "snapshot/case_source.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
+#include "util/referenced_file_error.h"
 #include "util/text.h"
 
 namespace glint {
@@ -127,10 +129,19 @@ Result<std::string> findBparamBrdf(const BparamFile& file, const std::string& bp
         return makeError("the file does not name its .brdf (BRDF Explorer writes a first line 'bparam NAME.brdf'); "
                          "open the .brdf file first, then this file",
                          {bparamPath, 1, 1});
-    const fs::path written(file.brdfPath), folder = fs::path(bparamPath).parent_path();
+    // As written (relative to this file), else beside it; an absolute path (BRDF Explorer writes
+    // them) only when there is none beside it, so that a folder moved whole keeps working. A path
+    // outside this file's folder is refused by name (util/reference_confinement.h).
+    const SourceLocation header{bparamPath, 1, 1};
+    const fs::path written(file.brdfPath);
     std::error_code code;
-    for (const fs::path& candidate : {written, folder / written, folder / written.filename()})
-        if (fs::is_regular_file(candidate, code)) return candidate.string();
+    const auto beside = confinedReference(written.filename().string(), header);  // in the folder: never refused
+    const bool besideExists = beside && fs::is_regular_file(beside.value(), code);
+    if (written.is_absolute() && besideExists) return beside->string();
+    const auto named = confinedReference(file.brdfPath, header);
+    if (named && fs::is_regular_file(named.value(), code)) return named->string();
+    if (besideExists) return beside->string();
+    if (!named) return named.error();
     return makeError("the .brdf file it names, '" + file.brdfPath + "', is neither there nor beside this file",
                      {bparamPath, 1, 1});
 }
@@ -143,7 +154,7 @@ Result<Scene> loadBparamPreviewStage(const std::string& path, std::vector<Diagno
     auto brdfPath = findBparamBrdf(*file, path);
     if (!brdfPath) return brdfPath.error();
     auto brdf = loadCustomBrdf(*brdfPath);
-    if (!brdf) return brdf.error();
+    if (!brdf) return makeError(referencedFileProblem(*brdfPath, brdf.error(), ".brdf file"), {path, 1, 1});
     warnings.insert(warnings.end(), (*brdf)->file.warnings.begin(), (*brdf)->file.warnings.end());
     warnings.insert(warnings.end(), file->warnings.begin(), file->warnings.end());
     Material material = customBrdfMaterial(*brdf);

@@ -7,6 +7,7 @@
 #include "interchange/custom_brdf.h"
 #include "interchange/measured_brdf.h"
 #include "scene/param_values_json.h"
+#include "util/referenced_file_error.h"
 #include "util/referenced_path.h"
 
 namespace glint {
@@ -19,7 +20,7 @@ fs::path referencedFile(ObjectReader& reader, const char* modelId, const char* k
     const std::string model = reader.requiredString("model");
     if (model != modelId)
         reader.fail("model", std::string("a material with \"") + key + "\" has \"model\": \"" + modelId + "\", not \"" + model + "\"");
-    const fs::path path = resolveReferencedPath(reader.requiredString(key), reader.file());
+    const fs::path path = reader.referencedFile(key);
     std::error_code error;
     if (!fs::is_regular_file(path, error)) reader.fail(key, "'" + path.string() + "' is not a readable " + what);
     return path;
@@ -32,7 +33,7 @@ Material readCustomBrdfMaterial(ObjectReader& reader, std::string name) {
     std::error_code error;
     if (fs::file_size(path, error) > kMaxBrdfFileBytes) reader.fail("brdf_file", "'" + path.string() + "' is larger than 1 MiB");
     auto brdf = loadCustomBrdf(path.lexically_normal().string());
-    if (!brdf) reader.fail("brdf_file", "cannot use '" + reader.requiredString("brdf_file") + "': " + brdf.error().format());
+    if (!brdf) reader.fail("brdf_file", referencedFileProblem(path.string(), brdf.error(), ".brdf file"));
     Material material = customBrdfMaterial(std::move(*brdf));
     material.name = std::move(name);
     material.custom()->values = readParamValues(reader, material.custom()->brdf->table);
@@ -44,7 +45,7 @@ Material readCustomBrdfMaterial(ObjectReader& reader, std::string name) {
 Material readMeasuredMaterial(ObjectReader& reader, std::string name) {
     const fs::path path = referencedFile(reader, kMeasuredModelId, "merl_file", "MERL .binary file");
     auto brdf = loadMeasuredBrdf(path.string());
-    if (!brdf) reader.fail("merl_file", "cannot use '" + reader.requiredString("merl_file") + "': " + brdf.error().format());
+    if (!brdf) reader.fail("merl_file", referencedFileProblem(path.string(), brdf.error(), "MERL .binary file"));
     Material material = measuredBrdfMaterial(std::move(*brdf));
     material.name = std::move(name);
     static constexpr const char* kKnown[] = {"name", "model", "format", "version", "merl_file"};

@@ -3,7 +3,6 @@
 #include "interchange/gltf.h"
 
 #include <cmath>
-#include <filesystem>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -44,7 +43,7 @@ bool isKnownExtension(const std::string& name) {
 struct Context {
     const JsonDocument& document;
     std::vector<Diagnostic>& warnings;
-    std::filesystem::path folder;  // image URIs are relative to it
+    std::string file;  // the glTF file: image URIs are relative to its folder and confined to it
     void warn(const std::string& pointer, const std::string& message) const {
         warnings.push_back(makeError("warning: " + pointer + ": " + message, document.locate(pointer)));
     }
@@ -187,8 +186,8 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
     ImportedFile result;
-    // A .glb's JSON chunk is named "FILE (JSON chunk)": its folder is the file's.
-    const Context context{*document, result.warnings, std::filesystem::path(file).parent_path()};
+    // A .glb's JSON chunk is named "FILE (JSON chunk)": `file` is the .glb itself.
+    const Context context{*document, result.warnings, file};
     try {
         ObjectReader root = readRoot(*document, "glTF");
         if (!root.has("asset")) root.failHere("not a glTF file: it has no \"asset\"");
@@ -206,7 +205,7 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
         if (root.has("materials")) {
             int index = 0;
             for (ObjectReader& material : root.objectArray("materials"))
-                result.materials.push_back(readGltfMaterial(material, document->root(), *document, context.folder.string(), index++));
+                result.materials.push_back(readGltfMaterial(material, document->root(), *document, context.file, index++));
         }
         readLights(context, root, result);
         const nlohmann::json& meshes = document->root().contains("meshes") ? document->root()["meshes"] : nlohmann::json();

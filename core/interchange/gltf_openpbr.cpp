@@ -61,7 +61,7 @@ constexpr float kGltfCoatIor = 1.5f;  // KHR_materials_clearcoat's fixed index
 struct Reading {
     const JsonDocument& document;
     const json& root;
-    std::string folder;
+    std::string gltfFile;
     ImportedMaterial& imported;
     json kept = json::object();  // ImportedMaterial::gltfKept
     std::vector<MaterialTexture> textures;
@@ -83,7 +83,7 @@ struct Reading {
         for (const TextureSlot& slot : kTextureSlots) {
             if (slot.extension != extension) continue;
             if (!infos.count(slot.key)) {
-                auto info = readGltfTextureInfo(object, slot.key, root, folder);
+                auto info = readGltfTextureInfo(object, slot.key, root, gltfFile);
                 if (!info) continue;
                 infos[slot.key] = *info;
             }
@@ -115,10 +115,10 @@ float number(ObjectReader& reader, const char* key, double fallback, Bounds boun
 
 bool isGltfMaterialExtension(const std::string& name) { return kMaterialExtensions.count(name) > 0; }
 
-ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const JsonDocument& document, const std::string& folder,
+ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const JsonDocument& document, const std::string& gltfFile,
                                   int index) {
     ImportedMaterial imported;
-    Reading reading{document, root, folder, imported};
+    Reading reading{document, root, gltfFile, imported};
     Material& m = imported.material;
     m = Material::withDefaults(reader.string("name", "gltf material " + std::to_string(index)), BrdfModel::OpenPbr);
     std::map<std::string, glm::vec2> ranges;      // scalar textures: [0, factor]

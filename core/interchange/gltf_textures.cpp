@@ -2,9 +2,10 @@
 #include "interchange/gltf_textures.h"
 
 #include <cmath>
-#include <filesystem>
 
 #include "texture/texture_image.h"
+#include "util/reference_confinement.h"
+#include "util/referenced_file_error.h"
 #include "util/referenced_path.h"
 
 namespace glint {
@@ -109,7 +110,7 @@ GltfUvTransform gltfUvTransformOf(const MaterialTexture& texture) {
 }
 
 std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const std::string& key, const json& root,
-                                                   const std::string& folder) {
+                                                   const std::string& gltfFile) {
     if (!parent.has(key)) return std::nullopt;
     ObjectReader reader = parent.object(key);
     GltfTextureInfo info;
@@ -123,7 +124,11 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
     if (image.contains("uri")) {
         if (!image["uri"].is_string()) reader.fail("index", "the image's \"uri\" is not a string");
         info.uri = percentDecoded(image["uri"].get<std::string>());
-        if (info.uri.rfind("data:", 0) != 0) info.file = (std::filesystem::path(folder) / info.uri).lexically_normal().string();
+        if (info.uri.rfind("data:", 0) != 0) {
+            auto confined = confinedReference(info.uri, {gltfFile});
+            if (confined) info.file = confined->string();
+            else info.refusal = confined.error().message;
+        }
     }
     if (texture.contains("sampler")) {
         if (!texture["sampler"].is_number_unsigned()) reader.fail("index", "texture " + std::to_string(index) + ": \"sampler\" is not an index");
@@ -150,6 +155,7 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
 }
 
 Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std::string& parameter, TextureColorSpace colorSpace) {
+    if (!info.refusal.empty()) return makeError(info.pointer + ": " + info.refusal);
     if (info.file.empty())
         return makeError(info.pointer + ": the image is " + (info.uri.empty() ? "in a buffer view" : "a data URI") +
                          "; Glint reads texture images from files beside the glTF");
@@ -164,7 +170,7 @@ Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std:
     texture.wrapV = info.wrapV;
     applyGltfUvTransform(texture, info.transform);
     auto image = loadTextureImage(texture.file, colorSpace);
-    if (!image) return makeError(info.pointer + ": " + image.error().format());
+    if (!image) return makeError(info.pointer + ": " + referencedFileProblem(texture.file, image.error(), "image"));
     texture.image = *image;
     return texture;
 }

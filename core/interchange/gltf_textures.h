@@ -43,12 +43,14 @@ struct GltfTextureInfo {
     int texCoord = 0;
     GltfUvTransform transform;
     float scale = 1.0f;     // normalTexture.scale / occlusionTexture.strength
+    std::string refusal;    // why the image file outside the glTF's folder is not read; empty when it is not refused
 };
 
 // Reads the textureInfo at `key` of `parent` (nothing when absent). `root` is the whole glTF,
-// `folder` the file's folder. Malformed indices and values throw a located JsonReadError.
+// `gltfFile` the file, whose folder confines its image files (util/reference_confinement.h).
+// Malformed indices and values throw a located JsonReadError.
 std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const std::string& key, const nlohmann::json& root,
-                                                   const std::string& folder);
+                                                   const std::string& gltfFile);
 
 // A MaterialTexture on `parameter` from the texture's image (decoded; an error names the file
 // and the textureInfo), with its sampler state and UV transform.

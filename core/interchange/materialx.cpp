@@ -17,6 +17,8 @@
 #include "interchange/xml_document.h"
 #include "texture/texture_image.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
+#include "util/referenced_file_error.h"
 #include "util/text.h"
 
 namespace glint {
@@ -32,7 +34,8 @@ std::string shortestDecimal(float value) {
 }
 
 // The image on `parameter` as a material texture, or a warning saying why it is not rendered.
-void addTexture(const std::string& parameter, const MaterialXInput& input, const std::filesystem::path& folder,
+// Its file is confined to the document's folder (util/reference_confinement.h).
+void addTexture(const std::string& parameter, const MaterialXInput& input, const std::string& documentFile,
                 const ParamSpec* spec, ImportedMaterial& imported) {
     const MaterialXImage& image = *input.image;
     imported.textures.push_back({parameter, image.file, ""});
@@ -46,12 +49,14 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     MaterialTexture texture;
     texture.parameter = spec ? spec->name : kNormalMapKey;
     texture.kind = TextureKind::Image;
-    texture.file = (folder / image.file).lexically_normal().string();
+    auto confined = confinedReference(image.file, {documentFile, input.where.line, input.where.column});
+    if (!confined) return warn(confined.error().message);
+    texture.file = confined->string();
     texture.colorSpace = image.colorSpace;
     texture.channel = image.channel.value_or(TextureChannel::R);
     texture.tiling = image.tiling;
     auto decoded = loadTextureImage(texture.file, texture.colorSpace);
-    if (!decoded) return warn(decoded.error().format());
+    if (!decoded) return warn(referencedFileProblem(texture.file, decoded.error(), "image"));
     texture.image = *decoded;
     imported.material.analytic()->textures.push_back(std::move(texture));
 }
@@ -63,13 +68,12 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
     const auto table = modelInfo(BrdfModel::OpenPbr).params;
     const MaterialXInputs openPbr = toOpenPbrInputs(shader.name, *inputs, table, imported.warnings);
     imported.material = Material::withDefaults(name, BrdfModel::OpenPbr);
-    const std::filesystem::path folder = std::filesystem::path(document.file).parent_path();
     for (const auto& [parameter, input] : openPbr) {
         if (parameter == "geometry_normal") {
             if (!input.image->normalMap)
                 imported.warnings.push_back(makeError("warning: geometry_normal is driven by an image without a normalmap node; "
                                                           "it is read as a tangent-space normal map", input.where));
-            addTexture(parameter, input, folder, nullptr, imported);
+            addTexture(parameter, input, document.file, nullptr, imported);
             continue;
         }
         const ParamSpec& spec = table[findParam(table, parameter)];
@@ -79,7 +83,7 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
             imported.warnings.push_back(makeError("warning: '" + parameter + "' is outside Glint's range [" + shortestDecimal(spec.validMin) + ", " +
                                                       shortestDecimal(spec.validMax) + "]; read as the nearest value in it", input.where));
         setParam(imported.material, parameter, kept);
-        if (input.image) addTexture(parameter, input, folder, &spec, imported);
+        if (input.image) addTexture(parameter, input, document.file, &spec, imported);
     }
     GLINT_CHECK(!findOutOfRange(imported.material));
     return imported;

@@ -16,6 +16,7 @@
 #include "interchange/material_values.h"
 #include "interchange/text_checks.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
 #include "util/text.h"
 
 namespace glint {
@@ -207,7 +208,12 @@ void readStatement(const Line& line, MtlBlock& block, std::vector<Diagnostic>& w
         if (value != std::floor(value) || value < 0 || value > 10) line.fail("'illum' must be an integer 0-10");
         block.illum = static_cast<int>(value);
     } else if (kTextureStatements.count(keyword)) {
-        block.textures.push_back(readTexture(line));
+        TextureReference texture = readTexture(line);
+        // Kept as a reference only, never read; an outside one is not kept (util/reference_confinement.h).
+        if (auto confined = confinedReference(texture.path, {*line.file, line.number, 0}); confined)
+            block.textures.push_back(std::move(texture));
+        else
+            warnings.push_back(line.warning(confined.error().message + "; the texture map is left out"));
     } else if (kUnusedStatements.count(keyword)) {
         warnings.push_back(line.warning("'" + keyword + "' is valid MTL but Glint does not use it; ignored"));
     } else {  // Wavefront readers skip what they do not know (3ds Max's Km, vendors' own)

@@ -2,11 +2,12 @@
 #include "interchange/obj_material.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <sstream>
 
 #include "interchange/mtl.h"
 #include "util/file_io.h"
+#include "util/reference_confinement.h"
+#include "util/referenced_file_error.h"
 #include "util/text.h"
 
 namespace glint {
@@ -54,15 +55,20 @@ ObjMaterial readObjMaterial(const std::string& objPath) {
     const MaterialStatements statements = scanStatements(*text);
     if (statements.used.empty()) return result;  // faces without a material: Glint's default
     const std::string& firstUsed = statements.used.front();
-    const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
     for (const auto& [library, line] : statements.libraries) {
         if (result.material) break;  // found in an earlier library
         // One name per statement here (names with spaces are common; several libraries on one
         // line are rare).
-        auto loaded = loadMtl((folder / library).string());
+        const SourceLocation statement{objPath, line, 0};
+        auto confined = confinedReference(library, statement);
+        if (!confined) {
+            result.warnings.push_back(makeError("material library not used: " + confined.error().message, statement));
+            continue;
+        }
+        auto loaded = loadMtl(confined->string());
         if (!loaded) {
-            result.warnings.push_back(makeError("material library '" + library + "' not used: " + loaded.error().format(),
-                                                {objPath, line, 0}));
+            const std::string problem = referencedFileProblem(confined->string(), loaded.error(), ".mtl file");
+            result.warnings.push_back(makeError("material library '" + library + "' not used: " + problem, statement));
             continue;
         }
         auto named = std::find_if(loaded->materials.begin(), loaded->materials.end(),

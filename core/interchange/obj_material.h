@@ -1,6 +1,7 @@
 // The material a Wavefront .obj file gives its faces: its `mtllib` libraries (relative to the
-// .obj) read with Glint's own MTL reader (interchange/mtl.h) and its first `usemtl` looked up in
-// them, for a mesh loaded into the editor. Geometry is not read here (geometry/mesh_import.h).
+// .obj, confined to its folder: util/reference_confinement.h) read with Glint's own MTL reader
+// (interchange/mtl.h) and its first `usemtl` looked up in them, for a mesh loaded into the editor.
+// Geometry is not read here (geometry/mesh_import.h).
 #pragma once
 
 #include <optional>
@@ -16,9 +17,10 @@ struct ObjMaterial {
     std::vector<Diagnostic> warnings;          // a missing or broken library, an unknown name, …
 };
 
-// Never fails: the geometry is usable whatever its materials, so every problem is a warning
-// (located in the .obj or the .mtl). A mesh has one material in Glint: an .obj that uses several
-// gets its first, with a warning naming how many it uses. Other files (not .obj) give nothing.
+// Never fails: the geometry is usable whatever its materials, so every problem (a library
+// refused, missing or malformed: said without quoting it) is a warning located in the .obj or the
+// .mtl. A mesh has one material in Glint: an .obj that uses several gets its first, with a warning
+// naming how many it uses. Other files (not .obj) give nothing.
 ObjMaterial readObjMaterial(const std::string& objPath);
 
 }  // namespace glint

@@ -4,19 +4,19 @@
 #include <cmath>
 
 #include "environment/environment_source.h"
+#include "util/referenced_file_error.h"
 #include "util/referenced_path.h"
 
 namespace glint {
 
-Environment readEnvironment(ObjectReader& root, const std::string& sceneFile, EnvironmentMapLoading loading) {
+Environment readEnvironment(ObjectReader& root, EnvironmentMapLoading loading) {
     Environment environment;
     if (!root.has("environment")) return environment;
     ObjectReader reader = root.object("environment");
     environment.kind = static_cast<EnvironmentKind>(reader.choice("type", kEnvironmentKindIds, 0));
     if (environment.kind == EnvironmentKind::File) {
-        const std::string written = reader.requiredString("file");
-        if (written.empty()) reader.fail("file", "names no file");
-        environment.file = resolveReferencedPath(written, sceneFile).string();
+        if (reader.requiredString("file").empty()) reader.fail("file", "names no file");
+        environment.file = reader.referencedFile("file").string();
     }
     environment.rotationDegrees =
         static_cast<float>(reader.number("rotation_degrees", environment.rotationDegrees, Bounds::between(-360, 360)));
@@ -24,8 +24,10 @@ Environment readEnvironment(ObjectReader& root, const std::string& sceneFile, En
     environment.showAsBackground = reader.boolean("show_as_background", environment.showAsBackground);
     reader.rejectUnknownKeys();
     if (loading == EnvironmentMapLoading::Later) environment.file = absoluteEnvironmentFile(environment);
-    else if (Status loaded = loadEnvironment(environment); !loaded)
-        reader.fail(environment.kind == EnvironmentKind::File ? "file" : "type", loaded.error().format());
+    else if (Status loaded = loadEnvironment(environment); !loaded && environment.kind == EnvironmentKind::File)
+        reader.fail("file", referencedFileProblem(environment.file, loaded.error(), "environment map"));
+    else if (!loaded)
+        reader.fail("type", loaded.error().format());
     return environment;
 }
 

@@ -14,9 +14,10 @@ namespace glint {
 // worker thread: editor/environment_loading.h).
 enum class EnvironmentMapLoading { Now, Later };
 
-// Reads root["environment"] if present (a relative "file" is taken from the folder of
-// `sceneFile`) and, Now, loads its map; throws JsonReadError through the reader on any mistake.
-Environment readEnvironment(ObjectReader& root, const std::string& sceneFile, EnvironmentMapLoading loading);
+// Reads root["environment"] if present (a relative "file" is taken from the folder of the scene
+// file, and confined to it: ObjectReader::referencedFile) and, Now, loads its map; throws
+// JsonReadError through the reader on any mistake.
+Environment readEnvironment(ObjectReader& root, EnvironmentMapLoading loading);
 
 // The "environment" object, or null for none; its file relative to the folder of `sceneFile`
 // (absolute when "": util/referenced_path.h).

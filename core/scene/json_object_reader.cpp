@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "util/reference_confinement.h"
+
 namespace glint {
 namespace {
 
@@ -103,6 +105,13 @@ std::string ObjectReader::string(const std::string& key, const std::string& fall
 std::string ObjectReader::requiredString(const std::string& key) {
     if (!has(key)) failHere(what_ + " needs the key '" + key + "'");
     return string(key, "");
+}
+
+std::filesystem::path ObjectReader::referencedFile(const std::string& key) {
+    const std::string written = requiredString(key);
+    auto confined = confinedReference(written, {document_.file(), 0, 0});
+    if (!confined) fail(key, confined.error().message);
+    return *confined;
 }
 
 std::vector<double> ObjectReader::numberArray(const std::string& key, size_t count, Bounds bounds) {

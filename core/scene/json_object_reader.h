@@ -4,6 +4,7 @@
 // their boundary and return a Result, so no exception leaves core.
 #pragma once
 
+#include <filesystem>
 #include <limits>
 #include <set>
 #include <span>
@@ -49,6 +50,9 @@ public:
     bool boolean(const std::string& key, bool fallback);
     std::string string(const std::string& key, const std::string& fallback);
     std::string requiredString(const std::string& key);
+    // The file a required string names, resolved against this document's folder and confined to
+    // it (util/reference_confinement.h); a refused path fails at the key.
+    std::filesystem::path referencedFile(const std::string& key);
     glm::vec3 vec3(const std::string& key, glm::vec3 fallback, Bounds bounds = Bounds::any());
     glm::vec2 vec2(const std::string& key, glm::vec2 fallback, Bounds bounds = Bounds::any());
     glm::vec4 vec4(const std::string& key, glm::vec4 fallback, Bounds bounds = Bounds::any());

@@ -54,8 +54,7 @@ Status upgradeOlderVersion(JsonDocument& document, bool isScene) {
 
 constexpr const char* kMaterialReservedKeys[] = {"name", "model", "format", "version"};
 
-// `file`: the scene or material file, against which texture paths are resolved.
-Material readMaterial(ObjectReader& reader, const std::string& file) {
+Material readMaterial(ObjectReader& reader) {
     Material material;
     material.name = reader.string("name", "material");
     if (reader.has("brdf_file")) return readCustomBrdfMaterial(reader, std::move(material.name));  // a .brdf file
@@ -69,7 +68,7 @@ Material readMaterial(ObjectReader& reader, const std::string& file) {
     }
     AnalyticMaterial& analytic = material.kind.emplace<AnalyticMaterial>(
         AnalyticMaterial{*model, readParamValues(reader, modelInfo(*model).params)});
-    readMaterialTextures(reader, analytic, file);
+    readMaterialTextures(reader, analytic);
     reader.rejectUnknownKeys(kMaterialReservedKeys);
     return material;
 }
@@ -213,7 +212,7 @@ json backgroundToJson(const Background& background) {
 constexpr const char* kShapes[] = {"sphere", "plane", "cube", "torus", "mesh"};  // order of Shape
 constexpr const char* kInterpolations[] = {"exact", "flat", "gouraud", "phong"};  // order of SurfaceInterpolation
 
-SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materials, const std::string& sceneFile) {
+SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materials) {
     SceneObject object;
     if (!reader.has("shape")) reader.failHere("an object needs the key 'shape' (sphere, plane, cube, torus or mesh)");
     const int shape = reader.choice("shape", kShapes, 0);
@@ -221,7 +220,7 @@ SceneObject readObject(ObjectReader& reader, const std::vector<Material>& materi
     switch (shape) {
         case 0: object.shape = readSphereShape(reader); break;
         case 1: object.shape = readPlaneShape(reader); break;
-        default: object.shape = readMeshLikeShape(reader, shape, sceneFile); break;
+        default: object.shape = readMeshLikeShape(reader, shape); break;
     }
     object.interpolation = static_cast<SurfaceInterpolation>(
         reader.choice("interpolation", kInterpolations, static_cast<int>(defaultInterpolation(object.shape))));
@@ -289,7 +288,7 @@ Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment)
         scene.camera = readCamera(camera);
     }
     scene.background = readBackground(root);
-    scene.environment = readEnvironment(root, document.file(), environment);
+    scene.environment = readEnvironment(root, environment);
     if (root.has("display")) {
         ObjectReader display = root.object("display");
         scene.display.exposureStops = static_cast<float>(display.number("exposure", 0.0, Bounds::between(-30, 30)));
@@ -310,12 +309,12 @@ Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment)
         }
         display.rejectUnknownKeys();
     }
-    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader, document.file()));
+    for (ObjectReader& reader : root.objectArray("materials")) scene.materials.push_back(readMaterial(reader));
     for (ObjectReader& reader : root.objectArray("lights")) scene.lights.push_back(readLight(reader));
     if (scene.lights.size() > static_cast<size_t>(kMaxLights))
         root.fail("lights", std::to_string(scene.lights.size()) + " lights: " + lightLimitExplanation());
     checkShadowedLightCount(root, scene.lights);
-    for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials, document.file()));
+    for (ObjectReader& reader : root.objectArray("objects")) scene.objects.push_back(readObject(reader, scene.materials));
     root.rejectUnknownKeys();
     return scene;
 }
@@ -387,7 +386,7 @@ Result<Material> parseMaterial(const std::string& text, const std::string& file)
     try {
         ObjectReader root = readRoot(*document, "material");
         readHeader(root, kMaterialFormat);
-        return readMaterial(root, document->file());
+        return readMaterial(root);
     } catch (const JsonReadError& error) {
         return error.diagnostic;
     }

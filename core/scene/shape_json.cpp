@@ -3,6 +3,7 @@
 
 #include "geometry/mesh_import.h"
 #include "scene/json_vectors.h"
+#include "util/referenced_file_error.h"
 #include "util/referenced_path.h"
 
 namespace glint {
@@ -13,10 +14,11 @@ using nlohmann::json;
 // "rotation": [x, y, z] in degrees, turned about x, then y, then z, about the shape's centre.
 glm::vec3 readRotation(ObjectReader& reader) { return reader.vec3("rotation", glm::vec3(0.0f), Bounds::between(-3600.0, 3600.0)); }
 
-MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
+MeshShape readMeshShape(ObjectReader& reader) {
     MeshShape mesh;
     mesh.path = reader.requiredString("path");
     if (mesh.path.empty()) reader.fail("path", "must name a mesh file");
+    mesh.resolvedPath = reader.referencedFile("path").string();
     mesh.center = reader.vec3("center", mesh.center);
     mesh.scale = static_cast<float>(reader.number("scale", mesh.scale, Bounds::positive()));
     mesh.smoothingAngleDegrees = static_cast<float>(
@@ -25,9 +27,8 @@ MeshShape readMeshShape(ObjectReader& reader, const std::string& sceneFile) {
     if (up != "y" && up != "z") reader.fail("up", "expected \"y\" or \"z\" (the file's axis that points up)");
     mesh.upAxis = up == "z" ? MeshUpAxis::Z : MeshUpAxis::Y;
     mesh.rotationDegrees = readRotation(reader);
-    mesh.resolvedPath = resolveReferencedPath(mesh.path, sceneFile).string();
     auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees, mesh.upAxis});
-    if (!imported) reader.fail("path", imported.error().format());
+    if (!imported) reader.fail("path", referencedFileProblem(mesh.resolvedPath, imported.error(), "mesh"));
     if (mesh.rotationDegrees != glm::vec3(0.0f)) {  // about the mesh's centre, the origin of its unit sphere
         Mesh turned = *imported->mesh;
         rotateMesh(turned, glm::vec3(0.0f), mesh.rotationDegrees);
@@ -60,7 +61,7 @@ PlaneShape readPlaneShape(ObjectReader& reader) {
     return plane;
 }
 
-Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string& sceneFile) {
+Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex) {
     if (shapeIndex == 2) {
         CubeShape cube;
         cube.center = reader.vec3("center", cube.center);
@@ -78,7 +79,7 @@ Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string&
         torus.rotationDegrees = readRotation(reader);
         return torus;
     }
-    return readMeshShape(reader, sceneFile);
+    return readMeshShape(reader);
 }
 
 json shapeToJson(const Shape& shape, const std::string& sceneFile) {

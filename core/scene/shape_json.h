@@ -15,8 +15,9 @@ namespace glint {
 SphereShape readSphereShape(ObjectReader& reader);
 PlaneShape readPlaneShape(ObjectReader& reader);
 // `shapeIndex` is 2 cube, 3 torus, 4 mesh (Shape's alternatives). A mesh is imported here, its
-// path resolved against the folder of `sceneFile`; an import error fails at the "path" key.
-Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex, const std::string& sceneFile);
+// path resolved against the folder of the scene file and confined to it
+// (ObjectReader::referencedFile); an import error fails at the "path" key.
+Shape readMeshLikeShape(ObjectReader& reader, int shapeIndex);
 
 // The shape's own keys (not "shape" itself). A mesh's path is written relative to the folder of
 // `sceneFile`, or absolute when it is "" (util/referenced_path.h).

@@ -4,6 +4,7 @@
 #include "scene/json_vectors.h"
 #include "texture/texture_edit.h"
 #include "texture/texture_image.h"
+#include "util/referenced_file_error.h"
 #include "util/referenced_path.h"
 
 namespace glint {
@@ -34,15 +35,14 @@ glm::vec3 readValue(ObjectReader& reader, const char* key, glm::vec3 fallback, c
     return glm::vec3(static_cast<float>(reader.number(key, fallback.x, bounds)));
 }
 
-MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, const ParamSpec* spec,
-                            const std::string& referencingFile) {
+MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, const ParamSpec* spec) {
     if (!reader.has("type")) reader.failHere("a texture needs the key 'type' (image, checker, marble or wood)");
     const auto kind = static_cast<TextureKind>(reader.choice("type", kKinds, 0));
     if (!spec && kind != TextureKind::Image) reader.fail("type", "the normal map must be an image");
     MaterialTexture texture = defaultTexture(parameter, spec, kind);
     if (kind == TextureKind::Image) {
         const std::string file = reader.requiredString("file");
-        texture.file = resolveReferencedPath(file, referencingFile).string();
+        texture.file = reader.referencedFile("file").string();
         texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(texture.colorSpace)));
         texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(texture.filter)));
         if (reader.has("min_filter")) texture.minFilter = static_cast<TextureMinFilter>(reader.choice("min_filter", kMinFilters, 0) + 1);
@@ -60,7 +60,7 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
             texture.range.y = readValue(reader, "max", glm::vec3(texture.range.y), spec).x;
         }
         auto image = loadTextureImage(texture.file, texture.colorSpace);
-        if (!image) reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + image.error().format());
+        if (!image) reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + referencedFileProblem(texture.file, image.error(), "image"));
         if (Status inRange = checkTexelRange(**image, texture, spec); !inRange)
             reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + inRange.error().format() +
                                     "; texture values must lie in [0, 1]");
@@ -82,7 +82,7 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
 
 }  // namespace
 
-void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& material, const std::string& referencingFile) {
+void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& material) {
     if (!materialReader.has("textures")) return;
     const json& node = materialReader.take("textures");
     if (!node.is_object()) materialReader.fail("textures", "must be an object keyed by parameter name");
@@ -94,7 +94,7 @@ void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& materi
         if (!error.empty()) textures.fail(parameter, error);
         if (!value.is_object()) textures.fail(parameter, "a texture is an object with a 'type'");
         ObjectReader reader = textures.object(parameter);
-        putTexture(material, readTexture(reader, parameter, spec, referencingFile));  // table order
+        putTexture(material, readTexture(reader, parameter, spec));  // table order
     }
     if (material.textures.size() > static_cast<size_t>(kMaxMaterialTextures))
         materialReader.fail("textures", "at most " + std::to_string(kMaxMaterialTextures) + " textures per material");

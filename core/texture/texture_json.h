@@ -13,9 +13,10 @@
 namespace glint {
 
 // Reads material["textures"] into material.textures (its model already set); image files
-// are resolved against the directory of `referencingFile` and decoded. Throws JsonReadError
-// through `materialReader`, as every reader of the file format does.
-void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& material, const std::string& referencingFile);
+// are resolved against the directory of the JSON file, confined to it
+// (ObjectReader::referencedFile) and decoded. Throws JsonReadError through `materialReader`, as
+// every reader of the file format does.
+void readMaterialTextures(ObjectReader& materialReader, AnalyticMaterial& material);
 
 // The "textures" object, or null when the material has none. Image paths are written relative
 // to the directory of `targetFile` (absolute when it is empty).

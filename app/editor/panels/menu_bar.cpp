@@ -83,6 +83,11 @@ void drawViewMenu(EditorState& state) {
     // kept in settings.json.
     if (ImGui::MenuItem("Simplify meshes and shadows while dragging", nullptr, &state.settings.simplifyMeshesWhileDragging))
         saveSettings(state.settings);
+    // Files a file names outside its own folder (util/reference_confinement.h); kept in settings.json.
+    if (ImGui::MenuItem(kAllowOutsideReferencesSetting, nullptr, &state.settings.allowOutsideReferences)) {
+        setOutsideReferencesAllowed(state.settings.allowOutsideReferences);
+        saveSettings(state.settings);
+    }
     ImGui::Separator();  // the classroom's compare views (classroom/compare_view.h)
     if (ImGui::MenuItem("Compare materials…")) openCompareView(state, false);
     if (ImGui::MenuItem("Shading interpolation…")) openCompareView(state, true);

@@ -31,5 +31,7 @@ void drawEnvironmentSection(EditorState& state);
 void drawDialogs(EditorState& state);
 // The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel.
 void drawMeshLoadDialog(EditorState& state);
+// The modal that asks about files refused outside a file's folder (reference_prompt.cpp).
+void drawReferencePrompt(EditorState& state);
 
 }  // namespace glint
