@@ -122,7 +122,7 @@ void drawRecoveryOffer(EditorState& state) {
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard")) {
+    if (ImGui::Button("Discard (Delete)") || takeKeyPress(GLFW_KEY_DELETE)) {
         removeRecoveryFile(work.recoveryPath);
         state.recoveryOffer.erase(state.recoveryOffer.begin());
         ImGui::CloseCurrentPopup();
@@ -132,8 +132,7 @@ void drawRecoveryOffer(EditorState& state) {
 
 // A file with several materials: pick one by index and name (Enter or double-click), Esc cancels.
 void drawMaterialChoice(EditorState& state) {
-    // One modal at a time: the recovery offer at start (with `glint FILE`) is answered first.
-    if (!state.materialChoice || !state.recoveryOffer.empty()) return;
+    if (!state.materialChoice) return;
     if (!ImGui::IsPopupOpen("Choose a material")) ImGui::OpenPopup("Choose a material");
     centreNextWindow();
     if (!ImGui::BeginPopupModal("Choose a material", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
@@ -213,7 +212,14 @@ void drawHelpWindow(EditorState& state) {
 }  // namespace
 
 void drawDialogs(EditorState& state) {
-    drawRecoveryOffer(state);
+    drawHelpWindow(state);  // an ordinary window: before every modal (see panels.h)
+    // One modal at a time, and the recovery offer at start first: the lesson `glint present`
+    // opens, or the file given on the command line, may ask something of its own meanwhile.
+    if (!state.recoveryOffer.empty()) {
+        drawRecoveryOffer(state);
+        return;
+    }
+    drawMeshLoadDialog(state);
     drawUnsavedPrompt(state);
     handleFileBrowser(state);
     drawMaterialChoice(state);
