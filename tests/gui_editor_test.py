@@ -43,7 +43,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+from gui_test_support import WAIT_SECONDS, pixel, region_difference, run_scenario_from_arguments, wait_until, write_png  # noqa: E402
 
 # Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
 # left, material column 360 px on the right, status bar at the bottom). The light handle, shadow,
@@ -83,7 +83,7 @@ class Editor:
         self.process, self.window = x.start_editor([glint, *args], environment, output)
         self.log = ""
 
-    def wait_exit(self, timeout=20):
+    def wait_exit(self, timeout=WAIT_SECONDS):
         code = self.process.wait(timeout=timeout)
         self.log = self.process.communicate()[0]
         return code
@@ -194,10 +194,7 @@ def scenario_save_reopen(x, glint, output, state):
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name
         type_path(x, path)
-        deadline = time.time() + 20
-        while not os.path.exists(path) and time.time() < deadline:
-            time.sleep(0.2)
-        assert os.path.exists(path), "Ctrl+S did not write the scene"
+        wait_until(lambda: os.path.exists(path), f"Ctrl+S to write {path}")
         with open(path) as saved:
             scene = json.load(saved)
         assert len(scene["lights"]) == 2, f"expected 2 lights (the key and the added one) in the saved scene, found {len(scene['lights'])}"
@@ -214,9 +211,7 @@ def scenario_save_reopen(x, glint, output, state):
         x.wait_for(differs(reopened), "the second drag to show")
         time.sleep(0.3)
         x.key("ctrl+s")  # the scene has a path now: no dialog
-        deadline = time.time() + 20
-        while os.stat(path).st_mtime_ns == first_write and time.time() < deadline:
-            time.sleep(0.2)
+        wait_until(lambda: os.stat(path).st_mtime_ns != first_write, f"Ctrl+S to write {path} again")
         with open(path) as saved:
             second = json.load(saved)["materials"][0]["exponent"]
         assert second > exponent, f"Ctrl+S did not save the second edit ({second} vs {exponent})"
@@ -236,10 +231,7 @@ def scenario_recovery(x, glint, output, state):
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
         edited = x.wait_stable(VIEWPORT)
-        deadline = time.time() + 15
-        while not recovery_files(state) and time.time() < deadline:
-            time.sleep(0.2)
-        assert recovery_files(state), "autosave wrote no recovery file"
+        wait_until(lambda: recovery_files(state), "autosave to write a recovery file")
         editor.process.send_signal(signal.SIGKILL)
         editor.process.wait(timeout=10)
 
@@ -423,10 +415,7 @@ def scenario_screenshot(x, glint, output, state):
         for path in (png, exr):
             x.key("F12")
             type_path(x, path)
-            deadline = time.time() + 20
-            while not os.path.exists(path) and time.time() < deadline:
-                time.sleep(0.2)
-            assert os.path.exists(path), f"F12 wrote no {path}"
+            wait_until(lambda: os.path.exists(path), f"F12 to write {path}")
             x.wait_for(lambda shot: not modal_shown(base)(shot), "the file browser to close")
         with open(png, "rb") as image:
             header = image.read(24)
