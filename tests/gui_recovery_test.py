@@ -7,6 +7,8 @@ start. One scenario per ctest entry:
   present_discard  `glint present LIST`: Delete discards (lesson 1 stays, the recovery file goes)
   editor_recover   `glint`: Enter recovers, as above
   file_discard     `glint FILE`: Delete discards (FILE stays open, unchanged; the recovery file goes)
+  corrupt_file     `glint BROKEN`: the offer comes first, alone; once Enter recovers, the error
+                   naming BROKEN's line follows, and the recovered scene stays
 usage: gui_recovery_test.py GLINT OUTPUT_DIR SCENARIO"""
 import glob
 import json
@@ -118,6 +120,26 @@ def scenario_file_discard(x, glint, output, state):
     before = open(opened, "rb").read()
     discard(x, glint, output, state, [opened], "opened.json")
     assert open(opened, "rb").read() == before, "the opened file changed"
+
+
+def scenario_corrupt_file(x, glint, output, state):
+    broken = os.path.join(output, "broken.json")
+    with open(broken, "w") as file:
+        file.write('{\n  "format": "glint-scene",\n  "version": 1,\n  "lights": [{"type": "point", "power": -5}]\n}\n')
+    editor, _ = offered(x, glint, output, state, [broken])
+    try:
+        assert "Error" not in editor.layout()["window"], "the error shows beside the recovery offer"
+        x.key("Return")
+        layout = editor.wait_layout(lambda l: "Error" in l["window"], "the error about the broken file after the offer")
+        assert OFFER not in layout["window"], "the offer and the error show at once"
+        said = editor.output()
+        assert "broken.json:4" in said, f"the error does not name broken.json's line 4: {said[-400:]!r}"
+        x.key("Return")  # OK
+        editor.wait_layout(lambda l: "Error" not in l["window"], "the error to close (Enter)")
+        title = editor.wait_for_title("recovered.json ●")
+    finally:
+        editor.stop()
+    print(f"ok: the offer came first; after Enter recovered ({title!r}) the error named broken.json:4")
 
 
 if __name__ == "__main__":

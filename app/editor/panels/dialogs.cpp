@@ -31,8 +31,12 @@ void centreNextWindow() {
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
 }
 
+// ImGui keeps one popup per level: opening a modal closes any other one open. A modal that may be
+// asked for while another is up (an error from a background job, a close request) waits for it.
+bool noPopupOpen() { return !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel); }
+
 void drawUnsavedPrompt(EditorState& state) {
-    if (state.unsavedPromptRequested) {
+    if (state.unsavedPromptRequested && noPopupOpen()) {
         ImGui::OpenPopup("Unsaved changes");
         state.unsavedPromptRequested = false;
     }
@@ -73,7 +77,7 @@ void drawUnsavedPrompt(EditorState& state) {
 }
 
 void drawErrorModal(EditorState& state) {
-    if (!state.errorMessage.empty() && !ImGui::IsPopupOpen("Error")) {
+    if (!state.errorMessage.empty() && noPopupOpen()) {
         ImGui::OpenPopup("Error");
         std::fprintf(stderr, "glint: %s\n", state.errorMessage.c_str());  // the log keeps what the modal says
     }
