@@ -113,14 +113,16 @@ class XServer:
 
     def key(self, *keys, hold_seconds=0.15):
         """Presses keys such as "ctrl+z" or "Return" (xdotool names), one after another, holding
-        each chord for hold_seconds so applications that sample key state per frame see it."""
+        each chord for hold_seconds so applications that sample key state per frame see it. A key
+        that closes the window (Ctrl+Q, "Don't save") may leave its release no window to go to:
+        a release that fails is no error."""
         for key in keys:
             parts = key.split("+")
             for part in parts:
                 self.run("xdotool", "keydown", part)
             time.sleep(hold_seconds)
             for part in reversed(parts):
-                self.run("xdotool", "keyup", part)
+                self.run("xdotool", "keyup", part, check=False)
             time.sleep(0.05)
 
     def type_text(self, text):
