@@ -140,9 +140,11 @@ def click_after_hover(x, where):
     x.click(*where)
 
 
-def type_path(x, path):
-    """The file browser's path field has the keyboard focus: replace its text and confirm."""
-    time.sleep(0.5)
+def type_path(x, before, path):
+    """Once the file browser shows (the screen differs from `before`, a shot without it) and has
+    finished drawing (its path field has the keyboard focus), replaces the field's text and confirms."""
+    x.wait_for(dialog_shown(before), "the file browser")
+    x.wait_stable(DIALOG_BOX)
     x.key("ctrl+a")
     x.type_text(path)
     x.key("Return")
@@ -193,7 +195,7 @@ def scenario_save_reopen(x, glint, output, state):
         before_save = x.wait_stable(VIEWPORT)
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name
-        type_path(x, path)
+        type_path(x, before_save, path)
         wait_until(lambda: os.path.exists(path), f"Ctrl+S to write {path}")
         with open(path) as saved:
             scene = json.load(saved)
@@ -385,7 +387,7 @@ def scenario_corrupt_open(x, glint, output, state):
         x.wait_for(differs(base), "the slider drag to show")
         edited = x.wait_stable(VIEWPORT)
         x.key("ctrl+o")
-        type_path(x, corrupt)
+        type_path(x, edited, corrupt)
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt before opening")
         time.sleep(0.3)
         x.key("n")  # don't save: open the other scene (which will fail)
@@ -414,7 +416,7 @@ def scenario_screenshot(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         for path in (png, exr):
             x.key("F12")
-            type_path(x, path)
+            type_path(x, base, path)
             wait_until(lambda: os.path.exists(path), f"F12 to write {path}")
             x.wait_for(lambda shot: not modal_shown(base)(shot), "the file browser to close")
         with open(png, "rb") as image:
@@ -527,8 +529,7 @@ def choose_texture(x, menu_item, button=DIFFUSE_TEXTURE_BUTTON):
 
 def open_texture_file(x, current, path, button=DIFFUSE_TEXTURE_BUTTON, menu_item=TEXTURE_MENU_IMAGE):
     choose_texture(x, menu_item, button)
-    x.wait_for(dialog_shown(current), "the file browser")
-    type_path(x, path)
+    type_path(x, current, path)
 
 
 def scenario_texture(x, glint, output, state):
@@ -578,7 +579,7 @@ def scenario_material_choice(x, glint, output, state):
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
         base = x.wait_stable(VIEWPORT)  # before the modal dims it
         x.key("ctrl+o")
-        type_path(x, library)
+        type_path(x, base, library)
         asked = x.wait_for(modal_shown(base), "the material question")
         save(asked, output, "material_choice_1_asked")
         time.sleep(0.3)
@@ -590,7 +591,7 @@ def scenario_material_choice(x, glint, output, state):
         x.key("ctrl+z")
         x.wait_for(matches(base), "Ctrl+Z to take the material off again")
         x.key("ctrl+o")
-        type_path(x, library)
+        type_path(x, base, library)
         x.wait_for(modal_shown(base), "the material question again")
         time.sleep(0.3)
         x.key("Escape")
