@@ -45,14 +45,14 @@ def leave_ended_editors_work(state, output):
 
 
 def offered(x, glint, output, state, arguments):
-    """Starts Glint with an ended editor's work waiting; returns the editor showing the offer and
-    the recovery file."""
+    """Starts Glint with an ended editor's work waiting; returns the editor, the recovery file and
+    the settled layout showing the offer."""
     recovery, leftovers = leave_ended_editors_work(state, output)
     editor = LoggedEditor(x, glint, output, state, arguments, env={"GLINT_LESSONS": LESSONS})
-    editor.settled_layout(lambda l: OFFER in l["window"], "the offer to recover the unsaved work")
+    layout = editor.settled_layout(lambda l: OFFER in l["window"], "the offer to recover the unsaved work")
     left = [path for path in leftovers if os.path.exists(path)]
     assert not left, f"the ended editor's leftovers are still there: {left}"
-    return editor, recovery
+    return editor, recovery, layout
 
 
 def editor_files(state):
@@ -70,7 +70,7 @@ def recover(x, glint, output, state, arguments):
     saved = os.path.join(output, "recovered.json")
     if os.path.exists(saved):
         os.remove(saved)  # an earlier run's
-    editor, _ = offered(x, glint, output, state, arguments)
+    editor, _, _ = offered(x, glint, output, state, arguments)
     try:
         x.key("Return")
         editor.wait_layout(lambda l: OFFER not in l["window"], "the offer to close (Enter)")
@@ -89,7 +89,7 @@ def recover(x, glint, output, state, arguments):
 
 
 def discard(x, glint, output, state, arguments, expected_title):
-    editor, recovery = offered(x, glint, output, state, arguments)
+    editor, recovery, _ = offered(x, glint, output, state, arguments)
     try:
         x.key("Delete")
         editor.wait_layout(lambda l: OFFER not in l["window"], "the offer to close (Delete)")
@@ -126,9 +126,9 @@ def scenario_corrupt_file(x, glint, output, state):
     broken = os.path.join(output, "broken.json")
     with open(broken, "w") as file:
         file.write('{\n  "format": "glint-scene",\n  "version": 1,\n  "lights": [{"type": "point", "power": -5}]\n}\n')
-    editor, _ = offered(x, glint, output, state, [broken])
+    editor, _, layout = offered(x, glint, output, state, [broken])
     try:
-        assert "Error" not in editor.layout()["window"], "the error shows beside the recovery offer"
+        assert "Error" not in layout["window"], "the error shows beside the recovery offer"
         x.key("Return")
         layout = editor.wait_layout(lambda l: "Error" in l["window"], "the error about the broken file after the offer")
         assert OFFER not in layout["window"], "the offer and the error show at once"
