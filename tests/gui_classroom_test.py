@@ -8,10 +8,9 @@ usage: gui_classroom_test.py GLINT OUTPUT_DIR SCENARIO"""
 import json
 import os
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+from gui_test_support import WAIT_SECONDS, pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
 
 VIEWPORT = (340, 40, 910, 760)
 LEFT_COLUMN = (10, 60, 320, 700)
@@ -24,19 +23,6 @@ def start_editor(x, glint, output, state):
     return x.start_editor([glint], environment, output)
 
 
-def window_title(x, window):
-    return x.run("xdotool", "getwindowname", window, check=False).stdout.strip()
-
-
-def wait_for_title(x, window, fragment, timeout=20.0):
-    deadline = time.time() + timeout
-    while time.time() < deadline:
-        if fragment in window_title(x, window):
-            return
-        time.sleep(0.25)
-    raise AssertionError(f"the window title never named {fragment!r} (it is {window_title(x, window)!r})")
-
-
 def drawn(x):
     """Waits for the default scene's lit red sphere (the first frames are black), then for calm."""
     def lit(shot):
@@ -47,12 +33,8 @@ def drawn(x):
 
 
 def finish(x, process):
-    # Nothing unsaved: Ctrl+Q quits at once, often before the keys are released (so the release
-    # may find no window to go to).
-    x.run("xdotool", "keydown", "ctrl", "q")
-    time.sleep(0.15)
-    x.run("xdotool", "keyup", "q", "ctrl", check=False)
-    code = process.wait(timeout=20)
+    x.key("ctrl+q")  # nothing unsaved: quits at once
+    code = process.wait(timeout=WAIT_SECONDS)
     assert code == 0, f"editor exited with {code}"
 
 
@@ -61,17 +43,17 @@ def scenario_lessons(x, glint, output, state):
     try:
         start = drawn(x)
         x.key("Next")  # PageDown: the first lesson
-        wait_for_title(x, window, "01_lambert.json")
+        x.wait_for_title(window, "01_lambert.json")
         first = x.wait_for(lambda shot: region_difference(shot, start, VIEWPORT) > 1.0, "lesson 1's picture")
         first = x.wait_stable(VIEWPORT)
         write_png(first, os.path.join(output, "lesson_1.png"))
         x.key("Right")
-        wait_for_title(x, window, "02_phong.json")
+        x.wait_for_title(window, "02_phong.json")
         second = x.wait_stable(VIEWPORT)
         write_png(second, os.path.join(output, "lesson_2.png"))
         assert region_difference(second, first, VIEWPORT) > 1.0, "lesson 2 looks like lesson 1"
         x.key("Left")
-        wait_for_title(x, window, "01_lambert.json")
+        x.wait_for_title(window, "01_lambert.json")
         finish(x, process)
         print("ok: PageDown opened lesson 1, Right lesson 2, Left lesson 1 again")
     finally:

@@ -43,7 +43,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+from gui_test_support import WAIT_SECONDS, pixel, region_difference, run_scenario_from_arguments, wait_until, write_png  # noqa: E402
 
 # Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
 # left, material column 360 px on the right, status bar at the bottom). The light handle, shadow,
@@ -83,7 +83,7 @@ class Editor:
         self.process, self.window = x.start_editor([glint, *args], environment, output)
         self.log = ""
 
-    def wait_exit(self, timeout=20):
+    def wait_exit(self, timeout=WAIT_SECONDS):
         code = self.process.wait(timeout=timeout)
         self.log = self.process.communicate()[0]
         return code
@@ -140,9 +140,11 @@ def click_after_hover(x, where):
     x.click(*where)
 
 
-def type_path(x, path):
-    """The file browser's path field has the keyboard focus: replace its text and confirm."""
-    time.sleep(0.5)
+def type_path(x, before, path):
+    """Once the file browser shows (the screen differs from `before`, a shot without it) and has
+    finished drawing (its path field has the keyboard focus), replaces the field's text and confirms."""
+    x.wait_for(dialog_shown(before), "the file browser")
+    x.wait_stable(DIALOG_BOX)
     x.key("ctrl+a")
     x.type_text(path)
     x.key("Return")
@@ -193,11 +195,8 @@ def scenario_save_reopen(x, glint, output, state):
         before_save = x.wait_stable(VIEWPORT)
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name
-        type_path(x, path)
-        deadline = time.time() + 20
-        while not os.path.exists(path) and time.time() < deadline:
-            time.sleep(0.2)
-        assert os.path.exists(path), "Ctrl+S did not write the scene"
+        type_path(x, before_save, path)
+        wait_until(lambda: os.path.exists(path), f"Ctrl+S to write {path}")
         with open(path) as saved:
             scene = json.load(saved)
         assert len(scene["lights"]) == 2, f"expected 2 lights (the key and the added one) in the saved scene, found {len(scene['lights'])}"
@@ -214,9 +213,7 @@ def scenario_save_reopen(x, glint, output, state):
         x.wait_for(differs(reopened), "the second drag to show")
         time.sleep(0.3)
         x.key("ctrl+s")  # the scene has a path now: no dialog
-        deadline = time.time() + 20
-        while os.stat(path).st_mtime_ns == first_write and time.time() < deadline:
-            time.sleep(0.2)
+        wait_until(lambda: os.stat(path).st_mtime_ns != first_write, f"Ctrl+S to write {path} again")
         with open(path) as saved:
             second = json.load(saved)["materials"][0]["exponent"]
         assert second > exponent, f"Ctrl+S did not save the second edit ({second} vs {exponent})"
@@ -236,10 +233,7 @@ def scenario_recovery(x, glint, output, state):
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
         edited = x.wait_stable(VIEWPORT)
-        deadline = time.time() + 15
-        while not recovery_files(state) and time.time() < deadline:
-            time.sleep(0.2)
-        assert recovery_files(state), "autosave wrote no recovery file"
+        wait_until(lambda: recovery_files(state), "autosave to write a recovery file")
         editor.process.send_signal(signal.SIGKILL)
         editor.process.wait(timeout=10)
 
@@ -393,7 +387,7 @@ def scenario_corrupt_open(x, glint, output, state):
         x.wait_for(differs(base), "the slider drag to show")
         edited = x.wait_stable(VIEWPORT)
         x.key("ctrl+o")
-        type_path(x, corrupt)
+        type_path(x, edited, corrupt)
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt before opening")
         time.sleep(0.3)
         x.key("n")  # don't save: open the other scene (which will fail)
@@ -422,11 +416,8 @@ def scenario_screenshot(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         for path in (png, exr):
             x.key("F12")
-            type_path(x, path)
-            deadline = time.time() + 20
-            while not os.path.exists(path) and time.time() < deadline:
-                time.sleep(0.2)
-            assert os.path.exists(path), f"F12 wrote no {path}"
+            type_path(x, base, path)
+            wait_until(lambda: os.path.exists(path), f"F12 to write {path}")
             x.wait_for(lambda shot: not modal_shown(base)(shot), "the file browser to close")
         with open(png, "rb") as image:
             header = image.read(24)
@@ -538,8 +529,7 @@ def choose_texture(x, menu_item, button=DIFFUSE_TEXTURE_BUTTON):
 
 def open_texture_file(x, current, path, button=DIFFUSE_TEXTURE_BUTTON, menu_item=TEXTURE_MENU_IMAGE):
     choose_texture(x, menu_item, button)
-    x.wait_for(dialog_shown(current), "the file browser")
-    type_path(x, path)
+    type_path(x, current, path)
 
 
 def scenario_texture(x, glint, output, state):
@@ -589,7 +579,7 @@ def scenario_material_choice(x, glint, output, state):
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
         base = x.wait_stable(VIEWPORT)  # before the modal dims it
         x.key("ctrl+o")
-        type_path(x, library)
+        type_path(x, base, library)
         asked = x.wait_for(modal_shown(base), "the material question")
         save(asked, output, "material_choice_1_asked")
         time.sleep(0.3)
@@ -601,7 +591,7 @@ def scenario_material_choice(x, glint, output, state):
         x.key("ctrl+z")
         x.wait_for(matches(base), "Ctrl+Z to take the material off again")
         x.key("ctrl+o")
-        type_path(x, library)
+        type_path(x, base, library)
         x.wait_for(modal_shown(base), "the material question again")
         time.sleep(0.3)
         x.key("Escape")

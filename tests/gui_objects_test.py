@@ -149,8 +149,7 @@ def scenario_open_mesh(x, glint, output, state):
     with start(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.key("ctrl+m")  # File ▸ Open mesh…: the file browser
-        time.sleep(1.0)
-        type_path(x, path)
+        type_path(x, base, path)
         x.wait_for(differs(base), "the octahedron to show")
         loaded = x.wait_stable(VIEWPORT)
         save(loaded, output, "open_mesh_1_octahedron")

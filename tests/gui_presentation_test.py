@@ -17,12 +17,10 @@ import hashlib
 import json
 import os
 import shutil
-import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+from gui_test_support import LoggedEditor, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
 
 LESSONS_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lessons")
 LESSONS = os.path.join(LESSONS_DIR, "lessons.json")
@@ -30,53 +28,8 @@ LESSONS = os.path.join(LESSONS_DIR, "lessons.json")
 RESERVED = ("lesson note", "probe angles", "Surface probe", "BRDF and Fresnel plots")
 
 
-class Editor:
-    """The editor with its stderr in a file, so the layout log can be read while it runs."""
-
-    def __init__(self, x, glint, output, state, arguments):
-        self.log_path = os.path.join(output, "editor.log")
-        self.log = open(self.log_path, "w")
-        environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LESSONS=LESSONS,
-                           GLINT_LOG_LAYOUT="1")
-        self.process = subprocess.Popen([glint, *arguments], env=environment, cwd=output, stdout=self.log,
-                                        stderr=subprocess.STDOUT)
-        self.window = x.find_window("Glint", process=self.process)
-
-    def layout(self):
-        """The last complete block of rectangles: {"screen": …, "viewport": …, "window": {name: rect}, "reserved": {…}}."""
-        with open(self.log_path, errors="replace") as log:
-            text = log.read()
-        blocks = text.split("glint layout: end\n")
-        if len(blocks) < 2:
-            return None
-        result = {"window": {}, "reserved": {}}
-        for line in blocks[-2].splitlines():
-            if not line.startswith("glint layout: "):
-                continue
-            kind, rest = line[len("glint layout: "):].split(" ", 1)
-            name, numbers = rest[1:].rsplit('" ', 1)
-            rect = tuple(float(v) for v in numbers.split())
-            if kind in ("screen", "viewport"):
-                result[kind] = rect
-            else:
-                result[kind][name] = rect
-        return result
-
-    def wait_layout(self, condition, what, timeout=30.0):
-        deadline = time.time() + timeout
-        layout = None
-        while time.time() < deadline:
-            layout = self.layout()
-            if layout and condition(layout):
-                return layout
-            time.sleep(0.25)
-        raise AssertionError(f"timed out waiting for {what}; the last layout: {layout}")
-
-    def stop(self):
-        if self.process.poll() is None:
-            self.process.kill()
-            self.process.wait(timeout=10)
-        self.log.close()
+def start(x, glint, output, state, arguments):
+    return LoggedEditor(x, glint, output, state, arguments, env={"GLINT_LESSONS": LESSONS})
 
 
 def overlap(a, b):
@@ -111,19 +64,17 @@ def check_layout(layout, width, height, reserved_free=True):
 
 
 def scenario_layout(x, glint, output, state, width, height):
-    editor = Editor(x, glint, output, state, ["present", LESSONS])
+    editor = start(x, glint, output, state, ["present", LESSONS])
     try:
-        first = editor.wait_layout(lambda l: "lesson note" in l["reserved"] and "Surface probe" in l["window"]
-                                   and l["screen"][2] == width, "lesson 1 with its note and the probe, full screen")
-        time.sleep(1.0)
-        check_layout(editor.layout(), width, height)
+        first = editor.settled_layout(lambda l: "lesson note" in l["reserved"] and "Surface probe" in l["window"]
+                                      and l["screen"][2] == width, "lesson 1 with its note and the probe, full screen")
+        check_layout(first, width, height)
         # The strips open one column at a time; the viewport keeps 70 %, and no window hides under a column.
+        layout = first
         for strip, column, other in (("##material strip", "Material", "Scene"), ("##scene strip", "Scene", "Material")):
-            sx, sy, sw, sh = editor.layout()["window"][strip]
+            sx, sy, sw, sh = editor.wait_layout(lambda l: strip in l["window"], f"the {strip}")["window"][strip]
             x.click(sx + sw / 2, sy + sh / 2)
-            layout = editor.wait_layout(lambda l: column in l["window"] and other not in l["window"], f"the {column} column")
-            time.sleep(1.0)
-            layout = editor.layout()
+            layout = editor.settled_layout(lambda l: column in l["window"] and other not in l["window"], f"the {column} column")
             check_layout(layout, width, height)
             for name, rect in layout["window"].items():
                 if name in ("Surface probe", "BRDF and Fresnel plots", "Lessons"):
@@ -137,9 +88,7 @@ def scenario_layout(x, glint, output, state, width, height):
         windows = (("b", "BRDF and Fresnel plots"), ("l", "Lessons"), ("F1", "Keyboard and mouse (F1)"))
         for key, name in windows:
             x.key(key)
-            editor.wait_layout(lambda l: name in l["window"], f"the {name} window ({key})")
-            time.sleep(1.0)  # windows settle over a few frames
-            layout = editor.layout()
+            layout = editor.settled_layout(lambda l: name in l["window"], f"the {name} window ({key})")
             write_png(x.screenshot(), os.path.join(output, f"{key}.png"))
             check_layout(layout, width, height)
             x.key(key)
@@ -147,19 +96,17 @@ def scenario_layout(x, glint, output, state, width, height):
         for key, name in windows:
             x.key(key)
             editor.wait_layout(lambda l: name in l["window"], f"the {name} window ({key})")
-        time.sleep(1.0)
-        layout = editor.layout()
+        layout = editor.settled_layout(lambda l: all(name in l["window"] for _, name in windows), "all three windows")
         write_png(x.screenshot(), os.path.join(output, "all.png"))
         check_layout(layout, width, height, reserved_free=False)
         for key, _ in windows:
             x.key(key)
         x.key("i")  # the probe off …
         editor.wait_layout(lambda l: "Surface probe" not in l["window"], "the probe to go (I)")
-        time.sleep(0.5)
-        before = x.screenshot()
-        x.key("w")  # … and the wireframe on: the picture changes
         v = layout["viewport"]
         middle = (int(v[0] + v[2] * 0.3), int(v[1] + v[3] * 0.3), int(v[0] + v[2] * 0.7), int(v[1] + v[3] * 0.7))
+        before = x.wait_stable(middle)
+        x.key("w")  # … and the wireframe on: the picture changes
         x.wait_for(lambda shot: region_difference(shot, before, middle) > 0.5, "the wireframe (W)")
         assert "●" not in x.run("xdotool", "getwindowname", editor.window).stdout, "W counted as an edit of the lesson"
         print(f"ok: at {width}×{height} the viewport is {first['viewport'][2]:.0f} px wide; each window keeps off "
@@ -199,30 +146,28 @@ def scenario_lessons(x, glint, output, state):
         count = len(json.load(file)["lessons"])
     shots = os.environ.get("GLINT_LESSON_SHOTS")
     x.run("xset", "r", "off")  # a PageDown held while the machine is busy must not auto-repeat into two steps
-    editor = Editor(x, glint, output, state, ["present", LESSONS])
+    editor = start(x, glint, output, state, ["present", LESSONS])
     try:
         for index in range(1, count + 1):
             if index > 1:
                 x.key("Next")
-            editor.wait_layout(lambda l: "lesson note" in l["reserved"] and l["screen"][2] > 0, f"lesson {index}")
-            deadline = time.time() + 20
-            while f"Lesson {index} —" not in x.run("xdotool", "getwindowname", editor.window, check=False).stdout:
-                assert time.time() < deadline, f"lesson {index} did not open"
-                time.sleep(0.2)
-            cx, cy = free_point(editor.layout())
+            editor.wait_for_title(f"Lesson {index} —")
+            layout = editor.settled_layout(lambda l: "lesson note" in l["reserved"] and l["screen"][2] > 0,
+                                           f"lesson {index} with its note")
             if shots:
-                time.sleep(1.5)
-                x.wait_stable((0, 0, 400, 300))
-                write_png(x.screenshot(), os.path.join(shots, f"lesson_{index:02d}.png"))
+                write_png(x.wait_stable((0, 0, 400, 300)), os.path.join(shots, f"lesson_{index:02d}.png"))
+            cx, cy = free_point(layout)
             x.drag((cx, cy), (cx + 80, cy + 20))  # orbit: looking around, not an edit
-            time.sleep(0.3)
-            layout = editor.layout()
+            viewport = tuple(int(v) for v in (layout["viewport"][0], layout["viewport"][1],
+                                              layout["viewport"][0] + layout["viewport"][2], layout["viewport"][1] + layout["viewport"][3]))
+            x.wait_stable(viewport)  # the drag's events are all drawn
+            layout = editor.settled_layout(lambda l: True, f"lesson {index} after the orbit")
             assert "Unsaved changes" not in layout["window"], f"orbiting lesson {index} asked to save"
+            assert "●" not in x.window_title(editor.window), f"orbiting lesson {index} counted as an edit"
         x.key("Next")  # past the last lesson: stays, asks nothing
-        time.sleep(0.5)
-        assert "Unsaved changes" not in editor.layout()["window"]
-        x.key("ctrl+q")
-        editor.process.wait(timeout=20)
+        x.key("ctrl+q")  # quits at once: nothing asked, as nothing was edited
+        code = editor.wait_exit()
+        assert code == 0, f"the editor exited with {code}"
         assert editor.process.returncode == 0, f"the editor exited with {editor.process.returncode}"
     finally:
         editor.stop()
@@ -234,21 +179,20 @@ def scenario_prompt(x, glint, output, state):
     scene = os.path.join(output, "edited.json")
     shutil.copy(os.path.join(LESSONS_DIR, "01_lambert.json"), scene)
     stamp = (os.stat(scene).st_mtime_ns, open(scene, "rb").read())
-    editor = Editor(x, glint, output, state, [scene])
+    editor = start(x, glint, output, state, [scene])
     try:
-        editor.wait_layout(lambda l: "##status" in l["window"], "the editor")
-        time.sleep(1.0)
+        editor.settled_layout(lambda l: "##status" in l["window"], "the editor")
         x.key("w")  # the wireframe overlay is saved with the scene: an edit
-        time.sleep(0.5)
+        editor.wait_for_title("●")
         x.key("ctrl+n")
         editor.wait_layout(lambda l: "Unsaved changes" in l["window"], "the unsaved-changes prompt")
-        x.key("Return")
-        time.sleep(1.0)
-        assert "Unsaved changes" in editor.layout()["window"], "Enter answered the prompt"
-        assert (os.stat(scene).st_mtime_ns, open(scene, "rb").read()) == stamp, "Enter saved the scene"
-        x.key("Escape")
+        # Enter, then Escape: had Enter answered (saved, or started the new scene), Escape would find
+        # no prompt, and the file or the title would show it.
+        x.key("Return", "Escape")
         editor.wait_layout(lambda l: "Unsaved changes" not in l["window"], "Escape to cancel")
-        assert (os.stat(scene).st_mtime_ns, open(scene, "rb").read()) == stamp
+        assert (os.stat(scene).st_mtime_ns, open(scene, "rb").read()) == stamp, "Enter saved the scene"
+        title = x.window_title(editor.window)
+        assert "edited.json" in title and "●" in title, f"Enter answered the prompt: the title is {title!r}"
     finally:
         editor.stop()
     print("ok: Enter does not answer the unsaved-changes prompt; the file stayed as it was")
@@ -257,29 +201,24 @@ def scenario_prompt(x, glint, output, state):
 def scenario_remembered(x, glint, output, state):
     def lessons_window(editor):
         x.key("l")
-        return editor.wait_layout(lambda l: "Lessons" in l["window"], "the Lessons window (L)")["window"]["Lessons"]
+        return editor.settled_layout(lambda l: "Lessons" in l["window"], "the Lessons window (L)")["window"]["Lessons"]
 
-    editor = Editor(x, glint, output, state, [])
+    editor = start(x, glint, output, state, [])
     try:
-        editor.wait_layout(lambda l: "##status" in l["window"], "the editor")
-        time.sleep(1.0)
+        editor.settled_layout(lambda l: "##status" in l["window"], "the editor")
         wx, wy, ww, wh = lessons_window(editor)
-        time.sleep(1.0)
         target = (max(10, wx - 200), wy + 60)
         x.drag((wx + 60, wy + 10), (target[0] + 60, target[1] + 10))  # by the title bar
-        moved = editor.wait_layout(lambda l: abs(l["window"]["Lessons"][0] - target[0]) < 2, "the window to move")
+        moved = editor.wait_layout(lambda l: "Lessons" in l["window"] and abs(l["window"]["Lessons"][0] - target[0]) < 2, "the window to move")
         moved = moved["window"]["Lessons"]
         x.key("ctrl+q")
-        editor.process.wait(timeout=20)
+        editor.wait_exit()
     finally:
         editor.stop()
-    editor = Editor(x, glint, output, state, [])
+    editor = start(x, glint, output, state, [])
     try:
-        editor.wait_layout(lambda l: "##status" in l["window"], "the editor again")
-        time.sleep(1.0)
+        editor.settled_layout(lambda l: "##status" in l["window"], "the editor again")
         again = lessons_window(editor)
-        time.sleep(0.5)
-        again = editor.layout()["window"]["Lessons"]
         assert abs(again[0] - moved[0]) < 2 and abs(again[1] - moved[1]) < 2, f"moved to {moved}, reopened at {again}"
     finally:
         editor.stop()

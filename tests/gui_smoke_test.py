@@ -7,7 +7,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import XServer, pixel, write_png  # noqa: E402
+from gui_test_support import WAIT_SECONDS, XServer, pixel, write_png  # noqa: E402
 
 
 def looks(shot):
@@ -36,11 +36,11 @@ def main():
             window = x.find_window("Glint")
             # The first frames (shader compile, ImGui layout) arrive when they arrive: poll for them.
             shot = x.wait_for(lambda image: all(ok for ok, _ in looks(image).values()),
-                              "the lit sphere, the dark background and the material panel's text", timeout=60.0)
+                              "the lit sphere, the dark background and the material panel's text")
             write_png(shot, os.path.join(output, "gui_smoke.png"))
             found = looks(shot)
             subprocess.run([close_helper, window], env=x.env, check=True)
-            code = editor.wait(timeout=20)
+            code = editor.wait(timeout=WAIT_SECONDS)
             assert code == 0, f"editor exited with {code}"
             print(f"ok: sphere {found['sphere'][1]}, panel text pixels {found['panel'][1]}, clean exit")
         finally:

@@ -68,7 +68,7 @@ def main():
         env = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output)
         editor, _ = x.start_editor([glint, *scene], env, output)
         try:
-            shot = x.wait_for(lambda image: find_sphere(image) is not None, "the red sphere", timeout=60.0)
+            shot = x.wait_for(lambda image: find_sphere(image) is not None, "the red sphere")
             shot = x.wait_stable((0, 0, shot[0], shot[1]))  # the full-resolution frame after the first
             write_png(shot, os.path.join(output, "gui_stage.png"))
             centre_x, centre_y, radius = find_sphere(shot)

@@ -8,6 +8,25 @@ import time
 import zlib
 
 
+# How long a wait may take before it fails. Every wait returns as soon as the state it needs is
+# there, so this only bounds a failure: generous, as a machine running other work (load average
+# 5-7 on two cores) may take seconds for what takes milliseconds on an idle one.
+WAIT_SECONDS = 90.0
+
+
+def wait_until(check, what, timeout=WAIT_SECONDS, interval=0.25):
+    """Polls check() until it returns something true and returns that; raises naming `what` (a
+    string, or a function giving one that can say what was seen instead)."""
+    deadline = time.time() + timeout
+    while True:
+        value = check()
+        if value:
+            return value
+        if time.time() >= deadline:
+            raise AssertionError(f"timed out after {timeout:.0f} s waiting for {what() if callable(what) else what}")
+        time.sleep(interval)
+
+
 class EditorExited(RuntimeError):
     """The editor process ended before its window appeared."""
 
@@ -38,7 +57,7 @@ class XServer:
     def run(self, *args, check=True):
         return subprocess.run(list(args), env=self.env, check=check, capture_output=True, text=True)
 
-    def find_window(self, name, timeout=30.0, process=None):
+    def find_window(self, name, timeout=WAIT_SECONDS, process=None):
         """The id of the first window named `name`; raises EditorExited when `process` ends first."""
         deadline = time.time() + timeout
         while time.time() < deadline:
@@ -94,49 +113,143 @@ class XServer:
 
     def key(self, *keys, hold_seconds=0.15):
         """Presses keys such as "ctrl+z" or "Return" (xdotool names), one after another, holding
-        each chord for hold_seconds so applications that sample key state per frame see it."""
+        each chord for hold_seconds so applications that sample key state per frame see it. A key
+        that closes the window (Ctrl+Q, "Don't save") may leave its release no window to go to:
+        a release that fails is no error."""
         for key in keys:
             parts = key.split("+")
             for part in parts:
                 self.run("xdotool", "keydown", part)
             time.sleep(hold_seconds)
             for part in reversed(parts):
-                self.run("xdotool", "keyup", part)
+                self.run("xdotool", "keyup", part, check=False)
             time.sleep(0.05)
 
     def type_text(self, text):
         self.run("xdotool", "type", "--delay", "20", "--", text)
 
-    def wait_for(self, condition, what, timeout=20.0, interval=0.25):
-        """Polls screenshots until condition(shot) is true; returns the shot, or raises naming `what`."""
-        deadline = time.time() + timeout
-        shot = None
-        while time.time() < deadline:
-            shot = self.screenshot()
-            if condition(shot):
-                return shot
-            time.sleep(interval)
-        if shot is not None:
-            write_png(shot, os.path.join(os.environ.get("GLINT_GUI_FAILURE_DIR", "."), "failure.png"))
-        raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+    def wait_for(self, condition, what, timeout=WAIT_SECONDS, interval=0.25):
+        """Polls screenshots until condition(shot) is true; returns the shot, or raises naming `what`
+        (the last screenshot is kept as failure.png)."""
+        shots = []
 
-    def wait_stable(self, box, timeout=20.0, interval=0.3):
+        def shown():
+            shots[:] = [self.screenshot()]
+            return shots[0] if condition(shots[0]) else None
+        try:
+            return wait_until(shown, what, timeout, interval)
+        except AssertionError:
+            write_png(shots[0], os.path.join(os.environ.get("GLINT_GUI_FAILURE_DIR", "."), "failure.png"))
+            raise
+
+    def wait_stable(self, box, timeout=WAIT_SECONDS, interval=0.3):
         """Waits until two screenshots in a row agree over box (the application finished drawing)."""
-        deadline = time.time() + timeout
-        previous = self.screenshot()
-        while time.time() < deadline:
-            time.sleep(interval)
-            shot = self.screenshot()
-            if region_difference(shot, previous, box) == 0:
-                return shot
-            previous = shot
-        raise AssertionError(f"the screen did not settle within {timeout} s")
+        shots = [self.screenshot()]
+
+        def settled():
+            shots.append(self.screenshot())
+            previous, shot = shots[-2:]
+            del shots[:-1]
+            return shot if region_difference(shot, previous, box) == 0 else None
+        return wait_until(settled, f"the screen to settle over {box}", timeout, interval)
+
+    def window_title(self, window):
+        return self.run("xdotool", "getwindowname", window, check=False).stdout.strip()
+
+    def wait_for_title(self, window, fragment, timeout=WAIT_SECONDS, running=lambda what: True):
+        """Waits until the window's title holds `fragment`; returns the title. running(what) may
+        raise to end the wait early (the application has ended)."""
+        what = f"a window title naming {fragment!r}"
+        return wait_until(lambda: running(what) and fragment in self.window_title(window) and self.window_title(window),
+                          lambda: f"{what} (it is {self.window_title(window)!r})", timeout)
 
     def screenshot(self, window="root"):
         """Returns (width, height, pixels) with pixels a bytes object of RGB triples."""
         target = ["-root"] if window == "root" else ["-id", window]
         data = subprocess.run(["xwd", "-silent", *target], env=self.env, check=True, capture_output=True).stdout
         return parse_xwd(data)
+
+
+class LoggedEditor:
+    """The editor with its output in OUTPUT/editor.log and GLINT_LOG_LAYOUT=1, so the rectangles
+    it prints each time the layout changes can be read while it runs."""
+
+    def __init__(self, x, glint, output, state, arguments, env=None):
+        self.x = x
+        self.log_path = os.path.join(output, "editor.log")
+        self.log = open(self.log_path, "w")
+        environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LOG_LAYOUT="1", **(env or {}))
+        self.process = subprocess.Popen([glint, *arguments], env=environment, cwd=output, stdout=self.log,
+                                        stderr=subprocess.STDOUT)
+        self.window = x.find_window("Glint", process=self.process)
+
+    def output(self):
+        with open(self.log_path, errors="replace") as log:
+            return log.read()
+
+    def layout(self):
+        """The last complete block of rectangles: {"screen": …, "viewport": …, "window": {name: rect},
+        "reserved": {…}}, or None before the first."""
+        blocks = self.output().split("glint layout: end\n")
+        if len(blocks) < 2:
+            return None
+        result = {"window": {}, "reserved": {}}
+        for line in blocks[-2].splitlines():
+            if not line.startswith("glint layout: "):
+                continue
+            kind, rest = line[len("glint layout: "):].split(" ", 1)
+            name, numbers = rest[1:].rsplit('" ', 1)
+            rect = tuple(float(v) for v in numbers.split())
+            if kind in ("screen", "viewport"):
+                result[kind] = rect
+            else:
+                result[kind][name] = rect
+        return result
+
+    def running(self, what):
+        """Raises, naming `what` and the end of the editor's output, where the editor has ended."""
+        if self.process.poll() is not None:
+            said = [line for line in self.output().splitlines() if not line.startswith("glint layout: ")]
+            raise AssertionError(f"the editor exited with {self.process.returncode} while the test waited for {what}; "
+                                 f"its output ends:\n" + "\n".join(said[-10:]))
+        return True
+
+    def wait_layout(self, condition, what, timeout=WAIT_SECONDS):
+        """The first layout for which condition(layout) holds."""
+        seen = [None]
+
+        def met():
+            self.running(what)
+            seen[0] = self.layout()
+            return seen[0] if seen[0] and condition(seen[0]) else None
+        return wait_until(met, lambda: f"{what}; the last layout: {seen[0]}", timeout)
+
+    def settled_layout(self, condition, what, quiet_seconds=1.0, timeout=WAIT_SECONDS):
+        """A layout for which condition holds and that has not changed for quiet_seconds (windows
+        settle over a few frames)."""
+        seen = {"text": None, "since": time.time()}
+
+        def settled():
+            self.running(what)
+            text = self.output()
+            if text != seen["text"]:
+                seen["text"], seen["since"] = text, time.time()
+                return None
+            layout = self.layout()
+            return layout if layout and condition(layout) and time.time() - seen["since"] >= quiet_seconds else None
+        return wait_until(settled, lambda: f"{what} (settled); the last layout: {self.layout()}", timeout)
+
+    def wait_for_title(self, fragment, timeout=WAIT_SECONDS):
+        return self.x.wait_for_title(self.window, fragment, timeout, running=self.running)
+
+    def wait_exit(self, timeout=WAIT_SECONDS):
+        return self.process.wait(timeout=timeout)
+
+    def stop(self):
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait(timeout=10)
+        self.log.close()
 
 
 def parse_xwd(data):

@@ -48,7 +48,7 @@ glint_add_gtests(core_tests SHARDS 6 ENVIRONMENT GLINT_CACHE_DIR=${CMAKE_CURRENT
 # The app's pieces that need no GL context: editing state (undo, autosave), snapshot suites and
 # reports, the classroom's compare layouts, plot data and probe text.
 add_executable(app_tests classroom_compare_test.cpp classroom_plot_data_test.cpp edit_session_test.cpp snapshot_suite_test.cpp
-  surface_probe_test.cpp)
+  surface_probe_test.cpp recovery_lock_test.cpp)
 target_compile_definitions(app_tests PRIVATE ${GLINT_TEST_DEFINITIONS})
 target_link_libraries(app_tests PRIVATE glint_app_lib GTest::gtest_main)
 glint_add_gtests(app_tests SHARDS 2)

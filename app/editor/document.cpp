@@ -151,6 +151,7 @@ void requestQuit(EditorState& state) {
 // --- recovery and autosave ------------------------------------------------------------------
 
 void startRecovery(EditorState& state) {
+    removeStaleRecoveryLeftovers();
     const std::vector<std::string> orphans = orphanedRecoveryFiles();  // before this editor's own lock
     const std::string path = recoveryFilePath();
     // The crash handler cannot create directories: the state directory must exist beforehand.

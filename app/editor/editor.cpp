@@ -275,18 +275,16 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                                viewportRect,
                                windowLayoutKey(appliedScale, state.settings.presentationMode, state.showLeftPanel,
                                                state.showRightPanel, windowSize.x, windowSize.y));
-        drawDialogs(state);
-        drawMeshLoadDialog(state);
-        drawReferencePrompt(state);
         drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
-        handleShortcuts(state);
         drawClassroom(state, viewport.x, viewport.y, viewport.width, viewport.height);  // lessons, presentation key, colour windows
         const bool handleDrag = handleLightHandles(state, viewport);
         // Classroom surface probe: Shift+click sets its point (so no camera drag starts), then its arrows and window.
         const bool probeClick = !handleDrag && handleProbeClick(viewport);
         const bool cameraDrag = !handleDrag && !probeClick && handleViewportInput(state, viewport);
         drawProbe(state, viewport);
+        drawDialogs(state);  // the last windows of the frame (panels.h), and first to take their keys
+        handleShortcuts(state);
         // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
         const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);

@@ -10,6 +10,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -62,14 +63,50 @@ std::vector<std::string> orphanedRecoveryFiles() {
     return paths;
 }
 
+void removeStaleRecoveryLeftovers() {
+    std::error_code error;
+    std::vector<std::filesystem::path> staleLocks;
+    for (const auto& entry : std::filesystem::directory_iterator(stateDirectory(), error)) {
+        const std::string name = entry.path().filename().string();
+        if (name.starts_with("recovery-") && name.ends_with(".lock")) staleLocks.push_back(entry.path());
+    }
+    for (const std::filesystem::path& lock : staleLocks) {
+        const int descriptor = ::open(lock.c_str(), O_RDWR | O_CLOEXEC);
+        if (descriptor < 0) continue;
+        // Removed while this process holds the lock, so an editor that created the file but has
+        // not locked it yet finds it gone and makes another (lockRecoveryFile).
+        if (::flock(descriptor, LOCK_EX | LOCK_NB) == 0) {
+            const std::string temporaryPrefix = lock.stem().string() + ".json.";  // .crash, .tmp-PID
+            for (const auto& entry : std::filesystem::directory_iterator(lock.parent_path(), error))
+                if (entry.path().filename().string().starts_with(temporaryPrefix)) std::filesystem::remove(entry.path(), error);
+            std::filesystem::remove(lock, error);
+        }
+        ::close(descriptor);
+    }
+}
+
 Status lockRecoveryFile() {
     unlockRecoveryFile();
     const std::string path = lockPathOf(recoveryFilePath());
     if (Status made = ensureParentDirectory(path); !made) return made;
-    gLockDescriptor = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (gLockDescriptor < 0 || ::flock(gLockDescriptor, LOCK_EX | LOCK_NB) != 0)
-        return makeError(std::string("cannot lock: ") + std::strerror(errno), {path});
-    return success();
+    // Another editor starting may remove the file between its creation and the lock (as a dead
+    // editor's): the lock counts only on the file still found under `path`.
+    for (int attempt = 0; attempt < 10; ++attempt) {
+        const int descriptor = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (descriptor < 0 || ::flock(descriptor, LOCK_EX) != 0) {
+            const int cause = errno;
+            if (descriptor >= 0) ::close(descriptor);
+            return makeError(std::string("cannot lock: ") + std::strerror(cause), {path});
+        }
+        struct stat locked{}, named{};
+        if (::fstat(descriptor, &locked) == 0 && ::stat(path.c_str(), &named) == 0 && locked.st_dev == named.st_dev &&
+            locked.st_ino == named.st_ino) {
+            gLockDescriptor = descriptor;
+            return success();
+        }
+        ::close(descriptor);
+    }
+    return makeError("cannot lock: the lock file kept being removed by other editors starting", {path});
 }
 
 void unlockRecoveryFile() {

@@ -20,6 +20,12 @@ namespace glint {
 std::string stateDirectory();       // created on demand by writeRecovery / settings
 std::string recoveryFilePath();     // this editor's: stateDirectory()/recovery-PID.json
 
+// Removes what editors no longer running left beside their recovery files: lock files and
+// half-written copies (.json.crash, .json.tmp-PID). An editor runs while it holds its lock (an
+// flock, released by the kernel however the process ends), so a reused process id never makes a
+// dead editor's lock look alive, and a live editor's lock is never taken. Their recovery files
+// stay, offered by orphanedRecoveryFiles.
+void removeStaleRecoveryLeftovers();
 // The recovery files of editors no longer running, newest first (recovery.json, written by
 // Glint before per-editor files, included). Call before lockRecoveryFile: a file left under this
 // process's own id by an earlier process is one of them.

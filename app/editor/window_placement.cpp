@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include <unistd.h>
+
 #include "editor/recovery.h"
 
 namespace glint {
@@ -236,8 +238,14 @@ void endWindowLayoutFrame() {
     for (const NamedRect& reserved : gFrame.reserved) text += line("reserved", reserved.name, reserved.rect);
     if (text == gFrame.lastLog) return;
     gFrame.lastLog = text;
-    std::fprintf(stderr, "%sglint layout: end\n", text.c_str());
+    // One write for the whole block, so no other thread's output lands inside it.
+    text += "glint layout: end\n";
     std::fflush(stderr);
+    for (size_t written = 0; written < text.size();) {
+        const ssize_t count = ::write(STDERR_FILENO, text.data() + written, text.size() - written);
+        if (count <= 0) break;
+        written += static_cast<size_t>(count);
+    }
 }
 
 std::string windowLayoutFilePath() { return stateDirectory() + "/imgui.ini"; }

@@ -31,8 +31,12 @@ void centreNextWindow() {
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
 }
 
+// ImGui keeps one popup per level: opening a modal closes any other one open. A modal that may be
+// asked for while another is up (an error from a background job, a close request) waits for it.
+bool noPopupOpen() { return !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel); }
+
 void drawUnsavedPrompt(EditorState& state) {
-    if (state.unsavedPromptRequested) {
+    if (state.unsavedPromptRequested && noPopupOpen()) {
         ImGui::OpenPopup("Unsaved changes");
         state.unsavedPromptRequested = false;
     }
@@ -73,7 +77,7 @@ void drawUnsavedPrompt(EditorState& state) {
 }
 
 void drawErrorModal(EditorState& state) {
-    if (!state.errorMessage.empty() && !ImGui::IsPopupOpen("Error")) {
+    if (!state.errorMessage.empty() && noPopupOpen()) {
         ImGui::OpenPopup("Error");
         std::fprintf(stderr, "glint: %s\n", state.errorMessage.c_str());  // the log keeps what the modal says
     }
@@ -122,7 +126,7 @@ void drawRecoveryOffer(EditorState& state) {
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard")) {
+    if (ImGui::Button("Discard (Delete)") || takeKeyPress(GLFW_KEY_DELETE)) {
         removeRecoveryFile(work.recoveryPath);
         state.recoveryOffer.erase(state.recoveryOffer.begin());
         ImGui::CloseCurrentPopup();
@@ -132,8 +136,7 @@ void drawRecoveryOffer(EditorState& state) {
 
 // A file with several materials: pick one by index and name (Enter or double-click), Esc cancels.
 void drawMaterialChoice(EditorState& state) {
-    // One modal at a time: the recovery offer at start (with `glint FILE`) is answered first.
-    if (!state.materialChoice || !state.recoveryOffer.empty()) return;
+    if (!state.materialChoice) return;
     if (!ImGui::IsPopupOpen("Choose a material")) ImGui::OpenPopup("Choose a material");
     centreNextWindow();
     if (!ImGui::BeginPopupModal("Choose a material", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
@@ -213,12 +216,19 @@ void drawHelpWindow(EditorState& state) {
 }  // namespace
 
 void drawDialogs(EditorState& state) {
-    drawRecoveryOffer(state);
+    drawHelpWindow(state);  // an ordinary window: before every modal (see panels.h)
+    // One modal at a time, and the recovery offer at start first: the lesson `glint present`
+    // opens, or the file given on the command line, may ask something of its own meanwhile.
+    if (!state.recoveryOffer.empty()) {
+        drawRecoveryOffer(state);
+        return;
+    }
+    drawMeshLoadDialog(state);
     drawUnsavedPrompt(state);
     handleFileBrowser(state);
     drawMaterialChoice(state);
     drawErrorModal(state);
-    drawHelpWindow(state);
+    drawReferencePrompt(state);  // waits for every other modal to be answered
 }
 
 }  // namespace glint

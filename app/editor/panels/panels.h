@@ -27,7 +27,11 @@ void drawCameraSection(EditorState& state);
 // The display panel's Environment section (environment_section.cpp).
 void drawEnvironmentSection(EditorState& state);
 
-// Modals: unsaved changes, errors, recovery offer; the help window (F1); the file browser.
+// The help window (F1), then the modals: the recovery offer (alone while it waits), a mesh's
+// progress, unsaved changes, the file browser, a material choice, errors, the files refused
+// outside a file's folder. Called after every other window of the frame: Dear ImGui 1.86 aborts
+// (imgui.cpp "blocking_modal != NULL") when a window appears after a modal in the frame that
+// modal opens.
 void drawDialogs(EditorState& state);
 // The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel.
 void drawMeshLoadDialog(EditorState& state);
