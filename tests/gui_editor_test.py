@@ -43,7 +43,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import WAIT_SECONDS, pixel, region_difference, run_scenario_from_arguments, wait_until, write_png  # noqa: E402
+from gui_test_support import WAIT_SECONDS, LoggedEditor, pixel, region_difference, run_scenario_from_arguments, wait_until, write_png  # noqa: E402
 
 # Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
 # left, material column 360 px on the right, status bar at the bottom). The light handle, shadow,
@@ -612,8 +612,9 @@ def scenario_outside_reference(x, glint, output, state):
                    "materials": [{"name": "blue", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]}, out)
 
     def open_and_answer(key, name):
+        before = x.wait_stable(DIALOG_BOX)  # the screen without the file browser
         x.key("ctrl+o")
-        type_path(x, gltf)
+        type_path(x, before, gltf)
         warned = x.wait_for(modal_shown(base), "the warning naming ../outside/blue.png")
         time.sleep(0.3)
         x.key("Escape")
@@ -660,21 +661,26 @@ def scenario_model_switch(x, glint, output, state):
 
 def scenario_redraw_changes(x, glint, output, state):
     window = (0, 0, 1280, 800)
-    with Editor(x, glint, output, state) as editor:
+    editor = LoggedEditor(x, glint, output, state, [], env={"GLINT_LOG_IDLE": "1"})
+    try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the sphere to change after the slider drag")
-        x.move(1200, 10)  # off the slider (its tooltip follows the pointer), onto the menu bar's empty end
-        drawn = x.wait_stable(window)
+        rest = (1200, 10)  # off the slider (its tooltip follows the pointer), onto the menu bar's empty end
+        x.move(*rest)
+        events = editor.wait_idle("the slider's release and the pointer's move", pointer=rest)
+        drawn = x.screenshot()
         x.run("xdotool", "windowunmap", "--sync", editor.window)
         x.run("xdotool", "windowmap", "--sync", editor.window)
-        time.sleep(1.0)
-        whole = x.wait_stable(window)
+        editor.wait_idle("the window mapped again", after=events)
+        whole = x.screenshot()
         save(drawn, output, "redraw_changes_1_drawn")
         save(whole, output, "redraw_changes_2_whole")
         difference = region_difference(drawn, whole, window, step=1)
         assert difference == 0, f"the frame drawn in changed parts differs from the whole frame by {difference:.4f} on average"
         print("ok: after a slider drag the window equals the frame drawn whole")
+    finally:
+        editor.stop()
 
 
 if __name__ == "__main__":

@@ -239,6 +239,23 @@ class LoggedEditor:
             return layout if layout and condition(layout) and time.time() - seen["since"] >= quiet_seconds else None
         return wait_until(settled, lambda: f"{what} (settled); the last layout: {self.layout()}", timeout)
 
+    def idle(self):
+        """(events, pointer) of the editor's last "glint idle N X Y" line (GLINT_LOG_IDLE=1): the window
+        events it had handled and where the pointer was when it last slept with everything drawn."""
+        lines = [line.split() for line in self.output().splitlines() if line.startswith("glint idle ")]
+        return (int(lines[-1][2]), (int(lines[-1][3]), int(lines[-1][4]))) if lines else None
+
+    def wait_idle(self, what, after=-1, pointer=None, timeout=WAIT_SECONDS):
+        """Waits until the editor sleeps with everything drawn, having handled more than `after` window
+        events (the count this returned before the input was sent) and, where given, with the pointer
+        at `pointer` (the input's last move): a screenshot then shows the input's result. Returns
+        the count of events handled."""
+        def met():
+            self.running(what)
+            idle = self.idle()
+            return idle and idle[0] > after and (pointer is None or idle[1] == tuple(pointer)) and idle[0]
+        return wait_until(met, lambda: f"the editor idle after {what} (last: {self.idle()})", timeout)
+
     def wait_for_title(self, fragment, timeout=WAIT_SECONDS):
         return self.x.wait_for_title(self.window, fragment, timeout, running=self.running)
 

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -49,35 +50,50 @@ namespace {
 
 // --- window events: any input asks for a few more frames; close and drop are queued --------
 
-bool gEventSeen = false;
+bool gEventSeen = false;  // since the loop last looked
+std::uint64_t gEventCount = 0;  // since start, for GLINT_LOG_IDLE
 bool gExposed = true;  // the window's pixels must all be drawn again (mapped, exposed, resized)
 bool gCloseRequested = false;
 std::vector<std::string> gDroppedPaths;
 
+void noteEvent() {
+    gEventSeen = true;
+    ++gEventCount;
+}
 void noteKey(GLFWwindow*, int key, int, int action, int mods) {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) recordKeyPress(key, mods);
-    gEventSeen = true;
+    noteEvent();
 }
 void noteClose(GLFWwindow* window) {
     // The editor decides (unsaved-changes prompt); the window stays open until it does.
     glfwSetWindowShouldClose(window, GLFW_FALSE);
     gCloseRequested = true;
-    gEventSeen = true;
+    noteEvent();
 }
 void noteDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) gDroppedPaths.emplace_back(paths[i]);
-    gEventSeen = true;
+    noteEvent();
+}
+
+// "glint idle N X Y": the window events handled since start and where the pointer is, printed when
+// the editor sleeps with everything drawn; the GUI tests' sign that what they sent is handled and
+// on screen (tests/gui_test_support.py: wait_idle).
+void logIdle(GLFWwindow* window) {
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window, &x, &y);
+    std::printf("glint idle %llu %.0f %.0f\n", static_cast<unsigned long long>(gEventCount), x, y);
+    std::fflush(stdout);
 }
 
 void installEventTracking(GLFWwindow* window) {
     // Installed before ImGui's backend, which chains to them.
-    glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { gEventSeen = true; });
-    glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { gEventSeen = true; });
-    glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { gEventSeen = true; });
+    glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { noteEvent(); });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { noteEvent(); });
+    glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { noteEvent(); });
     glfwSetKeyCallback(window, noteKey);
-    glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { gEventSeen = true; });
-    glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { gEventSeen = gExposed = true; });
-    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { gEventSeen = gExposed = true; });
+    glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { noteEvent(); });
+    glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { noteEvent(), gExposed = true; });
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { noteEvent(), gExposed = true; });
     glfwSetWindowCloseCallback(window, noteClose);
     glfwSetDropCallback(window, noteDrop);
 }
@@ -220,11 +236,21 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
+    // GLINT_LOG_IDLE=1: logIdle each time the editor has drawn all it was asked for (no frame,
+    // band, program or load pending) and finds no input waiting, before it sleeps.
+    const bool idleLog = std::getenv("GLINT_LOG_IDLE") != nullptr;
     while (!state.quitNow) {
         gEventSeen = false;
         const double secondsToWake = std::min(
             {secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
-        if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
+        const bool drawnAll = framesToDraw == 0 && !state.meshLoad && !state.environmentLoad &&
+                              !state.waitingForPrograms && refresh.secondsToRefine(glfwGetTime(), false) >= 1e8;
+        if (idleLog && drawnAll) {
+            glfwPollEvents();
+            if (!gEventSeen) logIdle(window);
+        }
+        if (gEventSeen) {}  // input arrived while idleness was checked: draw it
+        else if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
         else if (state.environmentLoad) glfwWaitEventsTimeout(0.25);  // its progress; the precompute keeps the cores
         else if (framesToDraw > 0) glfwPollEvents();
         else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
