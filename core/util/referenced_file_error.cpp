@@ -13,7 +13,7 @@ namespace {
 
 // Whether `error` may quote the file: the parsers that quote a line say where it is (a line
 // number) or set the quote off ('…', "…", `…`). A message about the whole file (its size, a limit)
-// does neither and is kept; an apostrophe within a word ("Glint's") sets nothing off.
+// does neither and is kept; an apostrophe within a word ("Glint's", "4.1's") sets nothing off.
 bool mayQuote(const Diagnostic& error, const std::string& file) {
     if (error.where.line > 0) return true;
     std::string message = error.message;
@@ -24,9 +24,9 @@ bool mayQuote(const Diagnostic& error, const std::string& file) {
     erase(file);  // the file's own name, quoted or not, quotes nothing of it
     erase(std::filesystem::path(file).filename().string());
     for (const char* emptyQuote : {"''", "\"\"", "``"}) erase(emptyQuote);
-    const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+    const auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
     for (size_t at = 1; at + 1 < message.size(); ++at)
-        if (message[at] == '\'' && letter(message[at - 1]) && letter(message[at + 1])) message[at] = ' ';
+        if (message[at] == '\'' && wordCharacter(message[at - 1]) && wordCharacter(message[at + 1])) message[at] = ' ';
     return message.find_first_of("'\"`") != std::string::npos;
 }
 
