@@ -5,6 +5,7 @@ hang or a lost edit, naming the seed and the event; OUTPUT/SEED/events.log holds
 
 usage: monkey_test.py GLINT OUTPUT (--seed N [--events N] [--kills N] [--until I] | --seeds FILE)
   --until I      replays a run's events up to event I only (the failing one)
+  --keep-going   logs a failure, starts the editor again and goes on (a long run's count)
   --seeds FILE   one run per line "SEED EVENTS KILLS [UNTIL]  # why it is kept" (tests/monkey_seeds.txt)
 Environment: GLINT_X11_CLOSE and GLINT_X11_DROP name tests/tools' x11_close_window and
 x11_drop_file. Started as root, the editor runs as nobody: a random Save as can then write only
@@ -168,9 +169,10 @@ def as_nobody_when_root(glint, folder):
     return wrapper
 
 
-def run_seed(glint, output, seed, count, kills, until=None):
+def run_seed(glint, output, seed, count, kills, until=None, keep_going=False):
     """Runs one seed's events (those up to `until` only, when given); returns a summary line, or
-    raises MonkeyFailure naming the event."""
+    raises MonkeyFailure naming the event. With keep_going, a failure is logged and the editor
+    started again (its work recovered), and the summary counts the failures."""
     folder = os.path.join(output, f"seed-{seed}")
     shutil.rmtree(folder, ignore_errors=True)
     state, home = os.path.join(folder, "state"), os.path.join(folder, "home")
@@ -179,7 +181,7 @@ def run_seed(glint, output, seed, count, kills, until=None):
     files, meshes = prepare_files(os.path.join(folder, "open"))
     events = generate(seed, count, kills, files, meshes)[:None if until is None else until + 1]
     started = time.time()
-    recoveries, clean_exits = [], 0
+    recoveries, clean_exits, failures = [], 0, []
     with XServer(*LARGEST_WINDOW) as x, open(os.path.join(folder, "events.log"), "w") as log:
         print(f"monkey: seed {seed}, {count} events, {kills} kills; log {log.name}", flush=True)
         log.write(json.dumps({"seed": seed, "events": count, "kills": kills}) + "\n")
@@ -194,20 +196,28 @@ def run_seed(glint, output, seed, count, kills, until=None):
                 log.write(json.dumps({**event, "t": round(time.time() - started, 2)}) + "\n")
                 log.flush()
                 during = f"event {event['i']} ({event['kind']})"
-                if not editor.check_alive(during):  # quit cleanly (Ctrl+Q, "don't save"): start again
-                    clean_exits += 1
-                    editor.start()
-                    editor.wait_for_frame(f"the restart before {during}", HANG_SECONDS)
-                if event["kind"] == "kill":
+                try:
+                    if not editor.check_alive(during):  # quit cleanly (Ctrl+Q, "don't save"): start again
+                        clean_exits += 1
+                        editor.start()
+                        editor.wait_for_frame(f"the restart before {during}", HANG_SECONDS)
+                    if event["kind"] == "kill":
+                        time.sleep(event["pause"])
+                        recovered = editor.kill_and_recover(during, HANG_SECONDS)
+                        recoveries.append(recovered)
+                        log.write(json.dumps({"i": event["i"], "recovery": recovered}) + "\n")
+                        continue
+                    hand.run(event)
                     time.sleep(event["pause"])
-                    recovered = editor.kill_and_recover(during, HANG_SECONDS)
-                    recoveries.append(recovered)
-                    log.write(json.dumps({"i": event["i"], "recovery": recovered}) + "\n")
-                    continue
-                hand.run(event)
-                time.sleep(event["pause"])
-                if event["i"] % PROBE_EVERY == PROBE_EVERY - 1:
-                    editor.wait_for_frame(during, HANG_SECONDS)
+                    if event["i"] % PROBE_EVERY == PROBE_EVERY - 1:
+                        editor.wait_for_frame(during, HANG_SECONDS)
+                except MonkeyFailure as failure:
+                    if not keep_going:
+                        raise
+                    failures.append(f"event {event['i']}: {failure}")
+                    print(f"monkey: seed {seed}: {failures[-1]}", flush=True)
+                    log.write(json.dumps({"i": event["i"], "failure": str(failure)}) + "\n")
+                    editor.kill_and_recover(during, HANG_SECONDS, after_failure=True)
             editor.wait_for_frame("the last event", HANG_SECONDS)
             closed = editor.close(os.environ["GLINT_X11_CLOSE"])
         except MonkeyFailure as failure:
@@ -218,6 +228,9 @@ def run_seed(glint, output, seed, count, kills, until=None):
             if editor.process and editor.process.poll() is None:
                 editor.process.kill()
     minutes = (time.time() - started) / 60
+    if failures:
+        raise MonkeyFailure(f"seed {seed}: {len(failures)} failures in {len(events)} events ({minutes:.1f} min):\n  "
+                            + "\n  ".join(failures))
     return (f"ok: seed {seed}: {len(events)} events, {len(recoveries)} kills each recovered exactly "
             f"({sum(r != 'nothing to recover' for r in recoveries)} with unsaved work), {clean_exits} quits, "
             f"{editor.starts} starts, 0 crashes, 0 sanitizer reports, 0 hangs ({editor.late_frames} frames came only "
@@ -244,12 +257,13 @@ def main():
     parser.add_argument("--events", type=int, default=10000)
     parser.add_argument("--kills", type=int, default=20)
     parser.add_argument("--until", type=int)
+    parser.add_argument("--keep-going", action="store_true", help="after a failure, log it and go on")
     parser.add_argument("--seeds")
     arguments = parser.parse_args()
     if (arguments.seed is None) == (arguments.seeds is None):
         parser.error("give --seed or --seeds")
     runs = (seeds_from_file(arguments.seeds) if arguments.seeds
-            else [(arguments.seed, arguments.events, arguments.kills, arguments.until)])
+            else [(arguments.seed, arguments.events, arguments.kills, arguments.until, arguments.keep_going)])
     os.makedirs(arguments.output, exist_ok=True)
     for run in runs:
         print(run_seed(os.path.abspath(arguments.glint), os.path.abspath(arguments.output), *run), flush=True)
