@@ -274,8 +274,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                                viewportRect,
                                windowLayoutKey(appliedScale, state.settings.presentationMode, state.showLeftPanel,
                                                state.showRightPanel, windowSize.x, windowSize.y));
-        drawDialogs(state);
-        drawMeshLoadDialog(state);
+        drawHelpWindow(state);
         drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
         drawCompareWindow(state);  // classroom/compare_view.h
         handleShortcuts(state);
@@ -285,6 +284,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         const bool probeClick = !handleDrag && handleProbeClick(viewport);
         const bool cameraDrag = !handleDrag && !probeClick && handleViewportInput(state, viewport);
         drawProbe(state, viewport);
+        drawDialogs(state);  // the modals after every other window (panels.h says why)
+        drawMeshLoadDialog(state);
         // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
         const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);

@@ -190,6 +190,16 @@ void handleFileBrowser(EditorState& state) {
     }
 }
 
+}  // namespace
+
+void drawDialogs(EditorState& state) {
+    drawRecoveryOffer(state);
+    drawUnsavedPrompt(state);
+    handleFileBrowser(state);
+    drawMaterialChoice(state);
+    drawErrorModal(state);
+}
+
 void drawHelpWindow(EditorState& state) {
     if (!state.showHelp) return;
     // Rows wrap inside the window, which scales with the UI and never leaves the screen.
@@ -208,17 +218,6 @@ void drawHelpWindow(EditorState& state) {
         }
     }
     ImGui::End();
-}
-
-}  // namespace
-
-void drawDialogs(EditorState& state) {
-    drawRecoveryOffer(state);
-    drawUnsavedPrompt(state);
-    handleFileBrowser(state);
-    drawMaterialChoice(state);
-    drawErrorModal(state);
-    drawHelpWindow(state);
 }
 
 }  // namespace glint

@@ -27,9 +27,14 @@ void drawCameraSection(EditorState& state);
 // The display panel's Environment section (environment_section.cpp).
 void drawEnvironmentSection(EditorState& state);
 
-// Modals: unsaved changes, errors, recovery offer; the help window (F1); the file browser.
+// The help window (F1): every shortcut.
+void drawHelpWindow(EditorState& state);
+// Modals: unsaved changes, errors, recovery offer, which material of a file, the file browser.
+// Drawn after every other window of the frame: Dear ImGui 1.86 aborts (assertion
+// "blocking_modal != NULL") when a window appears later in the frame a modal first shows in.
 void drawDialogs(EditorState& state);
-// The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel.
+// The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel; as
+// drawDialogs, after every other window.
 void drawMeshLoadDialog(EditorState& state);
 
 }  // namespace glint
