@@ -15,6 +15,7 @@ import glob
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -270,6 +271,9 @@ def main():
 
 
 if __name__ == "__main__":
+    # ctest's timeout and Ctrl+C end the run through the same clean-up as a failure (the editor
+    # killed, Xvfb stopped).
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit("monkey: terminated"))
     try:
         main()
     except MonkeyFailure as failure:
