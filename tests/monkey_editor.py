@@ -132,8 +132,10 @@ class MonkeyEditor:
         return path
 
     def pointer(self):
-        values = dict(line.split("=") for line in self.x.run("xdotool", "getmouselocation", "--shell").stdout.split())
-        return int(values["X"]), int(values["Y"])
+        """Where the pointer is; None when xdotool cannot say (it failed once in a long run)."""
+        shell = self.x.run("xdotool", "getmouselocation", "--shell", check=False).stdout.split()
+        values = dict(line.split("=") for line in shell if "=" in line)
+        return (int(values["X"]), int(values["Y"])) if "X" in values and "Y" in values else None
 
     def close(self, close_tool):
         """A clean exit (the window's close request, "don't save"), so that LeakSanitizer runs;
