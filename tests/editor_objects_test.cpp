@@ -1,5 +1,6 @@
 // The editor's object actions and IOR presets without a window: adding, duplicating and removing
-// objects are one undo step each and select the new object; overlay toggles are undoable; loading
+// objects are one undo step each and select the new object; the selection is kept in the scene
+// after an undo removed it; overlay toggles are undoable; loading
 // a mesh adds an object, and a corrupt or cancelled load leaves the scene exactly as it was; an IOR
 // preset sets n (and κ for metals) per channel, and a metal is refused by a model without κ.
 #include <gtest/gtest.h>
@@ -70,6 +71,22 @@ TEST(EditorObjects, RemoveKeepsTheSelectionInRangeAndUndoBringsTheObjectBack) {
     EXPECT_FALSE(removeObject(state, -1));
     ASSERT_TRUE(state.session.undo());
     EXPECT_EQ(state.session.scene().objects.size(), count);
+}
+
+// The monkey soak (issue 41): an object added and selected, Ctrl+Z, then a dropped .mtl wrote its
+// material through the stale selection into freed memory (AddressSanitizer, heap-use-after-free).
+TEST(EditorObjects, UndoingTheSelectedObjectsAdditionLeavesASelectionInTheScene) {
+    EditorState state;
+    addObject(state, ObjectKind::Cube);
+    state.session.settle(false);
+    ASSERT_TRUE(state.session.undo());
+    const int count = static_cast<int>(state.session.scene().objects.size());
+    ASSERT_EQ(state.selectedObject, count);  // the cube's place, no longer in the scene
+    keepSelectionInScene(state);
+    EXPECT_EQ(state.selectedObject, count - 1);
+    state.session.change("Remove all").objects.clear();
+    keepSelectionInScene(state);
+    EXPECT_EQ(state.selectedObject, 0);
 }
 
 TEST(EditorObjects, OverlayTogglesAreUndoable) {

@@ -33,6 +33,7 @@
 #include "editor/light_handles.h"
 #include "editor/environment_loading.h"
 #include "editor/mesh_loading.h"
+#include "editor/object_actions.h"
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
@@ -256,6 +257,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
         else glfwWaitEvents();
         const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
+        keepSelectionInScene(state);  // the last frame's undo or redo may have removed the selected object
         if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
         if (renderer.adoptCompiledPrograms()) state.waitingForPrograms = false;  // programs built in the background
         secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());  // .brdf probes and hot reload

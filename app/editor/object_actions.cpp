@@ -96,6 +96,10 @@ bool duplicateObject(EditorState& state, int objectIndex) {
     return true;
 }
 
+void keepSelectionInScene(EditorState& state) {
+    state.selectedObject = std::clamp(state.selectedObject, 0, std::max(0, static_cast<int>(state.session.scene().objects.size()) - 1));
+}
+
 bool removeObject(EditorState& state, int objectIndex) {
     if (objectIndex < 0 || objectIndex >= static_cast<int>(state.session.scene().objects.size())) return false;
     Scene& scene = state.session.change("Remove object");

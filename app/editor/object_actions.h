@@ -28,6 +28,9 @@ void addObjectWithShape(EditorState& state, const std::string& baseName, Shape s
 bool duplicateObject(EditorState& state, int objectIndex);
 // Removes the object (its material stays in the scene's list); false when out of range.
 bool removeObject(EditorState& state, int objectIndex);
+// Keeps the selected object within the scene (0 when it has none): an undo, redo or open may have
+// removed it. The frame loop calls it before anything reads the selection, and after the shortcuts.
+void keepSelectionInScene(EditorState& state);
 
 void toggleWireframe(EditorState& state);
 void toggleNormals(EditorState& state);

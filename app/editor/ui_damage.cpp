@@ -39,14 +39,16 @@ std::uint64_t hashStructure(const ImDrawList& list) {
 }
 
 // An ImGui rectangle (x1, y1, x2, y2) in framebuffer pixels, lower-left origin: the whole pixels it
-// touches, within the framebuffer.
+// touches, within the framebuffer. Clamped before the conversion to int: an empty rectangle is
+// (1e30, 1e30, -1e30, -1e30), far outside int's range.
 PixelRegion toPixels(const ImVec4& r, const ImDrawData& data) {
     const ImVec2 scale = data.FramebufferScale;
     const int width = static_cast<int>(data.DisplaySize.x * scale.x), height = static_cast<int>(data.DisplaySize.y * scale.y);
-    const int x0 = std::max(0, static_cast<int>(std::floor((r.x - data.DisplayPos.x) * scale.x)));
-    const int x1 = std::min(width, static_cast<int>(std::ceil((r.z - data.DisplayPos.x) * scale.x)));
-    const int top = std::max(0, static_cast<int>(std::floor((r.y - data.DisplayPos.y) * scale.y)));
-    const int bottom = std::min(height, static_cast<int>(std::ceil((r.w - data.DisplayPos.y) * scale.y)));
+    const auto within = [](float value, int limit) { return static_cast<int>(std::clamp(value, 0.0f, static_cast<float>(limit))); };
+    const int x0 = within(std::floor((r.x - data.DisplayPos.x) * scale.x), width);
+    const int x1 = within(std::ceil((r.z - data.DisplayPos.x) * scale.x), width);
+    const int top = within(std::floor((r.y - data.DisplayPos.y) * scale.y), height);
+    const int bottom = within(std::ceil((r.w - data.DisplayPos.y) * scale.y), height);
     if (x1 <= x0 || bottom <= top) return {};
     return {x0, height - bottom, x1 - x0, bottom - top};
 }

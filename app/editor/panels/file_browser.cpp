@@ -73,6 +73,7 @@ std::optional<std::string> confirm(FileBrowser& browser) {
     if (fs::is_directory(chosen, error)) {
         browser.directory = chosen.string();
         browser.typedPath.clear();
+        ++browser.pathFieldGeneration;
         browser.error.clear();
         return std::nullopt;
     }
@@ -99,6 +100,7 @@ bool purposeSaves(FilePurpose purpose) {
 
 void requestFileBrowser(FileBrowser& browser, FilePurpose purpose, const std::string& startPath) {
     browser.requested = true;
+    ++browser.pathFieldGeneration;  // typedPath is set below
     browser.purpose = purpose;
     browser.extensions = purpose == FilePurpose::SaveScreenshot ? std::vector<std::string>{".png", ".exr"}
                          : purpose == FilePurpose::OpenTexture
@@ -159,6 +161,7 @@ std::optional<std::string> drawFileBrowser(FileBrowser& browser) {
     for (const std::string& name : listing.files) {
         if (ImGui::Selectable(name.c_str(), browser.typedPath == name, ImGuiSelectableFlags_AllowDoubleClick)) {
             browser.typedPath = name;
+            ++browser.pathFieldGeneration;
             if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) chosen = confirm(browser);
         }
     }
@@ -167,7 +170,9 @@ std::optional<std::string> drawFileBrowser(FileBrowser& browser) {
 
     ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 12.0f);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::PushID(browser.pathFieldGeneration);
     const bool entered = ImGui::InputText("##path", &browser.typedPath, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::PopID();
     ImGui::SameLine();
     const bool pressed = ImGui::Button(purposeSaves(browser.purpose) ? "Save" : "Open");
     // Both Enter presses are taken even when the text field already confirmed: one left over would

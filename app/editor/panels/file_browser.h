@@ -20,6 +20,11 @@ struct FileBrowser {
     std::string directory;               // absolute
     std::vector<std::string> extensions; // e.g. {".json"}; the first is added to typed names when saving
     std::string typedPath;               // the path field (a name, or a relative or absolute path)
+    // Grows whenever the editor itself sets typedPath, and the field takes a new id: Dear ImGui
+    // 1.86 keeps a field's undo history across activations of the same id even when its text
+    // changed in between, and Ctrl+Z in the field then writes outside the text (found by the
+    // monkey soak: AddressSanitizer, heap-buffer-overflow in STB_TEXTEDIT_INSERTCHARS).
+    int pathFieldGeneration = 0;
     std::string error;                   // e.g. "no such directory"
 };
 

@@ -154,7 +154,7 @@ void drawObjectSection(EditorState& state) {
         drawAddMenu(state);
         return;
     }
-    state.selectedObject = std::clamp(state.selectedObject, 0, static_cast<int>(scene.objects.size()) - 1);
+    keepSelectionInScene(state);
     float widestName = 0.0f;
     for (const SceneObject& object : scene.objects) widestName = std::max(widestName, ImGui::CalcTextSize(object.name.c_str()).x);
     const std::string objectLabel = placeLabel("Object", comboWidth(widestName));
