@@ -33,7 +33,7 @@ void drawEnvironmentSection(EditorState& state);
 // (imgui.cpp "blocking_modal != NULL") when a window appears after a modal in the frame that
 // modal opens.
 void drawDialogs(EditorState& state);
-// The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel
+// The progress modal of a mesh loading in the background (editor/mesh_loading.h), with Cancel.
 void drawMeshLoadDialog(EditorState& state);
 // The modal that asks about files refused outside a file's folder (reference_prompt.cpp).
 void drawReferencePrompt(EditorState& state);
