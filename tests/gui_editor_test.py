@@ -153,12 +153,18 @@ def type_path(x, before, path):
 # --- scenarios ----------------------------------------------------------------------------------
 
 def scenario_undo(x, glint, output, state):
-    with Editor(x, glint, output, state) as editor:
+    editor = LoggedEditor(x, glint, output, state, [], env={"GLINT_LOG_IDLE": "1"})
+    try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "undo_0_start")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the sphere to change after the slider drag")
-        edited = x.wait_stable(VIEWPORT)
+        # The full frame after the release, not one drawn while it refines. A move after the
+        # release tells its handling apart from a sleep before it (with the pointer held still).
+        rest = (1200, 10)  # the menu bar's empty end
+        x.move(*rest)
+        editor.wait_idle("the slider's release and the pointer's move", pointer=rest)
+        edited = x.screenshot()
         save(edited, output, "undo_1_dragged")
         x.key("ctrl+z")
         save(x.wait_for(matches(base), "Ctrl+Z to bring the sphere back (one drag = one step)"), output, "undo_2_undone")
@@ -179,6 +185,8 @@ def scenario_undo(x, glint, output, state):
         code = editor.wait_exit()
         assert code == 0, f"editor exited with {code}"
         print("ok: drag changed the sphere, undo/redo restored it, added light undone, close asked first")
+    finally:
+        editor.stop()
 
 
 def scenario_save_reopen(x, glint, output, state):

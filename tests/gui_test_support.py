@@ -248,8 +248,9 @@ class LoggedEditor:
     def wait_idle(self, what, after=-1, pointer=None, timeout=WAIT_SECONDS):
         """Waits until the editor sleeps with everything drawn, having handled more than `after` window
         events (the count this returned before the input was sent) and, where given, with the pointer
-        at `pointer` (the input's last move): a screenshot then shows the input's result. Returns
-        the count of events handled."""
+        at `pointer`: a move made after the input, so that a sleep before the input's last event
+        (a drag's release, with the pointer held still) is not taken for one after it. A screenshot
+        then shows the input's result. Returns the count of events handled."""
         def met():
             self.running(what)
             idle = self.idle()
