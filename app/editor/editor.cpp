@@ -261,10 +261,6 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
         if (renderer.adoptCompiledPrograms()) state.waitingForPrograms = false;  // programs built in the background
         secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());  // .brdf probes and hot reload
-        if (gCloseRequested) {
-            gCloseRequested = false;
-            requestQuit(state);
-        }
         if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         if (pollEnvironmentLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
@@ -316,6 +312,12 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
         const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
         state.session.settle(gesture);
+        // The window's close button after this frame's keys: a redo typed just before closing
+        // must count as unsaved work, or the close would lose it without asking.
+        if (gCloseRequested) {
+            gCloseRequested = false;
+            requestQuit(state);
+        }
         endWindowLayoutFrame();  // GLINT_LOG_LAYOUT: the rectangles on screen, for the GUI tests
         ImGui::Render();
         const auto uiBuilt = std::chrono::steady_clock::now();
