@@ -10,7 +10,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import WAIT_SECONDS, pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
+from gui_test_support import LoggedEditor, pixel, region_difference, run_scenario_from_arguments, write_png  # noqa: E402
 
 VIEWPORT = (340, 40, 910, 760)
 LEFT_COLUMN = (10, 60, 320, 700)
@@ -19,57 +19,52 @@ LESSONS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lesson
 
 
 def start_editor(x, glint, output, state):
-    environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LESSONS=LESSONS)
-    return x.start_editor([glint], environment, output)
+    return LoggedEditor(x, glint, output, state, env={"GLINT_LESSONS": LESSONS})
 
 
-def drawn(x):
-    """Waits for the default scene's lit red sphere (the first frames are black), then for calm."""
+def drawn(editor):
+    """Waits for the default scene's lit red sphere (the first frames are black), then for all of
+    the first frames."""
     def lit(shot):
         red = pixel(shot, *SPHERE_CENTRE)
         return red[0] > 80 and red[0] > red[1] + 30
-    x.wait_for(lit, "the editor's first picture")
-    return x.wait_stable((0, 0, 1280, 800))
+    editor.x.wait_for(lit, "the editor's first picture")
+    return editor.settled("the first frames")
 
 
-def finish(x, process):
+def finish(x, editor):
     x.key("ctrl+q")  # nothing unsaved: quits at once
-    code = process.wait(timeout=WAIT_SECONDS)
+    code = editor.wait_exit()
     assert code == 0, f"editor exited with {code}"
 
 
 def scenario_lessons(x, glint, output, state):
-    process, window = start_editor(x, glint, output, state)
-    try:
-        start = drawn(x)
+    with start_editor(x, glint, output, state) as editor:
+        window = editor.window
+        start = drawn(editor)
         x.key("Next")  # PageDown: the first lesson
         x.wait_for_title(window, "01_lambert.json")
-        first = x.wait_for(lambda shot: region_difference(shot, start, VIEWPORT) > 1.0, "lesson 1's picture")
-        first = x.wait_stable(VIEWPORT)
+        x.wait_for(lambda shot: region_difference(shot, start, VIEWPORT) > 1.0, "lesson 1's picture")
+        first = editor.settled("lesson 1")
         write_png(first, os.path.join(output, "lesson_1.png"))
         x.key("Right")
         x.wait_for_title(window, "02_phong.json")
-        second = x.wait_stable(VIEWPORT)
+        second = editor.settled("lesson 2")
         write_png(second, os.path.join(output, "lesson_2.png"))
         assert region_difference(second, first, VIEWPORT) > 1.0, "lesson 2 looks like lesson 1"
         x.key("Left")
         x.wait_for_title(window, "01_lambert.json")
-        finish(x, process)
+        finish(x, editor)
         print("ok: PageDown opened lesson 1, Right lesson 2, Left lesson 1 again")
-    finally:
-        if process.poll() is None:
-            process.kill()
 
 
 def scenario_presentation(x, glint, output, state):
-    process, window = start_editor(x, glint, output, state)
-    try:
-        normal = drawn(x)
+    with start_editor(x, glint, output, state) as editor:
+        normal = drawn(editor)
         write_png(normal, os.path.join(output, "normal.png"))
         x.key("F11")
-        presenting = x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) > 2.0,
-                                "the panels to change in presentation mode")
-        presenting = x.wait_stable(LEFT_COLUMN)
+        x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) > 2.0, "the panels to change in presentation mode")
+        presenting = editor.settled("F11")
         write_png(presenting, os.path.join(output, "presentation.png"))
         with open(os.path.join(state, "settings.json")) as file:
             settings = json.load(file)
@@ -78,11 +73,8 @@ def scenario_presentation(x, glint, output, state):
         x.wait_for(lambda shot: region_difference(shot, normal, LEFT_COLUMN) < 0.5, "the normal look to return")
         with open(os.path.join(state, "settings.json")) as file:
             assert json.load(file)["presentation_mode"] is False
-        finish(x, process)
+        finish(x, editor)
         print("ok: F11 switched presentation mode on (saved) and off again")
-    finally:
-        if process.poll() is None:
-            process.kill()
 
 
 if __name__ == "__main__":

@@ -43,7 +43,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import WAIT_SECONDS, LoggedEditor, pixel, region_difference, run_scenario_from_arguments, wait_until, write_png  # noqa: E402
+from gui_test_support import LoggedEditor, pixel, region_difference, run_scenario_from_arguments, wait_until, write_png  # noqa: E402
 
 # Layout of the 1280×800 window on the default scene (menu bar, scene column 330 px on the
 # left, material column 360 px on the right, status bar at the bottom). The light handle, shadow,
@@ -73,31 +73,6 @@ SPHERE_ROW = (420, 830, 375)         # x from, x to, y: a row across the lit sph
 MODEL_COMBO = (1040, 117)            # the material column's Model combo; its list opens below:
 MODEL_LAMBERT = (980, 145)           #   Lambert first
 HIGHLIGHT = (735, 290)               # the red plastic's specular highlight on the sphere
-
-
-class Editor:
-    def __init__(self, x, glint, output, state_dir, args=(), env=None):
-        self.x = x
-        environment = dict(x.env, GLINT_STATE_DIR=state_dir, GLINT_GUI_FAILURE_DIR=output)
-        environment.update(env or {})
-        self.process, self.window = x.start_editor([glint, *args], environment, output)
-        self.log = ""
-
-    def wait_exit(self, timeout=WAIT_SECONDS):
-        code = self.process.wait(timeout=timeout)
-        self.log = self.process.communicate()[0]
-        return code
-
-    def kill(self):
-        if self.process.poll() is None:
-            self.process.kill()
-            self.log = self.process.communicate()[0]
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exception):
-        self.kill()
 
 
 def lit_sphere(shot):
@@ -140,11 +115,12 @@ def click_after_hover(x, where):
     x.click(*where)
 
 
-def type_path(x, before, path):
+def type_path(editor, before, path):
     """Once the file browser shows (the screen differs from `before`, a shot without it) and has
     finished drawing (its path field has the keyboard focus), replaces the field's text and confirms."""
+    x = editor.x
     x.wait_for(dialog_shown(before), "the file browser")
-    x.wait_stable(DIALOG_BOX)
+    editor.settled("the file browser's first frames")
     x.key("ctrl+a")
     x.type_text(path)
     x.key("Return")
@@ -153,18 +129,14 @@ def type_path(x, before, path):
 # --- scenarios ----------------------------------------------------------------------------------
 
 def scenario_undo(x, glint, output, state):
-    editor = LoggedEditor(x, glint, output, state, [], env={"GLINT_LOG_IDLE": "1"})
+    editor = LoggedEditor(x, glint, output, state)
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "undo_0_start")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the sphere to change after the slider drag")
-        # The full frame after the release, not one drawn while it refines. A move after the
-        # release tells its handling apart from a sleep before it (with the pointer held still).
-        rest = (1200, 10)  # the menu bar's empty end
-        x.move(*rest)
-        editor.wait_idle("the slider's release and the pointer's move", pointer=rest)
-        edited = x.screenshot()
+        x.move(1200, 10)  # off the slider (its tooltip follows the pointer), onto the menu bar's empty end
+        edited = editor.settled("the slider's release")  # the full frame, not one drawn while it refines
         save(edited, output, "undo_1_dragged")
         x.key("ctrl+z")
         save(x.wait_for(matches(base), "Ctrl+Z to bring the sphere back (one drag = one step)"), output, "undo_2_undone")
@@ -172,7 +144,7 @@ def scenario_undo(x, glint, output, state):
         x.wait_for(matches(edited), "Ctrl+Shift+Z to redo the drag")
         x.click(*ADD_POINT_LIGHT)
         x.wait_for(differs(edited), "a new point light to change the picture")
-        lit = x.wait_stable(VIEWPORT)
+        lit = editor.settled("the added light")
         save(lit, output, "undo_3_light_added")
         x.key("ctrl+z")
         x.wait_for(matches(edited), "Ctrl+Z to remove the added light")
@@ -193,17 +165,17 @@ def scenario_save_reopen(x, glint, output, state):
     path = os.path.join(output, "saved_scene.json")
     if os.path.exists(path):
         os.remove(path)
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
-        dragged = x.wait_stable(VIEWPORT)
+        dragged = editor.settled("the slider drag")
         x.click(*ADD_POINT_LIGHT)
         x.wait_for(differs(dragged), "the added light to show")  # a slow frame: not the picture before the click
-        before_save = x.wait_stable(VIEWPORT)
+        before_save = editor.settled("the edits")
         save(before_save, output, "save_1_before")
         x.key("ctrl+s")  # untitled: the file browser asks for a name
-        type_path(x, before_save, path)
+        type_path(editor, before_save, path)
         wait_until(lambda: os.path.exists(path), f"Ctrl+S to write {path}")
         with open(path) as saved:
             scene = json.load(saved)
@@ -213,7 +185,7 @@ def scenario_save_reopen(x, glint, output, state):
         close_window(x, editor)  # saved: no prompt
         assert editor.wait_exit() == 0
 
-    with Editor(x, glint, output, state, args=[path]) as editor:
+    with LoggedEditor(x, glint, output, state, arguments=[path]) as editor:
         reopened = x.wait_for(matches(before_save, 0.5), "the reopened scene to look as it did when saved")
         save(reopened, output, "save_2_reopened")
         first_write = os.stat(path).st_mtime_ns
@@ -236,16 +208,16 @@ def recovery_files(state):
 
 
 def scenario_recovery(x, glint, output, state):
-    with Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"}) as editor:
+    with LoggedEditor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "1"}) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
-        edited = x.wait_stable(VIEWPORT)
+        edited = editor.settled("the edit")
         wait_until(lambda: recovery_files(state), "autosave to write a recovery file")
         editor.process.send_signal(signal.SIGKILL)
         editor.process.wait(timeout=10)
 
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         offer = x.wait_for(modal_shown(base), "the offer to recover the unsaved work")
         save(offer, output, "recovery_1_offer")
         x.key("Return")  # Recover
@@ -262,12 +234,12 @@ def scenario_recovery(x, glint, output, state):
 
 def scenario_crash_signal(x, glint, output, state):
     """SIGSEGV right after an edit, with autosave far off: the crash guard writes the copy."""
-    with Editor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"}) as editor:
+    with LoggedEditor(x, glint, output, state, env={"GLINT_AUTOSAVE_SECONDS": "30"}) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         time.sleep(1.0)  # past the first autosave check (a clean scene writes nothing)
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
-        edited = x.wait_stable(VIEWPORT)
+        edited = editor.settled("the edit")
         assert not recovery_files(state), "autosave should not have run yet (30 s interval)"
         editor.process.send_signal(signal.SIGSEGV)
         code = editor.process.wait(timeout=10)
@@ -276,7 +248,7 @@ def scenario_crash_signal(x, glint, output, state):
         with open(recovery_files(state)[0]) as saved:
             exponent = json.load(saved)["scene"]["materials"][0]["exponent"]
         assert exponent < 60, f"the recovery file lacks the edit (exponent {exponent})"
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         x.wait_for(modal_shown(base), "the offer to recover")
         x.key("Return")
         x.wait_for(matches(edited, 0.5), "the recovered edit")
@@ -318,7 +290,7 @@ def type_into_slider(x, where, text):
 
 
 def scenario_typed_values(x, glint, output, state):
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert not refusal_shown(base)
         type_into_slider(x, EXPONENT_SLIDER, "-5")
@@ -327,7 +299,7 @@ def scenario_typed_values(x, glint, output, state):
         assert region_difference(refused, base, VIEWPORT) < 0.3, "a refused value must not change the sphere"
         type_into_slider(x, EXPONENT_SLIDER, "20000")  # past the slider's 10000, inside the valid range
         x.wait_for(differs(base), "exponent 20000 (beyond the slider) to be kept")
-        kept = x.wait_stable(VIEWPORT)
+        kept = editor.settled("the typed value")
         assert not refusal_shown(kept), "the message should go once a valid value is typed"
         save(kept, output, "typed_2_kept")
         x.key("ctrl+z")
@@ -346,7 +318,7 @@ def window_title(x, editor):
 
 
 def scenario_typed_commit(x, glint, output, state):
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert "●" not in window_title(x, editor)
         start_typing(x, ALBEDO_RED_FIELD, "-0.5")
@@ -367,7 +339,7 @@ def scenario_typed_commit(x, glint, output, state):
         assert region_difference(x.screenshot(), base, VIEWPORT) < 0.3, "exponent 5 is not committed yet"
         click_after_hover(x, PANEL_EMPTY_SPOT)
         x.wait_for(differs(base), "a click elsewhere to commit exponent 5")
-        committed = x.wait_stable(VIEWPORT)
+        committed = editor.settled("the click that commits the value")
         save(committed, output, "commit_3_focus_lost")
         assert not refusal_shown(committed), "a valid value clears the refusal"
         assert "●" in window_title(x, editor), "the committed value is an unsaved change"
@@ -389,13 +361,13 @@ def scenario_corrupt_open(x, glint, output, state):
     corrupt = os.path.join(output, "corrupt_scene.json")
     with open(corrupt, "w") as out:
         out.write('{\n  "format": "glint-scene",\n  "version": 1,\n  "lights": [{"type": "point", "power": -5}]\n}\n')
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))
         x.wait_for(differs(base), "the slider drag to show")
-        edited = x.wait_stable(VIEWPORT)
+        edited = editor.settled("the edit")
         x.key("ctrl+o")
-        type_path(x, edited, corrupt)
+        type_path(editor, edited, corrupt)
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt before opening")
         time.sleep(0.3)
         x.key("n")  # don't save: open the other scene (which will fail)
@@ -411,8 +383,8 @@ def scenario_corrupt_open(x, glint, output, state):
         x.wait_for(modal_shown(edited), "the unsaved-changes prompt (the work is still unsaved)")
         x.key("n")
         assert editor.wait_exit() == 0
-        assert "corrupt_scene.json:4:" in editor.log, f"the error should name file:line, log was:\n{editor.log}"
-        print("ok: corrupt scene refused with", [l for l in editor.log.splitlines() if "corrupt_scene" in l][0])
+        assert "corrupt_scene.json:4:" in editor.output(), f"the error should name file:line, log was:\n{editor.output()}"
+        print("ok: corrupt scene refused with", [l for l in editor.output().splitlines() if "corrupt_scene" in l][0])
 
 
 def scenario_screenshot(x, glint, output, state):
@@ -420,11 +392,11 @@ def scenario_screenshot(x, glint, output, state):
     for path in (png, exr):
         if os.path.exists(path):
             os.remove(path)
-    with Editor(x, glint, output, state) as editor:
+    with LoggedEditor(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         for path in (png, exr):
             x.key("F12")
-            type_path(x, base, path)
+            type_path(editor, base, path)
             wait_until(lambda: os.path.exists(path), f"F12 to write {path}")
             x.wait_for(lambda shot: not modal_shown(base)(shot), "the file browser to close")
         with open(png, "rb") as image:
@@ -449,13 +421,13 @@ def find_handle(shot):
 
 
 def scenario_light_handle(x, glint, output, state):
-    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
+    with LoggedEditor(x, glint, output, state, arguments=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         handle = find_handle(base)
         assert handle, "no light handle drawn in the viewport"
         x.drag(handle, (handle[0] - 250, handle[1] + 40))
         x.wait_for(differs(base), "dragging the key light's handle to relight the sphere")
-        turned = x.wait_stable(VIEWPORT)  # the full-resolution frame after the drag's previews
+        turned = editor.settled("the handle drag")  # the full-resolution frame after the drag's previews
         save(turned, output, "handle_1_turned")
         moved_to = find_handle(turned)
         assert moved_to and abs(moved_to[0] - (handle[0] - 250)) < 25, f"the handle should follow the mouse: {handle} -> {moved_to}"
@@ -471,7 +443,7 @@ def scenario_light_handle(x, glint, output, state):
 
 
 def scenario_shadow_toggle(x, glint, output, state):
-    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
+    with LoggedEditor(x, glint, output, state, arguments=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "shadow_0_start")
         unshadowed = sum(pixel(base, *SHADOW_ON_FLOOR))
@@ -489,7 +461,7 @@ def scenario_shadow_toggle(x, glint, output, state):
 
 
 def scenario_environment(x, glint, output, state):
-    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
+    with LoggedEditor(x, glint, output, state, arguments=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         save(base, output, "environment_0_start")
         click_after_hover(x, ENVIRONMENT_COMBO)
@@ -497,7 +469,7 @@ def scenario_environment(x, glint, output, state):
         click_after_hover(x, ENVIRONMENT_STUDIO)
         x.move(1100, 700)  # no tooltip over the viewport
         x.wait_for(lambda shot: region_difference(shot, base, BACKGROUND_BOX) > 20, "the studio behind the sphere")
-        studio = x.wait_stable(VIEWPORT)
+        studio = editor.settled("the studio environment")
         save(studio, output, "environment_1_studio")
         lit_by_studio = sum(pixel(studio, *SPHERE_CENTRE))
         assert lit_by_studio > sum(pixel(base, *SPHERE_CENTRE)) + 30, "the studio should add light to the sphere"
@@ -505,7 +477,7 @@ def scenario_environment(x, glint, output, state):
         x.move(1100, 700)
         hidden = x.wait_for(lambda shot: region_difference(shot, base, BACKGROUND_BOX) < 1.0,
                             "the constant background back once the studio is not shown")
-        hidden = x.wait_stable(VIEWPORT)
+        hidden = editor.settled("the background switch")
         save(hidden, output, "environment_2_not_shown")
         assert abs(sum(pixel(hidden, *SPHERE_CENTRE)) - lit_by_studio) < 6, "hiding the studio must keep its light"
         x.key("ctrl+z")
@@ -535,9 +507,9 @@ def choose_texture(x, menu_item, button=DIFFUSE_TEXTURE_BUTTON):
     x.move(1100, 700)
 
 
-def open_texture_file(x, current, path, button=DIFFUSE_TEXTURE_BUTTON, menu_item=TEXTURE_MENU_IMAGE):
-    choose_texture(x, menu_item, button)
-    type_path(x, current, path)
+def open_texture_file(editor, current, path, button=DIFFUSE_TEXTURE_BUTTON, menu_item=TEXTURE_MENU_IMAGE):
+    choose_texture(editor.x, menu_item, button)
+    type_path(editor, current, path)
 
 
 def scenario_texture(x, glint, output, state):
@@ -546,21 +518,21 @@ def scenario_texture(x, glint, output, state):
     corrupt = os.path.join(output, "corrupt.png")
     with open(corrupt, "wb") as out:
         out.write(b"\x89PNG\r\n\x1a\n" + b"not a PNG body" * 4)
-    with Editor(x, glint, output, state, args=(CLASSIC_SCENE,)) as editor:
+    with LoggedEditor(x, glint, output, state, arguments=(CLASSIC_SCENE,)) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         assert edges_across_sphere(base) == 0, "the untextured sphere should shade smoothly"
         choose_texture(x, TEXTURE_MENU_CHECKER)
         checker = x.wait_for(lambda shot: edges_across_sphere(shot) >= 2, "checker squares on the sphere")
-        checker = x.wait_stable(VIEWPORT)
+        checker = editor.settled("the checker texture")
         save(checker, output, "texture_1_checker")
         x.key("ctrl+z")
         x.wait_for(matches(base), "Ctrl+Z to take the checker away")
-        open_texture_file(x, base, green)
+        open_texture_file(editor, base, green)
         tinted = x.wait_for(lambda shot: pixel(shot, *SPHERE_CENTRE)[1] > pixel(shot, *SPHERE_CENTRE)[0] + 30,
                             "the green image to colour the sphere")
-        tinted = x.wait_stable(VIEWPORT)
+        tinted = editor.settled("the image texture")
         save(tinted, output, "texture_2_image")
-        open_texture_file(x, tinted, corrupt, IMAGE_TEXTURE_BUTTON, IMAGE_TEXTURE_MENU_IMAGE)
+        open_texture_file(editor, tinted, corrupt, IMAGE_TEXTURE_BUTTON, IMAGE_TEXTURE_MENU_IMAGE)
         refused = x.wait_for(dialog_shown(tinted), "a message refusing the corrupt image")
         save(refused, output, "texture_3_refused")
         x.key("Escape")
@@ -569,7 +541,7 @@ def scenario_texture(x, glint, output, state):
         x.wait_for(dialog_shown(tinted), "the unsaved-changes prompt")
         x.key("n")
         assert editor.wait_exit() == 0
-        assert "corrupt.png" in editor.log, "the refusal should name the file:\n" + editor.log
+        assert "corrupt.png" in editor.output(), "the refusal should name the file:\n" + editor.output()
         print(f"ok: checker drew {edges_across_sphere(checker)} edges across the sphere, undone; "
               f"the image tinted it {pixel(tinted, *SPHERE_CENTRE)}; the corrupt image was refused")
 
@@ -583,11 +555,11 @@ def scenario_material_choice(x, glint, output, state):
     library = os.path.join(output, "two_paints.mtl")
     with open(library, "w") as out:
         out.write("newmtl green\nKd 0.1 0.8 0.1\nillum 1\n\nnewmtl blue\nKd 0.1 0.1 0.8\nillum 1\n")
-    with Editor(x, glint, output, state):
+    with LoggedEditor(x, glint, output, state) as editor:
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
-        base = x.wait_stable(VIEWPORT)  # before the modal dims it
+        base = editor.settled("the first frames")  # before the modal dims it
         x.key("ctrl+o")
-        type_path(x, base, library)
+        type_path(editor, base, library)
         asked = x.wait_for(modal_shown(base), "the material question")
         save(asked, output, "material_choice_1_asked")
         time.sleep(0.3)
@@ -599,7 +571,7 @@ def scenario_material_choice(x, glint, output, state):
         x.key("ctrl+z")
         x.wait_for(matches(base), "Ctrl+Z to take the material off again")
         x.key("ctrl+o")
-        type_path(x, base, library)
+        type_path(editor, base, library)
         x.wait_for(modal_shown(base), "the material question again")
         time.sleep(0.3)
         x.key("Escape")
@@ -620,9 +592,9 @@ def scenario_outside_reference(x, glint, output, state):
                    "materials": [{"name": "blue", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]}, out)
 
     def open_and_answer(key, name):
-        before = x.wait_stable(DIALOG_BOX)  # the screen without the file browser
+        before = editor.settled("the first frames")  # the screen without the file browser
         x.key("ctrl+o")
-        type_path(x, before, gltf)
+        type_path(editor, before, gltf)
         warned = x.wait_for(modal_shown(base), "the warning naming ../outside/blue.png")
         time.sleep(0.3)
         x.key("Escape")
@@ -632,9 +604,9 @@ def scenario_outside_reference(x, glint, output, state):
         time.sleep(0.3)
         x.key(key)
 
-    with Editor(x, glint, output, state):
+    with LoggedEditor(x, glint, output, state) as editor:
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
-        base = x.wait_stable(VIEWPORT)  # before the modal dims it
+        base = editor.settled("the first frames")  # before the modal dims it
         open_and_answer("Escape", "outside_reference_1_asked")
         kept = x.wait_for(lambda shot: not modal_shown(base)(shot) and not lit_sphere(shot),
                           "Esc: the glTF's material without its refused texture")
@@ -646,9 +618,9 @@ def scenario_outside_reference(x, glint, output, state):
 
 
 def scenario_model_switch(x, glint, output, state):
-    with Editor(x, glint, output, state):
+    with LoggedEditor(x, glint, output, state) as editor:
         x.wait_for(lit_sphere, "the lit sphere (red plastic)")
-        base = x.wait_stable(VIEWPORT)
+        base = editor.settled("the first frames")
         x.click(*MODEL_COMBO)
         time.sleep(0.5)
         click_after_hover(x, MODEL_LAMBERT)
@@ -669,7 +641,7 @@ def scenario_model_switch(x, glint, output, state):
 
 def scenario_redraw_changes(x, glint, output, state):
     window = (0, 0, 1280, 800)
-    editor = LoggedEditor(x, glint, output, state, [], env={"GLINT_LOG_IDLE": "1"})
+    editor = LoggedEditor(x, glint, output, state)
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.drag(EXPONENT_SLIDER, (EXPONENT_SLIDER[0] - 80, EXPONENT_SLIDER[1]))

@@ -15,8 +15,8 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_editor_test import VIEWPORT, Editor, close_window, differs, lit_sphere, matches, save, type_path  # noqa: E402
-from gui_test_support import region_difference, run_scenario_from_arguments  # noqa: E402
+from gui_editor_test import close_window, differs, lit_sphere, matches, save, type_path  # noqa: E402
+from gui_test_support import LoggedEditor, region_difference, run_scenario_from_arguments  # noqa: E402
 
 # The object section of the material column on the default scene (1280×800 window). The "Add…"
 # button sits below the material panel, so it moves with the selected object's material: the
@@ -57,7 +57,7 @@ def park_mouse(x):
 
 
 def start(x, glint, output, state):
-    return Editor(x, glint, output, state, env={"GLINT_LOG_FRAMES": "1"})
+    return LoggedEditor(x, glint, output, state, env={"GLINT_LOG_FRAMES": "1"})
 
 
 def finish(x, editor):
@@ -72,11 +72,11 @@ def scenario_overlays(x, glint, output, state):
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.key("w")
         wire = x.wait_for(differs(base, 2.0), "W to draw the wireframe over the sphere")
-        wire = x.wait_stable(VIEWPORT)
+        wire = editor.settled("W")
         save(wire, output, "overlays_1_wireframe")
         x.key("w")
         x.wait_for(matches(base), "W again to hide the wireframe")
-        assert matches(base)(x.wait_stable(VIEWPORT)), "the wireframe came back after W hid it"
+        assert matches(base)(editor.settled("W again")), "the wireframe came back after W hid it"
         x.key("n")
         normals = x.wait_for(differs(base, 0.5), "N to draw the vertex normals")
         save(normals, output, "overlays_2_normals")
@@ -93,12 +93,12 @@ def scenario_add_object(x, glint, output, state):
         for kind in ("Plane", "Cube", "Torus"):
             add_from_menu(x, kind, "blinn_phong" if kind == "Plane" else "lambert")
             x.wait_for(differs(pictures[-1]), f"the added {kind.lower()} to show")
-            pictures.append(x.wait_stable(VIEWPORT))
+            pictures.append(editor.settled(f"the added {kind.lower()}"))
             save(pictures[-1], output, f"add_object_{len(pictures) - 1}_{kind.lower()}")
         x.key("ctrl+z")
         x.wait_for(matches(pictures[-2]), "Ctrl+Z to remove the added torus")
         finish(x, editor)
-        counts = triangle_counts(editor.log)
+        counts = triangle_counts(editor.output())
         steps = sorted(set(counts))
         assert counts[0] + 2 in counts, f"a plane adds two triangles: {counts}"
         assert counts[0] + 2 + 12 in counts, f"a cube adds twelve: {counts}"
@@ -122,16 +122,16 @@ def scenario_shading(x, glint, output, state):
         slow_click(x, SHADING_ITEM["flat"])
         park_mouse(x)
         x.wait_for(differs(base, 1.0), "flat shading to change the sphere")
-        flat = x.wait_stable(VIEWPORT)
+        flat = editor.settled("flat shading")
         save(flat, output, "shading_1_flat")
         x.drag(SEGMENTS_SLIDER, (SEGMENTS_SLIDER[0] - 120, SEGMENTS_SLIDER[1]))
         x.wait_for(differs(flat, 1.0), "fewer segments to change the faceted sphere")
-        coarse = x.wait_stable(VIEWPORT)
+        coarse = editor.settled("the segments drag")
         save(coarse, output, "shading_2_fewer_segments")
         x.key("ctrl+z")
         x.wait_for(matches(flat), "Ctrl+Z to bring the finer tessellation back")
         finish(x, editor)
-        counts = triangle_counts(editor.log)
+        counts = triangle_counts(editor.output())
         assert min(counts) < counts[0], f"fewer segments should draw fewer triangles: {counts}"
         print(f"ok: flat shading and the segments slider changed the sphere; triangles {sorted(set(counts))}")
 
@@ -149,12 +149,12 @@ def scenario_open_mesh(x, glint, output, state):
     with start(x, glint, output, state) as editor:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.key("ctrl+m")  # File ▸ Open mesh…: the file browser
-        type_path(x, base, path)
+        type_path(editor, base, path)
         x.wait_for(differs(base), "the octahedron to show")
-        loaded = x.wait_stable(VIEWPORT)
+        loaded = editor.settled("the mesh load")
         save(loaded, output, "open_mesh_1_octahedron")
         finish(x, editor)
-        counts = triangle_counts(editor.log)
+        counts = triangle_counts(editor.output())
         assert counts[-1] == counts[0] + 8, f"the octahedron adds 8 triangles: {counts}"
         print(f"ok: the OBJ loaded through the file browser; triangles {counts[0]} → {counts[-1]}")
 

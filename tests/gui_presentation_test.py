@@ -105,7 +105,7 @@ def scenario_layout(x, glint, output, state, width, height):
         editor.wait_layout(lambda l: "Surface probe" not in l["window"], "the probe to go (I)")
         v = layout["viewport"]
         middle = (int(v[0] + v[2] * 0.3), int(v[1] + v[3] * 0.3), int(v[0] + v[2] * 0.7), int(v[1] + v[3] * 0.7))
-        before = x.wait_stable(middle)
+        before = editor.settled("the probe going")
         x.key("w")  # … and the wireframe on: the picture changes
         x.wait_for(lambda shot: region_difference(shot, before, middle) > 0.5, "the wireframe (W)")
         assert "●" not in x.run("xdotool", "getwindowname", editor.window).stdout, "W counted as an edit of the lesson"
@@ -155,12 +155,9 @@ def scenario_lessons(x, glint, output, state):
             layout = editor.settled_layout(lambda l: "lesson note" in l["reserved"] and l["screen"][2] > 0,
                                            f"lesson {index} with its note")
             if shots:
-                write_png(x.wait_stable((0, 0, 400, 300)), os.path.join(shots, f"lesson_{index:02d}.png"))
+                write_png(editor.settled(f"lesson {index}"), os.path.join(shots, f"lesson_{index:02d}.png"))
             cx, cy = free_point(layout)
             x.drag((cx, cy), (cx + 80, cy + 20))  # orbit: looking around, not an edit
-            viewport = tuple(int(v) for v in (layout["viewport"][0], layout["viewport"][1],
-                                              layout["viewport"][0] + layout["viewport"][2], layout["viewport"][1] + layout["viewport"][3]))
-            x.wait_stable(viewport)  # the drag's events are all drawn
             layout = editor.settled_layout(lambda l: True, f"lesson {index} after the orbit")
             assert "Unsaved changes" not in layout["window"], f"orbiting lesson {index} asked to save"
             assert "●" not in x.window_title(editor.window), f"orbiting lesson {index} counted as an edit"

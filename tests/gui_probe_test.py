@@ -8,8 +8,8 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import pixel, run_scenario_from_arguments  # noqa: E402
-from gui_editor_test import (BACKGROUND_SPOT, SPHERE_CENTRE, VIEWPORT, Editor, close_window, lit_sphere,  # noqa: E402
+from gui_test_support import LoggedEditor, pixel, run_scenario_from_arguments  # noqa: E402
+from gui_editor_test import (BACKGROUND_SPOT, SPHERE_CENTRE, VIEWPORT, close_window, lit_sphere,  # noqa: E402
                              matches, save)
 
 PROBE_NORMAL = (255, 255, 255)  # app/classroom/probe_overlay.cpp
@@ -25,7 +25,7 @@ def probe_pixels(shot, colour, centre, radius=120):
 
 
 def scenario_probe(x, glint, output, state):
-    editor = Editor(x, glint, output, state)
+    editor = LoggedEditor(x, glint, output, state)
     try:
         base = x.wait_for(lit_sphere, "the lit sphere")
         x.move(*PROBE_POINT)
@@ -52,7 +52,7 @@ def scenario_probe(x, glint, output, state):
         print(f"ok: probe arrows drawn ({probe_pixels(probed, PROBE_NORMAL, PROBE_POINT)} N pixels, "
               f"{probe_pixels(probed, PROBE_LIGHT, PROBE_POINT)} L pixels), hidden with I, miss marked")
     finally:
-        editor.kill()
+        editor.stop()
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui_test_support import XServer, pixel, write_png  # noqa: E402
+from gui_test_support import LoggedEditor, XServer, pixel, write_png  # noqa: E402
 
 # The largest coverage step between neighbouring pixels across the edge, median over the rows:
 # 1 without anti-aliasing; about 0.5 with 4× MSAA.
@@ -65,11 +65,10 @@ def main():
     scene = sys.argv[3:]
     os.makedirs(output, exist_ok=True)
     with XServer(1280, 800) as x, tempfile.TemporaryDirectory() as state:
-        env = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output)
-        editor, _ = x.start_editor([glint, *scene], env, output)
+        editor = LoggedEditor(x, glint, output, state, scene)
         try:
             shot = x.wait_for(lambda image: find_sphere(image) is not None, "the red sphere")
-            shot = x.wait_stable((0, 0, shot[0], shot[1]))  # the full-resolution frame after the first
+            shot = editor.settled("the first frames")  # the full-resolution frame after the first
             write_png(shot, os.path.join(output, "gui_stage.png"))
             centre_x, centre_y, radius = find_sphere(shot)
             assert radius > 40, f"the sphere is {radius:.0f} px across: too small to measure"
@@ -80,8 +79,7 @@ def main():
             print(f"ok: sphere r={radius:.0f} px at ({centre_x:.0f}, {centre_y:.0f}); coverage step across its edge: "
                   f"median {median:.2f}, largest {max(steps):.2f} over {len(steps)} rows")
         finally:
-            editor.kill()
-            editor.communicate()
+            editor.stop()
 
 
 if __name__ == "__main__":

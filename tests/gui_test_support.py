@@ -27,6 +27,11 @@ def wait_until(check, what, timeout=WAIT_SECONDS, interval=0.25):
         time.sleep(interval)
 
 
+def read_text(path):
+    with open(path, errors="replace") as text:
+        return text.read()
+
+
 class EditorExited(RuntimeError):
     """The editor process ended before its window appeared."""
 
@@ -65,22 +70,26 @@ class XServer:
             if found:
                 return found[0]
             if process is not None and process.poll() is not None:
-                raise EditorExited(f"exit status {process.returncode}; its output:\n{process.communicate()[0][-2000:]}")
+                said = process.communicate()[0] or ""  # empty where the output goes to a file
+                raise EditorExited(f"exit status {process.returncode}; its output:\n{said[-2000:]}")
             time.sleep(0.2)
         raise RuntimeError(f"no window named {name!r} appeared in {timeout} s")
 
-    def start_editor(self, command, env, cwd, attempts=2):
-        """Starts the editor (command = [glint, arguments…]) and waits for its window; returns
-        (process, window). An editor that cannot open a window renders headless and exits (seen
-        once in a while on a loaded machine): it is started once more, and what it printed is
-        shown either way."""
+    def start_editor(self, command, env, cwd, log_path=None, attempts=2):
+        """Starts the editor (command = [glint, arguments…]) with its output in a pipe
+        (process.stdout) or in the file log_path, and waits for its window; returns (process, window).
+        An editor that cannot open a window renders headless and exits (seen once in a while on a
+        loaded machine): it is started once more, and what it printed is shown either way."""
         for attempt in range(1, attempts + 1):
-            process = subprocess.Popen(command, env=env, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                       text=True)
+            output = open(log_path, "w") if log_path else subprocess.PIPE
+            process = subprocess.Popen(command, env=env, cwd=cwd, stdout=output, stderr=subprocess.STDOUT, text=True)
+            if log_path:
+                output.close()  # the editor holds its own copy
             try:
                 return process, self.find_window("Glint", process=process)
             except EditorExited as exited:
-                print(f"the editor exited before showing a window (attempt {attempt}): {exited}", flush=True)
+                said = read_text(log_path)[-2000:] if log_path else ""
+                print(f"the editor exited before showing a window (attempt {attempt}): {exited}{said}", flush=True)
         raise RuntimeError(f"the editor did not open a window in {attempts} attempts")
 
     # --- real input through xdotool ------------------------------------------------------------
@@ -142,17 +151,6 @@ class XServer:
             write_png(shots[0], os.path.join(os.environ.get("GLINT_GUI_FAILURE_DIR", "."), "failure.png"))
             raise
 
-    def wait_stable(self, box, timeout=WAIT_SECONDS, interval=0.3):
-        """Waits until two screenshots in a row agree over box (the application finished drawing)."""
-        shots = [self.screenshot()]
-
-        def settled():
-            shots.append(self.screenshot())
-            previous, shot = shots[-2:]
-            del shots[:-1]
-            return shot if region_difference(shot, previous, box) == 0 else None
-        return wait_until(settled, f"the screen to settle over {box}", timeout, interval)
-
     def window_title(self, window):
         return self.run("xdotool", "getwindowname", window, check=False).stdout.strip()
 
@@ -171,21 +169,25 @@ class XServer:
 
 
 class LoggedEditor:
-    """The editor with its output in OUTPUT/editor.log and GLINT_LOG_LAYOUT=1, so the rectangles
-    it prints each time the layout changes can be read while it runs."""
+    """The editor with its output in OUTPUT/editor.log, GLINT_LOG_LAYOUT=1 and GLINT_LOG_IDLE=1, so
+    the rectangles it prints each time the layout changes and the moments it sleeps with everything
+    drawn can be read while it runs."""
 
-    def __init__(self, x, glint, output, state, arguments, env=None):
+    def __init__(self, x, glint, output, state, arguments=(), env=None):
         self.x = x
         self.log_path = os.path.join(output, "editor.log")
-        self.log = open(self.log_path, "w")
-        environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LOG_LAYOUT="1", **(env or {}))
-        self.process = subprocess.Popen([glint, *arguments], env=environment, cwd=output, stdout=self.log,
-                                        stderr=subprocess.STDOUT)
-        self.window = x.find_window("Glint", process=self.process)
+        environment = dict(x.env, GLINT_STATE_DIR=state, GLINT_GUI_FAILURE_DIR=output, GLINT_LOG_LAYOUT="1",
+                           GLINT_LOG_IDLE="1", **(env or {}))
+        self.process, self.window = x.start_editor([glint, *arguments], environment, output, self.log_path)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exception):
+        self.stop()
 
     def output(self):
-        with open(self.log_path, errors="replace") as log:
-            return log.read()
+        return read_text(self.log_path)
 
     def layout(self):
         """The last complete block of rectangles: {"screen": …, "viewport": …, "window": {name: rect},
@@ -224,20 +226,14 @@ class LoggedEditor:
             return seen[0] if seen[0] and condition(seen[0]) else None
         return wait_until(met, lambda: f"{what}; the last layout: {seen[0]}", timeout)
 
-    def settled_layout(self, condition, what, quiet_seconds=1.0, timeout=WAIT_SECONDS):
-        """A layout for which condition holds and that has not changed for quiet_seconds (windows
-        settle over a few frames)."""
-        seen = {"text": None, "since": time.time()}
-
-        def settled():
-            self.running(what)
-            text = self.output()
-            if text != seen["text"]:
-                seen["text"], seen["since"] = text, time.time()
-                return None
-            layout = self.layout()
-            return layout if layout and condition(layout) and time.time() - seen["since"] >= quiet_seconds else None
-        return wait_until(settled, lambda: f"{what} (settled); the last layout: {self.layout()}", timeout)
+    def settled_layout(self, condition, what, timeout=WAIT_SECONDS):
+        """A layout for which condition holds, once the editor has drawn all it was asked for
+        (windows settle over a few frames)."""
+        self.wait_layout(condition, what, timeout)
+        self.settled(what, timeout)
+        layout = self.layout()
+        assert condition(layout), f"{what} went again once the editor settled; the last layout: {layout}"
+        return layout
 
     def idle(self):
         """(events, pointer) of the editor's last "glint idle N X Y" line (GLINT_LOG_IDLE=1): the window
@@ -257,6 +253,18 @@ class LoggedEditor:
             return idle and idle[0] > after and (pointer is None or idle[1] == tuple(pointer)) and idle[0]
         return wait_until(met, lambda: f"the editor idle after {what} (last: {self.idle()})", timeout)
 
+    def settled(self, what, timeout=WAIT_SECONDS):
+        """A screenshot once the editor has handled and drawn all input sent so far (GLINT_LOG_IDLE=1).
+        A one-pixel pointer nudge marks "so far": the editor reports the nudged pointer only when
+        it sleeps after handling the nudge, and so everything sent before it."""
+        here = self.x.run("xdotool", "getmouselocation", "--shell").stdout.split()
+        px, py = (int(field.split("=")[1]) for field in here[:2])
+        nudged = (px + 1 if px < 100 else px - 1, py)
+        last = self.idle()
+        self.x.move(*nudged)
+        self.wait_idle(what, after=last[0] if last else -1, pointer=nudged, timeout=timeout)
+        return self.x.screenshot()
+
     def wait_for_title(self, fragment, timeout=WAIT_SECONDS):
         return self.x.wait_for_title(self.window, fragment, timeout, running=self.running)
 
@@ -267,7 +275,6 @@ class LoggedEditor:
         if self.process.poll() is None:
             self.process.kill()
             self.process.wait(timeout=10)
-        self.log.close()
 
 
 def parse_xwd(data):

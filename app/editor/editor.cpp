@@ -79,9 +79,13 @@ void noteDrop(GLFWwindow*, int count, const char** paths) {
 // "glint idle N X Y": the window events handled since start and where the pointer is, printed when
 // the editor sleeps with everything drawn; the GUI tests' sign that what they sent is handled and
 // on screen (tests/gui_test_support.py: wait_idle).
-void logIdle(GLFWwindow* window) {
+// The pointer is asked for before the last poll: the query is a round trip to the X server, so
+// every event sent before its answer is queued by then, and the poll finds it.
+void logIdleUnlessEventWaits(GLFWwindow* window) {
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window, &x, &y);
+    glfwPollEvents();
+    if (gEventSeen) return;
     std::printf("glint idle %llu %.0f %.0f\n", static_cast<unsigned long long>(gEventCount), x, y);
     std::fflush(stdout);
 }
@@ -237,7 +241,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
     double secondsToAutosave = 1e9;
     double secondsToBrdfPoll = 1e9;
-    // GLINT_LOG_IDLE=1: logIdle each time the editor has drawn all it was asked for (no frame,
+    // GLINT_LOG_IDLE=1: "glint idle" each time the editor has drawn all it was asked for (no frame,
     // band, program or load pending) and finds no input waiting, before it sleeps.
     const bool idleLog = std::getenv("GLINT_LOG_IDLE") != nullptr;
     while (!state.quitNow) {
@@ -246,10 +250,7 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
             {secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
         const bool drawnAll = framesToDraw == 0 && !state.meshLoad && !state.environmentLoad &&
                               !state.waitingForPrograms && refresh.secondsToRefine(glfwGetTime(), false) >= 1e8;
-        if (idleLog && drawnAll) {
-            glfwPollEvents();
-            if (!gEventSeen) logIdle(window);
-        }
+        if (idleLog && drawnAll) logIdleUnlessEventWaits(window);
         if (gEventSeen) {}  // input arrived while idleness was checked: draw it
         else if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
         else if (state.environmentLoad) glfwWaitEventsTimeout(0.25);  // its progress; the precompute keeps the cores
