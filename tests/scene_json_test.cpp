@@ -169,6 +169,10 @@ TEST(SceneJsonErrors, IndexOfRefractionMustBePositive) {
 TEST(SceneJsonErrors, VersionAndFormat) {
     EXPECT_NE(expectError(R"({"format": "glint-scene"})").message.find("version"), std::string::npos);
     EXPECT_NE(expectError(R"({"format": "glint-scene", "version": 7})").message.find("newer Glint"), std::string::npos);
+    auto newerMaterial = parseMaterial(R"({"format": "glint-material", "version": 99, "model": "lambert"})", "m.json");
+    ASSERT_FALSE(newerMaterial.ok());
+    EXPECT_NE(newerMaterial.error().format().find("m.json:1:"), std::string::npos) << newerMaterial.error().format();
+    EXPECT_NE(newerMaterial.error().format().find("written by a newer Glint"), std::string::npos);
     EXPECT_NE(expectError(R"({"format": "something", "version": 1})").message.find("glint-scene"), std::string::npos);
     EXPECT_NE(expectError(R"([1, 2, 3])").message.find("must be a JSON object"), std::string::npos);
 }

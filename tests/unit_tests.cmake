@@ -7,7 +7,6 @@ add_executable(core_tests
   brdf_file_test.cpp
   brdf_test.cpp
   classroom_display_test.cpp
-  format_migration_test.cpp
   environment_test.cpp
   fresnel_test.cpp
   interchange_gltf_test.cpp

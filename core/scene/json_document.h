@@ -18,8 +18,6 @@ public:
     static Result<JsonDocument> parse(const std::string& text, const std::string& file);
 
     const nlohmann::json& root() const { return root_; }
-    // For upgrading an older file in place (format_migration.h); positions of moved keys are lost.
-    nlohmann::json& mutableRoot() { return root_; }
     const std::string& file() const { return file_; }
 
     // Where the value at `pointer` (RFC 6901, "" for the root) starts; for an object member,

@@ -6,7 +6,6 @@
 
 #include "display/quantisation.h"
 #include "interchange/file_material_json.h"
-#include "scene/format_migration.h"
 #include "scene/environment_json.h"
 #include "scene/json_object_reader.h"
 #include "scene/json_vectors.h"
@@ -37,17 +36,6 @@ void readHeader(ObjectReader& root, const char* expectedFormat) {
         root.fail("version", "the file is version " + std::to_string(version) +
                                  ", written by a newer Glint; this one reads up to version " +
                                  std::to_string(kSceneFormatVersion));
-}
-
-// Upgrades a file written by an older Glint before it is read (format_migration.h).
-Status upgradeOlderVersion(JsonDocument& document, bool isScene) {
-    nlohmann::json& root = document.mutableRoot();
-    if (!root.is_object() || !root.contains("version") || !root["version"].is_number_integer()) return success();
-    const int version = root["version"].get<int>();
-    if (version < 1 || version >= kSceneFormatVersion) return success();  // readHeader judges these
-    Status upgraded = migrate(root, version, kSceneFormatVersion, formatMigrations(), isScene);
-    if (!upgraded) return makeError(upgraded.error().message, document.locate("/version"));
-    return success();
 }
 
 // --- materials ------------------------------------------------------------------------------
@@ -326,7 +314,6 @@ Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment)
 Result<Scene> parseScene(const std::string& text, const std::string& file, EnvironmentMapLoading environment) {
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
-    if (Status upgraded = upgradeOlderVersion(*document, true); !upgraded) return upgraded.error();
     try {
         return readScene(*document, environment);
     } catch (const JsonReadError& error) {
@@ -382,7 +369,6 @@ Status saveScene(const Scene& scene, const std::string& path) {
 Result<Material> parseMaterial(const std::string& text, const std::string& file) {
     auto document = JsonDocument::parse(text, file);
     if (!document) return document.error();
-    if (Status upgraded = upgradeOlderVersion(*document, false); !upgraded) return upgraded.error();
     try {
         ObjectReader root = readRoot(*document, "material");
         readHeader(root, kMaterialFormat);
