@@ -2,6 +2,8 @@
 // pixel by pixel on linear float output: the test that keeps the GLSL twins honest.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -10,6 +12,7 @@
 #include "gpu_test_support.h"
 #include "image/image_io.h"
 #include "test_support.h"
+#include "util/file_io.h"
 
 namespace glint {
 namespace {
@@ -167,6 +170,37 @@ TEST(GpuRenderer, ShaderErrorsNameTheFileAndLine) {
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().message.find("brdf/lambert.glsl:4:"), std::string::npos) << status.error().format();
     EXPECT_NE((*renderer)->shaderError().find("undefinedThing"), std::string::npos);
+}
+
+// A shader broken while Glint runs: the last good program keeps drawing, the error (named in the
+// included file, whatever source number the driver reports) stays until the file compiles again.
+TEST(GpuRenderer, AFailedHotReloadKeepsItsErrorUntilTheFileCompiles) {
+    const std::string directory = test::outputDirectory("hot_reload_shaders");
+    std::filesystem::copy(std::string(GLINT_TEST_DATA_DIR) + "/../shaders", directory,
+                          std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
+    const std::string lambert = directory + "/brdf/lambert.glsl";
+    const std::string good = readTextFile(lambert).value();
+    auto platform = OsMesaPlatform::create();
+    ASSERT_TRUE(platform.ok());
+    auto renderer = Renderer::create(**platform, ShaderSources(directory));
+    ASSERT_TRUE(renderer.ok()) << renderer.error().format();
+    const Scene scene = test::loadTestScene("scenes/lambert_sun.json");
+    ASSERT_TRUE((*renderer)->renderRadiance(scene, 16, 16).ok());
+    const auto saveAt = [&](const std::string& text, int secondsLater) {  // a later time than the build saw
+        std::ofstream(lambert) << text;
+        std::filesystem::last_write_time(lambert, std::filesystem::file_time_type::clock::now() + std::chrono::seconds(secondsLater));
+    };
+    std::string broken = good;
+    broken.insert(broken.find('{', broken.find("vec3 evalLambert(")) + 1, "\n    float q = undefinedThing;");
+    saveAt(broken, 2);
+    EXPECT_TRUE((*renderer)->reloadChangedShaders());
+    ASSERT_TRUE((*renderer)->renderRadiance(scene, 16, 16).ok()) << "the last good program draws";
+    EXPECT_NE((*renderer)->shaderError().find("brdf/lambert.glsl:"), std::string::npos) << (*renderer)->shaderError();
+    EXPECT_NE((*renderer)->shaderError().find("undefinedThing"), std::string::npos);
+    saveAt(good, 4);
+    EXPECT_TRUE((*renderer)->reloadChangedShaders());
+    ASSERT_TRUE((*renderer)->renderRadiance(scene, 16, 16).ok());
+    EXPECT_EQ((*renderer)->shaderError(), "");
 }
 
 }  // namespace

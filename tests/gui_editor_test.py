@@ -30,6 +30,9 @@ screenshots. One scenario per ctest entry:
   redraw_changes only what changed is drawn and presented: after a slider drag (reduced frames, the
                full frame in bands after it) the window is, pixel for pixel, the frame drawn whole
                (the window unmapped and mapped again)
+  shader_error a shader broken on disk while the editor runs: its error (file:line) in the status
+               bar and the material panel, printed once; the sphere keeps its last good program;
+               the error goes when the file compiles again
   model_switch the Model combo from Blinn-Phong to Lambert: the sphere keeps its red (the diffuse
                albedo carries over) and loses its highlight, the panel says what was kept; one
                Ctrl+Z brings the Blinn-Phong material back
@@ -37,6 +40,7 @@ usage: gui_editor_test.py GLINT OUTPUT_DIR SCENARIO"""
 import glob
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -49,6 +53,7 @@ from gui_test_support import LoggedEditor, pixel, region_difference, run_scenari
 # left, material column 360 px on the right, status bar at the bottom). The light handle, shadow,
 # environment and texture scenarios open CLASSIC_SCENE instead: Glint's earlier default scene, a key and a
 # fill light, no shadow and no environment, which the lines marked (classic) are measured on.
+SHADER_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "shaders")
 CLASSIC_SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes", "editor_classic.json")
 VIEWPORT = (340, 40, 910, 760)
 SPHERE_CENTRE = (625, 375)
@@ -68,7 +73,9 @@ TEXTURE_MENU_CHECKER = (1219, 224)
 IMAGE_TEXTURE_BUTTON = (975, 189)    # once textured, "Image" no longer fits: it opens the next line
 IMAGE_TEXTURE_MENU_IMAGE = (1010, 227)
 TEXTURE_MENU_BOX = (970, 173, 1275, 303)  # where either menu shows
-DIALOG_BOX = (450, 370, 840, 430)    # the middle of the window, where a centred dialog shows
+DIALOG_BOX = (450, 370, 840, 430)
+STATUS_BAR = (0, 780, 1280, 800)
+ERROR_IN_MATERIAL_PANEL = (925, 460, 1275, 545)  # below the default sphere's Blinn-Phong sliders    # the middle of the window, where a centred dialog shows
 SPHERE_ROW = (420, 830, 375)         # x from, x to, y: a row across the lit sphere
 MODEL_COMBO = (1040, 117)            # the material column's Model combo; its list opens below:
 MODEL_LAMBERT = (980, 145)           #   Lambert first
@@ -97,6 +104,13 @@ def dialog_shown(reference):
 def modal_shown(reference):
     """ImGui lightens everything behind a modal; the dark background shows it."""
     return lambda shot: sum(pixel(shot, *BACKGROUND_SPOT)) > sum(pixel(reference, *BACKGROUND_SPOT)) + 60
+
+
+def problem_text_shown(shot, box):
+    """Whether the red of a problem the user should fix (panels/widgets.h) shows in box."""
+    left, top, right, bottom = box
+    return sum(1 for y in range(top, bottom) for x in range(left, right)
+               if (lambda r, g, b: r > 200 and g < 150 and b < 130)(*pixel(shot, x, y))) > 20
 
 
 def save(shot, output, name):
@@ -637,6 +651,38 @@ def scenario_model_switch(x, glint, output, state):
         x.key("ctrl+z")
         x.wait_for(matches(base), "one Ctrl+Z to bring the Blinn-Phong material back")
         print("ok: Blinn-Phong → Lambert kept the red albedo, one Ctrl+Z undid the switch")
+
+
+def scenario_shader_error(x, glint, output, state):
+    shaders = os.path.join(output, "shaders")
+    shutil.rmtree(shaders, ignore_errors=True)
+    shutil.copytree(SHADER_DIR, shaders)
+    shader = os.path.join(shaders, "brdf", "blinn_phong.glsl")
+    with open(shader) as text:
+        good = text.read()
+    with LoggedEditor(x, glint, output, state, env={"GLINT_SHADER_DIR": shaders}) as editor:
+        x.wait_for(lit_sphere, "the lit sphere")
+        x.move(1200, 10)  # the menu bar's empty end
+        base = editor.settled("the first frames")
+        with open(shader, "w") as text:  # as a shader writer's editor saves it: no event reaches Glint
+            text.write(good.replace("vec3 evalBlinnPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {",
+                                    "vec3 evalBlinnPhong(MaterialParams p, vec3 wi, vec3 wo, ShadingFrame frame) {\n"
+                                    "    undefinedThing;", 1))
+        wait_until(lambda: editor.running("the error") and "blinn_phong.glsl:6:" in editor.output(),
+                   "the shader error naming blinn_phong.glsl:6 in the editor's output")
+        assert not problem_text_shown(base, STATUS_BAR)
+        broken = x.wait_for(lambda shot: problem_text_shown(shot, STATUS_BAR), "the error in the status bar")
+        save(broken, output, "shader_error_1_shown")
+        assert matches(base)(broken), "the last good program should keep drawing the sphere"
+        assert problem_text_shown(broken, ERROR_IN_MATERIAL_PANEL), "the material panel should show the error"
+        with open(shader, "w") as text:
+            text.write(good)
+        fixed = x.wait_for(lambda shot: not problem_text_shown(shot, STATUS_BAR), "the error to go once the shader compiles")
+        assert not problem_text_shown(fixed, ERROR_IN_MATERIAL_PANEL)
+        save(fixed, output, "shader_error_2_fixed")
+        assert editor.output().count("blinn_phong.glsl:6:") == 1, "the error should be printed once, not each frame"
+        print("ok: a broken shader saved while the editor ran was named in the status bar and the material panel; "
+              "the sphere kept its last good program; the error went when the file compiled again")
 
 
 def scenario_redraw_changes(x, glint, output, state):

@@ -22,9 +22,13 @@ TEST(ShaderSources, IncludesOnceAndKeepsLineNumbers) {
     auto assembled = assembleShader(ShaderSources(directory), "main.frag", "#define X 1\n");
     ASSERT_TRUE(assembled.ok()) << assembled.error().format();
     EXPECT_EQ(assembled->files, (std::vector<std::string>{"main.frag", "<generated prelude>", "common/a.glsl"}));
-    EXPECT_EQ(assembled->text,
-              "#version 410 core\n#line 1 1\n#define X 1\n#line 2 0\n#line 1 2\nfloat a() { return 1.0; }\n"
-              "#line 3 0\n#line 4 0\nvoid main() {}\n");
+    EXPECT_EQ(assembled->text, "#version 410 core\n#define X 1\nfloat a() { return 1.0; }\nvoid main() {}\n");
+    const std::vector<std::pair<int, int>> expected = {{0, 1}, {1, 1}, {2, 1}, {0, 4}};
+    ASSERT_EQ(assembled->lineOrigins.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(assembled->lineOrigins[i].file, expected[i].first) << "line " << i + 1;
+        EXPECT_EQ(assembled->lineOrigins[i].line, expected[i].second) << "line " << i + 1;
+    }
 }
 
 TEST(ShaderSources, MissingIncludeNamesTheIncludingLine) {
@@ -53,10 +57,14 @@ TEST(ShaderSources, EmbeddedCopiesMatchTheSourceTree) {
     EXPECT_GE(embeddedShaders().size(), 8u);
 }
 
-TEST(ShaderSources, MapsMesaAndNvidiaLogs) {
-    const std::vector<std::string> files = {"surface.frag", "brdf/lambert.glsl"};
-    EXPECT_EQ(mapCompileLog("1:7(12): error: `foo' undeclared\n", files), "brdf/lambert.glsl:7:12: error: `foo' undeclared\n");
-    EXPECT_EQ(mapCompileLog("0(3) : error C1008: undefined variable\n", files), "surface.frag:3: error C1008: undefined variable\n");
+TEST(ShaderSources, MapsMesaAndNvidiaLogsThroughTheAssembledLines) {
+    // Line 3 of the text is line 7 of the included file, whatever source-string number the driver names.
+    AssembledShader shader;
+    shader.files = {"surface.frag", "brdf/lambert.glsl"};
+    shader.lineOrigins = {{0, 1}, {0, 2}, {1, 7}, {0, 3}};
+    EXPECT_EQ(mapCompileLog("0:3(12): error: `foo' undeclared\n", shader), "brdf/lambert.glsl:7:12: error: `foo' undeclared\n");
+    EXPECT_EQ(mapCompileLog("0(4) : error C1008: undefined variable\n", shader), "surface.frag:3: error C1008: undefined variable\n");
+    EXPECT_EQ(mapCompileLog("0:99(1): error: past the end\n", shader), "<line 99>:1: error: past the end\n");
 }
 
 TEST(MaterialGlsl, FollowsTheParameterTable) {

@@ -76,6 +76,12 @@ void noteDrop(GLFWwindow*, int count, const char** paths) {
     noteEvent();
 }
 
+// The renderer's error, shown in the editor and printed once each time it changes (not each frame).
+void noteRenderProblem(EditorState& state, const std::string& problem) {
+    if (!problem.empty() && problem != state.renderProblem) std::fprintf(stderr, "glint: %s\n", problem.c_str());
+    state.renderProblem = problem;
+}
+
 // "glint idle N X Y": the window events handled since start and where the pointer is, printed when
 // the editor sleeps with everything drawn; the GUI tests' sign that what they sent is handled and
 // on screen (tests/gui_test_support.py: wait_idle).
@@ -246,8 +252,9 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     const bool idleLog = std::getenv("GLINT_LOG_IDLE") != nullptr;
     while (!state.quitNow) {
         gEventSeen = false;
-        const double secondsToWake = std::min(
-            {secondsToAutosave, secondsToBrdfPoll, refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
+        const double secondsToShaderPoll = renderer.hotReloadsShaders() ? 0.5 : 1e9;  // a shader edited elsewhere shows
+        const double secondsToWake = std::min({secondsToAutosave, secondsToBrdfPoll, secondsToShaderPoll,
+                                               refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
         const bool drawnAll = framesToDraw == 0 && !state.meshLoad && !state.environmentLoad &&
                               !state.waitingForPrograms && refresh.secondsToRefine(glfwGetTime(), false) >= 1e8;
         if (idleLog && drawnAll) logIdleUnlessEventWaits(window);
@@ -395,8 +402,8 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
                 rows = refineBandRows(plan.band, plan.bands, renderPixels.y, changedRows);
                 refinedRows = renderPixels.y - rows.first;
             }
-            if (Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows); !status)
-                std::fprintf(stderr, "glint: %s\n", status.error().format().c_str());
+            const Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows);
+            noteRenderProblem(state, !status ? status.error().format() : renderer.shaderError());
             glFinish();
             renderMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             // A frame drawn in bands shows its bands' time so far, the whole frame's at the last.

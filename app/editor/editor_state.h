@@ -1,4 +1,4 @@
-// EditorState: everything the editor's panels and dialogs work on, in one small struct. The
+// EditorState: everything the editor's panels and dialogs work on, in one struct grouped by use. The
 // scene itself lives in `session` and changes only through it (app/editor/edit_session.h).
 // It holds no GL objects and draws nothing.
 #pragma once
@@ -64,6 +64,9 @@ struct EditorState {
     long long triangleCount = 0;  // submitted by the last render
     std::string rendererDescription;
     std::string samplesNote;  // MSAA samples asked above what the OpenGL offers (Renderer::samplesNote)
+    // The renderer's last error: a shader that does not compile (a hot reload, a .brdf) or a
+    // failed frame; the status bar and the material panel show it until it goes.
+    std::string renderProblem;
     SceneMessage statusMessage;  // one line ("Saved …")
 
     // Dialogs. An action waiting behind the unsaved-changes prompt (quit, new, open) runs once

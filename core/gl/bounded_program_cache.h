@@ -47,10 +47,14 @@ public:
         return entries_.insert_or_assign(key, Entry{std::move(value), frame}).first->second.value;
     }
 
-    // Calls visit(key, value) for every entry (to rebuild programs whose files changed).
+    // Calls visit(key, value) for every entry (to rebuild programs whose files changed, to read them).
     template <class Visit>
     void forEach(Visit&& visit) {
         for (auto& [key, entry] : entries_) visit(key, entry.value);
+    }
+    template <class Visit>
+    void forEach(Visit&& visit) const {
+        for (const auto& [key, entry] : entries_) visit(key, entry.value);
     }
     size_t size() const { return entries_.size(); }
     size_t capacity() const { return capacity_; }

@@ -20,20 +20,13 @@ std::string includeName(const BrdfFile& file) {
     return plain ? file.path : "custom.brdf";
 }
 
-// Mesa names the right line but not always the right source string (some errors from included
-// text come back as string 0, surface.frag). So the .brdf text is numbered from this offset on,
-// and any error line above it is the .brdf file's line (offset + N), whatever file Mesa named.
-constexpr int kBrdfLineOffset = 100000;
-
-std::string renameBrdfLines(const std::string& log, const std::string& brdfPath) {
-    static const std::regex located(R"(^(.*?):(\d+):(\d+):)");
+// Compile errors name the .brdf's include name (shader_sources.h maps them); the user knows its path.
+std::string nameTheBrdfFile(const std::string& log, const BrdfFile& file) {
+    const std::string included = includeName(file) + ":";
     std::istringstream lines(log);
     std::string line, out;
     while (std::getline(lines, line)) {
-        std::smatch match;
-        if (std::regex_search(line, match, located) && match[2].length() < 9 && std::stoi(match[2]) > kBrdfLineOffset)
-            line = brdfPath + ":" + std::to_string(std::stoi(match[2]) - kBrdfLineOffset) + ":" + match[3].str() + ":" +
-                   match.suffix().str();
+        if (line.rfind(included, 0) == 0) line = file.path + ":" + line.substr(included.size());
         out += line + "\n";
     }
     if (!out.empty()) out.pop_back();
@@ -80,7 +73,7 @@ GeneratedShaderFiles customBrdfShaderFiles(const CustomBrdf& brdf) {
         "vec3 glintCustomNoAmbient(MaterialParams p, vec3 wo, ShadingFrame frame) { return vec3(0.0); }\n"
         "#define GLINT_AMBIENT_REFLECTANCE glintCustomNoAmbient\n";
     return {{"generated/material.glsl", std::move(wrapper)},
-            {name, "#line " + std::to_string(kBrdfLineOffset + 1) + "\n" + file.shaderText}};
+            {name, file.shaderText}};
 }
 
 Result<const ShaderProgram*> CustomBrdfPrograms::program(const ShaderSources& sources, const CustomBrdf& brdf,
@@ -109,7 +102,7 @@ Result<const ShaderProgram*> CustomBrdfPrograms::cached(const ShaderSources& sou
             built->bindBlock("MaterialBlock", kMaterialBinding);
             entry = &programs_.insert(id, std::move(*built), frame);
         } else {
-            entry = &programs_.insert(id, makeError(renameBrdfLines(built.error().message, brdf.file.path), {brdf.file.path}), frame);
+            entry = &programs_.insert(id, makeError(nameTheBrdfFile(built.error().message, brdf.file), {brdf.file.path}), frame);
         }
     }
     if (const auto* error = std::get_if<Diagnostic>(entry)) return *error;

@@ -252,16 +252,23 @@ const ShaderProgram& Renderer::displayProgram(const DisplaySettings& display) {
     if (auto found = displayPrograms_.find(prelude); found != displayPrograms_.end()) return found->second;
     auto built = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude);
     if (!built) {
-        shaderError_ = built.error().format();
+        frameShaderError_ = built.error().format();
         return displayPrograms_.at("");
     }
     return displayPrograms_.insert_or_assign(prelude, std::move(*built)).first->second;
 }
 
+std::string Renderer::shaderError() const {
+    std::string reloadError = !displayReloadError_.empty() ? displayReloadError_ : backgroundReloadError_;
+    surfacePrograms_.forEach([&](const SurfaceKey&, const SurfaceProgram& entry) {
+        if (reloadError.empty()) reloadError = entry.reloadError;
+    });
+    return !reloadError.empty() ? reloadError : frameShaderError_;
+}
+
 bool Renderer::reloadChangedShaders() {
     if (!sources_.readsFromDisk()) return false;
     bool changed = false;
-    std::string error;
     // Whether `files` changed since `builtAt`, which then becomes their newest modification.
     const auto outdated = [&](const std::vector<std::string>& files, long long& builtAt) {
         const long long newest = newestModification(files);
@@ -274,20 +281,23 @@ bool Renderer::reloadChangedShaders() {
         if (!outdated(entry.files, entry.builtAt)) return;
         const auto& [model, variant, textured] = key;
         if (auto rebuilt = buildSurfaceProgram(model, variant, {textured})) entry = std::move(*rebuilt);
-        else error = rebuilt.error().format();
+        else entry.reloadError = rebuilt.error().format();
     });
-    if (outdated(displayFiles_, displayBuiltAt_))
+    if (outdated(displayFiles_, displayBuiltAt_)) {
+        displayReloadError_.clear();
         for (auto& [prelude, program] : displayPrograms_) {
             if (auto rebuilt = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude))
                 program = std::move(*rebuilt);
-            else error = rebuilt.error().format();
+            else displayReloadError_ = rebuilt.error().format();
         }
-    if (outdated(backgroundFiles_, backgroundBuiltAt_))
+    }
+    if (outdated(backgroundFiles_, backgroundBuiltAt_)) {
+        backgroundReloadError_.clear();
         backgroundPrograms_.forEach([&](const std::string& prelude, ShaderProgram& program) {
             if (auto rebuilt = buildBackgroundProgram(prelude)) program = std::move(*rebuilt);
-            else error = rebuilt.error().format();
+            else backgroundReloadError_ = rebuilt.error().format();
         });
-    if (changed) shaderError_ = error;
+    }
     if (changed) {
         for (SingleSampleTargets& kept : singleSample_) kept.held.reset();
         multisampleHeld_.reset();
@@ -507,7 +517,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
         if (!uniformBackground)
             background = backgroundProgram(specialise_ ? backgroundSpecialisation(packed, scene.environment, fusedDisplay_) : "");
         if (!background) {
-            shaderError_ = background.error().format();
+            frameShaderError_ = background.error().format();
             result = background.error();
         } else if (*background) {
             glDepthMask(GL_FALSE);
@@ -559,7 +569,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
                        [&](const MeasuredMaterial&) { return measured_.program(sources_, variant, framesRendered_); }},
             material.kind);
         if (!program) {
-            shaderError_ = program.error().format();
+            frameShaderError_ = program.error().format();
             result = program.error();
             continue;
         }
@@ -636,7 +646,7 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     if (!result || !frame || frame->standIns || (rows.count > 0 && !changesOnly)) held.reset();
     else if (rows.count > 0) held->newer = held->newer ? boundsOf(*held->newer, *region) : *region;  // a band: the rest holds `held`
     else held = std::move(frame);
-    if (result) shaderError_.clear();
+    if (result) frameShaderError_.clear();
     // An object was left out: the display pass runs again, from the float image where there is one.
     else if (radianceWritten_) fusedDisplay_.reset();
     if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;

@@ -144,8 +144,11 @@ public:
     // Shaders on disk that changed since they were compiled are rebuilt on the next render.
     // Returns true when something changed (so the caller redraws).
     bool reloadChangedShaders();
-    // The last shader error (empty when all compiled), for the UI.
-    const std::string& shaderError() const { return shaderError_; }
+    // Whether shaders are read from disk (and so may change while Glint runs).
+    bool hotReloadsShaders() const { return sources_.readsFromDisk(); }
+    // The shader error to show (empty when all compiled): a hot reload that failed, kept until its
+    // program compiles again (the last good one draws meanwhile); else the last frame's.
+    std::string shaderError() const;
     const std::string& description() const { return description_; }
     // The most MSAA samples this GL implementation offers for the radiance targets (GL_MAX_SAMPLES,
     // queried once). Requests above it render with this many; samplesNote() says so.
@@ -175,6 +178,7 @@ private:
         ShaderProgram program;
         std::vector<std::string> files;
         long long builtAt = 0;  // newest modification time of its files when built
+        std::string reloadError;  // why the last hot reload of its files failed; empty when it compiled
         // Drawn in this context: llvmpipe compiles a program's machine code per context at its
         // first draw, so only a program drawn before is a quick stand-in.
         bool drawn = false;
@@ -235,7 +239,8 @@ private:
     GlPlatform& platform_;
     ShaderSources sources_;
     std::string description_;
-    std::string shaderError_;
+    std::string frameShaderError_;  // a program the last frame needed that did not compile
+    std::string displayReloadError_, backgroundReloadError_;  // as SurfaceProgram::reloadError
     BoundedProgramCache<SurfaceKey, SurfaceProgram> surfacePrograms_{kSurfaceProgramCapacity};
     std::map<SurfaceKey, std::shared_ptr<PendingSurfaceProgram>> pendingPrograms_;
     std::set<SurfaceKey> failedInBackground_;  // built here instead, which reports the error

@@ -20,7 +20,7 @@ Result<GLuint> compileStage(GLenum stage, const AssembledShader& source, const s
     glGetShaderInfoLog(shader, length, nullptr, log.data());
     glDeleteShader(shader);
     // The mapped log already starts with file:line:column for each message.
-    std::string mapped = mapCompileLog(log.data(), source.files);
+    std::string mapped = mapCompileLog(log.data(), source);
     if (!mapped.empty() && mapped.back() == '\n') mapped.pop_back();
     return makeError("shader compile failed:\n" + mapped, {path});
 }

@@ -1,6 +1,7 @@
 // Shader sources, #include preprocessing and error-log mapping (see shader_sources.h).
 #include "gl/shader_sources.h"
 
+#include <charconv>
 #include <cstdlib>
 #include <regex>
 #include <set>
@@ -49,6 +50,11 @@ struct Assembler {
     AssembledShader out;
     std::set<std::string> included;
 
+    void emit(const std::string& line, int fileIndex, int lineNumber) {
+        out.text += line + "\n";
+        out.lineOrigins.push_back({fileIndex, lineNumber});
+    }
+
     Status append(const std::string& path, const SourceLocation& includedFrom, const std::string& prelude,
                   int depth) {
         if (depth > 32) return makeError("#include nested too deeply (a cycle?)", includedFrom);
@@ -61,7 +67,6 @@ struct Assembler {
         }
         const int fileIndex = static_cast<int>(out.files.size());
         out.files.push_back(path);
-        if (depth > 0) out.text += "#line 1 " + std::to_string(fileIndex) + "\n";
         std::istringstream lines(*text);
         std::string line;
         int lineNumber = 0;
@@ -71,18 +76,14 @@ struct Assembler {
             std::smatch match;
             if (std::regex_match(line, match, includePattern)) {
                 if (Status status = append(match[1], {path, lineNumber, 1}, {}, depth + 1); !status) return status;
-                out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(fileIndex) + "\n";
                 continue;
             }
-            out.text += line + "\n";
-            if (lineNumber == 1 && depth == 0 && line.rfind("#version", 0) == 0) {
-                if (!prelude.empty()) {
-                    const int preludeIndex = static_cast<int>(out.files.size());
-                    out.files.push_back("<generated prelude>");
-                    out.text += "#line 1 " + std::to_string(preludeIndex) + "\n" + prelude;
-                    if (prelude.back() != '\n') out.text += "\n";
-                }
-                out.text += "#line 2 " + std::to_string(fileIndex) + "\n";
+            emit(line, fileIndex, lineNumber);
+            if (lineNumber == 1 && depth == 0 && line.rfind("#version", 0) == 0 && !prelude.empty()) {
+                const int preludeIndex = static_cast<int>(out.files.size());
+                out.files.push_back("<generated prelude>");
+                std::istringstream preludeLines(prelude);
+                for (int preludeLine = 1; std::getline(preludeLines, line); ++preludeLine) emit(line, preludeIndex, preludeLine);
             }
         }
         return success();
@@ -98,21 +99,25 @@ Result<AssembledShader> assembleShader(const ShaderSources& sources, const std::
     return std::move(assembler.out);
 }
 
-std::string mapCompileLog(const std::string& log, const std::vector<std::string>& files) {
+std::string mapCompileLog(const std::string& log, const AssembledShader& shader) {
     static const std::regex mesaPattern(R"(^(\d+):(\d+)\((\d+)\):\s*)");
     static const std::regex nvidiaPattern(R"(^(\d+)\((\d+)\)\s*:\s*)");
-    auto fileName = [&](const std::string& index) {
-        const size_t i = std::stoul(index);
-        return i < files.size() ? files[i] : "<source " + index + ">";
+    // "file:line" of line `assembledLine` of the text (the driver's count, from 1).
+    auto origin = [&](const std::string& assembledLine) {
+        size_t i = 0;
+        std::from_chars(assembledLine.data(), assembledLine.data() + assembledLine.size(), i);
+        if (i < 1 || i > shader.lineOrigins.size()) return "<line " + assembledLine + ">";
+        const AssembledShader::Origin& from = shader.lineOrigins[i - 1];
+        return shader.files[static_cast<size_t>(from.file)] + ":" + std::to_string(from.line);
     };
     std::istringstream lines(log);
     std::string line, mapped;
     while (std::getline(lines, line)) {
         std::smatch match;
         if (std::regex_search(line, match, mesaPattern))
-            line = fileName(match[1]) + ":" + match[2].str() + ":" + match[3].str() + ": " + match.suffix().str();
+            line = origin(match[2]) + ":" + match[3].str() + ": " + match.suffix().str();
         else if (std::regex_search(line, match, nvidiaPattern))
-            line = fileName(match[1]) + ":" + match[2].str() + ": " + match.suffix().str();
+            line = origin(match[2]) + ": " + match.suffix().str();
         if (!line.empty()) mapped += line + "\n";
     }
     return mapped;

@@ -35,9 +35,17 @@ private:
 // source tree's shaders/ (hot-reloadable); else the embedded copies.
 ShaderSources defaultShaderSources();
 
+// The text has no #line directives: drivers do not all honour their source-string numbers (Mesa
+// reports an undeclared name in an included file as line N of string 0), so a compile log's line
+// numbers are counted in the whole text and mapped back through `lineOrigins`.
 struct AssembledShader {
-    std::string text;                // ready for glShaderSource
-    std::vector<std::string> files;  // source-string number in #line → file name
+    struct Origin {
+        int file;  // index into `files`
+        int line;  // 1-based, in that file
+    };
+    std::string text;                 // ready for glShaderSource
+    std::vector<std::string> files;   // the files it was assembled from (and "<generated prelude>")
+    std::vector<Origin> lineOrigins;  // where each line of `text` comes from
 };
 
 // Generated files that #include can name beside the real ones, e.g. "generated/material.glsl".
@@ -49,7 +57,8 @@ Result<AssembledShader> assembleShader(const ShaderSources& sources, const std::
                                        const std::string& prelude = {},
                                        const GeneratedShaderFiles& generated = {});
 
-// Rewrites "0:12(5): error: ..." (Mesa) or "0(12) : error ..." (NVIDIA) to "file:12:5: error: ...".
-std::string mapCompileLog(const std::string& log, const std::vector<std::string>& files);
+// Rewrites "0:812(5): error: ..." (Mesa) or "0(812) : error ..." (NVIDIA), line 812 of the
+// assembled text, to "file:12:5: error: ..." in the file that line came from.
+std::string mapCompileLog(const std::string& log, const AssembledShader& shader);
 
 }  // namespace glint

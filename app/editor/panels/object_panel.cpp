@@ -178,6 +178,7 @@ void drawObjectSection(EditorState& state) {
         state.textureParameter = textureFileRequest;
         requestFileBrowser(state.fileBrowser, FilePurpose::OpenTexture, state.session.path());
     }
+    if (!state.renderProblem.empty()) drawProblemText("The preview may not show this material as it is:\n" + state.renderProblem);
     if (!state.materialPanelMessage.empty()) {
         ImGui::PushTextWrapPos();
         ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", state.materialPanelMessage.c_str());

@@ -2,11 +2,13 @@
 // message (saved, opened, recovered).
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 #include "classroom/lesson_document.h"
 #include "editor/environment_loading.h"
 #include "editor/panels/panels.h"
+#include "editor/panels/widgets.h"
 
 namespace glint {
 
@@ -41,6 +43,14 @@ float drawStatusBar(EditorState& state, float top, float width) {
     ImGui::Text("%lld triangles", state.triangleCount);
     ImGui::SameLine(0, 24);
     ImGui::TextDisabled("%s", state.rendererDescription.c_str());
+    if (!state.renderProblem.empty()) {
+        ImGui::SameLine(0, 24);
+        // One line: the located messages after a first line such as "surface.frag: shader compile failed:".
+        const size_t firstBreak = state.renderProblem.find('\n');
+        std::string located = firstBreak == std::string::npos ? state.renderProblem : state.renderProblem.substr(firstBreak + 1);
+        std::replace(located.begin(), located.end(), '\n', ' ');
+        drawProblemText(located, false);
+    }
     if (!state.statusMessage.empty()) {
         ImGui::SameLine(0, 24);
         ImGui::TextUnformatted(state.statusMessage.c_str());

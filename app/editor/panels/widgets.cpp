@@ -22,6 +22,12 @@ float threeNumbersWidth(bool swatch) {
 
 float comboWidth(float textWidth) { return textWidth + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight(); }
 
+void drawProblemText(const std::string& text, bool wrapped) {
+    if (wrapped) ImGui::PushTextWrapPos();
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", text.c_str());
+    if (wrapped) ImGui::PopTextWrapPos();
+}
+
 float buttonWidth(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
 
 float checkboxWidth(const char* label) {

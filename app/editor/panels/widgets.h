@@ -13,6 +13,9 @@ namespace glint {
 float threeNumbersWidth(bool swatch);
 // Room a combo needs to show an option `textWidth` wide, and its arrow [px].
 float comboWidth(float textWidth);
+// A problem for the user to fix (a shader that does not compile), in red; wrapped at the window's
+// edge, or clipped there.
+void drawProblemText(const std::string& text, bool wrapped = true);
 // Width of a button (or small button) showing `label`, and of a checkbox with its label [px].
 float buttonWidth(const char* label);
 float checkboxWidth(const char* label);
