@@ -45,6 +45,7 @@
 #include "gl/render_target.h"
 #include "gl/renderer.h"
 #include "image/image_io.h"
+#include "platform/x11_errors.h"
 
 namespace glint {
 namespace {
@@ -269,6 +270,10 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
         if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
         if (renderer.adoptCompiledPrograms()) state.waitingForPrograms = false;  // programs built in the background
         secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());  // .brdf probes and hot reload
+        if (takeXErrors() > 0) {  // a frame the X server refused (platform/x11_errors.h): all of it again
+            gExposed = true;
+            framesToDraw = std::max(framesToDraw, 1);
+        }
         if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         if (pollEnvironmentLoad(state)) framesToDraw = std::max(framesToDraw, 1);
         for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);

@@ -3,6 +3,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include "platform/x11_errors.h"
+
 // GLFW's X11 and GLX handles (GLFW/glfw3native.h, declared here without the X11 headers it needs).
 extern "C" struct _XDisplay* glfwGetX11Display();
 extern "C" unsigned long glfwGetGLXWindow(GLFWwindow* window);
@@ -82,9 +84,13 @@ glm::ivec2 GlfwPlatform::framebufferSize() const {
     return size;
 }
 
-void GlfwPlatform::present() { glfwSwapBuffers(window_); }
+void GlfwPlatform::present() {
+    keepXErrorsNonFatal();
+    glfwSwapBuffers(window_);
+}
 
 void GlfwPlatform::presentRegion(int x, int y, int width, int height) {
+    keepXErrorsNonFatal();
     copySubBuffer_(glfwGetX11Display(), glfwGetGLXWindow(window_), x, y, width, height);  // flushes first
 }
 
