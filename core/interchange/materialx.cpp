@@ -146,6 +146,12 @@ void writeTextures(const Material& material, const std::string& graphName, const
                                          "' is not written (MaterialX would need its own node graph); the constant is"));
             continue;
         }
+        if (texture.gltfImage >= 0) {
+            warnings.push_back(makeError("warning: material '" + material.name + "': the texture on '" + texture.parameter + "' is image " +
+                                         std::to_string(texture.gltfImage) + " inside " + texture.file +
+                                         " and is not written (MaterialX names image files); the constant is"));
+            continue;
+        }
         const bool scalar = !normal && table[index].kind == ParamKind::Scalar;
         const std::string image = texture.parameter + "_image";
         const std::string type = normal ? "vector3" : scalar ? "color4" : "color3";
