@@ -15,6 +15,7 @@
 #include "interchange/materialx_graph.h"
 #include "interchange/materialx_shaders.h"
 #include "interchange/xml_document.h"
+#include "texture/texture_edit.h"
 #include "texture/texture_image.h"
 #include "util/file_io.h"
 #include "util/reference_confinement.h"
@@ -33,13 +34,14 @@ std::string shortestDecimal(float value) {
     return std::string(buffer, end);
 }
 
-// The image on `parameter` as a material texture, or a warning saying why it is not rendered.
-// Its file is confined to the document's folder (util/reference_confinement.h).
+// The image on `parameter` as a material texture, or a warning saying why it is not rendered (and
+// the image kept as a texture reference). Its file is confined to the document's folder
+// (util/reference_confinement.h).
 void addTexture(const std::string& parameter, const MaterialXInput& input, const std::string& documentFile,
                 const ParamSpec* spec, ImportedMaterial& imported) {
     const MaterialXImage& image = *input.image;
-    imported.textures.push_back({parameter, image.file, ""});
     const auto warn = [&](const std::string& why) {
+        imported.textures.push_back({parameter, image.file, ""});
         imported.warnings.push_back(makeError("warning: image '" + image.file + "' on '" + parameter + "' not rendered: " + why, input.where));
     };
     if (image.file.find("<UDIM>") != std::string::npos || image.file.find("<UVTILE>") != std::string::npos)
@@ -58,7 +60,7 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     auto decoded = loadTextureImage(texture.file, texture.colorSpace);
     if (!decoded) return warn(referencedFileProblem(texture.file, decoded.error(), "image"));
     texture.image = *decoded;
-    imported.material.analytic()->textures.push_back(std::move(texture));
+    putTexture(*imported.material.analytic(), std::move(texture));  // table order, as every material keeps them
 }
 
 Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const std::string& name, const XmlElement& shader) {
@@ -74,6 +76,11 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
                 imported.warnings.push_back(makeError("warning: geometry_normal is driven by an image without a normalmap node; "
                                                           "it is read as a tangent-space normal map", input.where));
             addTexture(parameter, input, document.file, nullptr, imported);
+            continue;
+        }
+        if (parameter == kOcclusionMapKey) {  // gltf_pbr's occlusion image
+            std::string error;
+            addTexture(parameter, input, document.file, texturableParam(BrdfModel::OpenPbr, parameter, error), imported);
             continue;
         }
         const ParamSpec& spec = table[findParam(table, parameter)];
