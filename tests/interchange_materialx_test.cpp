@@ -200,13 +200,14 @@ TEST(MaterialX, ImageNodesBecomeTexturesAndProceduralGraphsAreWarnings) {
     <input name="specular_roughness" type="float" nodegraph="NG" output="roughness" />
     <input name="geometry_normal" type="vector3" nodegraph="NG" output="normal" />
     <input name="coat_weight" type="float" nodegraph="NG" output="noisy" />
+    <input name="geometry_coat_normal" type="vector3" nodegraph="NG" output="normal" />
   </open_pbr_surface>
 </materialx>
 )";
     auto file = loadMaterialX(path);
     ASSERT_TRUE(file.ok()) << file.error().format();
     const Material& m = file->materials[0].material;
-    ASSERT_EQ(m.analytic()->textures.size(), 3u) << warningsText(*file);
+    ASSERT_EQ(m.analytic()->textures.size(), 4u) << warningsText(*file);
     EXPECT_EQ(m.analytic()->textures[0].parameter, "base_color");
     EXPECT_EQ(m.analytic()->textures[0].colorSpace, TextureColorSpace::Srgb);
     EXPECT_EQ(m.analytic()->textures[0].tiling, glm::vec2(4, 2));
@@ -215,7 +216,8 @@ TEST(MaterialX, ImageNodesBecomeTexturesAndProceduralGraphsAreWarnings) {
     EXPECT_EQ(m.analytic()->textures[1].parameter, "specular_roughness");  // table order, the normal map last
     EXPECT_EQ(m.analytic()->textures[1].channel, TextureChannel::G);
     EXPECT_EQ(m.analytic()->textures[1].colorSpace, TextureColorSpace::Linear);
-    EXPECT_EQ(m.analytic()->textures[2].parameter, kNormalMapKey);
+    EXPECT_EQ(m.analytic()->textures[2].parameter, kCoatNormalMapKey);
+    EXPECT_EQ(m.analytic()->textures[3].parameter, kNormalMapKey);
     EXPECT_TRUE(file->materials[0].textures.empty());  // every image is rendered: none is only named
     EXPECT_NE(warningsText(*file).find("images.mtlx:25:5: warning: input 'coat_weight' is driven by a 'noise2d' node"), std::string::npos)
         << warningsText(*file);

@@ -37,7 +37,8 @@ std::string shortestDecimal(float value) {
 // The image on `parameter` as a material texture, or a warning saying why it is not rendered (and
 // the image kept as a texture reference). Its file is confined to the document's folder
 // (util/reference_confinement.h).
-void addTexture(const std::string& parameter, const MaterialXInput& input, const std::string& documentFile,
+// `key`: the texture's key in the material (the parameter, or a surface map's).
+void addTexture(const std::string& parameter, const std::string& key, const MaterialXInput& input, const std::string& documentFile,
                 const ParamSpec* spec, ImportedMaterial& imported) {
     const MaterialXImage& image = *input.image;
     const auto warn = [&](const std::string& why) {
@@ -49,7 +50,7 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     if (static_cast<int>(imported.material.analytic()->textures.size()) >= kMaxMaterialTextures)
         return warn("a material holds at most " + std::to_string(kMaxMaterialTextures) + " textures");
     MaterialTexture texture;
-    texture.parameter = spec ? spec->name : kNormalMapKey;
+    texture.parameter = key;
     texture.kind = TextureKind::Image;
     auto confined = confinedReference(image.file, {documentFile, input.where.line, input.where.column});
     if (!confined) return warn(confined.error().message);
@@ -71,16 +72,12 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
     const MaterialXInputs openPbr = toOpenPbrInputs(shader.name, *inputs, table, imported.warnings);
     imported.material = Material::withDefaults(name, BrdfModel::OpenPbr);
     for (const auto& [parameter, input] : openPbr) {
-        if (parameter == "geometry_normal") {
-            if (!input.image->normalMap)
-                imported.warnings.push_back(makeError("warning: geometry_normal is driven by an image without a normalmap node; "
+        if (const char* map = surfaceMapOf(parameter)) {
+            if (isNormalMapKey(map) && !input.image->normalMap)
+                imported.warnings.push_back(makeError("warning: " + parameter + " is driven by an image without a normalmap node; "
                                                           "it is read as a tangent-space normal map", input.where));
-            addTexture(parameter, input, document.file, nullptr, imported);
-            continue;
-        }
-        if (parameter == kOcclusionMapKey) {  // gltf_pbr's occlusion image
             std::string error;
-            addTexture(parameter, input, document.file, texturableParam(BrdfModel::OpenPbr, parameter, error), imported);
+            addTexture(parameter, map, input, document.file, texturableParam(BrdfModel::OpenPbr, map, error), imported);
             continue;
         }
         const ParamSpec& spec = table[findParam(table, parameter)];
@@ -90,7 +87,7 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
             imported.warnings.push_back(makeError("warning: '" + parameter + "' is outside Glint's range [" + shortestDecimal(spec.validMin) + ", " +
                                                       shortestDecimal(spec.validMax) + "]; read as the nearest value in it", input.where));
         setParam(imported.material, parameter, kept);
-        if (input.image) addTexture(parameter, input, document.file, &spec, imported);
+        if (input.image) addTexture(parameter, parameter, input, document.file, &spec, imported);
     }
     GLINT_CHECK(!findOutOfRange(imported.material));
     return imported;

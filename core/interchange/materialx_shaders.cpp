@@ -258,7 +258,7 @@ void keepGlintInputs(MaterialXInputs& inputs, std::span<const ParamSpec> glintTa
     for (auto it = inputs.begin(); it != inputs.end();) {
         const std::string& name = it->first;
         const MaterialXInput& input = it->second;
-        const bool glint = findParam(glintTable, name) >= 0 || ((name == "geometry_normal" || name == kOcclusionMapKey) && input.image);
+        const bool glint = findParam(glintTable, name) >= 0 || (surfaceMapOf(name) && input.image);
         // A lobe's secondary inputs: its weight's warning speaks for them.
         const bool secondary = (name.rfind("subsurface_", 0) == 0 && name != "subsurface_weight") ||
                                name == "transmission_dispersion_abbe_number" || name == "transmission_scatter_anisotropy";
@@ -276,6 +276,13 @@ void keepGlintInputs(MaterialXInputs& inputs, std::span<const ParamSpec> glintTa
 }
 
 }  // namespace
+
+const char* surfaceMapOf(const std::string& input) {
+    return input == "geometry_normal"        ? kNormalMapKey
+           : input == "geometry_coat_normal" ? kCoatNormalMapKey
+           : input == kOcclusionMapKey       ? kOcclusionMapKey
+                                             : nullptr;
+}
 
 bool isReadableMaterialXShader(const std::string& category) {
     return category == "open_pbr_surface" || category == "standard_surface" || category == "gltf_pbr";
