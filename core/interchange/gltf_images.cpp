@@ -36,27 +36,33 @@ std::optional<EmbeddedImage> dataUri(const ObjectReader& reader, const std::stri
     return EmbeddedImage{std::move(*bytes), header.substr(0, header.size() - base64Suffix.size())};
 }
 
-// The bytes of buffers[index]: a .glb's BIN chunk (buffer 0 without a "uri"), a data URI, or a
-// file beside the glTF (confined to its folder).
-std::vector<uint8_t> bufferBytes(const GltfSource& source, const ObjectReader& view, size_t index, const std::string& what) {
+// The bytes of buffers[index]: a .glb's BIN chunk (buffer 0 without a "uri": viewed, not copied),
+// or a data URI's or a file's beside the glTF (confined to its folder), held in `storage`.
+// `what` names the bufferView in messages.
+std::string_view bufferBytes(const GltfSource& source, const ObjectReader& view, size_t index, const std::string& what,
+                             std::string& storage) {
     const json& root = source.document.root();
     if (!root.contains("buffers") || !root["buffers"].is_array() || index >= root["buffers"].size() || !root["buffers"][index].is_object())
         view.fail("buffer", "buffer " + std::to_string(index) + " does not exist");
     const json& buffer = root["buffers"][index];
-    ObjectReader reader(source.document, buffer, "/buffers/" + std::to_string(index), what + "'s buffer " + std::to_string(index));
+    const std::string bufferName = what + "'s buffer " + std::to_string(index);
+    ObjectReader reader(source.document, buffer, "/buffers/" + std::to_string(index), bufferName);
     if (!buffer.contains("uri")) {
-        if (index != 0 || source.bin.data() == nullptr)
-            reader.failHere(what + "'s buffer " + std::to_string(index) + ": it has no \"uri\" and is not the BIN chunk of a .glb");
-        return {source.bin.begin(), source.bin.end()};
+        if (index != 0 || source.bin.data() == nullptr) reader.failHere(bufferName + ": it has no \"uri\" and is not the BIN chunk of a .glb");
+        return source.bin;
     }
     if (!buffer["uri"].is_string()) reader.fail("uri", "expected a string");
     const std::string uri = buffer["uri"].get<std::string>();
-    if (auto embedded = dataUri(reader, "uri", uri)) return std::move(embedded->bytes);
+    if (auto embedded = dataUri(reader, "uri", uri)) {
+        storage.assign(embedded->bytes.begin(), embedded->bytes.end());
+        return storage;
+    }
     auto confined = confinedReference(uri, {source.file});
     if (!confined) reader.fail("uri", confined.error().message);
     auto bytes = readTextFile(confined->string());  // reads bytes as they are
     if (!bytes) reader.fail("uri", bytes.error().message);
-    return {bytes->begin(), bytes->end()};
+    storage = std::move(*bytes);
+    return storage;
 }
 
 // The bytes bufferViews[index] spans, checked against its buffer; `what` names the image in messages.
@@ -73,11 +79,13 @@ std::vector<uint8_t> bufferViewBytes(const GltfSource& source, const ObjectReade
     if (!view.contains("byteLength") || !view["byteLength"].is_number_unsigned()) reader.failHere(viewName + ": a bufferView needs a \"byteLength\"");
     const uint64_t offset = view.contains("byteOffset") && view["byteOffset"].is_number_unsigned() ? view["byteOffset"].get<uint64_t>() : 0;
     const uint64_t length = view["byteLength"].get<uint64_t>();
-    const std::vector<uint8_t> buffer = bufferBytes(source, reader, view["buffer"].get<size_t>(), viewName);
+    std::string storage;
+    const std::string_view buffer = bufferBytes(source, reader, view["buffer"].get<size_t>(), viewName, storage);
     if (offset > buffer.size() || length > buffer.size() - offset)
         reader.failHere(viewName + ": bytes " + std::to_string(offset) + " to " + std::to_string(offset + length) + " lie outside buffer " +
                         std::to_string(view["buffer"].get<size_t>()) + " (" + std::to_string(buffer.size()) + " bytes)");
-    return {buffer.begin() + static_cast<long>(offset), buffer.begin() + static_cast<long>(offset + length)};
+    const std::string_view bytes = buffer.substr(offset, length);
+    return {bytes.begin(), bytes.end()};
 }
 
 long long modificationTime(const std::string& file) {

@@ -39,7 +39,7 @@ std::string shortestDecimal(float value) {
 // (util/reference_confinement.h).
 // `key`: the texture's key in the material (the parameter, or a surface map's).
 void addTexture(const std::string& parameter, const std::string& key, const MaterialXInput& input, const std::string& documentFile,
-                const ParamSpec* spec, ImportedMaterial& imported) {
+                ImportedMaterial& imported) {
     const MaterialXImage& image = *input.image;
     const auto warn = [&](const std::string& why) {
         imported.textures.push_back({parameter, image.file, ""});
@@ -76,8 +76,7 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
             if (isNormalMapKey(map) && !input.image->normalMap)
                 imported.warnings.push_back(makeError("warning: " + parameter + " is driven by an image without a normalmap node; "
                                                           "it is read as a tangent-space normal map", input.where));
-            std::string error;
-            addTexture(parameter, map, input, document.file, texturableParam(BrdfModel::OpenPbr, map, error), imported);
+            addTexture(parameter, map, input, document.file, imported);
             continue;
         }
         const ParamSpec& spec = table[findParam(table, parameter)];
@@ -87,7 +86,7 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
             imported.warnings.push_back(makeError("warning: '" + parameter + "' is outside Glint's range [" + shortestDecimal(spec.validMin) + ", " +
                                                       shortestDecimal(spec.validMax) + "]; read as the nearest value in it", input.where));
         setParam(imported.material, parameter, kept);
-        if (input.image) addTexture(parameter, parameter, input, document.file, &spec, imported);
+        if (input.image) addTexture(parameter, parameter, input, document.file, imported);
     }
     GLINT_CHECK(!findOutOfRange(imported.material));
     return imported;

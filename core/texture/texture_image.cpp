@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <new>
@@ -22,6 +23,21 @@ using CacheKey = std::tuple<std::string, long long, TextureColorSpace>;
 
 std::mutex cacheMutex;
 std::map<CacheKey, std::weak_ptr<const TextureImage>> cache;  // weak: unused images are freed
+
+// The image cached under `key`, else `decodeImage()`'s, cached from then on.
+template <class Decode>
+Result<std::shared_ptr<const TextureImage>> cached(const CacheKey& key, Decode decodeImage) {
+    {
+        std::lock_guard lock(cacheMutex);
+        if (auto found = cache.find(key); found != cache.end())
+            if (auto image = found->second.lock()) return image;
+    }
+    auto decoded = decodeImage();
+    if (!decoded) return decoded.error();
+    std::lock_guard lock(cacheMutex);
+    cache[key] = *decoded;
+    return decoded;
+}
 
 // OpenImageIO's errors can run to several lines (each library's own account): the first says it.
 std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
@@ -86,25 +102,20 @@ Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& 
     if (error) return makeError("cannot read texture image: " + error.message(), {path});
     const long long modifiedAt =
         std::chrono::duration_cast<std::chrono::nanoseconds>(writeTime.time_since_epoch()).count();
-    const CacheKey key{path, modifiedAt, colorSpace};
-    {
-        std::lock_guard lock(cacheMutex);
-        if (auto found = cache.find(key); found != cache.end())
-            if (auto image = found->second.lock()) return image;
-    }
-    auto decoded = decode(OIIO::ImageInput::open(path), path, modifiedAt, colorSpace);
-    if (!decoded) return decoded.error();
-    std::lock_guard lock(cacheMutex);
-    cache[key] = *decoded;
-    return decoded;
+    return cached({path, modifiedAt, colorSpace}, [&] { return decode(OIIO::ImageInput::open(path), path, modifiedAt, colorSpace); });
 }
 
 Result<std::shared_ptr<const TextureImage>> decodeTextureImage(std::span<const uint8_t> encoded, const std::string& format,
                                                                const std::string& name, long long modifiedAt,
                                                                TextureColorSpace colorSpace) {
-    // OpenImageIO picks the reader by the name's extension and reads the bytes through the proxy.
-    OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
-    return decode(OIIO::ImageInput::open("image." + format, nullptr, &reader), name, modifiedAt, colorSpace);
+    // Keyed by the bytes too: a name without a file (text parsed in memory) may hold other bytes each time.
+    const std::string_view bytes(reinterpret_cast<const char*>(encoded.data()), encoded.size());
+    const std::string key = name + "@" + std::to_string(std::hash<std::string_view>{}(bytes)) + "/" + std::to_string(bytes.size());
+    return cached({key, modifiedAt, colorSpace}, [&] {
+        // OpenImageIO picks the reader by the name's extension and reads the bytes through the proxy.
+        OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
+        return decode(OIIO::ImageInput::open("image." + format, nullptr, &reader), name, modifiedAt, colorSpace);
+    });
 }
 
 }  // namespace glint

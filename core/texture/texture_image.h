@@ -1,7 +1,6 @@
 // Image textures through OpenImageIO (PNG, JPEG, EXR, HDR, TIFF, ...), from a file or from bytes in
 // memory: decoded to linear RGBA floats, validated (unreadable, truncated, zero size, non-finite
-// texels); files are cached by path, modification time and colour space so that a file is
-// decoded once. No GPU work here.
+// texels), cached so that an image is decoded once. No GPU work here.
 #pragma once
 
 #include <cstdint>
@@ -25,7 +24,8 @@ Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& 
 
 // Decodes an encoded image held in memory (an image inside a glTF): `format` is its file
 // extension ("png", "jpg"), `name` identifies it in messages and to the GPU's texture cache (which
-// also keys on `modifiedAt`, the time its file was modified). Not cached: the caller reads it once.
+// also keys on `modifiedAt`, the time its file was modified). Cached by name, modification time,
+// colour space and the bytes, so that the textures of one glTF image decode it once.
 Result<std::shared_ptr<const TextureImage>> decodeTextureImage(std::span<const uint8_t> encoded, const std::string& format,
                                                                const std::string& name, long long modifiedAt,
                                                                TextureColorSpace colorSpace);
