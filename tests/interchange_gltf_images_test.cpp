@@ -1,6 +1,7 @@
 // Images inside glTF files: Khronos' BoxTextured as a .glb (a bufferView image) and as a
 // glTF-Embedded .gltf (a data URI) render the same texture; a material file keeps such an image
-// by its glTF and index and reads it back; glTF export writes it as a data URI; damaged images
+// by its glTF and index and reads it back; glTF export writes it as a data URI; JPEG decodes from
+// memory as PNG does; damaged images
 // (bad base64, a bufferView or buffer out of range, an unknown or missing MIME type) are located
 // errors naming the image, an undecodable one a warning. Also: extensions a file requires or uses.
 #include <gtest/gtest.h>
@@ -9,11 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "image/image_io.h"
+#include "interchange/base64.h"
 #include "interchange/glb.h"
 #include "interchange/gltf.h"
 #include "interchange/gltf_images.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
+#include "util/file_io.h"
 
 namespace glint {
 namespace {
@@ -86,6 +90,21 @@ std::string withImage(const json& image, const json& more = json::object()) {
                  {"images", {image}}};
     gltf.update(more);
     return gltf.dump(2);
+}
+
+TEST(GltfImages, JpegDataUrisDecodeFromMemory) {
+    DisplayImage picture(8, 4);
+    for (size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] = static_cast<uint8_t>(i * 7);
+    const std::string jpeg = test::outputDirectory("gltf_images") + "/ramp.jpg";
+    ASSERT_TRUE(writeDisplayImage(picture, jpeg).ok());
+    auto bytes = readTextFile(jpeg);
+    ASSERT_TRUE(bytes.ok());
+    const std::string uri = "data:image/jpeg;base64," + encodeBase64({bytes->begin(), bytes->end()});
+    auto imported = parseGltf(withImage({{"uri", uri}}), "jpeg.gltf");
+    ASSERT_TRUE(imported.ok()) << imported.error().format();
+    const MaterialTexture& texture = baseColorTexture(*imported);
+    EXPECT_EQ(texture.image->width, 8);
+    EXPECT_EQ(texture.image->height, 4);
 }
 
 TEST(GltfImages, DamagedImagesAreLocatedErrorsNamingTheImage) {
