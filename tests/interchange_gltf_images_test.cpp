@@ -1,9 +1,9 @@
 // Images inside glTF files: Khronos' BoxTextured as a .glb (a bufferView image) and as a
 // glTF-Embedded .gltf (a data URI) render the same texture; a material file keeps such an image
 // by its glTF and index and reads it back; glTF export writes it as a data URI; JPEG decodes from
-// memory as PNG does; damaged images
-// (bad base64, a bufferView or buffer out of range, an unknown or missing MIME type) are located
-// errors naming the image, an undecodable one a warning. Also: extensions a file requires or uses.
+// memory as PNG does; damaged images (bad base64, a bufferView or buffer out of range, an unknown
+// or missing MIME type) are located errors naming the image, an undecodable one a warning.
+// Also: extensions a file requires or uses.
 #include <gtest/gtest.h>
 
 #include <string>
