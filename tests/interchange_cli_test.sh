@@ -2,7 +2,8 @@
 # `glint export` and `glint render` on interchange files: a material goes to .mtl and .gltf and
 # back, both render on the preview stage, and malformed files exit with code 2 and a message
 # naming file:line; a MERL .binary and a .glb render too, and `glint FILE` with no display renders
-# them headless as the editor would open them. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
+# them headless as the editor would open them; images inside glTF files render and `glint info`
+# lists them, and a required extension Glint lacks is refused. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
 set -u
 glint=$1
 out=$2
@@ -122,6 +123,19 @@ expect_output info_gltf_meshes "2 'Sphere.100'" info "$files/gltf/DirectionalLig
 expect_output info_mesh "mesh: 24 vertices, 12 triangles" info "$files/obj/cube.obj"
 expect_output info_bparam "values for d_ggx.brdf \\(found: " info "$files/brdf/explorer_isfunc.bparam"
 expect_output info_mtl "0 'Matériau_01'" info "$files/mtl/max_latin1_km.mtl"
+# Images inside a .glb and a .gltf are rendered textures (the same picture from both), and info
+# says so; MaterialX images are rendered, none called "not rendered".
+expect_output info_glb_image "0 renders texture base_color: image 0 inside .*BoxTextured.glb" info "$files/gltf/khronos/BoxTextured.glb"
+check render_glb_image "$glint" render "$files/gltf/khronos/BoxTextured.glb" -o "$out/box_glb.png" --size 64x64
+check render_data_uri_image "$glint" render "$files/gltf/khronos/BoxTextured_embedded.gltf" -o "$out/box_gltf.png" --size 64x64
+check same_embedded_image cmp "$out/box_glb.png" "$out/box_gltf.png"
+expect_output info_mtlx_rendered "0 renders texture emission_color: .*BoomBox_emissive.png" info "$files/materialx/gltf_pbr_boombox.mtlx"
+check info_mtlx_honest bash -c "! '$glint' info '$files/materialx/gltf_pbr_boombox.mtlx' 2>&1 | grep -q 'not rendered'"
+# A required extension Glint lacks is refused by name, whether read for its materials or its mesh.
+printf '{"asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"], "materials": [{}]}\n' >"$out/draco.gltf"
+expect_error render_required_extension "draco.gltf:1:[0-9]+: the file requires the extension \"KHR_draco_mesh_compression\"" \
+  render "$out/draco.gltf" -o "$out/x.png"
+expect_error info_required_extension "requires the extension \"KHR_draco_mesh_compression\"" info "$out/draco.gltf"
 for file in obj/cube.obj brdf/explorer_disney.bparam; do
   name=$(basename "${file%.*}")
   check "no_display_$name" bash -c "cd '$out' && DISPLAY= '$glint_path' '$files/$file' | grep -q 'glint-$name.png' && [[ -s 'glint-$name.png' ]]"

@@ -208,7 +208,7 @@ TEST(Gltf, MalformedFilesGiveLocatedErrors) {
         {"{\"asset\": {\"version\": \"1.0\"}, \"materials\": [{}]}", "glTF 1.0 is not supported"},
         {"{\"asset\": {\"version\": \"2.0\"}}", "no material and no light"},
         {"{\"asset\": {\"version\": \"2.0\"}, \"extensionsRequired\": [\"KHR_draco_mesh_compression\"], \"materials\": [{}]}",
-         "requires \"KHR_draco_mesh_compression\""},
+         "requires the extension \"KHR_draco_mesh_compression\""},
         {withMaterial({{"pbrMetallicRoughness", {{"roughnessFactor", 1.5}}}}), "'roughnessFactor'"},
         {withMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1}}}}}), "expected an array of 4 numbers"},
         {withMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {1, "x", 1, 1}}}}}), "baseColorFactor[1]"},

@@ -151,6 +151,23 @@ TEST(MaterialX, ColourSpacesNodeGraphConstantsAndDotsResolve) {
     EXPECT_EQ(warningsText(file), "");
 }
 
+// MaterialX's gltf_pbr_boombox.mtlx: its four images on base colour, metalness and roughness (one
+// image's blue and green), occlusion (its red: the occlusion map), emission and the normal map, in
+// table order; nothing is called dropped or not rendered.
+TEST(MaterialX, GltfPbrBoomboxRendersEveryImage) {
+    auto file = loadMaterialX(std::string(GLINT_TEST_DATA_DIR) + "/files/materialx/gltf_pbr_boombox.mtlx");
+    ASSERT_TRUE(file.ok()) << file.error().format();
+    std::vector<std::string> parameters;
+    for (const MaterialTexture& texture : file->materials[0].material.analytic()->textures) parameters.push_back(texture.parameter);
+    EXPECT_EQ(parameters, (std::vector<std::string>{"base_color", "base_metalness", "specular_roughness", "emission_color",
+                                                    kOcclusionMapKey, kNormalMapKey}));
+    const MaterialTexture& occlusion = file->materials[0].material.analytic()->textures[4];
+    EXPECT_EQ(occlusion.channel, TextureChannel::R);
+    EXPECT_EQ(occlusion.range, glm::vec2(0.0f, 1.0f));
+    EXPECT_TRUE(file->materials[0].textures.empty());
+    EXPECT_EQ(warningsText(*file).find("occlusion"), std::string::npos) << warningsText(*file);
+}
+
 TEST(MaterialX, ImageNodesBecomeTexturesAndProceduralGraphsAreWarnings) {
     const std::string directory = test::outputDirectory("materialx_images");
     DisplayImage image(2, 2);
@@ -183,22 +200,25 @@ TEST(MaterialX, ImageNodesBecomeTexturesAndProceduralGraphsAreWarnings) {
     <input name="specular_roughness" type="float" nodegraph="NG" output="roughness" />
     <input name="geometry_normal" type="vector3" nodegraph="NG" output="normal" />
     <input name="coat_weight" type="float" nodegraph="NG" output="noisy" />
+    <input name="geometry_coat_normal" type="vector3" nodegraph="NG" output="normal" />
   </open_pbr_surface>
 </materialx>
 )";
     auto file = loadMaterialX(path);
     ASSERT_TRUE(file.ok()) << file.error().format();
     const Material& m = file->materials[0].material;
-    ASSERT_EQ(m.analytic()->textures.size(), 3u) << warningsText(*file);
+    ASSERT_EQ(m.analytic()->textures.size(), 4u) << warningsText(*file);
     EXPECT_EQ(m.analytic()->textures[0].parameter, "base_color");
     EXPECT_EQ(m.analytic()->textures[0].colorSpace, TextureColorSpace::Srgb);
     EXPECT_EQ(m.analytic()->textures[0].tiling, glm::vec2(4, 2));
     EXPECT_EQ(m.analytic()->textures[0].file, directory + "/textures/colour.png");
     EXPECT_TRUE(m.analytic()->textures[0].image != nullptr);
-    EXPECT_EQ(m.analytic()->textures[1].parameter, kNormalMapKey);
-    EXPECT_EQ(m.analytic()->textures[2].parameter, "specular_roughness");
-    EXPECT_EQ(m.analytic()->textures[2].channel, TextureChannel::G);
-    EXPECT_EQ(m.analytic()->textures[2].colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(m.analytic()->textures[1].parameter, "specular_roughness");  // table order, the normal map last
+    EXPECT_EQ(m.analytic()->textures[1].channel, TextureChannel::G);
+    EXPECT_EQ(m.analytic()->textures[1].colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(m.analytic()->textures[2].parameter, kCoatNormalMapKey);
+    EXPECT_EQ(m.analytic()->textures[3].parameter, kNormalMapKey);
+    EXPECT_TRUE(file->materials[0].textures.empty());  // every image is rendered: none is only named
     EXPECT_NE(warningsText(*file).find("images.mtlx:25:5: warning: input 'coat_weight' is driven by a 'noise2d' node"), std::string::npos)
         << warningsText(*file);
 }

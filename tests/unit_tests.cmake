@@ -36,6 +36,7 @@ target_sources(core_tests PRIVATE mesh_simplify_test.cpp mesh_topology_test.cpp)
 target_sources(core_tests PRIVATE wild_files_test.cpp)  # files other tools wrote (tests/files/README.md)
 target_sources(core_tests PRIVATE model_machinery_test.cpp)  # the model machinery on a test-only model; docs/models.md
 target_sources(core_tests PRIVATE interchange_gltf_openpbr_test.cpp)  # glTF materials ↔ openpbr
+target_sources(core_tests PRIVATE interchange_gltf_images_test.cpp)  # images inside .glb and .gltf files
 target_sources(core_tests PRIVATE disk_cache_test.cpp)  # the disk cache of computed tables
 target_sources(core_tests PRIVATE reference_confinement_test.cpp)  # files that files name: confined to their folder
 target_sources(core_tests PRIVATE interchange_materialx_test.cpp model_switch_test.cpp)  # MaterialX; switching models

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "brdf/model_registry.h"
@@ -30,6 +31,14 @@ void printMaterials(const std::vector<const Material*>& materials) {
                                           [](const MeasuredMaterial& measured) { return measured.brdf->displayName; }},
                                materials[i]->kind)
                         .c_str());
+}
+
+// Where a rendered texture's values come from: its image file (or the image inside a glTF), or its kind.
+std::string textureSourceText(const MaterialTexture& texture) {
+    constexpr const char* kProcedural[] = {"", "checker", "marble", "wood"};  // order of TextureKind
+    if (texture.kind != TextureKind::Image) return std::string(kProcedural[static_cast<int>(texture.kind)]) + " (procedural)";
+    if (texture.gltfImage < 0) return texture.file;
+    return "image " + std::to_string(texture.gltfImage) + " inside " + texture.file;
 }
 
 void printLights(const std::vector<Light>& lights) {
@@ -74,17 +83,23 @@ int describeFile(const std::string& path) {
         printWarnings(file->warnings);
         return 0;
     }
+    std::optional<Diagnostic> materialsError;  // a glTF whose materials are not read is listed as a mesh below
     if (const ImportFormat* format = findImportFormat(path)) {
         auto file = format->load(path);
-        if (file || !isMeshFile(path)) {  // a glTF of meshes only is listed as a mesh below
+        if (!file && isMeshFile(path)) materialsError = file.error();
+        if (file || !isMeshFile(path)) {
             if (!file) return commandFailed("info", file.error().format());
             std::printf("%s: %s\n", path.c_str(), format->description);
             std::vector<const Material*> materials;
             for (const ImportedMaterial& material : file->materials) materials.push_back(&material.material);
             printMaterials(materials);
-            for (size_t i = 0; i < file->materials.size(); ++i)
+            for (size_t i = 0; i < file->materials.size(); ++i) {
+                if (const AnalyticMaterial* analytic = file->materials[i].material.analytic())
+                    for (const MaterialTexture& texture : analytic->textures)
+                        std::printf("  %zu renders texture %s: %s\n", i, texture.parameter.c_str(), textureSourceText(texture).c_str());
                 for (const TextureReference& texture : file->materials[i].textures)
-                    std::printf("  %zu uses texture %s: %s (not rendered)\n", i, texture.slot.c_str(), texture.path.c_str());
+                    std::printf("  %zu names texture %s: %s (not rendered)\n", i, texture.slot.c_str(), texture.path.c_str());
+            }
             printLights(file->lights);
             if (!file->meshNames.empty()) {
                 std::printf("meshes (%zu):\n", file->meshNames.size());
@@ -96,8 +111,9 @@ int describeFile(const std::string& path) {
     }
     if (isMeshFile(path)) {
         auto mesh = importMesh(path);
-        if (!mesh) return commandFailed("info", mesh.error().format());
+        if (!mesh) return commandFailed("info", (materialsError ? *materialsError : mesh.error()).format());
         std::printf("%s: mesh: %s\n", path.c_str(), meshStatisticsText(mesh->statistics).c_str());
+        if (materialsError) std::printf("materials not read: %s\n", materialsError->format().c_str());
         const ObjMaterial material = readObjMaterial(path);
         if (material.material) std::printf("material (its first usemtl): '%s'\n", material.material->material.name.c_str());
         printWarnings(material.warnings);

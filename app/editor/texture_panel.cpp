@@ -8,8 +8,8 @@
 
 #include "editor/color_space.h"
 #include "editor/panels/typed_numbers.h"
+#include "interchange/gltf_images.h"
 #include "texture/texture_edit.h"
-#include "texture/texture_image.h"
 
 namespace glint {
 namespace {
@@ -68,7 +68,7 @@ bool drawImageSettings(MaterialTexture& texture, const ParamSpec* spec, std::str
     TextureColorSpace space = texture.colorSpace;
     if (combo("Encoding", space, kSpaceLabels)) {
         // Decoded again with the other curve; a file that no longer loads keeps the old decoding.
-        auto image = loadTextureImage(texture.file, space);
+        auto image = loadMaterialTextureImage(texture.file, texture.gltfImage, space);
         if (image) texture.colorSpace = space, texture.image = *image, changed = true;
         else refusal = image.error().format();
     }

@@ -12,6 +12,7 @@
 
 #include "interchange/base64.h"
 #include "interchange/glb.h"
+#include "interchange/gltf.h"
 #include "scene/json_document.h"
 #include "util/file_io.h"
 #include "util/reference_confinement.h"
@@ -229,6 +230,7 @@ std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, 
     }
     auto document = JsonDocument::parse(jsonText, binary ? name + " (JSON chunk)" : name);
     if (!document) return document.error();
+    if (auto refusal = unsupportedRequiredExtension(*document)) return *refusal;
     const Json& root = document->root();
     const Json* meshes = member(root, "meshes");
     const Json* accessors = member(root, "accessors");

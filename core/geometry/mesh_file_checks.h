@@ -26,6 +26,7 @@ std::optional<Diagnostic> checkPlyHeader(std::string_view start, bool whole, con
 std::optional<Diagnostic> checkObjText(std::string_view text, const std::string& name);
 // `bytes`: a .gltf's JSON text or a .glb's bytes (`binary`) of `meshFile`, whose folder holds its
 // external buffers (confined to it: util/reference_confinement.h; "": they are not checked).
+// A file that requires an extension Glint lacks is refused first (interchange/gltf.h).
 std::optional<Diagnostic> checkGltfIndices(std::string_view bytes, bool binary, const std::string& meshFile,
                                            const std::string& name);
 

@@ -35,17 +35,19 @@ std::string specialisable(const std::string& name, const std::string& generic) {
 
 }  // namespace
 
+int TexturedParams::bitOf(BrdfModel model, const MaterialTexture& texture) {
+    const int index = findParam(modelInfo(model).params, texture.parameter);
+    GLINT_CHECK(index < kCoatNormalMapBit);  // the bits above the table's are the maps' and the procedural flag
+    return index >= 0                               ? index
+           : texture.parameter == kNormalMapKey     ? kNormalMapBit
+           : texture.parameter == kCoatNormalMapKey ? kCoatNormalMapBit
+                                                    : kOcclusionMapBit;
+}
+
 TexturedParams TexturedParams::of(const AnalyticMaterial& material) {
     TexturedParams textured;
-    const auto table = modelInfo(material.model).params;
     for (const MaterialTexture& texture : material.textures) {
-        const int index = findParam(table, texture.parameter);
-        GLINT_CHECK(index < kCoatNormalMapBit);  // the bits above the table's are the maps' and the procedural flag
-        const int bit = index >= 0                                ? index
-                        : texture.parameter == kNormalMapKey      ? kNormalMapBit
-                        : texture.parameter == kCoatNormalMapKey  ? kCoatNormalMapBit
-                                                                  : kOcclusionMapBit;
-        textured.mask |= std::uint64_t{1} << bit;
+        textured.mask |= std::uint64_t{1} << bitOf(material.model, texture);
         if (texture.kind != TextureKind::Image) textured.mask |= std::uint64_t{1} << kProceduralBit;
     }
     return textured;

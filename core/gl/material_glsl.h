@@ -27,11 +27,14 @@ struct TexturedParams {
     std::uint64_t mask = 0;
 
     static TexturedParams of(const AnalyticMaterial& material);
+    // The bit of `texture` on a material of `model`: its parameter's index, or a map's bit.
+    static int bitOf(BrdfModel model, const MaterialTexture& texture);
     bool has(int paramIndex) const { return (mask >> paramIndex) & 1u; }
     bool hasNormalMap() const { return has(kNormalMapBit); }
     bool hasOcclusionMap() const { return has(kOcclusionMapBit); }
     bool hasProcedural() const { return has(kProceduralBit); }
-    // Slot = number of textured parameters before it in table order.
+    // Slot = number of textured parameters before it in table order, whatever the order of the
+    // material's textures (the program reads slots, material_textures.cpp binds them by this).
     int slotOf(int paramIndex) const {
         return std::popcount(mask & ((std::uint64_t{1} << paramIndex) - 1u) & ~(std::uint64_t{1} << kProceduralBit));
     }

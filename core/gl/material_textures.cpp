@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "gl/material_glsl.h"
 #include "texture/texture_eval.h"
 
 namespace glint {
@@ -10,13 +11,15 @@ namespace glint {
 Status bindMaterialTextures(const ShaderProgram& program, const AnalyticMaterial& material, const Shape& shape, TextureCache& cache) {
     const glm::vec3 center = shapeCenter(shape);
     glUniform3f(program.uniform("objectCenter"), center.x, center.y, center.z);
-    // material.textures is in table order with the normal map last: its index is the slot.
-    for (size_t slot = 0; slot < material.textures.size(); ++slot) {
-        const MaterialTexture& texture = material.textures[slot];
+    // Each texture goes to the slot the program reads it from (material_glsl.h), not to its place
+    // in material.textures: a material built in another order still shades right.
+    const TexturedParams textured = TexturedParams::of(material);
+    for (const MaterialTexture& texture : material.textures) {
+        const int slot = textured.slotOf(TexturedParams::bitOf(material.model, texture));
         const auto uniform = [&](const char* name) {
             return program.uniform((std::string(name) + "[" + std::to_string(slot) + "]").c_str());
         };
-        const int unit = kFirstMaterialTextureUnit + static_cast<int>(slot);
+        const int unit = kFirstMaterialTextureUnit + slot;
         if (texture.kind == TextureKind::Image)
             if (Status bound = cache.bind(GL_TEXTURE0 + unit, texture); !bound) {
                 glActiveTexture(GL_TEXTURE0);

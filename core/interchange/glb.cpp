@@ -61,16 +61,10 @@ Result<GlbChunks> glbChunks(std::string_view bytes, const std::string& file) {
     return chunks;
 }
 
-Result<std::string> glbJsonChunk(std::string_view bytes, const std::string& file) {
+Result<ImportedFile> parseGlb(std::string_view bytes, const std::string& file) {
     auto chunks = glbChunks(bytes, file);
     if (!chunks) return chunks.error();
-    return std::move(chunks->json);
-}
-
-Result<ImportedFile> parseGlb(std::string_view bytes, const std::string& file) {
-    auto json = glbJsonChunk(bytes, file);
-    if (!json) return json.error();
-    return parseGltf(*json, file + " (JSON chunk)");
+    return parseGlbJson(chunks->json, file, chunks->bin);
 }
 
 Result<ImportedFile> loadGlb(const std::string& path) {

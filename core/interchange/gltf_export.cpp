@@ -193,7 +193,8 @@ ExportedText writeGltf(const ImportedMaterial& imported, std::span<const Light> 
     gltf["materials"] = json::array({written});
     textures.writeInto(gltf);  // the openpbr material's textures; none for the other models
     if (!imported.textures.empty() && imported.gltfKept.empty())
-        out.warnings.push_back(makeError("warning: texture references are not written to glTF (Glint does not render them)"));
+        out.warnings.push_back(makeError("warning: " + std::to_string(imported.textures.size()) +
+                                         " texture map(s) the source names but Glint does not render are not written to glTF"));
     addLights(gltf, lights, out.warnings);
     if (gltf.contains("extensions")) extensionsUsed.insert("KHR_lights_punctual");
     if (!extensionsUsed.empty()) gltf["extensionsUsed"] = json(std::vector<std::string>(extensionsUsed.begin(), extensionsUsed.end()));

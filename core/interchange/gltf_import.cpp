@@ -2,7 +2,10 @@
 // after KHR_lights_punctual. Sections: units · materials · lights and nodes · entry points.
 #include "interchange/gltf.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string_view>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -34,11 +37,6 @@ float luxFromIrradiance(float irradiance, glm::vec3 color) { return kLumensPerWa
 namespace {
 
 // --- materials (gltf_openpbr.h) ---------------------------------------------------------------
-
-// Extensions a file may require: those whose absence from Glint does not change what it means.
-bool isKnownExtension(const std::string& name) {
-    return isGltfMaterialExtension(name) || name == "KHR_lights_punctual" || name == "KHR_texture_transform";
-}
 
 struct Context {
     const JsonDocument& document;
@@ -180,14 +178,46 @@ void readLights(const Context& context, ObjectReader& root, ImportedFile& result
 
 }  // namespace
 
+// --- extensions -----------------------------------------------------------------------------
+
+bool isSupportedGltfExtension(const std::string& name) {
+    return isGltfMaterialExtension(name) || name == "KHR_lights_punctual" || name == "KHR_texture_transform";
+}
+
+std::optional<Diagnostic> unsupportedRequiredExtension(const JsonDocument& document) {
+    const nlohmann::json& root = document.root();
+    if (!root.is_object() || !root.contains("extensionsRequired")) return std::nullopt;
+    const nlohmann::json& required = root["extensionsRequired"];
+    if (!required.is_array()) return makeError("extensionsRequired: expected an array of names", document.locate("/extensionsRequired"));
+    for (size_t i = 0; i < required.size(); ++i)
+        if (!required[i].is_string() || !isSupportedGltfExtension(required[i].get<std::string>()))
+            return makeError("the file requires the extension " + required[i].dump() +
+                                 ", which Glint does not support: it is not opened (docs/interchange.md lists the extensions Glint reads)",
+                             document.locate("/extensionsRequired/" + std::to_string(i)));
+    return std::nullopt;
+}
+
+std::vector<std::string> unsupportedUsedExtensions(const nlohmann::json& root) {
+    std::vector<std::string> names;
+    if (!root.is_object() || !root.contains("extensionsUsed") || !root["extensionsUsed"].is_array()) return names;
+    for (const auto& name : root["extensionsUsed"])
+        if (name.is_string() && !isSupportedGltfExtension(name.get<std::string>()) &&
+            std::find(names.begin(), names.end(), name.get<std::string>()) == names.end())
+            names.push_back(name.get<std::string>());
+    return names;
+}
+
 // --- entry points ---------------------------------------------------------------------------
 
-Result<ImportedFile> parseGltf(const std::string& text, const std::string& file) {
-    auto document = JsonDocument::parse(text, file);
+namespace {
+
+// `text` is the .gltf `file`, or the JSON chunk of the .glb `file` whose BIN chunk is `glbBin`.
+Result<ImportedFile> parse(const std::string& text, const std::string& file, std::optional<std::string_view> glbBin) {
+    auto document = JsonDocument::parse(text, glbBin ? file + " (JSON chunk)" : file);
     if (!document) return document.error();
     ImportedFile result;
-    // A .glb's JSON chunk is named "FILE (JSON chunk)": `file` is the .glb itself.
     const Context context{*document, result.warnings, file};
+    const GltfSource source{*document, file, glbBin.value_or(std::string_view())};
     try {
         ObjectReader root = readRoot(*document, "glTF");
         if (!root.has("asset")) root.failHere("not a glTF file: it has no \"asset\"");
@@ -195,17 +225,13 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
         const std::string version = asset.requiredString("version");
         if (version.rfind("2.", 0) != 0)
             asset.fail("version", "glTF " + version + " is not supported (Glint reads glTF 2.x)");
-        if (root.has("extensionsRequired")) {
-            const nlohmann::json& required = root.take("extensionsRequired");
-            if (!required.is_array()) root.fail("extensionsRequired", "expected an array of names");
-            for (const auto& name : required)
-                if (!name.is_string() || !isKnownExtension(name.get<std::string>()))
-                    root.fail("extensionsRequired", "the file requires " + name.dump() + ", which Glint does not support");
-        }
+        if (auto refusal = unsupportedRequiredExtension(*document)) return *refusal;
+        for (const std::string& name : unsupportedUsedExtensions(document->root()))
+            context.warn("/extensionsUsed", "extension " + name + " is not supported by Glint; what it adds is ignored");
         if (root.has("materials")) {
             int index = 0;
             for (ObjectReader& material : root.objectArray("materials"))
-                result.materials.push_back(readGltfMaterial(material, document->root(), *document, context.file, index++));
+                result.materials.push_back(readGltfMaterial(material, source, index++));
         }
         readLights(context, root, result);
         const nlohmann::json& meshes = document->root().contains("meshes") ? document->root()["meshes"] : nlohmann::json();
@@ -222,6 +248,12 @@ Result<ImportedFile> parseGltf(const std::string& text, const std::string& file)
     }
     return result;
 }
+
+}  // namespace
+
+Result<ImportedFile> parseGltf(const std::string& text, const std::string& file) { return parse(text, file, std::nullopt); }
+
+Result<ImportedFile> parseGlbJson(const std::string& text, const std::string& file, std::string_view bin) { return parse(text, file, bin); }
 
 Result<ImportedFile> loadGltf(const std::string& path) { return parseTextFile(path, parseGltf); }
 

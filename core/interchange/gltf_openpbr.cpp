@@ -59,18 +59,16 @@ constexpr float kGltfCoatIor = 1.5f;  // KHR_materials_clearcoat's fixed index
 // --- import -----------------------------------------------------------------------------------
 
 struct Reading {
-    const JsonDocument& document;
-    const json& root;
-    std::string gltfFile;
+    const GltfSource& source;
     ImportedMaterial& imported;
     json kept = json::object();  // ImportedMaterial::gltfKept
     std::vector<MaterialTexture> textures;
 
     void warn(const std::string& pointer, const std::string& message) const {
-        imported.warnings.push_back(makeError("warning: " + pointer + ": " + message, document.locate(pointer)));
+        imported.warnings.push_back(makeError("warning: " + pointer + ": " + message, source.document.locate(pointer)));
     }
     void note(const std::string& pointer, const std::string& message) const {
-        imported.warnings.push_back(makeError("note: " + pointer + ": " + message, document.locate(pointer)));
+        imported.warnings.push_back(makeError("note: " + pointer + ": " + message, source.document.locate(pointer)));
     }
     json& keptAt(const std::string& extension) {
         return extension.empty() ? kept : kept["extensions"][extension];
@@ -83,7 +81,7 @@ struct Reading {
         for (const TextureSlot& slot : kTextureSlots) {
             if (slot.extension != extension) continue;
             if (!infos.count(slot.key)) {
-                auto info = readGltfTextureInfo(object, slot.key, root, gltfFile);
+                auto info = readGltfTextureInfo(object, slot.key, source);
                 if (!info) continue;
                 infos[slot.key] = *info;
             }
@@ -115,10 +113,9 @@ float number(ObjectReader& reader, const char* key, double fallback, Bounds boun
 
 bool isGltfMaterialExtension(const std::string& name) { return kMaterialExtensions.count(name) > 0; }
 
-ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const JsonDocument& document, const std::string& gltfFile,
-                                  int index) {
+ImportedMaterial readGltfMaterial(ObjectReader& reader, const GltfSource& source, int index) {
     ImportedMaterial imported;
-    Reading reading{document, root, gltfFile, imported};
+    Reading reading{source, imported};
     Material& m = imported.material;
     m = Material::withDefaults(reader.string("name", "gltf material " + std::to_string(index)), BrdfModel::OpenPbr);
     std::map<std::string, glm::vec2> ranges;      // scalar textures: [0, factor]
@@ -286,8 +283,11 @@ ImportedMaterial readGltfMaterial(ObjectReader& reader, const json& root, const 
     }
     reading.readSlots(reader, "", ranges, colorFactors);
     if (extensions) {
+        // One not in "extensionsUsed" is named here; the file's warning names those listed there, once.
+        const json& used = source.document.root().value("extensionsUsed", json::array());
         for (const auto& [key, value] : reader.take("extensions").items())
-            if (!isGltfMaterialExtension(key)) reading.warn(appendPointer(extensions->pointer(), key), "extension not supported by Glint; ignored");
+            if (!isGltfMaterialExtension(key) && (!used.is_array() || std::find(used.begin(), used.end(), key) == used.end()))
+                reading.warn(appendPointer(extensions->pointer(), key), "extension not supported by Glint (nor listed in extensionsUsed); ignored");
     }
     rejectUnknownGltfKeys(reader);
 
@@ -435,14 +435,18 @@ json gltfOpenPbrMaterial(const ImportedMaterial& imported, GltfTextureWriter& te
         if (texture.filter == TextureFilter::Anisotropic) w.lost("anisotropic filtering is written as trilinear (glTF samplers have no anisotropy)");
         json& object = objectFor(*slot);
         if (parameter == "base_metalness" && metallicRoughness[0]) {
-            if (metallicRoughness[0]->file != texture.file || metallicRoughness[0]->tiling != texture.tiling ||
+            if (metallicRoughness[0]->file != texture.file || metallicRoughness[0]->gltfImage != texture.gltfImage ||
+                metallicRoughness[0]->tiling != texture.tiling ||
                 metallicRoughness[0]->offset != texture.offset || metallicRoughness[0]->rotation != texture.rotation)
                 w.lost("metalness and roughness textures differ: glTF holds one metallicRoughnessTexture; the roughness one is written");
-        } else if (isNormalMapKey(parameter)) {
-            object[slot->key] = textures.textureInfo(texture, extensionsUsed);
-            if (texture.normalScale != 1.0f) object[slot->key]["scale"] = texture.normalScale;
         } else {
-            object[slot->key] = textures.textureInfo(texture, extensionsUsed);
+            auto info = textures.textureInfo(texture, extensionsUsed);
+            if (!info) {
+                w.lost("the texture on '" + parameter + "' is not written: " + info.error().format());
+                continue;
+            }
+            object[slot->key] = std::move(*info);
+            if (isNormalMapKey(parameter) && texture.normalScale != 1.0f) object[slot->key]["scale"] = texture.normalScale;
         }
         if (parameter == kOcclusionMapKey) {
             if (texture.range.y != 1.0f || texture.channel != TextureChannel::R)

@@ -30,9 +30,8 @@ bool isGltfMaterialExtension(const std::string& name);
 // One entry of "materials" onto an openpbr material: what does not map exactly is a warning
 // located at its JSON pointer; what Glint reads but does not render (dispersion, the iridescence
 // minimum) is kept in ImportedMaterial::gltfKept for export.
-// `gltfFile` is the file whose folder holds its images.
-ImportedMaterial readGltfMaterial(ObjectReader& reader, const nlohmann::json& root, const JsonDocument& document,
-                                  const std::string& gltfFile, int index);
+// Its images are read from `source` (gltf_images.h) or from files in the folder of its file.
+ImportedMaterial readGltfMaterial(ObjectReader& reader, const GltfSource& source, int index);
 
 // The glTF material of an openpbr material, with its kept values merged back; its images go
 // through `textures`. Warnings say what glTF cannot hold.

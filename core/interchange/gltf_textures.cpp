@@ -2,7 +2,9 @@
 #include "interchange/gltf_textures.h"
 
 #include <cmath>
+#include <filesystem>
 
+#include "interchange/base64.h"
 #include "texture/texture_image.h"
 #include "util/reference_confinement.h"
 #include "util/referenced_file_error.h"
@@ -109,9 +111,9 @@ GltfUvTransform gltfUvTransformOf(const MaterialTexture& texture) {
     return transform;
 }
 
-std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const std::string& key, const json& root,
-                                                   const std::string& gltfFile) {
+std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const std::string& key, const GltfSource& source) {
     if (!parent.has(key)) return std::nullopt;
+    const json& root = source.document.root();
     ObjectReader reader = parent.object(key);
     GltfTextureInfo info;
     info.pointer = reader.pointer();
@@ -120,15 +122,15 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
     const json& texture = entryOf(reader, "index", root, "textures", static_cast<size_t>(index));
     if (!texture.contains("source") || !texture["source"].is_number_unsigned())
         reader.fail("index", "texture " + std::to_string(index) + " has no image (\"source\")");
-    const json& image = entryOf(reader, "index", root, "images", texture["source"].get<size_t>());
-    if (image.contains("uri")) {
-        if (!image["uri"].is_string()) reader.fail("index", "the image's \"uri\" is not a string");
+    info.image = static_cast<int>(texture["source"].get<size_t>());
+    const json& image = entryOf(reader, "index", root, "images", static_cast<size_t>(info.image));
+    info.container = source.file;
+    info.embedded = embeddedGltfImage(source, static_cast<size_t>(info.image));
+    if (!info.embedded && image.contains("uri")) {
         info.uri = percentDecoded(image["uri"].get<std::string>());
-        if (info.uri.rfind("data:", 0) != 0) {
-            auto confined = confinedReference(info.uri, {gltfFile});
-            if (confined) info.file = confined->string();
-            else info.refusal = confined.error().message;
-        }
+        auto confined = confinedReference(info.uri, {source.file});
+        if (confined) info.file = confined->string();
+        else info.refusal = confined.error().message;
     }
     if (texture.contains("sampler")) {
         if (!texture["sampler"].is_number_unsigned()) reader.fail("index", "texture " + std::to_string(index) + ": \"sampler\" is not an index");
@@ -156,21 +158,21 @@ std::optional<GltfTextureInfo> readGltfTextureInfo(ObjectReader& parent, const s
 
 Result<MaterialTexture> gltfImageTexture(const GltfTextureInfo& info, const std::string& parameter, TextureColorSpace colorSpace) {
     if (!info.refusal.empty()) return makeError(info.pointer + ": " + info.refusal);
-    if (info.file.empty())
-        return makeError(info.pointer + ": the image is " + (info.uri.empty() ? "in a buffer view" : "a data URI") +
-                         "; Glint reads texture images from files beside the glTF");
     MaterialTexture texture;
     texture.parameter = parameter;
     texture.kind = TextureKind::Image;
-    texture.file = info.file;
+    texture.file = info.embedded ? std::filesystem::absolute(info.container).lexically_normal().string() : info.file;
+    texture.gltfImage = info.embedded ? info.image : -1;
     texture.colorSpace = colorSpace;
     texture.filter = info.filter;
     texture.minFilter = info.minFilter;
     texture.wrapU = info.wrapU;
     texture.wrapV = info.wrapV;
     applyGltfUvTransform(texture, info.transform);
-    auto image = loadTextureImage(texture.file, colorSpace);
-    if (!image) return makeError(info.pointer + ": " + referencedFileProblem(texture.file, image.error(), "image"));
+    auto image = info.embedded ? decodeEmbeddedGltfImage(*info.embedded, info.container, info.image, colorSpace)
+                               : loadTextureImage(texture.file, colorSpace);
+    if (!image)
+        return makeError(info.pointer + ": " + (info.embedded ? image.error().message : referencedFileProblem(texture.file, image.error(), "image")));
     texture.image = *image;
     return texture;
 }
@@ -200,8 +202,14 @@ int GltfTextureWriter::textureIndex(const std::string& uri, const MaterialTextur
     return static_cast<int>(textures_.size()) - 1;
 }
 
-json GltfTextureWriter::textureInfo(const MaterialTexture& texture, std::vector<std::string>& extensionsUsed) {
-    json info = {{"index", textureIndex(percentEncoded(referencedPathFor(texture.file, targetFile_)), texture)}};
+Result<json> GltfTextureWriter::textureInfo(const MaterialTexture& texture, std::vector<std::string>& extensionsUsed) {
+    std::string uri = percentEncoded(referencedPathFor(texture.file, targetFile_));
+    if (texture.gltfImage >= 0) {
+        auto embedded = readGltfImage(texture.file, texture.gltfImage);
+        if (!embedded) return embedded.error();
+        uri = "data:" + embedded->mimeType + ";base64," + encodeBase64(embedded->bytes);
+    }
+    json info = {{"index", textureIndex(uri, texture)}};
     if (texture.tiling != glm::vec2(1.0f) || texture.rotation != 0.0f || texture.offset != glm::vec2(0.0f)) {
         const GltfUvTransform transform = gltfUvTransformOf(texture);
         json values = json::object();

@@ -15,6 +15,7 @@
 #include "interchange/materialx_graph.h"
 #include "interchange/materialx_shaders.h"
 #include "interchange/xml_document.h"
+#include "texture/texture_edit.h"
 #include "texture/texture_image.h"
 #include "util/file_io.h"
 #include "util/reference_confinement.h"
@@ -33,13 +34,15 @@ std::string shortestDecimal(float value) {
     return std::string(buffer, end);
 }
 
-// The image on `parameter` as a material texture, or a warning saying why it is not rendered.
-// Its file is confined to the document's folder (util/reference_confinement.h).
-void addTexture(const std::string& parameter, const MaterialXInput& input, const std::string& documentFile,
-                const ParamSpec* spec, ImportedMaterial& imported) {
+// The image on `parameter` as a material texture, or a warning saying why it is not rendered (and
+// the image kept as a texture reference). Its file is confined to the document's folder
+// (util/reference_confinement.h).
+// `key`: the texture's key in the material (the parameter, or a surface map's).
+void addTexture(const std::string& parameter, const std::string& key, const MaterialXInput& input, const std::string& documentFile,
+                ImportedMaterial& imported) {
     const MaterialXImage& image = *input.image;
-    imported.textures.push_back({parameter, image.file, ""});
     const auto warn = [&](const std::string& why) {
+        imported.textures.push_back({parameter, image.file, ""});
         imported.warnings.push_back(makeError("warning: image '" + image.file + "' on '" + parameter + "' not rendered: " + why, input.where));
     };
     if (image.file.find("<UDIM>") != std::string::npos || image.file.find("<UVTILE>") != std::string::npos)
@@ -47,7 +50,7 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     if (static_cast<int>(imported.material.analytic()->textures.size()) >= kMaxMaterialTextures)
         return warn("a material holds at most " + std::to_string(kMaxMaterialTextures) + " textures");
     MaterialTexture texture;
-    texture.parameter = spec ? spec->name : kNormalMapKey;
+    texture.parameter = key;
     texture.kind = TextureKind::Image;
     auto confined = confinedReference(image.file, {documentFile, input.where.line, input.where.column});
     if (!confined) return warn(confined.error().message);
@@ -58,7 +61,7 @@ void addTexture(const std::string& parameter, const MaterialXInput& input, const
     auto decoded = loadTextureImage(texture.file, texture.colorSpace);
     if (!decoded) return warn(referencedFileProblem(texture.file, decoded.error(), "image"));
     texture.image = *decoded;
-    imported.material.analytic()->textures.push_back(std::move(texture));
+    putTexture(*imported.material.analytic(), std::move(texture));  // table order, as every material keeps them
 }
 
 Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const std::string& name, const XmlElement& shader) {
@@ -69,11 +72,11 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
     const MaterialXInputs openPbr = toOpenPbrInputs(shader.name, *inputs, table, imported.warnings);
     imported.material = Material::withDefaults(name, BrdfModel::OpenPbr);
     for (const auto& [parameter, input] : openPbr) {
-        if (parameter == "geometry_normal") {
-            if (!input.image->normalMap)
-                imported.warnings.push_back(makeError("warning: geometry_normal is driven by an image without a normalmap node; "
+        if (const char* map = surfaceMapOf(parameter)) {
+            if (isNormalMapKey(map) && !input.image->normalMap)
+                imported.warnings.push_back(makeError("warning: " + parameter + " is driven by an image without a normalmap node; "
                                                           "it is read as a tangent-space normal map", input.where));
-            addTexture(parameter, input, document.file, nullptr, imported);
+            addTexture(parameter, map, input, document.file, imported);
             continue;
         }
         const ParamSpec& spec = table[findParam(table, parameter)];
@@ -83,7 +86,7 @@ Result<ImportedMaterial> readMaterial(const MaterialXDocument& document, const s
             imported.warnings.push_back(makeError("warning: '" + parameter + "' is outside Glint's range [" + shortestDecimal(spec.validMin) + ", " +
                                                       shortestDecimal(spec.validMax) + "]; read as the nearest value in it", input.where));
         setParam(imported.material, parameter, kept);
-        if (input.image) addTexture(parameter, input, document.file, &spec, imported);
+        if (input.image) addTexture(parameter, parameter, input, document.file, imported);
     }
     GLINT_CHECK(!findOutOfRange(imported.material));
     return imported;
@@ -144,6 +147,12 @@ void writeTextures(const Material& material, const std::string& graphName, const
         if (texture.kind != TextureKind::Image) {
             warnings.push_back(makeError("warning: material '" + material.name + "': the procedural texture on '" + texture.parameter +
                                          "' is not written (MaterialX would need its own node graph); the constant is"));
+            continue;
+        }
+        if (texture.gltfImage >= 0) {
+            warnings.push_back(makeError("warning: material '" + material.name + "': the texture on '" + texture.parameter + "' is image " +
+                                         std::to_string(texture.gltfImage) + " inside " + texture.file +
+                                         " and is not written (MaterialX names image files); the constant is"));
             continue;
         }
         const bool scalar = !normal && table[index].kind == ParamKind::Scalar;

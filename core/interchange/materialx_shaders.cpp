@@ -6,6 +6,7 @@
 #include <span>
 
 #include "math/constants.h"
+#include "texture/material_texture.h"
 
 namespace glint {
 namespace {
@@ -96,6 +97,13 @@ public:
                                               set->second.where));
         }
         out_[to] = input;
+    }
+    // `from`'s image as the surface map `to` (texture/material_texture.h), which has no constant
+    // form: a constant `from` is dropped with `whyNotConstant`.
+    void copyImage(const std::string& from, const std::string& to, const std::string& whyNotConstant) {
+        const auto set = inputs_.find(from);
+        if (set != inputs_.end() && set->second.image) out_[to] = set->second;
+        else drop(from, whyNotConstant);
     }
     // A source input Glint has no counterpart for: a warning when the file sets it away from its default.
     void drop(const std::string& name, const std::string& why) {
@@ -221,7 +229,7 @@ MaterialXInputs fromGltfPbr(const MaterialXInputs& inputs, std::vector<Diagnosti
     const float dispersion = m.scalar("dispersion");  // KHR_materials_dispersion: 20 / Abbe number
     m.compute("transmission_dispersion_scale", glm::vec3(dispersion > 0.0f ? 1.0f : 0.0f), {"dispersion"});
     if (dispersion > 0.0f) m.compute("transmission_dispersion_abbe_number", glm::vec3(20.0f / dispersion), {"dispersion"});
-    m.drop("occlusion", "Glint has no ambient-occlusion input");
+    m.copyImage("occlusion", kOcclusionMapKey, "Glint reads an image on it (its occlusion map), not a constant");
     m.drop("alpha_mode", "Glint renders every material opaque");
     m.drop("alpha_cutoff", "Glint renders every material opaque");
     m.copy("normal", "geometry_normal");
@@ -250,7 +258,7 @@ void keepGlintInputs(MaterialXInputs& inputs, std::span<const ParamSpec> glintTa
     for (auto it = inputs.begin(); it != inputs.end();) {
         const std::string& name = it->first;
         const MaterialXInput& input = it->second;
-        const bool glint = findParam(glintTable, name) >= 0 || (name == "geometry_normal" && input.image);
+        const bool glint = findParam(glintTable, name) >= 0 || (surfaceMapOf(name) && input.image);
         // A lobe's secondary inputs: its weight's warning speaks for them.
         const bool secondary = (name.rfind("subsurface_", 0) == 0 && name != "subsurface_weight") ||
                                name == "transmission_dispersion_abbe_number" || name == "transmission_scatter_anisotropy";
@@ -268,6 +276,13 @@ void keepGlintInputs(MaterialXInputs& inputs, std::span<const ParamSpec> glintTa
 }
 
 }  // namespace
+
+const char* surfaceMapOf(const std::string& input) {
+    return input == "geometry_normal"        ? kNormalMapKey
+           : input == "geometry_coat_normal" ? kCoatNormalMapKey
+           : input == kOcclusionMapKey       ? kOcclusionMapKey
+                                             : nullptr;
+}
 
 bool isReadableMaterialXShader(const std::string& category) {
     return category == "open_pbr_surface" || category == "standard_surface" || category == "gltf_pbr";

@@ -17,8 +17,13 @@ namespace glint {
 // The shader categories read: "open_pbr_surface", "standard_surface", "gltf_pbr".
 bool isReadableMaterialXShader(const std::string& category);
 
+// The key of the surface map (texture/material_texture.h) an image on `input` becomes:
+// geometry_normal → the normal map, geometry_coat_normal → the coat normal map, gltf_pbr's
+// occlusion (read as the input "occlusion") → the occlusion map; nullptr for any other input.
+const char* surfaceMapOf(const std::string& input);
+
 // The OpenPBR inputs (by OpenPBR name) that `inputs` of a `category` shader amount to, kept to
-// those in `glintTable` (Glint's openpbr table) plus geometry_normal when an image drives it.
+// those in `glintTable` (Glint's openpbr table) plus the surface maps above when an image drives them.
 // An image carries over where an input maps to one OpenPBR input unchanged, else a warning says
 // it is dropped; so does every input that changes the look but has no place in Glint's table,
 // and every name the source shader does not define.

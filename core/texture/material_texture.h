@@ -40,7 +40,7 @@ enum class TextureChannel { R, G, B, A };  // where a scalar parameter reads an 
 // Decoded image, linear RGBA floats, rows from the BOTTOM of the picture up (v = 0 is the
 // bottom edge, as OpenGL's t), so the CPU and the GPU index it the same way.
 struct TextureImage {
-    std::string path;  // absolute
+    std::string path;  // absolute; an image inside a glTF is "FILE#/images/N" (interchange/gltf_images.h)
     long long modifiedAt = 0;  // file modification time [ns since the epoch] when decoded
     TextureColorSpace colorSpace = TextureColorSpace::Srgb;  // how the file was decoded
     int width = 0, height = 0;
@@ -56,6 +56,7 @@ struct MaterialTexture {
     TextureKind kind = TextureKind::Checker;
     // Image
     std::string file;  // absolute path of the image (written relative to the scene file)
+    int gltfImage = -1;  // ≥ 0: the image is images[gltfImage] inside `file`, a .gltf or .glb
     TextureColorSpace colorSpace = TextureColorSpace::Srgb;
     TextureChannel channel = TextureChannel::R;  // scalar parameters only
     TextureFilter filter = TextureFilter::Trilinear;  // magnification: nearest for Nearest, else linear

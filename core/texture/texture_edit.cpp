@@ -110,6 +110,7 @@ Status setTextureImage(AnalyticMaterial& material, const std::string& parameter,
                                   ? *existing
                                   : defaultTexture(parameter, spec, TextureKind::Image);
     texture.file = std::filesystem::absolute(path).lexically_normal().string();
+    texture.gltfImage = -1;
     auto image = loadTextureImage(texture.file, texture.colorSpace);
     if (!image) return image.error();
     if (Status inRange = checkTexelRange(**image, texture, spec); !inRange) return inRange.error();

@@ -1,10 +1,12 @@
 // Image textures through OpenImageIO (see texture_image.h).
 #include "texture/texture_image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <new>
@@ -22,10 +24,28 @@ using CacheKey = std::tuple<std::string, long long, TextureColorSpace>;
 std::mutex cacheMutex;
 std::map<CacheKey, std::weak_ptr<const TextureImage>> cache;  // weak: unused images are freed
 
-Result<std::shared_ptr<const TextureImage>> decode(const std::string& path, long long modifiedAt,
-                                                   TextureColorSpace colorSpace) {
-    auto input = OIIO::ImageInput::open(path);
-    if (!input) return makeError("cannot read texture image: " + OIIO::geterror(), {path});
+// The image cached under `key`, else `decodeImage()`'s, cached from then on.
+template <class Decode>
+Result<std::shared_ptr<const TextureImage>> cached(const CacheKey& key, Decode decodeImage) {
+    {
+        std::lock_guard lock(cacheMutex);
+        if (auto found = cache.find(key); found != cache.end())
+            if (auto image = found->second.lock()) return image;
+    }
+    auto decoded = decodeImage();
+    if (!decoded) return decoded.error();
+    std::lock_guard lock(cacheMutex);
+    cache[key] = *decoded;
+    return decoded;
+}
+
+// OpenImageIO's errors can run to several lines (each library's own account): the first says it.
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+// Decodes the opened `input`; `path` names the image (a file, or an image inside one).
+Result<std::shared_ptr<const TextureImage>> decode(std::unique_ptr<OIIO::ImageInput> input, const std::string& path,
+                                                   long long modifiedAt, TextureColorSpace colorSpace) {
+    if (!input) return makeError("cannot read texture image: " + firstLine(OIIO::geterror()), {path});
     const OIIO::ImageSpec spec = input->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
         return makeError("texture image has no pixels (" + std::to_string(spec.width) + "×" +
@@ -48,7 +68,7 @@ Result<std::shared_ptr<const TextureImage>> decode(const std::string& path, long
                          {path});
     }
     if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data()))
-        return makeError("texture image is truncated or corrupt: " + input->geterror(), {path});
+        return makeError("texture image is truncated or corrupt: " + firstLine(input->geterror()), {path});
     image->path = path;
     image->modifiedAt = modifiedAt;
     image->colorSpace = colorSpace;
@@ -82,17 +102,20 @@ Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& 
     if (error) return makeError("cannot read texture image: " + error.message(), {path});
     const long long modifiedAt =
         std::chrono::duration_cast<std::chrono::nanoseconds>(writeTime.time_since_epoch()).count();
-    const CacheKey key{path, modifiedAt, colorSpace};
-    {
-        std::lock_guard lock(cacheMutex);
-        if (auto found = cache.find(key); found != cache.end())
-            if (auto image = found->second.lock()) return image;
-    }
-    auto decoded = decode(path, modifiedAt, colorSpace);
-    if (!decoded) return decoded.error();
-    std::lock_guard lock(cacheMutex);
-    cache[key] = *decoded;
-    return decoded;
+    return cached({path, modifiedAt, colorSpace}, [&] { return decode(OIIO::ImageInput::open(path), path, modifiedAt, colorSpace); });
+}
+
+Result<std::shared_ptr<const TextureImage>> decodeTextureImage(std::span<const uint8_t> encoded, const std::string& format,
+                                                               const std::string& name, long long modifiedAt,
+                                                               TextureColorSpace colorSpace) {
+    // Keyed by the bytes too: a name without a file (text parsed in memory) may hold other bytes each time.
+    const std::string_view bytes(reinterpret_cast<const char*>(encoded.data()), encoded.size());
+    const std::string key = name + "@" + std::to_string(std::hash<std::string_view>{}(bytes)) + "/" + std::to_string(bytes.size());
+    return cached({key, modifiedAt, colorSpace}, [&] {
+        // OpenImageIO picks the reader by the name's extension and reads the bytes through the proxy.
+        OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
+        return decode(OIIO::ImageInput::open("image." + format, nullptr, &reader), name, modifiedAt, colorSpace);
+    });
 }
 
 }  // namespace glint

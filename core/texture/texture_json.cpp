@@ -1,9 +1,9 @@
 // The "textures" object of a material (see texture_json.h).
 #include "texture/texture_json.h"
 
+#include "interchange/gltf_images.h"
 #include "scene/json_vectors.h"
 #include "texture/texture_edit.h"
-#include "texture/texture_image.h"
 #include "util/referenced_file_error.h"
 #include "util/referenced_path.h"
 
@@ -43,6 +43,7 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
     if (kind == TextureKind::Image) {
         const std::string file = reader.requiredString("file");
         texture.file = reader.referencedFile("file").string();
+        texture.gltfImage = reader.integer("gltf_image", -1, 0, 1'000'000);
         texture.colorSpace = static_cast<TextureColorSpace>(reader.choice("color_space", kColorSpaces, static_cast<int>(texture.colorSpace)));
         texture.filter = static_cast<TextureFilter>(reader.choice("filter", kFilters, static_cast<int>(texture.filter)));
         if (reader.has("min_filter")) texture.minFilter = static_cast<TextureMinFilter>(reader.choice("min_filter", kMinFilters, 0) + 1);
@@ -59,7 +60,7 @@ MaterialTexture readTexture(ObjectReader& reader, const std::string& parameter, 
             texture.range.x = readValue(reader, "min", glm::vec3(texture.range.x), spec).x;
             texture.range.y = readValue(reader, "max", glm::vec3(texture.range.y), spec).x;
         }
-        auto image = loadTextureImage(texture.file, texture.colorSpace);
+        auto image = loadMaterialTextureImage(texture.file, texture.gltfImage, texture.colorSpace);
         if (!image) reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + referencedFileProblem(texture.file, image.error(), "image"));
         if (Status inRange = checkTexelRange(**image, texture, spec); !inRange)
             reader.fail("file", "texture '" + file + "' for '" + parameter + "': " + inRange.error().format() +
@@ -113,6 +114,7 @@ json materialTexturesToJson(const AnalyticMaterial& material, const std::string&
         switch (texture.kind) {
             case TextureKind::Image: {
                 entry["file"] = referencedPathFor(texture.file, targetFile);
+                if (texture.gltfImage >= 0) entry["gltf_image"] = texture.gltfImage;
                 entry["color_space"] = kColorSpaces[static_cast<int>(texture.colorSpace)];
                 entry["filter"] = kFilters[static_cast<int>(texture.filter)];
                 if (texture.minFilter != TextureMinFilter::Default) entry["min_filter"] = kMinFilters[static_cast<int>(texture.minFilter) - 1];
