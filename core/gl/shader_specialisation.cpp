@@ -22,7 +22,7 @@ bool isLayerWeight(std::string_view name) {
 // The kind constant of shaders/common/lights.glsl that a packed light needs.
 const char* lightKind(const GpuLightStd140& light) {
     if (light.position.w == 0.0f) return "LIGHT_DIRECTIONAL";
-    const bool inverseSquare = light.attenuation.w <= 0.5f, noCone = light.spotAxis.w <= -1.5f;
+    const bool inverseSquare = glm::vec3(light.attenuation) == kInverseSquareLaw, noCone = light.spotAxis.w <= -1.5f;
     return inverseSquare && noCone ? "LIGHT_POINT" : "LIGHT_ANY";
 }
 
