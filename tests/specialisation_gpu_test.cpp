@@ -84,6 +84,23 @@ TEST(Specialisation, EveryLightKindAndAShadowDrawTheGenericPicture) {
     expectSamePictures(sky, "sky");
 }
 
+TEST(Specialisation, ManyLightsOfEveryKindDrawTheGenericPicture) {
+    // 30 lights, the four kinds interleaved and two of them shadowed: each kind's loop, and the
+    // shadowed lights unrolled among them.
+    const Scene kinds = everyLightKind();
+    Scene scene = kinds;
+    scene.lights.clear();
+    for (int i = 0; i < 30; ++i) {
+        Light light = kinds.lights[i % kinds.lights.size()];
+        light.position += glm::vec3(0.1f * (i % 5), 0.0f, -0.1f * (i % 3));
+        light.power /= 8.0f;
+        light.irradiance /= 8.0f;
+        light.castsShadows = i == 0 || i == 9;
+        scene.lights.push_back(light);
+    }
+    expectSamePictures(scene, "30 lights");
+}
+
 TEST(Specialisation, DisplayChoicesDrawTheGenericPicture) {
     Scene scene = everyLightKind();
     scene.display = {1.0f, Transfer::Gamma, 1.8f, ToneMap::Reinhard};
@@ -136,9 +153,18 @@ TEST(Specialisation, TheFramesChoicesBecomeConstants) {
     shadows.origin[2].w = static_cast<float>(ShadowMapKind::Cube);
     const std::string text = frameSpecialisation(packFrameUniforms(scene, 64, 64), shadows, scene.environment, scene.display);
     EXPECT_NE(text.find("#define GLINT_LIGHT_SUM(term) (term(0, LIGHT_DIRECTIONAL, 0, 0) + term(1, LIGHT_POINT, 2, 2) + "
-                        "term(2, LIGHT_ANY, -1, 0) + term(3, LIGHT_ANY, -1, 0))"),
+                        "term(2, LIGHT_ANY, -1, 0) + term(3, LIGHT_ANY, -1, 0))\n"),
               std::string::npos)
         << text;
+    EXPECT_EQ(text.find("GLINT_LOOPED"), std::string::npos) << "4 lights are all unrolled";
+    // Beyond kMaxUnrolledLights, the lights without a map are grouped by kind for a loop each.
+    Scene many = scene;
+    for (int i = 0; i < kMaxUnrolledLights; ++i) many.lights.push_back(scene.lights[i % 2 ? 3 : 1]);  // classic, point
+    many.lights.push_back(scene.lights[0]);                                                             // directional
+    const std::string manyText = frameSpecialisation(packFrameUniforms(many, 64, 64), shadows, many.environment, many.display);
+    EXPECT_NE(manyText.find("#define GLINT_LOOPED_LIGHTS int[](12, 8, 10, 9, 11)\n#define GLINT_LOOPED_ENDS ivec3(1, 3, 5)\n"),
+              std::string::npos)
+        << manyText;
     EXPECT_NE(text.find("#define GLINT_FUSED_DISPLAY 1"), std::string::npos);
     EXPECT_NE(text.find("#define GLINT_ENVIRONMENT_ENABLED 0"), std::string::npos);
     EXPECT_NE(materialSpecialisation(*Material::withDefaults("plastic", BrdfModel::BlinnPhong).analytic()).find("#define GLINT_PARAM_form "),

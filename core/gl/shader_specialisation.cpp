@@ -1,7 +1,9 @@
 // Program specialisation preludes (see shader_specialisation.h).
 #include "gl/shader_specialisation.h"
 
+#include <array>
 #include <string_view>
+#include <vector>
 
 #include "brdf/model_registry.h"
 #include "brdf/param_table.h"
@@ -19,26 +21,48 @@ bool isLayerWeight(std::string_view name) {
     return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
 }
 
-// The kind constant of shaders/common/lights.glsl that a packed light needs.
-const char* lightKind(const GpuLightStd140& light) {
-    if (light.position.w == 0.0f) return "LIGHT_DIRECTIONAL";
+// The kind constants of shaders/common/lights.glsl, in the order of GLINT_LOOPED_ENDS.
+constexpr std::array<const char*, 3> kLightKinds = {"LIGHT_DIRECTIONAL", "LIGHT_POINT", "LIGHT_ANY"};
+
+// The kLightKinds entry that a packed light needs.
+int lightKind(const GpuLightStd140& light) {
+    if (light.position.w == 0.0f) return 0;
     const bool inverseSquare = glm::vec3(light.attenuation) == kInverseSquareLaw, noCone = light.spotAxis.w <= -1.5f;
-    return inverseSquare && noCone ? "LIGHT_POINT" : "LIGHT_ANY";
+    return inverseSquare && noCone ? 1 : 2;
 }
 
-// GLINT_LIGHT_SUM(term): term(i, kind, shadow-map slot or −1, map kind) summed over the lights in
-// LightBlock order (shaders/common/shading.glsl), or nothing when there are too many to unroll.
+// The lights, for shaders/common/shading.glsl. GLINT_LIGHT_SUM(term): term(i, kind, shadow-map slot
+// or −1, map kind) summed, unrolled, over the first kMaxUnrolledLights lights and every shadowed one
+// (so that each reads its own map). GLINT_LOOPED_LIGHTS: the other lights' LightBlock indices
+// grouped by kind, and GLINT_LOOPED_ENDS where each kind's group ends; the shader sums each group
+// in a loop whose body is compiled for that kind. So no light runs another kind's code or a shadow
+// lookup it does not need, as the generic loop does (which took over from an unrolled sum at 9
+// lights: the frame went from 1.1 to 5.8 times its floor), and the program stops growing past
+// kMaxUnrolledLights and the shadowed lights (docs/performance.md, "Many lights").
 std::string lightSum(const FrameUniforms& frame, const ShadowBlockStd140& shadows) {
-    const int count = frame.frame.lightCount.x;
-    if (count > kMaxSpecialisedLights) return "";
-    std::string sum;
-    for (int i = 0; i < count; ++i) {
+    std::string unrolled;
+    std::array<std::vector<int>, kLightKinds.size()> looped;
+    for (int i = 0; i < frame.frame.lightCount.x; ++i) {
+        const int kind = lightKind(frame.lights.lights[i]);
         const int slot = shadows.mapOfLight[i / 4][i % 4];
+        if (slot < 0 && i >= kMaxUnrolledLights) {
+            looped[kind].push_back(i);
+            continue;
+        }
         const int mapKind = slot >= 0 ? static_cast<int>(shadows.origin[slot].w) : 0;
-        sum += (i ? " + term(" : "term(") + std::to_string(i) + ", " + lightKind(frame.lights.lights[i]) + ", " +
-               std::to_string(slot) + ", " + std::to_string(mapKind) + ")";
+        unrolled += (unrolled.empty() ? "term(" : " + term(") + std::to_string(i) + ", " + kLightKinds[kind] + ", " +
+                    std::to_string(slot) + ", " + std::to_string(mapKind) + ")";
     }
-    return define("GLINT_LIGHT_SUM(term)", count == 0 ? "vec3(0.0)" : "(" + sum + ")");
+    std::string text = define("GLINT_LIGHT_SUM(term)", unrolled.empty() ? "vec3(0.0)" : "(" + unrolled + ")");
+    std::string indices, ends;
+    size_t end = 0;
+    for (const std::vector<int>& group : looped) {
+        for (const int index : group) indices += (indices.empty() ? "" : ", ") + std::to_string(index);
+        end += group.size();
+        ends += (ends.empty() ? "" : ", ") + std::to_string(end);
+    }
+    if (end == 0) return text;  // GLSL has no empty array
+    return text + define("GLINT_LOOPED_LIGHTS", "int[](" + indices + ")") + define("GLINT_LOOPED_ENDS", "ivec3(" + ends + ")");
 }
 
 }  // namespace
