@@ -85,8 +85,8 @@ TEST(Specialisation, EveryLightKindAndAShadowDrawTheGenericPicture) {
 }
 
 TEST(Specialisation, ManyLightsOfEveryKindDrawTheGenericPicture) {
-    // 30 lights, the four kinds interleaved and two of them shadowed: each kind's loop, and the
-    // shadowed lights unrolled among them.
+    // 30 lights of the four kinds, two of them shadowed (unrolled among the looped ones): interleaved
+    // (loops of any kind between the unrolled lights), then grouped by kind (a loop per kind's run).
     const Scene kinds = everyLightKind();
     Scene scene = kinds;
     scene.lights.clear();
@@ -98,7 +98,11 @@ TEST(Specialisation, ManyLightsOfEveryKindDrawTheGenericPicture) {
         light.castsShadows = i == 0 || i == 9;
         scene.lights.push_back(light);
     }
-    expectSamePictures(scene, "30 lights");
+    expectSamePictures(scene, "30 lights, kinds interleaved");
+    const auto kindOrder = [](const Light& light) { return 2 * static_cast<int>(light.type) + light.attenuation.enabled; };
+    std::stable_sort(scene.lights.begin(), scene.lights.end(),
+                     [&](const Light& a, const Light& b) { return kindOrder(a) < kindOrder(b); });
+    expectSamePictures(scene, "30 lights, grouped by kind");
 }
 
 TEST(Specialisation, DisplayChoicesDrawTheGenericPicture) {
@@ -157,14 +161,30 @@ TEST(Specialisation, TheFramesChoicesBecomeConstants) {
               std::string::npos)
         << text;
     EXPECT_EQ(text.find("GLINT_LOOPED"), std::string::npos) << "4 lights are all unrolled";
-    // Beyond kMaxUnrolledLights, the lights without a map are grouped by kind for a loop each.
-    Scene many = scene;
-    for (int i = 0; i < kMaxUnrolledLights; ++i) many.lights.push_back(scene.lights[i % 2 ? 3 : 1]);  // classic, point
-    many.lights.push_back(scene.lights[0]);                                                             // directional
-    const std::string manyText = frameSpecialisation(packFrameUniforms(many, 64, 64), shadows, many.environment, many.display);
-    EXPECT_NE(manyText.find("#define GLINT_LOOPED_LIGHTS int[](12, 8, 10, 9, 11)\n#define GLINT_LOOPED_ENDS ivec3(1, 3, 5)\n"),
+    // Beyond kMaxUnrolledLights, the lights without a map are looped over, a loop per run of one kind.
+    const Light& point = scene.lights[1];
+    const Light& classic = scene.lights[3];
+    Scene runs = scene;
+    runs.lights.insert(runs.lights.end(), 7, point);
+    runs.lights.insert(runs.lights.end(), 2, classic);
+    runs.lights.push_back(scene.lights[0]);  // directional
+    const std::string runsText = frameSpecialisation(packFrameUniforms(runs, 64, 64), shadows, runs.environment, runs.display);
+    EXPECT_NE(runsText.find("#define GLINT_LOOPED_LIGHT_SUM(run) (run(8, 11, LIGHT_POINT) + run(11, 13, LIGHT_ANY) + "
+                            "run(13, 14, LIGHT_DIRECTIONAL))\n"),
               std::string::npos)
-        << manyText;
+        << runsText;
+    // Kinds alternating into more than kMaxLightRuns runs: a loop of any kind on each side of light
+    // 10, which has a map and is unrolled.
+    Scene alternating = scene;
+    alternating.lights.insert(alternating.lights.end(), 4, point);
+    for (int i = 0; i < 8; ++i) alternating.lights.push_back(i % 2 ? classic : point);
+    shadows.mapOfLight[2][2] = 1;  // light 10: map 1, orthographic
+    const std::string alternatingText =
+        frameSpecialisation(packFrameUniforms(alternating, 64, 64), shadows, alternating.environment, alternating.display);
+    EXPECT_NE(alternatingText.find("term(10, LIGHT_POINT, 1, 0))\n#define GLINT_LOOPED_LIGHT_SUM(run) (run(8, 10, LIGHT_ANY) + "
+                                   "run(11, 16, LIGHT_ANY))\n"),
+              std::string::npos)
+        << alternatingText;
     EXPECT_NE(text.find("#define GLINT_FUSED_DISPLAY 1"), std::string::npos);
     EXPECT_NE(text.find("#define GLINT_ENVIRONMENT_ENABLED 0"), std::string::npos);
     EXPECT_NE(materialSpecialisation(*Material::withDefaults("plastic", BrdfModel::BlinnPhong).analytic()).find("#define GLINT_PARAM_form "),

@@ -21,48 +21,58 @@ bool isLayerWeight(std::string_view name) {
     return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
 }
 
-// The kind constants of shaders/common/lights.glsl, in the order of GLINT_LOOPED_ENDS.
+// The kind constants of shaders/common/lights.glsl.
 constexpr std::array<const char*, 3> kLightKinds = {"LIGHT_DIRECTIONAL", "LIGHT_POINT", "LIGHT_ANY"};
+constexpr int kAnyLight = 2;
 
 // The kLightKinds entry that a packed light needs.
 int lightKind(const GpuLightStd140& light) {
     if (light.position.w == 0.0f) return 0;
     const bool inverseSquare = glm::vec3(light.attenuation) == kInverseSquareLaw, noCone = light.spotAxis.w <= -1.5f;
-    return inverseSquare && noCone ? 1 : 2;
+    return inverseSquare && noCone ? 1 : kAnyLight;
+}
+
+// Looped lights: LightBlock indices [first, end), all of kLightKinds[kind].
+struct LightRun {
+    int first, end, kind;
+};
+
+// Appends light i to the last run when it continues it, else starts a run.
+void extend(std::vector<LightRun>& runs, int i, int kind) {
+    if (!runs.empty() && runs.back().end == i && runs.back().kind == kind) ++runs.back().end;
+    else runs.push_back({i, i + 1, kind});
 }
 
 // The lights, for shaders/common/shading.glsl. GLINT_LIGHT_SUM(term): term(i, kind, shadow-map slot
 // or −1, map kind) summed, unrolled, over the first kMaxUnrolledLights lights and every shadowed one
-// (so that each reads its own map). GLINT_LOOPED_LIGHTS: the other lights' LightBlock indices
-// grouped by kind, and GLINT_LOOPED_ENDS where each kind's group ends; the shader sums each group
-// in a loop whose body is compiled for that kind. So no light runs another kind's code or a shadow
-// lookup it does not need, as the generic loop does (which took over from an unrolled sum at 9
-// lights: the frame went from 1.1 to 5.8 times its floor), and the program stops growing past
-// kMaxUnrolledLights and the shadowed lights (docs/performance.md, "Many lights").
+// (so that each reads its own map). GLINT_LOOPED_LIGHT_SUM(run): run(first, end, kind) summed over
+// the other lights' runs of one kind, each a loop whose body is compiled for that kind; where the
+// kinds alternate so often that this would make more than kMaxLightRuns loops, one loop of
+// LIGHT_ANY per stretch between unrolled lights. So no light runs a shadow lookup it does not need,
+// as the generic loop does (which took over from an unrolled sum at 9 lights: the frame went from
+// 1.1 to 5.8 times its floor), and the program stops growing past kMaxUnrolledLights, the shadowed
+// lights and kMaxLightRuns loops (docs/performance.md, "Many lights").
 std::string lightSum(const FrameUniforms& frame, const ShadowBlockStd140& shadows) {
     std::string unrolled;
-    std::array<std::vector<int>, kLightKinds.size()> looped;
+    std::vector<LightRun> byKind, stretches;
     for (int i = 0; i < frame.frame.lightCount.x; ++i) {
         const int kind = lightKind(frame.lights.lights[i]);
         const int slot = shadows.mapOfLight[i / 4][i % 4];
         if (slot < 0 && i >= kMaxUnrolledLights) {
-            looped[kind].push_back(i);
+            extend(byKind, i, kind);
+            extend(stretches, i, kAnyLight);
             continue;
         }
         const int mapKind = slot >= 0 ? static_cast<int>(shadows.origin[slot].w) : 0;
         unrolled += (unrolled.empty() ? "term(" : " + term(") + std::to_string(i) + ", " + kLightKinds[kind] + ", " +
                     std::to_string(slot) + ", " + std::to_string(mapKind) + ")";
     }
-    std::string text = define("GLINT_LIGHT_SUM(term)", unrolled.empty() ? "vec3(0.0)" : "(" + unrolled + ")");
-    std::string indices, ends;
-    size_t end = 0;
-    for (const std::vector<int>& group : looped) {
-        for (const int index : group) indices += (indices.empty() ? "" : ", ") + std::to_string(index);
-        end += group.size();
-        ends += (ends.empty() ? "" : ", ") + std::to_string(end);
-    }
-    if (end == 0) return text;  // GLSL has no empty array
-    return text + define("GLINT_LOOPED_LIGHTS", "int[](" + indices + ")") + define("GLINT_LOOPED_ENDS", "ivec3(" + ends + ")");
+    std::string looped;
+    for (const LightRun& run : byKind.size() <= kMaxLightRuns ? byKind : stretches)
+        looped += (looped.empty() ? "run(" : " + run(") + std::to_string(run.first) + ", " + std::to_string(run.end) + ", " +
+                  kLightKinds[run.kind] + ")";
+    return define("GLINT_LIGHT_SUM(term)", unrolled.empty() ? "vec3(0.0)" : "(" + unrolled + ")") +
+           (looped.empty() ? "" : define("GLINT_LOOPED_LIGHT_SUM(run)", "(" + looped + ")"));
 }
 
 }  // namespace

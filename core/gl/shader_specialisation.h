@@ -20,10 +20,12 @@
 
 namespace glint {
 
-// Lights summed unrolled (with constant LightBlock offsets) before the rest are looped over, a loop
-// per kind: a looped light costs llvmpipe about a third more (its light's values are gathered lane by
-// lane), an unrolled one grows the program (docs/performance.md, "Many lights").
+// Lights summed unrolled (with constant LightBlock offsets) before the rest are looped over: a looped
+// light costs llvmpipe about a fifth more (its values are gathered lane by lane), an unrolled one
+// grows the program (docs/performance.md, "Many lights").
 inline constexpr int kMaxUnrolledLights = 8;
+// Loops, each over a run of lights of one kind, before the looped lights are summed as any kind.
+inline constexpr int kMaxLightRuns = 6;
 
 // The frame's part: the lights (as packed, with their shadow-map slots) followed by
 // backgroundSpecialisation().
