@@ -89,15 +89,15 @@ else
 fi
 # Limits stated, not met by surprise: a texture larger than 16384 texels a side (OpenGL 4.1's least
 # GL_MAX_TEXTURE_SIZE) is refused naming its size and the limit; a PLY header declaring 10^12
-# vertices is refused before anything is allocated; 65 lights name the limit of 64.
+# vertices is refused before anything is allocated; 257 lights name the limit of 256.
 { printf 'P5\n16385 1\n255\n'; head -c 16385 /dev/zero; } >"$out/wide.pgm"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "lambert",\n   "textures": {"albedo": {"type": "image", "file": "wide.pgm"}}}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/wide_texture.json"
 expect_error wide_texture "wide\.pgm: texture image is 16385×1 texels, larger than Glint's limit of 16384 a side .*refused: scale the image down" -- render "$out/wide_texture.json" -o "$out/x.png"
 printf 'ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n3 0 0 0\n' >"$out/huge.ply"
 expect_error huge_ply "huge\.ply:3:1: cannot load mesh: the PLY header declares 1000000000000 vertex elements; Glint loads at most 50000000 .*simplify the mesh" -- render "$out/huge.ply" -o "$out/x.png"
-{ printf '{"format": "glint-scene", "version": 1, "lights": [\n'; for i in $(seq 64); do printf '{"type": "directional"},\n'; done
-  printf '{"type": "directional"}],\n "materials": [{"name": "m", "model": "lambert"}], "objects": [{"shape": "sphere", "material": "m"}]}\n'; } >"$out/lights_65.json"
-expect_error too_many_lights "lights_65\.json:[0-9]+:[0-9]+: .*65 lights: Glint supports at most 64 lights per scene \(the size of the GPU's light block\); merge lights" -- render "$out/lights_65.json" -o "$out/x.png"
+{ printf '{"format": "glint-scene", "version": 1, "lights": [\n'; for i in $(seq 256); do printf '{"type": "directional"},\n'; done
+  printf '{"type": "directional"}],\n "materials": [{"name": "m", "model": "lambert"}], "objects": [{"shape": "sphere", "material": "m"}]}\n'; } >"$out/lights_257.json"
+expect_error too_many_lights "lights_257\.json:[0-9]+:[0-9]+: .*257 lights: Glint supports at most 256 lights per scene \(the GPU's light block: 64 bytes a light, in the 16 KiB that OpenGL 4\.1 guarantees\); merge lights" -- render "$out/lights_257.json" -o "$out/x.png"
 expect_error unknown_preset "unknown preset 'unobtainium'" -- presets unobtainium -o "$out/x.json"
 printf '{"format": "glint-scene", "version": 1,\n "materials": [{"name": "m", "model": "lambert",\n   "textures": {"albedo": {"type": "image", "file": "maps/missing.png"}}}],\n "objects": [{"shape": "sphere", "material": "m"}]}\n' >"$out/missing_texture.json"
 expect_error missing_texture "missing_texture\.json:3:[0-9]+: .*texture 'maps/missing\.png' for 'albedo': .*maps/missing\.png: texture image file not found" -- render "$out/missing_texture.json" -o "$out/x.png"

@@ -84,6 +84,27 @@ TEST(Specialisation, EveryLightKindAndAShadowDrawTheGenericPicture) {
     expectSamePictures(sky, "sky");
 }
 
+TEST(Specialisation, ManyLightsOfEveryKindDrawTheGenericPicture) {
+    // 30 lights of the four kinds, two of them shadowed (unrolled among the looped ones): interleaved
+    // (loops of any kind between the unrolled lights), then grouped by kind (a loop per kind's run).
+    const Scene kinds = everyLightKind();
+    Scene scene = kinds;
+    scene.lights.clear();
+    for (int i = 0; i < 30; ++i) {
+        Light light = kinds.lights[i % kinds.lights.size()];
+        light.position += glm::vec3(0.1f * (i % 5), 0.0f, -0.1f * (i % 3));
+        light.power /= 8.0f;
+        light.irradiance /= 8.0f;
+        light.castsShadows = i == 0 || i == 9;
+        scene.lights.push_back(light);
+    }
+    expectSamePictures(scene, "30 lights, kinds interleaved");
+    const auto kindOrder = [](const Light& light) { return 2 * static_cast<int>(light.type) + light.attenuation.enabled; };
+    std::stable_sort(scene.lights.begin(), scene.lights.end(),
+                     [&](const Light& a, const Light& b) { return kindOrder(a) < kindOrder(b); });
+    expectSamePictures(scene, "30 lights, grouped by kind");
+}
+
 TEST(Specialisation, DisplayChoicesDrawTheGenericPicture) {
     Scene scene = everyLightKind();
     scene.display = {1.0f, Transfer::Gamma, 1.8f, ToneMap::Reinhard};
@@ -136,9 +157,34 @@ TEST(Specialisation, TheFramesChoicesBecomeConstants) {
     shadows.origin[2].w = static_cast<float>(ShadowMapKind::Cube);
     const std::string text = frameSpecialisation(packFrameUniforms(scene, 64, 64), shadows, scene.environment, scene.display);
     EXPECT_NE(text.find("#define GLINT_LIGHT_SUM(term) (term(0, LIGHT_DIRECTIONAL, 0, 0) + term(1, LIGHT_POINT, 2, 2) + "
-                        "term(2, LIGHT_ANY, -1, 0) + term(3, LIGHT_ANY, -1, 0))"),
+                        "term(2, LIGHT_ANY, -1, 0) + term(3, LIGHT_ANY, -1, 0))\n"),
               std::string::npos)
         << text;
+    EXPECT_EQ(text.find("GLINT_LOOPED"), std::string::npos) << "4 lights are all unrolled";
+    // Beyond kMaxUnrolledLights, the lights without a map are looped over, a loop per run of one kind.
+    const Light& point = scene.lights[1];
+    const Light& classic = scene.lights[3];
+    Scene runs = scene;
+    runs.lights.insert(runs.lights.end(), 7, point);
+    runs.lights.insert(runs.lights.end(), 2, classic);
+    runs.lights.push_back(scene.lights[0]);  // directional
+    const std::string runsText = frameSpecialisation(packFrameUniforms(runs, 64, 64), shadows, runs.environment, runs.display);
+    EXPECT_NE(runsText.find("#define GLINT_LOOPED_LIGHT_SUM(run) (run(8, 11, LIGHT_POINT) + run(11, 13, LIGHT_ANY) + "
+                            "run(13, 14, LIGHT_DIRECTIONAL))\n"),
+              std::string::npos)
+        << runsText;
+    // Kinds alternating into more than kMaxLightRuns runs: a loop of any kind on each side of light
+    // 10, which has a map and is unrolled.
+    Scene alternating = scene;
+    alternating.lights.insert(alternating.lights.end(), 4, point);
+    for (int i = 0; i < 8; ++i) alternating.lights.push_back(i % 2 ? classic : point);
+    shadows.mapOfLight[2][2] = 1;  // light 10: map 1, orthographic
+    const std::string alternatingText =
+        frameSpecialisation(packFrameUniforms(alternating, 64, 64), shadows, alternating.environment, alternating.display);
+    EXPECT_NE(alternatingText.find("term(10, LIGHT_POINT, 1, 0))\n#define GLINT_LOOPED_LIGHT_SUM(run) (run(8, 10, LIGHT_ANY) + "
+                                   "run(11, 16, LIGHT_ANY))\n"),
+              std::string::npos)
+        << alternatingText;
     EXPECT_NE(text.find("#define GLINT_FUSED_DISPLAY 1"), std::string::npos);
     EXPECT_NE(text.find("#define GLINT_ENVIRONMENT_ENABLED 0"), std::string::npos);
     EXPECT_NE(materialSpecialisation(*Material::withDefaults("plastic", BrdfModel::BlinnPhong).analytic()).find("#define GLINT_PARAM_form "),

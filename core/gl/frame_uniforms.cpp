@@ -27,7 +27,7 @@ FrameUniforms packFrameUniforms(const Scene& scene, int width, int height) {
         if (count == kMaxLights) continue;
         GpuLightStd140& gpu = packed.lights.lights[count++];
         gpu.spotAxis = glm::vec4(0.0f, 0.0f, 0.0f, -2.0f);  // no cone
-        gpu.attenuation = glm::vec4(light.attenuation.coefficients, light.attenuation.enabled ? 1.0f : 0.0f);
+        gpu.attenuation = glm::vec4(light.attenuation.enabled ? light.attenuation.coefficients : kInverseSquareLaw, 0.0f);
         if (light.type == LightType::Directional) {
             gpu.position = glm::vec4(-glm::normalize(light.direction), 0.0f);
             gpu.emission = glm::vec4(light.color * light.irradiance, 0.0f);
@@ -37,7 +37,8 @@ FrameUniforms packFrameUniforms(const Scene& scene, int width, int height) {
         gpu.emission = glm::vec4(pointIntensity(light), 0.0f);  // I = Φ/4π
         if (light.type == LightType::Spot) {
             gpu.spotAxis = glm::vec4(glm::normalize(light.direction), spotCosOuter(light));
-            gpu.spotShape = glm::vec4(spotCosInner(light), light.falloffExponent, 0.0f, 0.0f);
+            gpu.emission.w = spotCosInner(light);
+            gpu.attenuation.w = light.falloffExponent;
         }
     }
     frame.ambientRadiance = glm::vec4(ambient, 0.0f);

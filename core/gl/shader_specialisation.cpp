@@ -1,7 +1,9 @@
 // Program specialisation preludes (see shader_specialisation.h).
 #include "gl/shader_specialisation.h"
 
+#include <array>
 #include <string_view>
+#include <vector>
 
 #include "brdf/model_registry.h"
 #include "brdf/param_table.h"
@@ -19,26 +21,58 @@ bool isLayerWeight(std::string_view name) {
     return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
 }
 
-// The kind constant of shaders/common/lights.glsl that a packed light needs.
-const char* lightKind(const GpuLightStd140& light) {
-    if (light.position.w == 0.0f) return "LIGHT_DIRECTIONAL";
-    const bool inverseSquare = light.attenuation.w <= 0.5f, noCone = light.spotAxis.w <= -1.5f;
-    return inverseSquare && noCone ? "LIGHT_POINT" : "LIGHT_ANY";
+// The kind constants of shaders/common/lights.glsl.
+constexpr std::array<const char*, 3> kLightKinds = {"LIGHT_DIRECTIONAL", "LIGHT_POINT", "LIGHT_ANY"};
+constexpr int kAnyLight = 2;
+
+// The kLightKinds entry that a packed light needs.
+int lightKind(const GpuLightStd140& light) {
+    if (light.position.w == 0.0f) return 0;
+    const bool inverseSquare = glm::vec3(light.attenuation) == kInverseSquareLaw, noCone = light.spotAxis.w <= -1.5f;
+    return inverseSquare && noCone ? 1 : kAnyLight;
 }
 
-// GLINT_LIGHT_SUM(term): term(i, kind, shadow-map slot or −1, map kind) summed over the lights in
-// LightBlock order (shaders/common/shading.glsl), or nothing when there are too many to unroll.
+// Looped lights: LightBlock indices [first, end), all of kLightKinds[kind].
+struct LightRun {
+    int first, end, kind;
+};
+
+// Appends light i to the last run when it continues it, else starts a run.
+void extend(std::vector<LightRun>& runs, int i, int kind) {
+    if (!runs.empty() && runs.back().end == i && runs.back().kind == kind) ++runs.back().end;
+    else runs.push_back({i, i + 1, kind});
+}
+
+// The lights, for shaders/common/shading.glsl. GLINT_LIGHT_SUM(term): term(i, kind, shadow-map slot
+// or −1, map kind) summed, unrolled, over the first kMaxUnrolledLights lights and every shadowed one
+// (so that each reads its own map). GLINT_LOOPED_LIGHT_SUM(run): run(first, end, kind) summed over
+// the other lights' runs of one kind, each a loop whose body is compiled for that kind; where the
+// kinds alternate so often that this would make more than kMaxLightRuns loops, one loop of
+// LIGHT_ANY per stretch between unrolled lights. So no light runs a shadow lookup it does not need,
+// as the generic loop does (which took over from an unrolled sum at 9 lights: the frame went from
+// 1.1 to 5.8 times its floor), and the program stops growing past kMaxUnrolledLights, the shadowed
+// lights and kMaxLightRuns loops (docs/performance.md, "Many lights").
 std::string lightSum(const FrameUniforms& frame, const ShadowBlockStd140& shadows) {
-    const int count = frame.frame.lightCount.x;
-    if (count > kMaxSpecialisedLights) return "";
-    std::string sum;
-    for (int i = 0; i < count; ++i) {
+    std::string unrolled;
+    std::vector<LightRun> byKind, stretches;
+    for (int i = 0; i < frame.frame.lightCount.x; ++i) {
+        const int kind = lightKind(frame.lights.lights[i]);
         const int slot = shadows.mapOfLight[i / 4][i % 4];
+        if (slot < 0 && i >= kMaxUnrolledLights) {
+            extend(byKind, i, kind);
+            extend(stretches, i, kAnyLight);
+            continue;
+        }
         const int mapKind = slot >= 0 ? static_cast<int>(shadows.origin[slot].w) : 0;
-        sum += (i ? " + term(" : "term(") + std::to_string(i) + ", " + lightKind(frame.lights.lights[i]) + ", " +
-               std::to_string(slot) + ", " + std::to_string(mapKind) + ")";
+        unrolled += (unrolled.empty() ? "term(" : " + term(") + std::to_string(i) + ", " + kLightKinds[kind] + ", " +
+                    std::to_string(slot) + ", " + std::to_string(mapKind) + ")";
     }
-    return define("GLINT_LIGHT_SUM(term)", count == 0 ? "vec3(0.0)" : "(" + sum + ")");
+    std::string looped;
+    for (const LightRun& run : byKind.size() <= kMaxLightRuns ? byKind : stretches)
+        looped += (looped.empty() ? "run(" : " + run(") + std::to_string(run.first) + ", " + std::to_string(run.end) + ", " +
+                  kLightKinds[run.kind] + ")";
+    return define("GLINT_LIGHT_SUM(term)", unrolled.empty() ? "vec3(0.0)" : "(" + unrolled + ")") +
+           (looped.empty() ? "" : define("GLINT_LOOPED_LIGHT_SUM(run)", "(" + looped + ")"));
 }
 
 }  // namespace

@@ -1,12 +1,12 @@
 // Program specialisation: the #define prelude that makes what a frame keeps fixed compile-time
-// constants of the programs that draw it — the lights' count and kinds (unrolled, with no shadow
-// lookup for a light without a map), whether there is an environment, whether it is shown and its
-// peak lights' count, the background's kind, the fused display's choices (transfer, tone map,
-// dither) and a built-in material's enum and bool parameters. The GLSL compiler then drops the branches, loops and
-// uniform reads a generic program runs at every pixel (llvmpipe runs shaders on the CPU, so that
-// code costs as much as the shading itself). A symbol left undefined keeps the generic,
-// uniform-driven code (shaders/common/*.glsl read both ways), so a new fixed choice is one more
-// line here and one #ifdef where it is read. The text is part of a program's cache key
+// constants of the programs that draw it — the lights' kinds and shadow maps (the first lights and
+// the shadowed ones unrolled, each reading its own map, then a loop per kind), whether there
+// is an environment, whether it is shown and its peak lights' count, the background's kind, the
+// fused display's choices (transfer, tone map, dither) and a built-in material's enum and bool
+// parameters. The GLSL compiler then drops the branches, loops and uniform reads a generic program
+// runs at every pixel (llvmpipe runs shaders on the CPU, so that code costs as much as the shading
+// itself). A symbol left undefined keeps the generic, uniform-driven code (shaders/common/*.glsl
+// read both ways), so a new fixed choice is one more line here and one #ifdef where it is read. The text is part of a program's cache key
 // (SurfaceVariant::specialisation): a change of what it names compiles a new program once, and
 // continuous values (colours, roughness, light positions) stay uniforms, so drags never compile.
 #pragma once
@@ -20,8 +20,12 @@
 
 namespace glint {
 
-// Lights beyond this many are looped over generically (an unrolled sum grows the program).
-inline constexpr int kMaxSpecialisedLights = 8;
+// Lights summed unrolled (with constant LightBlock offsets) before the rest are looped over: a looped
+// light costs llvmpipe about a fifth more (its values are gathered lane by lane), an unrolled one
+// grows the program (docs/performance.md, "Many lights").
+inline constexpr int kMaxUnrolledLights = 8;
+// Loops, each over a run of lights of one kind, before the looped lights are summed as any kind.
+inline constexpr int kMaxLightRuns = 6;
 
 // The frame's part: the lights (as packed, with their shadow-map slots) followed by
 // backgroundSpecialisation().

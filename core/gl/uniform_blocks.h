@@ -22,19 +22,22 @@ struct alignas(16) FrameBlockStd140 {
 };
 static_assert(sizeof(FrameBlockStd140) == 2 * 64 + 8 * 16, "FrameBlock std140 layout");
 
+// 16 floats, none spare, so that kMaxLights lights fill the 16 KiB uniform block OpenGL 4.1
+// guarantees: the spot's edge and falloff ride in the w of emission and attenuation, and the
+// inverse-square law is the distance law (0, 0, 1) rather than a flag.
 struct GpuLightStd140 {
     glm::vec4 position;     // w = 1 point or spot, w = 0 directional (xyz towards the light)
-    glm::vec4 emission;     // rgb: E⊥ [W/m²] (directional) or intensity Φ/4π [W/sr] (point, spot)
+    glm::vec4 emission;     // rgb: E⊥ [W/m²] (directional) or intensity Φ/4π [W/sr] (point, spot); w: cos(θ_c − edge width)
     glm::vec4 spotAxis;     // xyz: spot axis; w: cos θ_c, −2 for lights without a cone
-    glm::vec4 spotShape;    // x: cos(θ_c − edge width); y: falloff exponent a
-    glm::vec4 attenuation;  // xyz: classic a0, a1, a2; w: 1 when enabled
+    glm::vec4 attenuation;  // xyz: a0, a1, a2 of I/(a0 + a1·d + a2·d²), (0, 0, 1) for the inverse-square law; w: falloff exponent a
 };
-static_assert(sizeof(GpuLightStd140) == 80, "GpuLight std140 layout");
+static_assert(sizeof(GpuLightStd140) == 64, "GpuLight std140 layout");
+inline const glm::vec3 kInverseSquareLaw{0.0f, 0.0f, 1.0f};  // GpuLightStd140::attenuation.xyz of a physical light
 
 struct LightBlockStd140 {
     GpuLightStd140 lights[kMaxLights];
 };
-static_assert(sizeof(LightBlockStd140) == kMaxLights * 80, "LightBlock std140 layout");
+static_assert(sizeof(LightBlockStd140) == 16384, "LightBlock std140 layout: OpenGL 4.1's guaranteed GL_MAX_UNIFORM_BLOCK_SIZE");
 
 inline constexpr int kMaterialBlockFloats = 48;
 struct MaterialBlockStd140 {

@@ -21,14 +21,14 @@
 namespace glint {
 
 inline constexpr int kSceneFormatVersion = 1;
-// Lights per scene. Each costs 80 bytes of the LightBlock (64 × 80 = 5 KiB, well inside the
-// 16 KiB that OpenGL 4.1 guarantees per uniform block); the shader loops only over those present.
-inline constexpr int kMaxLights = 64;
+// Lights per scene. Each costs 64 bytes of the LightBlock (GpuLightStd140): 256 fill the 16 KiB
+// that OpenGL 4.1 guarantees per uniform block; the shader loops only over those present.
+inline constexpr int kMaxLights = 256;
 // What every message that meets the limit says after the count: the limit, where it comes from and
 // what to do.
 inline std::string lightLimitExplanation() {
     return "Glint supports at most " + std::to_string(kMaxLights) +
-           " lights per scene (the size of the GPU's light block); merge lights that are close together, or light the "
+           " lights per scene (the GPU's light block: 64 bytes a light, in the 16 KiB that OpenGL 4.1 guarantees); merge lights that are close together, or light the "
            "scene with an environment map";
 }
 

@@ -39,13 +39,11 @@ LightArrival lightArrival(GpuLight light, vec3 point, int kind) {
         arrival.normalIrradiance = light.emission.rgb * (1.0 / (distance * distance));
         return arrival;
     }
-    float distanceFactor = light.attenuation.w > 0.5
-        ? 1.0 / (light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance)
-        : 1.0 / (distance * distance);
-    arrival.normalIrradiance = light.emission.rgb * distanceFactor;
+    vec3 law = light.attenuation.xyz;  // (0, 0, 1): the inverse-square law
+    arrival.normalIrradiance = light.emission.rgb * (1.0 / (law.x + law.y * distance + law.z * distance * distance));
     if (light.spotAxis.w > -1.5) {
         float cosAlpha = dot(-arrival.towardsLight, light.spotAxis.xyz);
-        arrival.normalIrradiance *= spotFactor(cosAlpha, light.spotAxis.w, light.spotShape.x, light.spotShape.y);
+        arrival.normalIrradiance *= spotFactor(cosAlpha, light.spotAxis.w, light.emission.w, light.attenuation.w);
     }
     return arrival;
 }

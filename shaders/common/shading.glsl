@@ -19,13 +19,31 @@ vec3 lightTerm(MaterialParams params, int i, int kind, int shadowSlot, int shado
            visibility;
 }
 
+// The sum over LightBlock lights [first, end), all of one kind. `first`, `end` and `kind` are
+// constants in a specialised program, so the body is compiled for that kind alone; a do-while loop
+// costs llvmpipe exactly its passes (docs/performance.md), and the program does not grow with them.
+vec3 loopedLightSum(MaterialParams params, int first, int end, int kind, vec3 position, ShadingFrame frame,
+                    vec3 towardsViewer) {
+    vec3 sum = vec3(0.0);
+    int i = first;
+    do {
+        sum += lightTerm(params, i, kind, -1, 0, position, frame, towardsViewer);
+    } while (++i < end);
+    return sum;
+}
+
 vec3 shadeSurface(vec3 position, ShadingFrame frame, vec3 towardsViewer) {
     MaterialParams params = loadMaterialParams();
     vec3 radiance = vec3(0.0);
 #ifdef GLINT_LIGHT_SUM
-    // Specialised: the frame's lights unrolled, GLINT_LIGHT_SUM(term) = term(0, kind, slot, map kind) + ...
+    // Specialised: the first and the shadowed lights unrolled, GLINT_LIGHT_SUM(term) = term(i, kind,
+    // slot, map kind) + ..., then the others in loops, GLINT_LOOPED_LIGHT_SUM(run) = run(first, end, kind) + ...
 #define GLINT_LIGHT_TERM(i, kind, slot, mapKind) lightTerm(params, i, kind, slot, mapKind, position, frame, towardsViewer)
     radiance += GLINT_LIGHT_SUM(GLINT_LIGHT_TERM);
+#ifdef GLINT_LOOPED_LIGHT_SUM
+#define GLINT_LOOPED_RUN(first, end, kind) loopedLightSum(params, first, end, kind, position, frame, towardsViewer)
+    radiance += GLINT_LOOPED_LIGHT_SUM(GLINT_LOOPED_RUN);
+#endif
 #else
     for (int i = 0; i < lightCount.x; ++i) {
         int slot = shadowSlotOfLight(i);  // −1: no map, and the kind read for slot 0 is unused

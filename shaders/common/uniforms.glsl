@@ -1,7 +1,7 @@
 // Uniform blocks shared by the surface shaders. Their C++ mirrors (std140, size-checked) are in
 // core/gl/uniform_blocks.h; change both together.
 
-const int MAX_LIGHTS = 64;
+const int MAX_LIGHTS = 256;  // 256 lights of 64 bytes: the 16 KiB uniform block OpenGL 4.1 guarantees
 
 layout(std140) uniform FrameBlock {
     mat4 viewProjection;
@@ -18,12 +18,12 @@ layout(std140) uniform FrameBlock {
 
 // A light in homogeneous form (docs/architecture.md): position.w = 1 for a point or spot light at
 // position.xyz, 0 for a directional light whose position.xyz points towards the light.
+// Four vec4s, no spare component: see GpuLightStd140.
 struct GpuLight {
     vec4 position;
-    vec4 emission;     // rgb: E⊥ [W/m²] for directional; radiant intensity Φ/4π [W/sr] otherwise
+    vec4 emission;     // rgb: E⊥ [W/m²] for directional; radiant intensity Φ/4π [W/sr] otherwise; w: cos(θ_c − edge width)
     vec4 spotAxis;     // xyz: direction the spot shines; w: cos θ_c (−2 for no cone)
-    vec4 spotShape;    // x: cos(θ_c − edge width); y: falloff exponent a
-    vec4 attenuation;  // xyz: classic a0, a1, a2; w: 1 when enabled (non-physical option)
+    vec4 attenuation;  // xyz: a0, a1, a2 of E⊥ = I/(a0 + a1·d + a2·d²), (0, 0, 1) for the inverse-square law; w: spot falloff exponent a
 };
 
 layout(std140) uniform LightBlock {
