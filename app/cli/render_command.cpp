@@ -153,7 +153,7 @@ void addRenderCommand(CLI::App& glint) {
                         "stage), a BRDF Explorer .brdf or .bparam file (preview stage, GPU only), or a mesh "
                         ".obj|.ply|.stl|.fbx (on the stage in the sphere's place; what was loaded is printed)");
     command->add_option("--material", options->input.material,
-                        "which material of a .mtl, .gltf or .glb (default: the first; `glint info` lists them)")
+                        "put one material of a .mtl, .gltf or .glb on the preview sphere (default: the first; a glTF with meshes renders whole without it; `glint info` lists them)")
         ->check(needs("a material's name or index", [](const std::string& value) { return !value.empty(); }))
         ->type_name("NAME|INDEX");
     command
