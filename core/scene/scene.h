@@ -115,6 +115,10 @@ struct Scene {
     int msaaSamples = 1;  // 1 = off
 };
 
+// Samples per pixel of the preview stage and of a scene file without "msaa": anti-aliased by
+// default (4 is also the most llvmpipe offers).
+inline constexpr int kDefaultMsaaSamples = 4;
+
 // The scene Glint opens with no file: red plastic on the preview stage (scene/preview_stage.h).
 Scene defaultScene();
 
