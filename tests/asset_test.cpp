@@ -9,10 +9,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "interchange/asset.h"
 #include "interchange/material_values.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
+#include "util/file_io.h"
 
 namespace glint {
 namespace {
@@ -59,6 +62,8 @@ TEST(Asset, ObjUsemtlGroupsKeepTheirMaterials) {
     ASSERT_TRUE(asset.ok()) << asset.error().format();
     ASSERT_EQ(asset->objects.size(), 2u);
     ASSERT_EQ(asset->materials.size(), 2u);
+    EXPECT_EQ(asset->objects[0].name, "Pedestal");  // assimp names a group after its material
+    EXPECT_EQ(asset->objects[1].name, "Base");
     const Material& body = asset->materials.at(asset->objects[0].materialIndex);
     const Material& base = asset->materials.at(asset->objects[1].materialIndex);
     EXPECT_EQ(body.name, "Body");
@@ -70,6 +75,24 @@ TEST(Asset, ObjUsemtlGroupsKeepTheirMaterials) {
     const bool warnedNs = std::any_of(asset->warnings.begin(), asset->warnings.end(),
                                       [](const Diagnostic& warning) { return warning.message.find("'Ns 0'") != std::string::npos; });
     EXPECT_TRUE(warnedNs);
+}
+
+// A mesh placed by two nodes is two parts, told apart by name.
+TEST(Asset, InstancedMeshIsOnePartPerNode) {
+    auto text = readTextFile(test::dataPath("files/assets/parts.gltf"));
+    ASSERT_TRUE(text.ok());
+    nlohmann::json gltf = nlohmann::json::parse(*text);
+    gltf["nodes"].push_back({{"name", "Marker again"}, {"mesh", 2}, {"translation", {-0.8, 0.225, -0.8}}});
+    gltf["scenes"][0]["nodes"] = {1, 3};
+    const std::string path = test::outputDirectory("asset") + "/instanced.gltf";
+    std::ofstream(path) << gltf.dump();
+    auto asset = loadAsset(path);
+    ASSERT_TRUE(asset.ok()) << asset.error().format();
+    ASSERT_EQ(asset->objects.size(), 2u);
+    EXPECT_EQ(asset->objects[0].name, "Marker");
+    EXPECT_EQ(asset->objects[1].name, "Marker 2");
+    EXPECT_NE(meshOf(asset->objects[0]).mesh, meshOf(asset->objects[1]).mesh);  // each placed by its node
+    EXPECT_NEAR(boundsOf(asset->objects[0]).low.x, -boundsOf(asset->objects[1]).high.x, 1e-5f);
 }
 
 // Two files' materials of one name in a scene stay distinct: names are made unique.

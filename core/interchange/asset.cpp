@@ -47,7 +47,8 @@ Result<FileMaterials> readFileMaterials(const std::string& path, std::vector<Lig
     return file;
 }
 
-// `name`, or `name 2`, `name 3`, … : the first not in `taken` (a scene names its materials uniquely).
+// `name`, or `name 2`, `name 3`, … : the first not in `taken` (a scene names its materials, and the
+// editor lists its objects, by name).
 std::string uniqueName(const std::string& name, const std::vector<std::string>& taken) {
     std::string candidate = name;
     for (int suffix = 2; std::find(taken.begin(), taken.end(), candidate) != taken.end(); ++suffix)
@@ -96,6 +97,7 @@ Result<Asset> loadAsset(const std::string& path, const MeshImportOptions& option
     std::map<std::optional<size_t>, int> sceneMaterialOf;  // the file's material (none: the default) → the asset's
     std::vector<std::string> names = {"stage floor"};  // the stage's own material (preview_stage.h)
     const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
+    std::vector<std::string> partNames;
     for (size_t i = 0; i < parts->parts.size(); ++i) {
         ImportedPart& part = parts->parts[i];
         const std::optional<size_t> fileMaterial = file->of(part);
@@ -116,7 +118,9 @@ Result<Asset> loadAsset(const std::string& path, const MeshImportOptions& option
         shape.part = static_cast<int>(i);
         shape.mesh = std::move(part.mesh.mesh);
         shape.statistics = part.mesh.statistics;
-        asset.objects.push_back({part.name, shape, entry->second, defaultInterpolation(shape)});
+        // A mesh that several nodes place is several parts of one name: "Marker", "Marker 2".
+        asset.objects.push_back({uniqueName(part.name, partNames), shape, entry->second, defaultInterpolation(shape)});
+        partNames.push_back(asset.objects.back().name);
     }
     for (const Light& light : fileLights) asset.lights.push_back(intoAssetFrame(light, *parts, options.upAxis));
     return asset;
