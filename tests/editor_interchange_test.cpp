@@ -24,6 +24,7 @@
 #include "interchange/measured_brdf.h"
 #include "scene/scene_json.h"
 #include "editor_test_support.h"
+#include "test_support.h"
 
 namespace glint {
 namespace {
@@ -245,6 +246,12 @@ TEST_F(EditorInterchange, EveryFileTypeOpensFromTheCommandLine) {
         EXPECT_EQ(std::get<MeshShape>(scene.objects[0].shape).part, 0);
         EXPECT_EQ(scene.objects[1].name, "floor");
         EXPECT_EQ(state.session.path(), "");
+    });
+    openOnStart(test::dataPath("files/assets/parts.gltf"), [&](const EditorState& state) {
+        const Scene& scene = state.session.scene();
+        ASSERT_EQ(scene.objects.size(), 5u) << state.errorMessage;  // four parts and the floor
+        EXPECT_EQ(scene.materials.size(), 4u);                       // three of the file's and the floor's
+        EXPECT_NE(state.statusMessage.text().find("4 parts, 3 materials"), std::string::npos) << state.statusMessage.text();
     });
     // Broken files: the error names the file and where, the default scene stays.
     const std::pair<std::string, std::string> broken[] = {
