@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "interchange/asset.h"
+#include "interchange/gltf.h"
 #include "interchange/material_values.h"
 #include "scene/scene_json.h"
 #include "test_support.h"
@@ -93,6 +94,32 @@ TEST(Asset, InstancedMeshIsOnePartPerNode) {
     EXPECT_EQ(asset->objects[1].name, "Marker 2");
     EXPECT_NE(meshOf(asset->objects[0]).mesh, meshOf(asset->objects[1]).mesh);  // each placed by its node
     EXPECT_NEAR(boundsOf(asset->objects[0]).low.x, -boundsOf(asset->objects[1]).high.x, 1e-5f);
+}
+
+// A glTF's lights come with the asset: moved and scaled as its meshes are, their power by the
+// square of the scale (the irradiance Φ/4πd² they give the asset stays), lifted with it onto the floor.
+TEST(Asset, LightsMoveAndScaleWithTheAsset) {
+    auto text = readTextFile(test::dataPath("files/assets/parts.gltf"));
+    ASSERT_TRUE(text.ok());
+    nlohmann::json gltf = nlohmann::json::parse(*text);
+    gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 10.0}}};
+    gltf["nodes"].push_back({{"name", "Lamp"}, {"translation", {1.0, 3.0, 0.0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    gltf["scenes"][0]["nodes"] = {0, 1, 3};
+    const std::string path = test::outputDirectory("asset") + "/lamp.gltf";
+    std::ofstream(path) << gltf.dump();
+    auto file = loadGltf(path);
+    auto parts = importMeshParts(path);
+    auto asset = loadAsset(path);
+    ASSERT_TRUE(file.ok() && parts.ok() && asset.ok()) << (asset ? "" : asset.error().format());
+    ASSERT_EQ(asset->lights.size(), 1u);
+    const Light& inFile = file->lights.at(0);
+    const Light& light = asset->lights[0];
+    const glm::vec3 expected = (glm::vec3(1, 3, 0) - parts->fileCentre) / parts->fileRadius;
+    EXPECT_NEAR(glm::distance(light.position, expected), 0.0f, 1e-5f);
+    EXPECT_NEAR(light.power, inFile.power / (parts->fileRadius * parts->fileRadius), 1e-4f * inFile.power);
+    const Scene scene = assetStage(*asset, 64, 64);
+    ASSERT_EQ(scene.lights.size(), 2u);  // the stage's key light and the lamp
+    EXPECT_NEAR(scene.lights[1].position.y - light.position.y, meshOf(scene.objects[0]).center.y, 1e-6f);
 }
 
 // Two files' materials of one name in a scene stay distinct: names are made unique.
