@@ -24,6 +24,7 @@
 #include "interchange/measured_brdf.h"
 #include "scene/scene_json.h"
 #include "editor_test_support.h"
+#include "test_support.h"
 
 namespace glint {
 namespace {
@@ -238,8 +239,19 @@ TEST_F(EditorInterchange, EveryFileTypeOpensFromTheCommandLine) {
     openOnStart(write("flat.brdf", "analytic\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) "
                                    "{ return vec3(0.1); }\n::end shader\n"),
                 [&](const EditorState& state) { EXPECT_TRUE(subject(state).custom()) << state.errorMessage; });
+    // An asset replaces the scene: its part and the stage's floor, untitled.
     openOnStart(write("triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), [&](const EditorState& state) {
-        EXPECT_EQ(state.session.scene().objects.size(), start.objects.size() + 1) << state.errorMessage;
+        const Scene& scene = state.session.scene();
+        ASSERT_EQ(scene.objects.size(), 2u) << state.errorMessage;
+        EXPECT_EQ(std::get<MeshShape>(scene.objects[0].shape).part, 0);
+        EXPECT_EQ(scene.objects[1].name, "floor");
+        EXPECT_EQ(state.session.path(), "");
+    });
+    openOnStart(test::dataPath("files/assets/parts.gltf"), [&](const EditorState& state) {
+        const Scene& scene = state.session.scene();
+        ASSERT_EQ(scene.objects.size(), 5u) << state.errorMessage;  // four parts and the floor
+        EXPECT_EQ(scene.materials.size(), 4u);                       // three of the file's and the floor's
+        EXPECT_NE(state.statusMessage.text().find("4 parts, 3 materials"), std::string::npos) << state.statusMessage.text();
     });
     // Broken files: the error names the file and where, the default scene stays.
     const std::pair<std::string, std::string> broken[] = {

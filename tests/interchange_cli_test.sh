@@ -50,9 +50,10 @@ expect_error truncated_gltf "truncated.gltf:1:" render "$out/truncated.gltf" -o 
 expect_error export_extension "must end in .mtl, .gltf or .mtlx" export "$out/plastic.json" -o "$out/x.obj"
 
 # A MERL measured BRDF (a constant table, made here) renders on the GPU and on the CPU reference,
-# and exports as its Lambert stand-in with a warning; a .glb carries the .gltf's JSON chunk.
+# and exports as its Lambert stand-in with a warning; a .glb carries the .gltf's JSON chunk and its
+# buffer as the BIN chunk.
 /usr/bin/python3 - "$out" <<'PY'
-import struct, sys
+import base64, json, struct, sys
 out = sys.argv[1]
 with open(out + "/grey.binary", "wb") as f:
     f.write(struct.pack("<3i", 90, 90, 180))
@@ -60,11 +61,14 @@ with open(out + "/grey.binary", "wb") as f:
         f.write(struct.pack("<d", 0.5 / 3.141592653589793 * scale) * (90 * 90 * 180))
 with open(out + "/short.binary", "wb") as f:
     f.write(struct.pack("<3i", 90, 90, 180) + b"\0" * 64)
-json = open(out + "/varnish.gltf", "rb").read()
-json += b" " * (-len(json) % 4)
-chunk = struct.pack("<2I", len(json), 0x4E4F534A) + json
-open(out + "/varnish.glb", "wb").write(struct.pack("<3I", 0x46546C67, 2, 12 + len(chunk)) + chunk)
-open(out + "/lying.glb", "wb").write(struct.pack("<3I", 0x46546C67, 2, 4000) + chunk)
+gltf = json.load(open(out + "/varnish.gltf"))
+body = base64.b64decode(gltf["buffers"][0].pop("uri").split(",", 1)[1])  # the sphere's buffer into the BIN chunk
+body += b"\0" * (-len(body) % 4)
+text = json.dumps(gltf).encode()
+text += b" " * (-len(text) % 4)
+chunks = struct.pack("<2I", len(text), 0x4E4F534A) + text + struct.pack("<2I", len(body), 0x004E4942) + body
+open(out + "/varnish.glb", "wb").write(struct.pack("<3I", 0x46546C67, 2, 12 + len(chunks)) + chunks)
+open(out + "/lying.glb", "wb").write(struct.pack("<3I", 0x46546C67, 2, 4000) + chunks)
 PY
 check render_merl "$glint" render "$out/grey.binary" -o "$out/grey.png" --size 48x48
 check render_merl_reference "$glint" render "$out/grey.binary" -o "$out/grey_reference.png" --size 48x48 --reference
@@ -108,7 +112,15 @@ expect_error render_cut_obj "cut_mid_face.obj:15:1: cannot load mesh: a face wit
 expect_output render_tristrips "tristrips_binary.ply: 6 vertices, 4 triangles" render "$files/ply/tristrips_binary.ply" -o "$out/strips.png"
 # A .bparam renders its .brdf with its values: not the picture of the .brdf's defaults.
 check render_bparam bash -c "'$glint' render '$files/brdf/explorer_disney.bparam' -o '$out/bparam.png' && '$glint' render '$files/brdf/disney.brdf' -o '$out/brdf.png' && ! cmp -s '$out/bparam.png' '$out/brdf.png'"
-expect_output render_gltf_lights "its 1 light\\(s\\) added" render "$files/gltf/DirectionalLight.gltf" -o "$out/lights.png"
+expect_output render_gltf_lights "its 1 light\\(s\\) added" render "$files/gltf/DirectionalLight.gltf" --material 0 -o "$out/lights.png"
+# An asset: every part with its own material on the stage. DirectionalLight.gltf's geometry (its
+# .bin) is left out of the repository: an error, and how to see one of its materials instead.
+expect_output render_asset_gltf "parts.gltf: 72 vertices, 36 triangles from 4 meshes; 4 parts, 3 materials" \
+  render "$files/assets/parts.gltf" -o "$out/parts.png"
+expect_output render_asset_obj "blender_two_materials.mtl:4: warning: 'Base': 'Ns 0'" \
+  render "$files/assets/blender_two_materials.obj" -o "$out/blender.png"
+expect_error render_asset_without_geometry "DirectionalLight.gltf.*--material NAME\\|INDEX renders one of the file's materials" \
+  render "$files/gltf/DirectionalLight.gltf" -o "$out/x.png"
 # Warnings are for the material used: ClearCoatTest's Partial_Coating blends alpha, the others do not.
 expect_output render_gltf_warned "/materials/5: alpha" render "$files/gltf/khronos/ClearCoatTest.gltf" --material Partial_Coating -o "$out/m5.png"
 check render_gltf_quiet bash -c "! '$glint' render '$files/gltf/khronos/ClearCoatTest.gltf' --material 1 -o '$out/m1.png' 2>&1 | grep -Eq 'warning|note'"

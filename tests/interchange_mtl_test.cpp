@@ -155,6 +155,25 @@ TEST(Mtl, OtherToolsQuirksAreWarningsWithLines) {
     for (const Diagnostic& warning : second) EXPECT_EQ(warning.format().find("'Km'"), std::string::npos);
 }
 
+// `Ns 0` with a highlight colour, as Blender 4.x writes roughness 1 and MeshLab an unset
+// shininess: no highlight (Lambert with Kd), with a warning. Ns 0 without Ks stays Blinn-Phong.
+TEST(Mtl, NsZeroWithAHighlightColourIsReadAsNoHighlight) {
+    const ImportedFile file = parseMtlOk(
+        "newmtl blender_rough\nNs 0.000000\nKd 0.2 0.3 0.6\nKs 0.5 0.5 0.5\nillum 2\n"
+        "newmtl meshlab\nKd 1 1 1\nKs 1 1 1\nillum 2\nNs 0.000000\n"
+        "newmtl no_highlight\nKd 0.4 0.4 0.4\nKs 0 0 0\nNs 0\nillum 2\n");
+    ASSERT_EQ(file.materials.size(), 3u);
+    const Material& rough = file.materials[0].material;
+    ASSERT_TRUE(rough.analytic());
+    EXPECT_EQ(rough.analytic()->model, BrdfModel::Lambert);
+    EXPECT_EQ(paramValue(rough, "albedo"), glm::vec3(0.2f, 0.3f, 0.6f));
+    EXPECT_EQ(file.materials[1].material.analytic()->model, BrdfModel::Lambert);
+    EXPECT_TRUE(hasWarning(file, "test.mtl:1: warning: 'blender_rough': 'Ns 0'"));
+    EXPECT_TRUE(hasWarning(file, "test.mtl:6: warning: 'meshlab': 'Ns 0'"));
+    EXPECT_EQ(file.materials[2].material.analytic()->model, BrdfModel::BlinnPhong);
+    EXPECT_TRUE(file.materials[2].warnings.empty());
+}
+
 TEST(Mtl, MalformedFilesGiveLocatedErrors) {
     test::expectParseErrors(parseMtl, "test.mtl", {
         {"", "no material in the file"},

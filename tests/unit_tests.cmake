@@ -14,6 +14,7 @@ add_executable(core_tests
   interchange_merl_test.cpp
   measured_material_test.cpp
   interchange_mtl_test.cpp
+  asset_test.cpp
   light_test.cpp
   mesh_import_test.cpp
   mesh_normals_test.cpp

@@ -11,6 +11,7 @@
 #include "geometry/mesh_import.h"
 #include "interchange/bparam_file.h"
 #include "interchange/brdf_file.h"
+#include "interchange/asset.h"
 #include "interchange/import_formats.h"
 #include "util/text.h"
 
@@ -58,6 +59,10 @@ std::optional<Diagnostic> open(const std::string& path, const std::string& as, s
         auto file = format->load(path);
         if (!file) return file.error();
         warnings = allWarnings(*file);
+    } else if (as == "asset") {
+        auto asset = loadAsset(path);
+        if (!asset) return asset.error();
+        warnings = asset->warnings;
     } else {
         auto mesh = importMesh(path);
         if (!mesh) return mesh.error();

@@ -153,7 +153,7 @@ void addRenderCommand(CLI::App& glint) {
                         "stage), a BRDF Explorer .brdf or .bparam file (preview stage, GPU only), or a mesh "
                         ".obj|.ply|.stl|.fbx (on the stage in the sphere's place; what was loaded is printed)");
     command->add_option("--material", options->input.material,
-                        "which material of a .mtl, .gltf or .glb (default: the first; `glint info` lists them)")
+                        "put one material of a .mtl, .gltf or .glb on the preview sphere (default: the first; a glTF with meshes renders whole without it; `glint info` lists them)")
         ->check(needs("a material's name or index", [](const std::string& value) { return !value.empty(); }))
         ->type_name("NAME|INDEX");
     command
@@ -165,7 +165,7 @@ void addRenderCommand(CLI::App& glint) {
     command->add_option("-o,--output", options->outputPath, "PNG (display-encoded, 8-bit) or EXR (linear radiance, W/(sr·m²))")
         ->type_name("FILE");
     addPixelSize(*command, options->width, options->height, 1, 16384, "output size in pixels (default: the scene's \"output\")");
-    command->add_option("--msaa", options->msaa, "multisample anti-aliasing with N samples (1 = off)")
+    command->add_option("--msaa", options->msaa, "multisample anti-aliasing with N samples (1 = off; default: the scene file's \"msaa\", else 4)")
         ->check(needs("1, 2, 4, 8 or 16", [](const std::string& value) { return std::regex_match(value, std::regex("1|2|4|8|16")); }))
         ->type_name("N");
     command->add_flag("--reference", options->reference, "render with the CPU reference ray caster instead of OpenGL");

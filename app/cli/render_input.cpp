@@ -4,10 +4,10 @@
 #include <filesystem>
 
 #include "geometry/mesh_import.h"
+#include "interchange/asset.h"
 #include "interchange/bparam_file.h"
 #include "interchange/custom_brdf.h"
 #include "interchange/import_formats.h"
-#include "interchange/obj_material.h"
 #include "scene/preview_stage.h"
 #include "snapshot/case_source.h"
 
@@ -18,26 +18,38 @@ Scene stageFor(const Material& material) {
     return previewStage(material, kDefaultMaterialPreviewSize, kDefaultMaterialPreviewSize);
 }
 
-// A mesh file on the preview stage in the sphere's place (both fill the unit sphere), with the
-// material its OBJ library names, else Glint's default.
-Result<Scene> meshStage(const std::string& path, const RenderInputOptions& options, std::vector<Diagnostic>& warnings,
-                        std::vector<std::string>& notes) {
+// A mesh file (.ply, .stl, .fbx) on the preview stage in the sphere's place (both fill the unit
+// sphere), with Glint's default material.
+Result<Scene> meshStage(const std::string& path, const RenderInputOptions& options, std::vector<std::string>& notes) {
     MeshImportOptions importOptions;
     importOptions.upAxis = options.upAxis;
     auto imported = importMesh(path, importOptions);
     if (!imported) return imported.error();
-    ObjMaterial objMaterial = readObjMaterial(path);
-    warnings.insert(warnings.end(), objMaterial.warnings.begin(), objMaterial.warnings.end());
-    Scene scene = stageFor(objMaterial.material ? objMaterial.material->material : Material::withDefaults("default", BrdfModel::Lambert));
+    Scene scene = stageFor(Material::withDefaults("default", BrdfModel::Lambert));
     MeshShape mesh;
     mesh.path = mesh.resolvedPath = path;
     mesh.upAxis = options.upAxis;
     mesh.mesh = imported->mesh;
     mesh.statistics = imported->statistics;
     scene.objects[0] = {std::filesystem::path(path).filename().string(), mesh, 0, SurfaceInterpolation::Phong};
-    notes.push_back(path + ": " + meshStatisticsText(imported->statistics) +
-                    (objMaterial.material ? "; material '" + objMaterial.material->material.name + "'" : ""));
+    notes.push_back(path + ": " + meshStatisticsText(imported->statistics));
     return scene;
+}
+
+// An asset (interchange/asset.h) on the preview stage: every part with its own material.
+Result<Scene> assetInput(const std::string& path, const RenderInputOptions& options, std::vector<Diagnostic>& warnings,
+                         std::vector<std::string>& notes) {
+    MeshImportOptions importOptions;
+    importOptions.upAxis = options.upAxis;
+    auto asset = loadAsset(path, importOptions);
+    if (!asset) {  // a glTF's geometry failed, its materials did not (isAssetFile read them)
+        Diagnostic error = asset.error();
+        if (findImportFormat(path)) error.message += " (--material NAME|INDEX renders one of the file's materials on the preview sphere)";
+        return error;
+    }
+    warnings.insert(warnings.end(), asset->warnings.begin(), asset->warnings.end());
+    notes.push_back(path + ": " + meshStatisticsText(asset->statistics) + "; " + assetSummary(*asset));
+    return assetStage(*asset, kDefaultMaterialPreviewSize, kDefaultMaterialPreviewSize);
 }
 
 }  // namespace
@@ -62,15 +74,10 @@ Result<Scene> loadRenderInput(const std::string& path, const RenderInputOptions&
         return makeError("--material chooses among the materials of a .mtl, .gltf or .glb file", {path});
     if (isBrdfFilePath(path)) return loadBrdfPreviewStage(path, &warnings);
     if (isBparamFilePath(path)) return loadBparamPreviewStage(path, warnings);
+    if (options.material.empty() && isAssetFile(path)) return assetInput(path, options, warnings, notes);
     if (format) {
         auto imported = format->load(path);
-        if (!imported) {  // a glTF of meshes only is a mesh
-            if (isMeshFile(path) && options.material.empty()) {
-                auto scene = meshStage(path, options, warnings, notes);
-                if (scene) return scene;
-            }
-            return imported.error();
-        }
+        if (!imported) return imported.error();
         auto chosen = chooseMaterial(*imported, options.material, path);
         if (!chosen && !imported->materials.empty()) return chosen.error();
         const std::vector<Diagnostic> relevant = warningsFor(*imported, chosen ? *chosen : imported->materials.size());
@@ -91,7 +98,7 @@ Result<Scene> loadRenderInput(const std::string& path, const RenderInputOptions&
         }
         return scene;
     }
-    if (isMeshFile(path)) return meshStage(path, options, warnings, notes);
+    if (isMeshFile(path)) return meshStage(path, options, notes);
     return loadRenderable(path, 0, 0, &warnings);
 }
 

@@ -1,7 +1,8 @@
 // What `glint render FILE`, `glint FILE` without a display and `glint info FILE` read: a scene or
-// material .json, a BRDF Explorer .brdf or .bparam, an interchange file (.mtl, .gltf, .glb,
-// .binary: interchange/import_formats.h) or a mesh (.obj, .ply, .stl, .fbx, and a .gltf or .glb
-// that holds no material), everything but a scene placed on the preview stage.
+// material .json, a BRDF Explorer .brdf or .bparam, an asset (an .obj, a .gltf or .glb with
+// meshes: interchange/asset.h), an interchange file (.mtl, .gltf, .glb, .binary:
+// interchange/import_formats.h) or a mesh (.ply, .stl, .fbx), everything but a scene placed on the
+// preview stage.
 #pragma once
 
 #include <string>
@@ -14,7 +15,7 @@
 namespace glint {
 
 struct RenderInputOptions {
-    std::string material;               // --material NAME|INDEX: which of an interchange file's materials (empty: the first)
+    std::string material;               // --material NAME|INDEX: one of an interchange file's materials on the sphere (empty: an asset whole, else the first)
     MeshUpAxis upAxis = MeshUpAxis::Y;  // --up y|z: a mesh file's up axis
 };
 

@@ -10,10 +10,12 @@
 #include "editor/crash_guard.h"
 #include "editor/environment_loading.h"
 #include "editor/mesh_loading.h"
+#include "editor/asset_open.h"
 #include "editor/interchange_open.h"
 #include "editor/custom_brdf_editor.h"
 #include "interchange/bparam_file.h"
 #include "interchange/custom_brdf.h"
+#include "interchange/asset.h"
 #include "editor/settings.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
@@ -108,8 +110,11 @@ void openDroppedFile(EditorState& state, const std::string& path) {
     state.lastOpenedPath = path;
     if (isBrdfFilePath(path)) return openBrdfFile(state, path);  // BRDF Explorer files
     if (isBparamFilePath(path)) return openBparamFile(state, path);
-    // .mtl, .gltf: a material (and glTF lights), by extension (interchange/import_formats.h). A
-    // .gltf dropped is read for its material; File ▸ Open mesh… reads it as a mesh.
+    // An .obj, a .gltf or .glb with meshes: the asset, replacing the scene (File ▸ Open mesh… adds
+    // a file as one mesh object instead).
+    if (isAssetFile(path)) return openAssetGuarded(state, path);
+    // .mtl, a .gltf of materials and lights: a material (and glTF lights), by extension
+    // (interchange/import_formats.h).
     if (openInterchangeFile(state, path)) return;
     if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
     if (const std::string extension = lowerExtension(path); extension == "hdr" || extension == "exr")

@@ -17,8 +17,9 @@ bool saveSceneTo(EditorState& state, const std::string& path);
 void saveScene(EditorState& state);
 void openMaterialFile(EditorState& state, const std::string& path);  // into the selected object's material
 bool saveMaterialTo(EditorState& state, const std::string& path);
-// A file dropped on the window or chosen in File ▸ Open: an interchange file (.mtl, .gltf) and a
-// material file go into the selected object (glTF lights into the scene), anything else is
+// A file dropped on the window or chosen in File ▸ Open: an asset (.obj, a .gltf or .glb with
+// meshes) replaces the scene (asset_open.h); an interchange file (.mtl, a .gltf of materials) and
+// a material file go into the selected object (glTF lights into the scene); anything else is
 // opened as a scene.
 void openDroppedFile(EditorState& state, const std::string& path);
 

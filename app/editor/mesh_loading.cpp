@@ -3,24 +3,26 @@
 
 #include <filesystem>
 
+#include "editor/asset_open.h"
 #include "editor/object_actions.h"
 
 namespace glint {
 
-MeshLoadJob::MeshLoadJob(std::string path)
-    : WorkerJob([path](const Progress& progress) {
-          MeshLoadOutcome outcome{importMesh(path, MeshImportOptions{}, progress), {}};
-          if (outcome.mesh) outcome.material = readObjMaterial(path);  // an .obj's mtllib and usemtl
-          return outcome;
+MeshLoadJob::MeshLoadJob(std::string path, MeshLoadKind kind)
+    : WorkerJob([path, kind](const Progress& progress) {
+          if (kind == MeshLoadKind::Asset) return MeshLoadOutcome{loadAsset(path, MeshImportOptions{}, progress), {}};
+          Result<ImportedMesh> mesh = importMesh(path, MeshImportOptions{}, progress);
+          ObjMaterial material = mesh ? readObjMaterial(path) : ObjMaterial{};  // an .obj's mtllib and usemtl
+          return MeshLoadOutcome{std::move(mesh), std::move(material)};
       }),
       path_(std::move(path)) {}
 
-void startMeshLoad(EditorState& state, const std::string& path) {
+void startMeshLoad(EditorState& state, const std::string& path, MeshLoadKind kind) {
     if (state.meshLoad) {
         state.statusMessage = "Still loading " + state.meshLoad->path() + "; wait or cancel first";
         return;
     }
-    state.meshLoad = std::make_shared<MeshLoadJob>(path);
+    state.meshLoad = std::make_shared<MeshLoadJob>(path, kind);
 }
 
 bool pollMeshLoad(EditorState& state) {
@@ -30,7 +32,13 @@ bool pollMeshLoad(EditorState& state) {
     auto outcome = state.meshLoad->takeResult();
     state.meshLoad.reset();
     if (!outcome) return false;
-    Result<ImportedMesh>& result = outcome->mesh;
+    if (auto* asset = std::get_if<Result<Asset>>(&outcome->loaded)) {
+        if (asset->ok()) openLoadedAsset(state, path, std::move(**asset));
+        else if (isImportCancellation(asset->error())) state.statusMessage = "Cancelled loading " + path;
+        else state.errorMessage = "Could not open the asset; your work is unchanged.\n\n" + asset->error().format();
+        return false;
+    }
+    Result<ImportedMesh>& result = std::get<Result<ImportedMesh>>(outcome->loaded);
     if (result.ok()) addMeshObject(state, path, std::move(*result), std::move(outcome->material));
     else if (isImportCancellation(result.error())) state.statusMessage = "Cancelled loading " + path;
     else state.errorMessage = "Could not load the mesh; the scene is unchanged.\n\n" + result.error().format();

@@ -1,6 +1,7 @@
 // Mesh import through assimp (see mesh_import.h): read (triangulated, nothing else asked of
 // assimp), check and merge the node tree's meshes with their transforms into a MeshBuilder (which
-// welds, drops zero-area faces, makes normals and tangents), normalise into the unit sphere.
+// welds, drops zero-area faces, makes normals and tangents), or one MeshBuilder per part, normalise
+// into the unit sphere.
 // Sections: progress and cancel · messages · checks · merge · normalise · entry points.
 #include "geometry/mesh_import.h"
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <string_view>
 #include <optional>
 #include <regex>
@@ -138,20 +140,29 @@ std::optional<Diagnostic> checkMesh(const aiMesh& mesh, unsigned meshIndex, cons
 glm::vec3 toGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
 // The scene's meshes (checked: checkMesh), each instance placed by its node's accumulated
-// transform, into one MeshBuilder.
+// transform, into one MeshBuilder, or (splitParts) one MeshBuilder per instance: the parts.
 struct Merger {
+    struct Part {
+        MeshBuilder builder;
+        MeshStatistics statistics;
+        std::string name;
+        unsigned materialIndex = 0;
+        std::string materialName;
+    };
+
     const aiScene& scene;
     ProgressRelay& relay;
     const std::string& name;
     bool fileNormalsAreFaceNormals;  // STL: its facet normals carry no smoothing; Glint makes its own
-    MeshBuilder builder;
-    MeshStatistics statistics;
+    float creaseAngleDegrees;
+    bool splitParts;
+    std::vector<Part> parts;
     size_t itemsSeen = 0, itemsTotal = 0;  // vertices and faces, for progress
     std::optional<Diagnostic> error;
 
     static constexpr int kDeepestNode = 1000;  // deeper is a malformed (or cyclic) node tree
 
-    // Depth-first over the node tree: `visit(mesh, meshIndex, transform)` for each mesh instance.
+    // Depth-first over the node tree: `visit(node, mesh, meshIndex, transform)` for each mesh instance.
     template <class Visit>
     void walk(const aiNode& node, const aiMatrix4x4& parent, int depth, const Visit& visit) {
         if (error) return;
@@ -170,7 +181,7 @@ struct Merger {
                                   {name});
                 return;
             }
-            visit(*scene.mMeshes[index], index, transform);
+            visit(node, *scene.mMeshes[index], index, transform);
         }
         for (unsigned i = 0; i < node.mNumChildren && !error; ++i)
             if (node.mChildren[i]) walk(*node.mChildren[i], transform, depth + 1, visit);
@@ -178,20 +189,44 @@ struct Merger {
 
     void run() {
         size_t vertices = 0, faces = 0;
-        walk(*scene.mRootNode, aiMatrix4x4(), 0, [&](const aiMesh& mesh, unsigned, const aiMatrix4x4&) {
+        walk(*scene.mRootNode, aiMatrix4x4(), 0, [&](const aiNode&, const aiMesh& mesh, unsigned, const aiMatrix4x4&) {
             vertices += mesh.mNumVertices, faces += mesh.mNumFaces;
+            if (splitParts) parts.push_back(Part{MeshBuilder(creaseAngleDegrees), {}, {}, 0, {}});
+            if (splitParts) parts.back().builder.reserve(mesh.mNumVertices, mesh.mNumFaces);
         });
         itemsTotal = vertices + faces;
-        builder.reserve(vertices, faces);
+        if (!splitParts) {
+            parts.push_back(Part{MeshBuilder(creaseAngleDegrees), {}, {}, 0, {}});
+            parts.back().builder.reserve(vertices, faces);
+        }
+        size_t instance = 0;
         walk(*scene.mRootNode, aiMatrix4x4(), 0,
-             [&](const aiMesh& mesh, unsigned index, const aiMatrix4x4& transform) { append(mesh, index, transform); });
+             [&](const aiNode& node, const aiMesh& mesh, unsigned index, const aiMatrix4x4& transform) {
+                 Part& part = parts[splitParts ? instance++ : 0];
+                 if (splitParts) describe(part, node, mesh, index);
+                 append(part, mesh, index, transform);
+             });
+    }
+
+    // A part's name (its mesh's, else its node's, else its number) and the material the file gives it.
+    void describe(Part& part, const aiNode& node, const aiMesh& mesh, unsigned meshIndex) const {
+        part.name = mesh.mName.length ? mesh.mName.C_Str()
+                    : node.mName.length ? node.mName.C_Str()
+                                        : "mesh " + std::to_string(meshIndex);
+        part.materialIndex = mesh.mMaterialIndex;
+        aiString materialName;
+        if (mesh.mMaterialIndex < scene.mNumMaterials && scene.mMaterials && scene.mMaterials[mesh.mMaterialIndex] &&
+            scene.mMaterials[mesh.mMaterialIndex]->Get(AI_MATKEY_NAME, materialName) == AI_SUCCESS)
+            part.materialName = materialName.C_Str();
     }
 
     void progressed() {
         if ((++itemsSeen & 0xFFFF) == 0) relay.report(0.8f + 0.1f * itemsSeen / std::max<size_t>(1, itemsTotal));
     }
 
-    void append(const aiMesh& source, unsigned meshIndex, const aiMatrix4x4& transform) {
+    void append(Part& part, const aiMesh& source, unsigned meshIndex, const aiMatrix4x4& transform) {
+        MeshBuilder& builder = part.builder;
+        MeshStatistics& statistics = part.statistics;
         const aiVector3D* normals = fileNormalsAreFaceNormals ? nullptr : source.mNormals;
         const aiVector3D* uvs = source.mTextureCoords[0];
         statistics.hadNormals = statistics.hadNormals || normals;
@@ -242,17 +277,25 @@ void turnZUpToYUp(Mesh& mesh) {
     }
 }
 
-// Centre of the bounding box to the origin, farthest vertex to distance 1.
-std::optional<std::string> normalise(Mesh& mesh, MeshStatistics& statistics) {
-    const MeshBounds bounds = meshBounds(mesh);
-    statistics.boundsMin = bounds.low;
-    statistics.boundsMax = bounds.high;
-    const glm::vec3 centre = 0.5f * (bounds.low + bounds.high);
+// Centre of the bounding box of all the meshes to the origin, their farthest vertex to distance 1;
+// each mesh's statistics get its own bounds. Returns the centre and radius taken out, or why not.
+Result<std::pair<glm::vec3, float>> normalise(std::vector<Mesh>& meshes, std::vector<MeshStatistics>& statistics) {
+    MeshBounds all;
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        const MeshBounds bounds = meshBounds(meshes[i]);
+        statistics[i].boundsMin = bounds.low;
+        statistics[i].boundsMax = bounds.high;
+        all.low = glm::min(all.low, bounds.low);
+        all.high = glm::max(all.high, bounds.high);
+    }
+    const glm::vec3 centre = 0.5f * (all.low + all.high);
     float radius = 0.0f;
-    for (const Vertex& vertex : mesh.vertices) radius = std::max(radius, glm::distance(vertex.position, centre));
-    if (!(radius > 0.0f) || !std::isfinite(radius)) return "the mesh has no extent (all vertices coincide)";
-    for (Vertex& vertex : mesh.vertices) vertex.position = (vertex.position - centre) / radius;
-    return std::nullopt;
+    for (const Mesh& mesh : meshes)
+        for (const Vertex& vertex : mesh.vertices) radius = std::max(radius, glm::distance(vertex.position, centre));
+    if (!(radius > 0.0f) || !std::isfinite(radius)) return makeError("the mesh has no extent (all vertices coincide)");
+    for (Mesh& mesh : meshes)
+        for (Vertex& vertex : mesh.vertices) vertex.position = (vertex.position - centre) / radius;
+    return std::pair{centre, radius};
 }
 
 // --- entry points ---------------------------------------------------------------------------
@@ -269,9 +312,11 @@ std::optional<Diagnostic> checkWholeFile(std::string_view bytes, const std::stri
 
 using ReadFunction = std::function<const aiScene*(Assimp::Importer&, unsigned flags)>;
 
-// `format`: the extension, lower case, without the dot; `meshFile`: the file read, "" for bytes in memory.
-Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& name, const std::string& meshFile,
-                                const std::string& format, const MeshImportOptions& options, const MeshImportProgress& progress) {
+// `format`: the extension, lower case, without the dot; `meshFile`: the file read, "" for bytes in
+// memory; `splitParts`: one part per mesh instance, else one part holding them all.
+Result<ImportedParts> importWith(const ReadFunction& read, const std::string& name, const std::string& meshFile,
+                                 const std::string& format, const MeshImportOptions& options, const MeshImportProgress& progress,
+                                 bool splitParts) {
     const auto start = std::chrono::steady_clock::now();
     if (!(options.smoothingAngleDegrees >= 0.0f && options.smoothingAngleDegrees <= 180.0f))
         return makeError("smoothing angle must be in [0°, 180°]", {name});
@@ -299,30 +344,65 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
             if (relay->cancelled()) return makeError(kCancelledMessage, {name});
             if (!scene) return importError(name, importer.GetErrorString(), *files);
         }
-        Merger merger{*scene, *relay, name, format == "stl", MeshBuilder(options.smoothingAngleDegrees), {}};
+        Merger merger{*scene, *relay, name, format == "stl", options.smoothingAngleDegrees, splitParts, {}};
         merger.run();
         if (merger.error) return *merger.error;
-        importer.FreeScene();  // everything is in the builder now
+        importer.FreeScene();  // everything is in the builders now
 #ifdef __GLIBC__
         malloc_trim(0);  // hands the scene's many small blocks back to the system (peak memory)
 #endif
-        MeshStatistics statistics = merger.statistics;
-        statistics.degenerateTrianglesDropped = merger.builder.degenerateTrianglesDropped();
-        if (merger.builder.triangleCount() == 0)
-            return makeError(statistics.degenerateTrianglesDropped > 0
-                                 ? "cannot load mesh: every triangle has zero area (" +
-                                       std::to_string(statistics.degenerateTrianglesDropped) + " dropped)"
-                                 : "cannot load mesh: the file holds no triangles",
+        size_t trianglesKept = 0, degenerateTriangles = 0;
+        for (Merger::Part& part : merger.parts) {
+            part.statistics.degenerateTrianglesDropped = part.builder.degenerateTrianglesDropped();
+            trianglesKept += part.builder.triangleCount();
+            degenerateTriangles += part.statistics.degenerateTrianglesDropped;
+        }
+        if (trianglesKept == 0)
+            return makeError(degenerateTriangles > 0 ? "cannot load mesh: every triangle has zero area (" +
+                                                           std::to_string(degenerateTriangles) + " dropped)"
+                                                     : "cannot load mesh: the file holds no triangles",
                              {name});
-        std::optional<Mesh> mesh = merger.builder.build([&](float fraction) { return relay->offer(0.9f + 0.09f * fraction); });
-        if (!mesh) return makeError(kCancelledMessage, {name});
-        if (options.upAxis == MeshUpAxis::Z) turnZUpToYUp(*mesh);
-        if (auto problem = normalise(*mesh, statistics)) return makeError("cannot load mesh: " + *problem, {name});
+        MeshStatistics whole;  // before parts without triangles are left out: what they dropped counts
+        for (const Merger::Part& part : merger.parts) {
+            whole.hadNormals = whole.hadNormals || part.statistics.hadNormals;
+            whole.hadUvs = whole.hadUvs || part.statistics.hadUvs;
+            whole.degenerateTrianglesDropped += part.statistics.degenerateTrianglesDropped;
+            whole.pointsAndLinesDropped += part.statistics.pointsAndLinesDropped;
+            whole.meshesMerged += part.statistics.meshesMerged;
+        }
+        std::erase_if(merger.parts, [](const Merger::Part& part) { return part.builder.triangleCount() == 0; });
+        std::vector<Mesh> meshes;
+        std::vector<MeshStatistics> statistics;
+        for (size_t i = 0; i < merger.parts.size(); ++i) {
+            const float done = static_cast<float>(i), count = static_cast<float>(merger.parts.size());
+            std::optional<Mesh> mesh = merger.parts[i].builder.build(
+                [&](float fraction) { return relay->offer(0.9f + 0.09f * (done + fraction) / count); });
+            if (!mesh) return makeError(kCancelledMessage, {name});
+            if (options.upAxis == MeshUpAxis::Z) turnZUpToYUp(*mesh);
+            meshes.push_back(std::move(*mesh));
+            statistics.push_back(merger.parts[i].statistics);
+        }
+        auto frame = normalise(meshes, statistics);
+        if (!frame) return makeError("cannot load mesh: " + frame.error().message, {name});
         relay->report(1.0f);
-        statistics.vertexCount = mesh->vertices.size();
-        statistics.triangleCount = mesh->triangleCount();
-        statistics.loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return ImportedMesh{std::make_shared<const Mesh>(std::move(*mesh)), statistics};
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ImportedParts imported{{}, whole, frame->first, frame->second};
+        imported.statistics.loadSeconds = seconds;
+        imported.statistics.boundsMin = glm::vec3(std::numeric_limits<float>::max());
+        imported.statistics.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
+        for (size_t i = 0; i < meshes.size(); ++i) {
+            statistics[i].vertexCount = meshes[i].vertices.size();
+            statistics[i].triangleCount = meshes[i].triangleCount();
+            statistics[i].loadSeconds = seconds;
+            imported.statistics.vertexCount += statistics[i].vertexCount;
+            imported.statistics.triangleCount += statistics[i].triangleCount;
+            imported.statistics.boundsMin = glm::min(imported.statistics.boundsMin, statistics[i].boundsMin);
+            imported.statistics.boundsMax = glm::max(imported.statistics.boundsMax, statistics[i].boundsMax);
+            const Merger::Part& part = merger.parts[i];
+            imported.parts.push_back({part.name, part.materialIndex, part.materialName,
+                                      ImportedMesh{std::make_shared<const Mesh>(std::move(meshes[i])), statistics[i]}});
+        }
+        return imported;
     } catch (const CancelImport&) {
         return makeError(kCancelledMessage, {name});
     } catch (const std::bad_alloc&) {
@@ -333,21 +413,19 @@ Result<ImportedMesh> importWith(const ReadFunction& read, const std::string& nam
 }
 
 // A PLY of triangle strips, rewritten with faces (ply_strips.h), read from memory.
-Result<ImportedMesh> importStrips(std::string_view bytes, const std::string& name, const MeshImportOptions& options,
-                                  const MeshImportProgress& progress) {
+Result<ImportedParts> importStrips(std::string_view bytes, const std::string& name, const MeshImportOptions& options,
+                                   const MeshImportProgress& progress, bool splitParts) {
     auto faces = plyStripsToFaces(bytes, name);
     if (!faces) return faces.error();
     return importWith(
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(faces->data(), faces->size(), flags, "ply");
         },
-        name, "", "ply", options, progress);
+        name, "", "ply", options, progress, splitParts);
 }
 
-}  // namespace
-
-Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions& options,
-                                const MeshImportProgress& progress) {
+Result<ImportedParts> importFile(const std::string& path, const MeshImportOptions& options, const MeshImportProgress& progress,
+                                 bool splitParts) {
     std::error_code code;
     const auto status = std::filesystem::status(path, code);
     if (code || !std::filesystem::exists(status)) return makeError("cannot load mesh: no such file", {path});
@@ -365,7 +443,7 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
     if (plyHasTristrips(start)) {  // assimp would read each strip as one polygon: Glint makes them faces
         auto bytes = readTextFile(path);
         if (!bytes) return bytes.error();
-        return importStrips(*bytes, path, options, progress);
+        return importStrips(*bytes, path, options, progress, splitParts);
     }
     if (const std::string extension = lowerExtension(path); needsWholeFileCheck(extension)) {
         auto bytes = readTextFile(path);  // reads bytes as they are
@@ -374,7 +452,57 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
             return *error;
     }
     return importWith([&](Assimp::Importer& importer, unsigned flags) { return importer.ReadFile(path, flags); }, path,
-                      path, lowerExtension(path), options, progress);
+                      path, lowerExtension(path), options, progress, splitParts);
+}
+
+// The one part of an import made whole.
+Result<ImportedMesh> wholeMesh(Result<ImportedParts> imported) {
+    if (!imported) return imported.error();
+    return std::move(imported->parts.front().mesh);
+}
+
+}  // namespace
+
+Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions& options, const MeshImportProgress& progress) {
+    return wholeMesh(importFile(path, options, progress, false));
+}
+
+Result<ImportedParts> importMeshParts(const std::string& path, const MeshImportOptions& options,
+                                      const MeshImportProgress& progress) {
+    return importFile(path, options, progress, true);
+}
+
+Result<ImportedMesh> importMeshPart(const std::string& path, const MeshImportOptions& options, int part) {
+    // The parts of the file read last, held weakly: alive while a scene holds them, never kept for it.
+    struct Remembered {
+        std::string path;
+        float smoothingAngleDegrees;
+        MeshUpAxis upAxis;
+        std::filesystem::file_time_type written;
+        std::vector<std::weak_ptr<const Mesh>> meshes;
+        std::vector<MeshStatistics> statistics;
+    };
+    static std::mutex mutex;
+    static Remembered remembered;
+    std::error_code error;
+    const auto written = std::filesystem::last_write_time(path, error);
+    std::lock_guard lock(mutex);
+    const bool same = !error && remembered.path == path && remembered.written == written &&
+                      remembered.smoothingAngleDegrees == options.smoothingAngleDegrees && remembered.upAxis == options.upAxis;
+    if (same && part >= 0 && part < static_cast<int>(remembered.meshes.size()))
+        if (auto mesh = remembered.meshes[part].lock()) return ImportedMesh{mesh, remembered.statistics[part]};
+    auto imported = importMeshParts(path, options);
+    if (!imported) return imported.error();
+    if (part < 0 || part >= static_cast<int>(imported->parts.size()))
+        return makeError("cannot load mesh: the file has " + std::to_string(imported->parts.size()) + " parts, numbered from 0; there is no part " +
+                             std::to_string(part),
+                         {path});
+    remembered = {path, options.smoothingAngleDegrees, options.upAxis, written, {}, {}};
+    for (const ImportedPart& each : imported->parts) {
+        remembered.meshes.push_back(each.mesh.mesh);
+        remembered.statistics.push_back(each.mesh.statistics);
+    }
+    return imported->parts[part].mesh;
 }
 
 Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const std::string& formatHint,
@@ -384,14 +512,14 @@ Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const s
     if (auto error = checkPlyHeader({static_cast<const char*>(data), std::min<size_t>(size, 4096)}, size <= 4096, name))
         return *error;
     if (plyHasTristrips({static_cast<const char*>(data), std::min<size_t>(size, 4096)}))
-        return importStrips({static_cast<const char*>(data), size}, name, options, progress);
+        return wholeMesh(importStrips({static_cast<const char*>(data), size}, name, options, progress, false));
     if (const std::string extension = lowerExtension("data." + formatHint); needsWholeFileCheck(extension))
         if (auto error = checkWholeFile({static_cast<const char*>(data), size}, extension, "", name)) return *error;
-    return importWith(
+    return wholeMesh(importWith(
         [&](Assimp::Importer& importer, unsigned flags) {
             return importer.ReadFileFromMemory(data, size, flags, formatHint.c_str());
         },
-        name, "", lowerExtension("data." + formatHint), options, progress);
+        name, "", lowerExtension("data." + formatHint), options, progress, false));
 }
 
 bool isImportCancellation(const Diagnostic& diagnostic) { return diagnostic.message == kCancelledMessage; }

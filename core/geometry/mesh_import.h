@@ -1,6 +1,7 @@
 // Mesh import through assimp: OBJ (its .mtl materials: interchange/obj_material.h), PLY, STL, glTF 2.0
 // (.gltf, .glb) and FBX, merged into one indexed triangle Mesh centred and scaled into the unit
-// sphere, with statistics. It loads geometry only (no materials, textures, animation, cameras).
+// sphere, or kept as the file's parts in that same frame, with statistics. It loads geometry only
+// (which material each part names, but no materials, textures, animation, cameras).
 #pragma once
 
 #include <functional>
@@ -44,6 +45,29 @@ Result<ImportedMesh> importMesh(const std::string& path, const MeshImportOptions
 Result<ImportedMesh> importMeshFromMemory(const void* data, size_t size, const std::string& formatHint,
                                           const std::string& name, const MeshImportOptions& options = {},
                                           const MeshImportProgress& progress = {});
+
+// One placed mesh of a file's node tree: a glTF primitive under its node, an OBJ `usemtl` group.
+struct ImportedPart {
+    std::string name;            // its mesh's name, else its node's, else "mesh N"
+    unsigned materialIndex = 0;  // the file's material as assimp numbers them (a glTF file's own order)
+    std::string materialName;    // the material's name in the file (an OBJ's `usemtl`), else empty
+    ImportedMesh mesh;           // in the frame of the whole file: the parts fit together in the unit sphere
+};
+
+struct ImportedParts {
+    std::vector<ImportedPart> parts;  // in the order of a depth-first walk of the node tree
+    MeshStatistics statistics;        // of the whole file: the parts' counts summed, with what was dropped
+    glm::vec3 fileCentre{0.0f};       // what centring took out, in the file's units (after the up-axis turn)
+    float fileRadius = 1.0f;          // what scaling divided by: the file's bounding radius in its units
+};
+
+// Loads a file as its parts, each with its own welded mesh, all centred and scaled together as
+// importMesh centres and scales the whole. Parts whose triangles all have zero area are left out.
+Result<ImportedParts> importMeshParts(const std::string& path, const MeshImportOptions& options = {},
+                                      const MeshImportProgress& progress = {});
+// Part `part` of importMeshParts(path, options). Asked for the parts of one file in turn (a scene
+// file's objects), it reads the file once while the parts already handed out are alive.
+Result<ImportedMesh> importMeshPart(const std::string& path, const MeshImportOptions& options, int part);
 
 bool isImportCancellation(const Diagnostic& diagnostic);
 

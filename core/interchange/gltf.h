@@ -18,7 +18,8 @@
 namespace glint {
 
 // Parses glTF 2.0 JSON text (not .glb); `file` names it in messages (file:line:column and the
-// JSON key). Every material becomes an ImportedMaterial, every light used by a node a Light.
+// JSON key). Every material becomes an ImportedMaterial, every light used by a node a Light, every
+// mesh a name; a file with none of them is an error.
 Result<ImportedFile> parseGltf(const std::string& text, const std::string& file);
 // The JSON chunk `text` of the .glb `file`, whose BIN chunk (buffer 0) is `bin`; messages name
 // "FILE (JSON chunk):line:column".

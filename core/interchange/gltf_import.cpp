@@ -239,8 +239,8 @@ Result<ImportedFile> parse(const std::string& text, const std::string& file, std
             result.meshNames.push_back(meshes[i].is_object() && meshes[i].contains("name") && meshes[i]["name"].is_string()
                                            ? meshes[i]["name"].get<std::string>()
                                            : "mesh " + std::to_string(i));
-        if (result.materials.empty() && result.lights.empty())
-            root.failHere("the file has no material and no light (KHR_lights_punctual) for Glint to open");
+        if (result.materials.empty() && result.lights.empty() && result.meshNames.empty())
+            root.failHere("the file has no material and no light (KHR_lights_punctual), and no mesh, for Glint to open");
     } catch (const JsonReadError& error) {
         return error.diagnostic;
     } catch (const nlohmann::json::exception& error) {  // a shape no check above foresaw: still a message, never a crash

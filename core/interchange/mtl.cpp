@@ -262,6 +262,14 @@ ImportedMaterial mapBlock(const MtlBlock& block, const std::string& file) {
         setParam(material, "diffuse_albedo", block.diffuse);
         if (block.illum != 3)
             warn("'" + block.name + "': illum " + std::to_string(block.illum) + " imported as a Glint mirror (as illum 3)");
+    } else if (block.illum == 2 && block.exponent == 0.0f && block.specular != glm::vec3(0.0f)) {
+        // (N·H)^0 = 1 would add Ks everywhere: no tool draws that. Blender 4.x writes Ns 0 for
+        // roughness 1 (Ns = 1000·(1 − roughness)²) and MeshLab for "no shininess set": both mean
+        // no highlight.
+        material = Material::withDefaults(block.name, BrdfModel::Lambert);
+        setParam(material, "albedo", block.diffuse);
+        warn("'" + block.name + "': 'Ns 0' (written by Blender for roughness 1, by MeshLab for no shininess) read as no highlight: "
+             "imported as Lambert with albedo Kd");
     } else if (block.illum == 2) {
         material = Material::withDefaults(block.name, BrdfModel::BlinnPhong);
         setParam(material, "diffuse_albedo", block.diffuse);

@@ -12,7 +12,7 @@ Scene previewStage(const Material& material, int width, int height) {
     Scene scene;
     scene.width = width;
     scene.height = height;
-    scene.msaaSamples = 4;  // clamped to what the GL implementation offers (gl/renderer.h)
+    scene.msaaSamples = kDefaultMsaaSamples;  // clamped to what the GL implementation offers (gl/renderer.h)
     scene.camera.projection = Projection::Perspective;
     scene.camera.position = {0.0f, 0.8f, 4.3f};
     scene.camera.target = {0.0f, -0.12f, 0.0f};

@@ -66,9 +66,12 @@ struct TorusShape {
 
 // A triangle mesh loaded from a file (geometry/mesh_import.h). The importer centres it and
 // scales it into the unit sphere; `center` and `scale` place that unit-sized mesh in the scene.
+// A part of an asset (one glTF primitive, one OBJ `usemtl` group) is centred and scaled as its
+// whole file is, so the parts with the same `center` and `scale` fit together.
 struct MeshShape {
     std::string path;          // as written in the scene file (relative to the scene file's folder)
     std::string resolvedPath;  // the file actually read
+    int part = -1;             // which of the file's parts (importMeshParts); -1: the whole file merged
     glm::vec3 center{0.0f};
     float scale = 1.0f;  // radius of the mesh's bounding sphere [m]
     float smoothingAngleDegrees = 60.0f;  // crease angle for normals the file lacks (mesh_import.h)
@@ -111,6 +114,10 @@ struct Scene {
     int height = 720;
     int msaaSamples = 1;  // 1 = off
 };
+
+// Samples per pixel of the preview stage and of a scene file without "msaa": anti-aliased by
+// default (4 is also the most llvmpipe offers).
+inline constexpr int kDefaultMsaaSamples = 4;
 
 // The scene Glint opens with no file: red plastic on the preview stage (scene/preview_stage.h).
 Scene defaultScene();

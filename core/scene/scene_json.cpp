@@ -264,6 +264,8 @@ Scene readScene(const JsonDocument& document, EnvironmentMapLoading environment)
     ObjectReader root = readRoot(document, "scene");
     readHeader(root, kSceneFormat);
     Scene scene;
+    // Without "msaa" a scene file renders anti-aliased, as the preview stage the editor opens on.
+    scene.msaaSamples = kDefaultMsaaSamples;
     if (root.has("output")) {
         ObjectReader output = root.object("output");
         scene.width = output.integer("width", scene.width, 1, 16384);

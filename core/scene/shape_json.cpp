@@ -27,7 +27,9 @@ MeshShape readMeshShape(ObjectReader& reader) {
     if (up != "y" && up != "z") reader.fail("up", "expected \"y\" or \"z\" (the file's axis that points up)");
     mesh.upAxis = up == "z" ? MeshUpAxis::Z : MeshUpAxis::Y;
     mesh.rotationDegrees = readRotation(reader);
-    auto imported = importMesh(mesh.resolvedPath, MeshImportOptions{mesh.smoothingAngleDegrees, mesh.upAxis});
+    mesh.part = reader.integer("part", mesh.part, -1, 1'000'000);
+    const MeshImportOptions options{mesh.smoothingAngleDegrees, mesh.upAxis};
+    auto imported = mesh.part < 0 ? importMesh(mesh.resolvedPath, options) : importMeshPart(mesh.resolvedPath, options, mesh.part);
     if (!imported) reader.fail("path", referencedFileProblem(mesh.resolvedPath, imported.error(), "mesh"));
     if (mesh.rotationDegrees != glm::vec3(0.0f)) {  // about the mesh's centre, the origin of its unit sphere
         Mesh turned = *imported->mesh;
@@ -107,6 +109,7 @@ json shapeToJson(const Shape& shape, const std::string& sceneFile) {
     const std::string& file = mesh.resolvedPath.empty() ? mesh.path : mesh.resolvedPath;
     out = {{"path", referencedPathFor(file, sceneFile)}, {"center", vec3Json(mesh.center)}, {"scale", mesh.scale},
            {"smoothing_angle_degrees", mesh.smoothingAngleDegrees}};
+    if (mesh.part >= 0) out["part"] = mesh.part;
     if (mesh.upAxis == MeshUpAxis::Z) out["up"] = "z";
     if (mesh.rotationDegrees != glm::vec3(0.0f)) out["rotation"] = vec3Json(mesh.rotationDegrees);
     return out;

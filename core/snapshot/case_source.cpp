@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "interchange/asset.h"
 #include "interchange/import_formats.h"
 #include "scene/json_document.h"
 #include "scene/preview_stage.h"
@@ -14,6 +15,12 @@
 namespace glint {
 
 Result<Scene> loadRenderable(const std::string& path, int width, int height, std::vector<Diagnostic>* warnings) {
+    if (isAssetFile(path)) {
+        auto asset = loadAsset(path);
+        if (!asset) return asset.error();
+        if (warnings) warnings->insert(warnings->end(), asset->warnings.begin(), asset->warnings.end());
+        return assetStage(*asset, width > 0 ? width : kDefaultMaterialPreviewSize, height > 0 ? height : kDefaultMaterialPreviewSize);
+    }
     if (const ImportFormat* format = findImportFormat(path)) {
         auto imported = format->load(path);
         if (!imported) return imported.error();

@@ -14,9 +14,10 @@ namespace glint {
 inline constexpr int kDefaultMaterialPreviewSize = 256;  // pixels, square
 
 // A scene file, or a material file placed on previewStage(). A width/height above 0 overrides
-// the scene's "output" size; a material without one is rendered at 256×256. An interchange file
-// (interchange/import_formats.h: .mtl, .gltf) puts its first material on the stage; what did not
-// map exactly is added to `warnings` when given.
+// the scene's "output" size; a material without one is rendered at 256×256. An asset (an .obj,
+// a .gltf or .glb with meshes: interchange/asset.h) is placed on the stage whole; another
+// interchange file (interchange/import_formats.h: .mtl, .gltf) puts its first material on the
+// stage; what did not map exactly is added to `warnings` when given.
 Result<Scene> loadRenderable(const std::string& path, int width = 0, int height = 0,
                              std::vector<Diagnostic>* warnings = nullptr);
 
