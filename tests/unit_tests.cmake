@@ -107,3 +107,7 @@ add_executable(path_tracer_tests path_tracer_test.cpp)
 target_compile_definitions(path_tracer_tests PRIVATE ${GLINT_TEST_DEFINITIONS})
 target_link_libraries(path_tracer_tests PRIVATE glint_core GTest::gtest_main)
 glint_add_gtests(path_tracer_tests SHARDS 1 ENVIRONMENT GLINT_CACHE_DIR=${CMAKE_CURRENT_BINARY_DIR}/output/cache)
+# `glint render --path-trace`: its refusals, progress and determinism.
+add_test(NAME path_trace_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/path_trace_cli_test.sh $<TARGET_FILE:glint>
+         ${CMAKE_CURRENT_BINARY_DIR}/output/path_trace_cli)
+set_tests_properties(path_trace_cli PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 120)
