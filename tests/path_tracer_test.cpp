@@ -1,6 +1,6 @@
 // The path tracer against what is known without it: a white furnace (a white Lambert sphere and
-// a clear glass sphere vanish in a uniform white environment), direct light only against the
-// reference renderer, the same picture for the same seed, and a Lambert box whose walls light
+// a clear glass sphere vanish in a uniform white environment), direct light only and a mirror's
+// reflection against the reference renderer, the same picture for the same seed, and a Lambert box whose walls light
 // each other (brighter than direct light, yet bounded). Tiny images and few samples: each test
 // runs in about a second.
 #include <gtest/gtest.h>
@@ -97,6 +97,19 @@ TEST(PathTracer, DirectLightAgreesWithTheReference) {
             ++blocksChecked;
         }
     EXPECT_GE(blocksChecked, 20);
+}
+
+TEST(PathTracer, MirrorReflectsAsTheReferencesMirror) {
+    // An aluminium ball in a white furnace: F(θ_o; n + iκ) · L, a delta lobe followed by one ray.
+    const Scene scene = test::sphereUnderEnvironment(Material::withDefaults("aluminium", BrdfModel::Mirror), EnvironmentKind::White);
+    const RadianceImage reference = renderReference(scene, 32, 32);
+    const RadianceImage traced = renderPathTraced(scene, 16, 32, 32);
+    int checked = 0;
+    test::forDiscPixels(reference, 0.0f, [&](int x, int y, float) {
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(traced.at(x, y)[c], reference.at(x, y)[c], 0.01f) << x << "," << y;
+        ++checked;
+    }, 0.9f);
+    EXPECT_GT(checked, 500);
 }
 
 TEST(PathTracer, SameSeedSamePictureOtherSeedAnother) {
