@@ -128,9 +128,9 @@ int render(RenderOptions& options) {
         PathTraceSettings settings;
         settings.seed = options.seed.value_or(settings.seed);
         settings.maxBounces = options.bounces.value_or(settings.maxBounces);
-        const auto line = std::make_shared<ProgressLine>("glint render: path trace");
+        ProgressLine line("glint render: path trace");
         images.radiance = renderPathTraced(*scene, options.samples > 0 ? options.samples : kDefaultPathTraceSamples, width,
-                                           height, settings, [&line](float done) { line->update(done); });
+                                           height, settings, [&line](float done) { line.update(done); });
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
@@ -221,8 +221,8 @@ void addRenderCommand(CLI::App& glint) {
                           return std::regex_match(value, std::regex(R"(\d{1,4})")) && std::stoi(value) >= 1 && std::stoi(value) <= 1000;
                       }))
         ->type_name("N");
-    command->add_flag("--wireframe", options->wireframe, "draw the edges of the drawn triangles over the image (PNG only; not with --reference)");
-    command->add_flag("--normals", options->normals, "draw vertex normals as short lines over the image (PNG only; not with --reference)");
+    command->add_flag("--wireframe", options->wireframe, "draw the edges of the drawn triangles over the image (PNG only; not with --reference or --path-trace)");
+    command->add_flag("--normals", options->normals, "draw vertex normals as short lines over the image (PNG only; not with --reference or --path-trace)");
     command
         ->add_option_function<std::string>(
             "--probe", [options](const std::string& value) { options->probePixel = pixelPoint(value); },
