@@ -1,14 +1,17 @@
 // The path tracer against what is known without it: a white furnace (a white Lambert sphere and
 // a clear glass sphere vanish in a uniform white environment), direct light only and a mirror's
-// reflection against the reference renderer, the same picture for the same seed, and a Lambert box whose walls light
-// each other (brighter than direct light, yet bounded). Tiny images and few samples: each test
+// reflection against the reference renderer, the same picture for the same seed, the bounces
+// inside a closed sphere against their closed form, and a Lambert box whose walls light each
+// other (brighter than direct light, yet bounded). Tiny images and few samples: each test
 // runs in about a second.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "environment_test_support.h"
+#include "math/constants.h"
 #include "render/path_tracer.h"
 #include "render/reference_renderer.h"
 #include "test_support.h"
@@ -127,6 +130,27 @@ TEST(PathTracer, PassesAccumulateIntoTheMean) {
     tracer.addPass();
     EXPECT_EQ(tracer.samplesPerPixel(), 2);
     EXPECT_EQ(tracer.radiance().pixels, renderPathTraced(scene, 2, 8, 8).pixels);
+}
+
+// Inside a closed Lambert sphere (albedo ρ, radius R) with a point light Φ at its centre, every
+// point gets E₀ = Φ/(4πR²) directly and sees the whole sphere with form factor 1, so the
+// radiosity is B = ρE₀ + ρB and each bounce adds ρ times the last: L = (ρE₀/π)·(1 + ρ + ρ² + …).
+TEST(PathTracer, InsideAWhiteSphereEachBounceAddsAlbedoTimesTheLast) {
+    Scene scene;
+    scene.camera.position = {0.0f, 0.0f, 0.5f};
+    scene.materials = {lambert("grey", glm::vec3(0.5f))};
+    scene.objects = {{"room", SphereShape{}, 0}};
+    Light bulb;
+    bulb.type = LightType::Point;
+    bulb.position = {0.0f, 0.0f, 0.0f};
+    bulb.power = 4.0f * kPi * kPi;  // E₀ = π W/m² on the unit sphere: ρE₀/π = 0.5
+    scene.lights = {bulb};
+    for (const auto& [bounces, expected] : {std::pair{1, 0.5f}, {2, 0.75f}, {3, 0.875f}})
+        for (float value : renderPathTraced(scene, 2, 8, 8, {.maxBounces = bounces}).pixels)
+            ASSERT_NEAR(value, expected, 1e-4f) << bounces << " bounces: every path adds the same";
+    // All bounces, ended by Russian roulette: 0.5 / (1 − 0.5) = 1 on average.
+    const glm::dvec3 mean = imageMean(renderPathTraced(scene, 64, 16, 16));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 1.0, 0.02);
 }
 
 // Five 2 m Lambert walls (white floor, ceiling and back, red left, green right), open towards
