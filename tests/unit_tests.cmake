@@ -102,3 +102,14 @@ set_tests_properties(hostile_references PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOU
 add_test(NAME plots_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/plots_cli_test.sh $<TARGET_FILE:glint>
          ${CMAKE_CURRENT_BINARY_DIR}/output/plots_cli ${CMAKE_CURRENT_SOURCE_DIR})
 set_tests_properties(plots_cli PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 120)
+
+# The path tracer (core/render/path_tracer.h): Monte-Carlo, in a binary of its own so that it
+# builds and runs apart from the larger core suite.
+add_executable(path_tracer_tests path_tracer_test.cpp)
+target_compile_definitions(path_tracer_tests PRIVATE ${GLINT_TEST_DEFINITIONS})
+target_link_libraries(path_tracer_tests PRIVATE glint_core GTest::gtest_main)
+glint_add_gtests(path_tracer_tests SHARDS 1 ENVIRONMENT GLINT_CACHE_DIR=${CMAKE_CURRENT_BINARY_DIR}/output/cache)
+# `glint render --path-trace`: its refusals, progress and determinism.
+add_test(NAME path_trace_cli COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/path_trace_cli_test.sh $<TARGET_FILE:glint>
+         ${CMAKE_CURRENT_BINARY_DIR}/output/path_trace_cli)
+set_tests_properties(path_trace_cli PROPERTIES ENVIRONMENT "DISPLAY=" TIMEOUT 120)

@@ -20,6 +20,7 @@
 #include "cli/render_input.h"
 #include "display/display_chain.h"
 #include "image/image_io.h"
+#include "render/path_tracer.h"
 #include "render/reference_renderer.h"
 
 namespace glint {
@@ -30,7 +31,10 @@ struct RenderOptions {
     RenderInputOptions input;  // --material, --up
     int width = 0, height = 0, msaa = 0;
     bool reference = false;
-    int environmentSamples = 0;  // --samples N: the Monte-Carlo environment (0: the preview's)
+    bool pathTrace = false;
+    int samples = 0;  // --samples N: the reference's Monte-Carlo environment (0: the preview's), or the path tracer's per pixel
+    std::optional<uint32_t> seed;   // --seed S, path tracer only
+    std::optional<int> bounces;     // --bounces N, path tracer only
     bool wireframe = false, normals = false;
     std::optional<glm::ivec2> probePixel;          // --probe X,Y
     std::vector<const RenderOverlay*> overlays;  // --overlay NAME, in order (the plots among them)
@@ -48,12 +52,20 @@ Result<RenderedImages> renderCompareView(const ClassroomOptions& classroom, cons
 
 int usageError(const std::string& message) { return glint::usageError("render", message); }
 
+constexpr int kDefaultPathTraceSamples = 64;  // per pixel, when --path-trace has no --samples
+
 int render(RenderOptions& options) {
     ClassroomOptions& classroom = options.classroom;
     if (options.scenePath.empty()) return usageError("no scene file given");
     if (options.outputPath.empty()) return usageError("no output file given (-o OUT.png or -o OUT.exr)");
-    if (options.environmentSamples > 0 && !options.reference)
-        return usageError("--samples sets the CPU reference's Monte-Carlo environment: give it with --reference");
+    if (options.reference && options.pathTrace) return usageError("give --reference or --path-trace, not both");
+    if (options.samples > 0 && !options.reference && !options.pathTrace)
+        return usageError("--samples needs --reference (its Monte-Carlo environment) or --path-trace (samples per pixel)");
+    if ((options.seed || options.bounces) && !options.pathTrace)
+        return usageError(std::string(options.seed ? "--seed" : "--bounces") + " needs --path-trace");
+    if (options.pathTrace && (options.wireframe || options.normals || options.plot || classroom.comparing()))
+        return usageError("--wireframe, --normals, --overlay plots and the compare views are drawn by the OpenGL renderer, "
+                          "not with --path-trace");
     if (options.reference && (options.wireframe || options.normals))
         return usageError("--wireframe and --normals are drawn by the OpenGL renderer, not with --reference");
     if (const std::string conflict = plotOverlayConflict(options.plots, options.plot, options.reference, options.outputPath);
@@ -85,31 +97,40 @@ int render(RenderOptions& options) {
         return usageError("--overlay draws over the display-encoded image: write a PNG, not an EXR or HDR");
 
     // Custom .brdf shaders: GPU only, and proven to finish in a child process before drawing here.
-    if (Status gpuOnly = referenceCanRender(*scene); !gpuOnly && options.reference)
+    const bool onCpu = options.reference || options.pathTrace;
+    if (Status gpuOnly = referenceCanRender(*scene); !gpuOnly && onCpu)
         return commandFailed("render", gpuOnly.error().format());
     if (Status probed = probeSceneBrdfs(*scene, brdfProbeTimeoutSeconds()); !probed)
         return commandFailed("render", probed.error().format());
     RenderedImages images;
     std::unique_ptr<HeadlessRenderer> headless;  // the GL context: for OpenGL renders and for overlays
-    if (!options.reference || !options.overlays.empty()) {
+    if (!onCpu || !options.overlays.empty()) {
         auto created = HeadlessRenderer::create();
         if (!created) return commandFailed("render", created.error().format());
         headless = std::move(*created);
-        if (!options.reference)
+        if (!onCpu)
             if (const std::string note = headless->renderer().samplesNote(scene->msaaSamples); !note.empty())
                 std::fprintf(stderr, "glint render: note: %s\n", note.c_str());
     }
     if (options.reference) {
         ReferenceOptions reference;
-        if (options.environmentSamples > 0) {
+        if (options.samples > 0) {
             reference.sampleEnvironment = true;
-            reference.environmentSamples = options.environmentSamples;
+            reference.environmentSamples = options.samples;
             // Progress for renders long enough to wonder about (runtime/progress_line.h).
             reference.progress = [line = std::make_shared<ProgressLine>("glint render: reference")](float done) {
                 line->update(done);
             };
         }
         images.radiance = renderReference(*scene, width, height, reference);
+        images.display = applyDisplayChain(images.radiance, scene->display);
+    } else if (options.pathTrace) {
+        PathTraceSettings settings;
+        settings.seed = options.seed.value_or(settings.seed);
+        settings.maxBounces = options.bounces.value_or(settings.maxBounces);
+        ProgressLine line("glint render: path trace");
+        images.radiance = renderPathTraced(*scene, options.samples > 0 ? options.samples : kDefaultPathTraceSamples, width,
+                                           height, settings, [&line](float done) { line.update(done); });
         images.display = applyDisplayChain(images.radiance, scene->display);
     } else {
         auto rendered = classroom.comparing() ? renderCompareView(classroom, *scene, headless->renderer(), width, height)
@@ -169,16 +190,39 @@ void addRenderCommand(CLI::App& glint) {
         ->check(needs("1, 2, 4, 8 or 16", [](const std::string& value) { return std::regex_match(value, std::regex("1|2|4|8|16")); }))
         ->type_name("N");
     command->add_flag("--reference", options->reference, "render with the CPU reference ray caster instead of OpenGL");
+    command->add_flag("--path-trace", options->pathTrace,
+                      "render with the CPU path tracer instead of OpenGL: light bouncing between surfaces, glass "
+                      "refracting the scene (docs/path-tracer.md); progress on stderr");
     command
-        ->add_option("--samples", options->environmentSamples,
+        ->add_option("--samples", options->samples,
                      "with --reference: integrate the environment light by Monte-Carlo with N samples per pixel (map, "
                      "cosine and GGX importance sampling, deterministic), not the preview's image-based lighting; progress "
-                     "on stderr")
+                     "on stderr. With --path-trace: N paths per pixel (default " +
+                         std::to_string(kDefaultPathTraceSamples) + ")")
         ->check(needs("a positive number of samples per pixel, e.g. 1024",
                       [](const std::string& value) { return std::regex_match(value, std::regex(R"(\d{1,7})")) && std::stoi(value) >= 1; }))
         ->type_name("N");
-    command->add_flag("--wireframe", options->wireframe, "draw the edges of the drawn triangles over the image (PNG only; not with --reference)");
-    command->add_flag("--normals", options->normals, "draw vertex normals as short lines over the image (PNG only; not with --reference)");
+    command
+        ->add_option_function<std::string>(
+            "--seed", [options](const std::string& value) { options->seed = static_cast<uint32_t>(std::stoul(value)); },
+            "with --path-trace: another seed gives another, as deterministic, estimate (default 0)")
+        ->check(needs("a whole number from 0 to 4294967295",
+                      [](const std::string& value) {
+                          return std::regex_match(value, std::regex(R"(\d{1,10})")) && std::stoull(value) <= 4294967295ull;
+                      }))
+        ->type_name("S");
+    command
+        ->add_option_function<std::string>(
+            "--bounces", [options](const std::string& value) { options->bounces = std::stoi(value); },
+            "with --path-trace: surface interactions per path at most (default " +
+                std::to_string(PathTraceSettings{}.maxBounces) + "; 1: direct light only)")
+        ->check(needs("a whole number from 1 to 1000",
+                      [](const std::string& value) {
+                          return std::regex_match(value, std::regex(R"(\d{1,4})")) && std::stoi(value) >= 1 && std::stoi(value) <= 1000;
+                      }))
+        ->type_name("N");
+    command->add_flag("--wireframe", options->wireframe, "draw the edges of the drawn triangles over the image (PNG only; not with --reference or --path-trace)");
+    command->add_flag("--normals", options->normals, "draw vertex normals as short lines over the image (PNG only; not with --reference or --path-trace)");
     command
         ->add_option_function<std::string>(
             "--probe", [options](const std::string& value) { options->probePixel = pixelPoint(value); },

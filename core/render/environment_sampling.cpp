@@ -8,6 +8,7 @@
 #include "environment/environment_map.h"
 #include "environment/ggx_sampling.h"
 #include "math/constants.h"
+#include "render/cosine_sampling.h"
 
 namespace glint {
 namespace {
@@ -17,11 +18,6 @@ float hashToUnit(uint32_t value) {
     uint32_t state = value * 747796405u + 2891336453u;
     const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return static_cast<float>((word >> 22u) ^ word) * 2.3283064365386963e-10f;
-}
-
-glm::vec3 cosineDirection(glm::vec2 u) {
-    const float radius = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
-    return {radius * std::cos(phi), radius * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
 }
 
 // Density of the light direction `light` (local) under visible-normal sampling for `view`:
@@ -69,7 +65,7 @@ glm::vec3 sampleEnvironmentLighting(BrdfModel model, std::span<const float> valu
             const glm::vec3 light = frame.toLocal(lightWorld);
             if (light.z <= 0.0f) continue;
             // Balance heuristic (Veach 1997, §9.2.2): f·L·cos / Σ_s (n_s/N) p_s.
-            float pdf = share * (distribution.pdf(environmentMapDirection(environment, lightWorld)) + light.z * kInvPi);
+            float pdf = share * (distribution.pdf(environmentMapDirection(environment, lightWorld)) + cosineDirectionPdf(light.z));
             if (glossy) pdf += share * visibleNormalPdf(view, light, alpha);
             if (!(pdf > 0.0f)) continue;
             sum += evalBrdf(model, values, lightWorld, wo, frame) * environmentRadiance(environment, lightWorld) *

@@ -13,6 +13,7 @@
 #include "math/frame.h"
 #include "environment/environment_lighting.h"
 #include "render/environment_sampling.h"
+#include "render/hit_texture_point.h"
 #include "render/sphere_occlusion.h"
 #include "scene/plane_edge_fade.h"
 #include "render/measured_shading.h"
@@ -110,12 +111,7 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
                      uint32_t pixelSeed, ShadingBreakdown* breakdown) {
     const SceneObject& object = scene.objects.at(hit.objectIndex);
     // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
-    std::optional<glm::vec2> triangleUv;  // shapes drawn from triangles: the interpolated vertex UV
-    if (hit.triangle)
-        triangleUv = hit.triangle->barycentric[0] * hit.triangle->vertices[0].uv +
-                     hit.triangle->barycentric[1] * hit.triangle->vertices[1].uv +
-                     hit.triangle->barycentric[2] * hit.triangle->vertices[2].uv;
-    const TexturePoint texturePoint = texturePointOn(object.shape, hit.position, triangleUv);
+    const TexturePoint texturePoint = hitTexturePoint(scene, hit);
     const ShadingFrame unmapped = ShadingFrame::fromNormalAndTangent(hit.normal, hit.tangent);
     // The delta lobes (mirror, glass) are traced against the environment or the background.
     std::optional<SphereGeometry> sphere;
