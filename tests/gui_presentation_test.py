@@ -10,7 +10,8 @@ rectangles the editor prints with GLINT_LOG_LAYOUT=1. One scenario per ctest ent
                a screenshot of each lesson there (docs/lessons/)
   prompt       an edited scene: Ctrl+N asks, and Enter does not save (the file is unchanged, the
                prompt stays); Escape cancels
-  remembered   a window moved by the user opens at the same place in the next run (imgui.ini)
+  remembered   the editor window fits the 1024×768 screen; a window moved by the user opens at the
+               same place in the next run (imgui.ini)
 usage: gui_presentation_test.py GLINT OUTPUT_DIR SCENARIO"""
 import glob
 import hashlib
@@ -202,7 +203,8 @@ def scenario_remembered(x, glint, output, state):
 
     editor = start(x, glint, output, state, [])
     try:
-        editor.settled_layout(lambda l: "##status" in l["window"], "the editor")
+        screen = editor.settled_layout(lambda l: "##status" in l["window"], "the editor")["screen"]
+        assert screen[2] <= 1024 and screen[3] <= 768, f"the window ({screen}) is larger than the 1024×768 screen"
         wx, wy, ww, wh = lessons_window(editor)
         target = (max(10, wx - 200), wy + 60)
         x.drag((wx + 60, wy + 10), (target[0] + 60, target[1] + 10))  # by the title bar
@@ -219,7 +221,8 @@ def scenario_remembered(x, glint, output, state):
         assert abs(again[0] - moved[0]) < 2 and abs(again[1] - moved[1]) < 2, f"moved to {moved}, reopened at {again}"
     finally:
         editor.stop()
-    print(f"ok: the Lessons window moved from {(wx, wy)} to {moved[:2]} and reopened there in the next run")
+    print(f"ok: the window fits the screen; the Lessons window moved from {(wx, wy)} to {moved[:2]} and reopened there "
+          "in the next run")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+
 #include "platform/x11_errors.h"
 
 // GLFW's X11 and GLX handles (GLFW/glfw3native.h, declared here without the X11 headers it needs).
@@ -25,6 +27,17 @@ void requestCoreContext() {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
 }
 
+// The size asked for, made to fit the primary screen's work area (a classroom projector at
+// 1024×768): a window manager may not shrink a larger window, and without one the right column
+// would lie off the screen.
+void fitToWorkArea(int& width, int& height) {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (!monitor) return;
+    int x = 0, y = 0, areaWidth = 0, areaHeight = 0;
+    glfwGetMonitorWorkarea(monitor, &x, &y, &areaWidth, &areaHeight);
+    if (areaWidth > 0 && areaHeight > 0) width = std::min(width, areaWidth), height = std::min(height, areaHeight);
+}
+
 // The hidden window's context, current on the worker thread.
 class GlfwWorkerContext final : public GlWorkerContext {
 public:
@@ -42,6 +55,7 @@ private:
 Result<std::unique_ptr<GlfwPlatform>> GlfwPlatform::create(int width, int height, const std::string& title) {
     if (!glfwInit()) return makeError("cannot open a window: " + lastGlfwError());
     requestCoreContext();
+    fitToWorkArea(width, height);
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window) {
         const std::string reason = lastGlfwError();
