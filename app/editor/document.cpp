@@ -116,7 +116,10 @@ void openDroppedFile(EditorState& state, const std::string& path) {
     // .mtl, a .gltf of materials and lights: a material (and glTF lights), by extension
     // (interchange/import_formats.h).
     if (openInterchangeFile(state, path)) return;
-    if (isMeshFile(path)) return startMeshLoad(state, path);  // a new object, loaded in the background
+    if (isMeshFile(path)) {  // a new object, loaded in the background; not added again once references are allowed
+        state.lastOpenedPath.clear();
+        return startMeshLoad(state, path);
+    }
     if (const std::string extension = lowerExtension(path); extension == "hdr" || extension == "exr")
         return startEnvironmentLoad(state, EnvironmentKind::File, path);  // the environment, made on a worker
     auto text = readTextFile(path);

@@ -78,7 +78,7 @@ struct EditorState {
     bool continueAfterSaveAs = false;   // Save chosen in the prompt for a scene with no file yet
     std::string errorMessage;
     std::vector<RecoveredWork> recoveryOffer;  // crashed editors' work, newest first; a modal at start
-    std::string lastOpenedPath;  // the file last opened as File > Open does: opened again once references are allowed
+    std::string lastOpenedPath;  // the file last opened as File > Open does, replacing what it opens: opened again once references are allowed
     std::vector<RefusedReference> refusedReferences;  // asked about in a modal (panels/reference_prompt.cpp)
     FileBrowser fileBrowser;
     int textureMaterialIndex = -1;  // the material and parameter an image file is being chosen for

@@ -180,7 +180,10 @@ void handleFileBrowser(EditorState& state) {
             break;
         case FilePurpose::OpenMaterial: openDroppedFile(state, *chosen); break;
         case FilePurpose::SaveMaterialAs: saveMaterialTo(state, *chosen); break;
-        case FilePurpose::OpenMesh: startMeshLoad(state, *chosen); break;
+        case FilePurpose::OpenMesh:  // adds an object: not added again once references are allowed
+            state.lastOpenedPath.clear();
+            startMeshLoad(state, *chosen);
+            break;
         case FilePurpose::OpenTexture: openTextureFile(state, *chosen); break;
         case FilePurpose::OpenBrdf: openDroppedFile(state, *chosen); break;  // routes .brdf and .bparam
         case FilePurpose::SaveBparamAs: saveBparamTo(state, *chosen); break;

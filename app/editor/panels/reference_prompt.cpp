@@ -27,11 +27,13 @@ void collectRefusals(EditorState& state) {
             state.refusedReferences.push_back(std::move(refused));
 }
 
-// Opens the file that named them again, as File > Open does, now that they are allowed.
+// Opens the file that named them again, as File > Open does, now that they are allowed. A mesh
+// added as an object is not added twice: the user opens it again.
 void openAgain(EditorState& state) {
     state.refusedReferences.clear();
     const std::string path = std::exchange(state.lastOpenedPath, {});
     if (!path.empty()) openDroppedFile(state, path);
+    else state.statusMessage = "Allowed: open the mesh again to read the files it names";
 }
 
 }  // namespace
