@@ -191,5 +191,13 @@ TEST(Asset, MaterialOnlyGltfIsNoAsset) {
     EXPECT_FALSE(isAssetFile(test::dataPath("files/ply/tristrips_ascii.ply")));
 }
 
+// A .glb is told by its JSON chunk alone; one that is no .glb opens as an interchange file, whose
+// reader says what is wrong.
+TEST(Asset, GlbWithMeshesIsAnAsset) {
+    EXPECT_TRUE(isAssetFile(test::dataPath("files/gltf/khronos/BoxTextured.glb")));
+    EXPECT_FALSE(isAssetFile(test::dataPath("fuzz/corpus/gltf/dielectric.glb")));
+    EXPECT_FALSE(isAssetFile(test::dataPath("files/gltf/khronos/SheenAndEmission.gltf") + ".missing.glb"));
+}
+
 }  // namespace
 }  // namespace glint

@@ -42,9 +42,10 @@ Result<Scene> assetInput(const std::string& path, const RenderInputOptions& opti
     MeshImportOptions importOptions;
     importOptions.upAxis = options.upAxis;
     auto asset = loadAsset(path, importOptions);
-    if (!asset) {  // a glTF's geometry failed, its materials did not (isAssetFile read them)
+    if (!asset) {
         Diagnostic error = asset.error();
-        if (findImportFormat(path)) error.message += " (--material NAME|INDEX renders one of the file's materials on the preview sphere)";
+        if (const ImportFormat* format = findImportFormat(path); format && format->load(path))  // the materials still read
+            error.message += " (--material NAME|INDEX renders one of the file's materials on the preview sphere)";
         return error;
     }
     warnings.insert(warnings.end(), asset->warnings.begin(), asset->warnings.end());

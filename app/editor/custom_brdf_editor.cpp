@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <system_error>
 
 #include "runtime/brdf_probe.h"
 #include "interchange/bparam_file.h"
@@ -17,12 +16,6 @@ namespace glint {
 namespace {
 
 // --- probing --------------------------------------------------------------------------------
-
-long long modificationTime(const std::string& path) {
-    std::error_code error;
-    const auto time = std::filesystem::last_write_time(path, error);
-    return error ? 0 : static_cast<long long>(time.time_since_epoch().count());
-}
 
 void startProbe(EditorState& state, std::shared_ptr<const CustomBrdf> brdf, std::vector<float> values, bool reload,
                 int materialIndex) {
@@ -41,7 +34,7 @@ void startProbe(EditorState& state, std::shared_ptr<const CustomBrdf> brdf, std:
 
 void finishProbe(EditorState& state, PendingBrdfProbe& pending, const Status& verdict) {
     const CustomBrdf& brdf = *pending.brdf;
-    state.customBrdfs.seenModification[brdf.file.path] = modificationTime(brdf.file.path);
+    state.customBrdfs.seenModification[brdf.file.path] = fileModificationTime(brdf.file.path);
     if (!verdict) {
         const std::string message = brdf.displayName + " was not used:\n" + verdict.error().format();
         if (pending.reload) {
@@ -187,7 +180,7 @@ double pollCustomBrdfs(EditorState& state, double nowSeconds) {
         const CustomMaterial* custom = material.custom();
         if (!custom) continue;
         const std::string& path = custom->brdf->file.path;
-        const long long modified = modificationTime(path);
+        const long long modified = fileModificationTime(path);
         auto [seen, added] = brdfs.seenModification.try_emplace(path, modified);
         if (added || modified == seen->second || modified == 0) continue;
         seen->second = modified;

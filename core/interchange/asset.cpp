@@ -6,9 +6,13 @@
 #include <map>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
+#include "interchange/glb.h"
 #include "interchange/import_formats.h"
 #include "interchange/obj_material.h"
 #include "scene/preview_stage.h"
+#include "util/file_io.h"
 #include "util/text.h"
 
 namespace glint {
@@ -77,8 +81,13 @@ bool isAssetFile(const std::string& path) {
     const std::string extension = lowerExtension(path);
     if (extension == "obj") return true;
     if (extension != "gltf" && extension != "glb") return false;
-    auto imported = findImportFormat(path)->load(path);
-    return imported && !imported->meshNames.empty();  // unreadable: the interchange reader says why
+    // Only the JSON is read here: loadAsset reads the rest once. Unreadable: the reader says why.
+    std::optional<std::string> text = extension == "glb" ? readGlbJsonChunk(path) : std::nullopt;
+    if (extension == "gltf")
+        if (auto read = readTextFile(path)) text = std::move(*read);
+    if (!text) return false;
+    const auto root = nlohmann::json::parse(*text, nullptr, false);
+    return root.is_object() && root.contains("meshes") && root["meshes"].is_array() && !root["meshes"].empty();
 }
 
 Result<Asset> loadAsset(const std::string& path, const MeshImportOptions& options, const MeshImportProgress& progress) {

@@ -21,9 +21,8 @@ struct Asset {
     MeshStatistics statistics;         // of the whole file (geometry/mesh_import.h)
 };
 
-// Whether `path` opens as an asset: an .obj, or a readable .gltf / .glb that holds meshes (one
-// that holds only materials and lights, or cannot be read, is an interchange file:
-// interchange/import_formats.h).
+// Whether `path` opens as an asset: an .obj, or a .gltf / .glb whose JSON lists meshes (one that
+// lists none, or whose JSON cannot be parsed, is an interchange file: interchange/import_formats.h).
 bool isAssetFile(const std::string& path);
 
 // Reads the file's parts and materials: each glTF material maps onto `openpbr` (gltf_openpbr.h),

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 #include "interchange/gltf.h"
 #include "util/file_io.h"
@@ -71,6 +73,19 @@ Result<ImportedFile> loadGlb(const std::string& path) {
     auto bytes = readTextFile(path);  // reads bytes as they are
     if (!bytes) return bytes.error();
     return parseGlb(*bytes, path);
+}
+
+std::optional<std::string> readGlbJsonChunk(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string headers(kGlbHeaderBytes + kChunkHeaderBytes, '\0');
+    if (!in.read(headers.data(), static_cast<std::streamsize>(headers.size()))) return std::nullopt;
+    if (readLittleEndian32(headers, 0) != kGlbMagic || readLittleEndian32(headers, 16) != kJsonChunk) return std::nullopt;
+    const uint32_t length = readLittleEndian32(headers, 12);
+    std::error_code error;
+    if (length > std::filesystem::file_size(path, error) || error) return std::nullopt;  // a damaged length
+    std::string json(length, '\0');
+    if (!in.read(json.data(), length)) return std::nullopt;
+    return json;
 }
 
 }  // namespace glint

@@ -4,6 +4,7 @@
 // materials and lights as a .gltf is (gltf.h), the BIN chunk for the images it holds (gltf_images.h).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -21,5 +22,8 @@ Result<GlbChunks> glbChunks(std::string_view bytes, const std::string& file);
 // "FILE (JSON chunk):line:column".
 Result<ImportedFile> parseGlb(std::string_view bytes, const std::string& file);
 Result<ImportedFile> loadGlb(const std::string& path);
+// The JSON chunk of the .glb at `path`, read without the rest of the file; none when the file
+// does not start as a .glb does (loadGlb says why).
+std::optional<std::string> readGlbJsonChunk(const std::string& path);
 
 }  // namespace glint

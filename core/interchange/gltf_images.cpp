@@ -1,9 +1,6 @@
 // Images stored inside a glTF file (see gltf_images.h).
 #include "interchange/gltf_images.h"
 
-#include <chrono>
-#include <filesystem>
-
 #include "interchange/base64.h"
 #include "interchange/glb.h"
 #include "scene/json_object_reader.h"
@@ -88,12 +85,6 @@ std::vector<uint8_t> bufferViewBytes(const GltfSource& source, const ObjectReade
     return {bytes.begin(), bytes.end()};
 }
 
-long long modificationTime(const std::string& file) {
-    std::error_code error;
-    const auto time = std::filesystem::last_write_time(file, error);
-    return error ? 0 : std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
-}
-
 }  // namespace
 
 std::optional<EmbeddedImage> embeddedGltfImage(const GltfSource& source, size_t index) {
@@ -125,7 +116,7 @@ std::optional<EmbeddedImage> embeddedGltfImage(const GltfSource& source, size_t 
 Result<std::shared_ptr<const TextureImage>> decodeEmbeddedGltfImage(const EmbeddedImage& image, const std::string& file,
                                                                     int index, TextureColorSpace colorSpace) {
     const std::string name = file + "#/images/" + std::to_string(index);
-    auto decoded = decodeTextureImage(image.bytes, formatOf(image.mimeType), name, modificationTime(file), colorSpace);
+    auto decoded = decodeTextureImage(image.bytes, formatOf(image.mimeType), name, fileModificationTime(file), colorSpace);
     if (!decoded) return makeError("image " + std::to_string(index) + " (" + image.mimeType + ", " + std::to_string(image.bytes.size()) +
                                        " bytes inside the file): " + decoded.error().message,
                                    {file});

@@ -73,9 +73,8 @@ VertexMaterial materialAt(const Scene& scene, const SurfaceHit& hit) {
 
 // A ray leaving `hit` along `direction`, its origin lifted off the surface as the shadow rays' are.
 Ray rayLeaving(const SurfaceHit& hit, glm::vec3 direction) {
-    const glm::vec3 magnitude = glm::abs(hit.position);
-    const float offset = kShadowRayOffset * std::max(1.0f, std::max({magnitude.x, magnitude.y, magnitude.z}));
-    return {hit.position + std::copysign(offset, glm::dot(direction, hit.normal)) * hit.normal, direction};
+    const float offset = std::copysign(rayOriginOffset(hit.position), glm::dot(direction, hit.normal));
+    return {hit.position + offset * hit.normal, direction};
 }
 
 // The environment's density of drawing a world direction [1/sr].

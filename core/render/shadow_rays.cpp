@@ -6,11 +6,14 @@
 
 namespace glint {
 
+float rayOriginOffset(glm::vec3 position) {
+    const glm::vec3 magnitude = glm::abs(position);
+    return 1e-4f * std::max({1.0f, magnitude.x, magnitude.y, magnitude.z});
+}
+
 float lightVisibility(const Scene& scene, const Light& light, const SurfaceHit& hit, const LightArrival& arrival) {
     if (!light.castsShadows || light.type == LightType::Ambient) return 1.0f;
-    const glm::vec3 magnitude = glm::abs(hit.position);
-    const float offset = kShadowRayOffset * std::max(1.0f, std::max({magnitude.x, magnitude.y, magnitude.z}));
-    const Ray shadowRay{hit.position + offset * hit.normal, arrival.towardsLight};
+    const Ray shadowRay{hit.position + rayOriginOffset(hit.position) * hit.normal, arrival.towardsLight};
     const auto blocker = intersectScene(scene, shadowRay);
     // A directional light is at infinity: any hit blocks it; a point or spot light only when the
     // blocker lies before the light.

@@ -8,9 +8,9 @@
 
 namespace glint {
 
-// Offset of a shadow ray's origin along the surface normal [m], relative to the point's scale,
-// so that the ray does not hit the surface it leaves.
-inline constexpr float kShadowRayOffset = 1e-4f;
+// How far along the surface normal a secondary ray leaving `position` starts [m], so that it does
+// not hit the surface it leaves: 1e-4 of the point's largest coordinate, at least 1e-4 m.
+float rayOriginOffset(glm::vec3 position);
 
 // 1 when nothing lies between the hit and the light (or the light casts no shadows), else 0.
 float lightVisibility(const Scene& scene, const Light& light, const SurfaceHit& hit, const LightArrival& arrival);

@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "display/display_chain.h"
+#include "util/file_io.h"
 #include "util/text.h"
 
 namespace glint {
@@ -98,10 +99,7 @@ Result<std::shared_ptr<const TextureImage>> loadTextureImage(const std::string& 
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
         return makeError("texture image file not found", {path});
-    const auto writeTime = std::filesystem::last_write_time(path, error);
-    if (error) return makeError("cannot read texture image: " + error.message(), {path});
-    const long long modifiedAt =
-        std::chrono::duration_cast<std::chrono::nanoseconds>(writeTime.time_since_epoch()).count();
+    const long long modifiedAt = fileModificationTime(path);
     return cached({path, modifiedAt, colorSpace}, [&] { return decode(OIIO::ImageInput::open(path), path, modifiedAt, colorSpace); });
 }
 

@@ -2,6 +2,7 @@
 #include "util/file_io.h"
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -24,6 +25,12 @@ Result<std::string> readTextFile(const std::string& path) {
     buffer << in.rdbuf();
     if (in.bad()) return makeError("read error", {path});
     return buffer.str();
+}
+
+long long fileModificationTime(const std::string& path) {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(path, error);
+    return error ? 0 : std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
 }
 
 namespace {

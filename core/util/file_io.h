@@ -11,6 +11,10 @@
 namespace glint {
 
 Result<std::string> readTextFile(const std::string& path);
+
+// When the file at `path` was last written [ns since the file clock's epoch], or 0 when it cannot
+// be read; for caches that must notice an edited file.
+long long fileModificationTime(const std::string& path);
 Status writeFileAtomically(const std::string& path, const std::string& contents);
 
 // Replaces `path` with what `write(temporary)` writes to a temporary file in the same folder (with
