@@ -36,6 +36,7 @@ target_sources(core_tests PRIVATE metal_spectra_test.cpp metal_index_fit.cpp met
 target_sources(core_tests PRIVATE mesh_simplify_test.cpp mesh_topology_test.cpp)  # large meshes: stand-ins, culling
 target_sources(core_tests PRIVATE wild_files_test.cpp)  # files other tools wrote (tests/files/README.md)
 target_sources(core_tests PRIVATE model_machinery_test.cpp)  # the model machinery on a test-only model; docs/models.md
+target_sources(core_tests PRIVATE model_traits_test.cpp)  # what models declare they do; no model ids compared outside core/brdf
 target_sources(core_tests PRIVATE interchange_gltf_openpbr_test.cpp)  # glTF materials ↔ openpbr
 target_sources(core_tests PRIVATE interchange_gltf_images_test.cpp)  # images inside .glb and .gltf files
 target_sources(core_tests PRIVATE disk_cache_test.cpp)  # the disk cache of computed tables

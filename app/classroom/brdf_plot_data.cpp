@@ -7,9 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "brdf/fresnel.h"
-#include "brdf/glass.h"
-#include "brdf/mirror.h"
+#include "brdf/model_traits.h"
 #include "classroom/surface_probe.h"
 #include "environment/environment_lighting.h"
 #include "interchange/measured_brdf.h"
@@ -175,24 +173,18 @@ DeltaLobes deltaLobes(const PlotMaterial& material, float incidenceDegrees) {
     const glm::vec3 mirrored{-wi.x, -wi.y, wi.z};
     const AnalyticMaterial* analytic = material.analytic();
     if (!analytic || material.sampler) return lobes;  // a table or a shader: f_r is all there is
-    if (analytic->model == BrdfModel::Mirror) {
-        const MirrorParams mirror = unpack<Mirror>(analytic->values.data());
-        lobes.hasReflection = true;
-        lobes.reflectedDirection = mirrored;
-        lobes.reflectedWeight = fresnelComplexIndex(cosIncident, mirror.ior, mirror.extinction);
-    } else if (analytic->model == BrdfModel::Glass) {
-        const GlassParams glass = unpack<Glass>(analytic->values.data());
-        // Snell: sin θ_t = sin θ_i / η; from air into glass (η ≥ 1) there is no total internal reflection.
-        const float sinTransmitted = std::sin(incidence) / glass.ior;
+    const std::optional<DeltaLobeWeights> weights = deltaLobeWeights(analytic->model, analytic->values, cosIncident);
+    if (!weights) return lobes;
+    lobes.hasReflection = true;
+    lobes.reflectedDirection = mirrored;
+    lobes.reflectedWeight = weights->reflected;
+    if (const std::optional<float> eta = weights->refractiveIndex) {
+        // Snell: sin θ_t = sin θ_i / η.
+        const float sinTransmitted = std::sin(incidence) / *eta;
         const float cosTransmitted = std::sqrt(std::max(0.0f, 1.0f - sinTransmitted * sinTransmitted));
-        const float reflected = glass.transparency == GlassTransparency::Fresnel
-                                    ? fresnelDielectric(cosIncident, glass.ior)
-                                    : 1.0f - glass.transmission;
-        lobes.hasReflection = lobes.hasTransmission = true;
-        lobes.reflectedDirection = mirrored;
-        lobes.reflectedWeight = glm::vec3(reflected);
+        lobes.hasTransmission = true;
         lobes.transmittedDirection = {sinTransmitted, 0.0f, -cosTransmitted};
-        lobes.transmittedWeight = glm::vec3(1.0f - reflected);
+        lobes.transmittedWeight = weights->transmitted;
         lobes.transmittedDegrees = std::asin(sinTransmitted) / kPlotDegrees;
     }
     return lobes;

@@ -236,15 +236,16 @@ bool drawAnalyticRows(Material& material, AnalyticMaterial& analytic, std::strin
     ImGui::TextUnformatted("Normal map");
     ImGui::SameLine();
     changed |= drawTextureControls(analytic, kNormalMapKey, nullptr, textureFileRequest, refusal);
-    if (findParam(modelInfo(analytic.model).params, "coat_weight") >= 0) {
+    if (modelInfo(analytic.model).coatNormalMap) {
         ImGui::TextUnformatted("Coat normal map");
         ImGui::SameLine();
         changed |= drawTextureControls(analytic, kCoatNormalMapKey, nullptr, textureFileRequest, refusal);
     }
-    if (analytic.model == BrdfModel::Lambert) {
-        // Show f_r beside ρ, where a teacher would look.
-        const std::vector<float>& rho = analytic.values;
-        ImGui::TextDisabled("f_r = ρ/π = (%.4f, %.4f, %.4f) 1/sr", rho[0] * kInvPi, rho[1] * kInvPi, rho[2] * kInvPi);
+    if (const char* constantForm = modelInfo(analytic.model).constantForm) {
+        // Show f_r beside its parameters, where a teacher would look (any pair of directions will do).
+        const glm::vec3 up(0.0f, 0.0f, 1.0f);
+        const glm::vec3 f = evalBrdf(analytic.model, analytic.values, up, up, ShadingFrame::fromNormal(up));
+        ImGui::TextDisabled("f_r = %s = (%.4f, %.4f, %.4f) 1/sr", constantForm, f.r, f.g, f.b);
     }
     ImGui::PushTextWrapPos();
     ImGui::TextDisabled("%s", modelInfo(analytic.model).citation);

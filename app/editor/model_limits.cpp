@@ -10,9 +10,9 @@ std::vector<std::string> modelLimitNotes(const Scene& scene, int objectIndex) {
     if (objectIndex < 0 || objectIndex >= static_cast<int>(scene.objects.size())) return notes;
     const AnalyticMaterial* material = scene.materials.at(scene.objects[objectIndex].materialIndex).analytic();
     if (!material) return notes;
-    const bool mirror = material->model == BrdfModel::Mirror, glass = material->model == BrdfModel::Glass;
-    if (!mirror && !glass) return notes;
-    const std::string what = mirror ? "A mirror's reflection" : "Glass's reflection and refraction";
+    const char* onlyDeltaLobes = modelInfo(material->model).onlyDeltaLobes;
+    if (!onlyDeltaLobes) return notes;
+    const std::string what = onlyDeltaLobes;
     const bool deltaLight = std::ranges::any_of(scene.lights, [](const Light& light) {
         return light.enabled && light.type != LightType::Ambient;
     });

@@ -9,6 +9,7 @@
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
 #include "brdf/microfacet.h"
+#include "brdf/trait_forms.h"
 #include "math/frame.h"
 
 namespace glint {
@@ -107,6 +108,16 @@ struct CookTorrance {
     static constexpr auto eval = evalCookTorrance;
     static constexpr auto ambientReflectance = ambientReflectanceCookTorrance;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + prefiltered radiance × (F0·A + B − a·C), split-sum tables of the chosen D and G";
+    static const char* environmentApproximation(const Params& p) {
+        if (p.distribution == MicrofacetDistribution::Ggx && p.geometry == MicrofacetGeometry::Smith) return nullptr;  // the split sum
+        return "split sum of the lobe's own D and G, prefiltered through its GGX stand-in with the lobe's mean "
+               "cosine, along its mean direction (narrowed across the plane of incidence)";
+    }
+    static std::optional<TextbookForm> textbookForm(const Params& p) {
+        if (p.distribution != MicrofacetDistribution::Ggx || p.geometry != MicrofacetGeometry::Smith || p.fresnel != FresnelMode::Schlick)
+            return std::nullopt;
+        return TextbookForm{p.diffuseAlbedo, TextbookForm::Ggx{fresnelF0(p.ior, p.extinction), p.roughness}};
+    }
     static MtlForm mtlForm(const Params& p) { return mtlMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, p.roughness); }
     static GltfForm gltfForm(const Params& p) {
         GltfForm form = gltfMicrofacet(p.diffuseAlbedo, p.ior, p.extinction, p.roughness);

@@ -8,7 +8,9 @@
 
 #include "brdf/appearance.h"
 #include "brdf/export_forms.h"
+#include "brdf/fresnel.h"
 #include "brdf/model.h"
+#include "brdf/trait_forms.h"
 #include "math/frame.h"
 
 namespace glint {
@@ -59,6 +61,15 @@ struct Glass {
     // No environment hook: only the traced lobes see the map.
     static constexpr const char* environmentNote = "refracts and reflects the map through its traced delta lobes";
     static constexpr bool tracesDeltaLobes = true;
+    static constexpr const char* onlyDeltaLobes = "Glass's reflection and refraction";
+    // From air into glass (η ≥ 1) there is no total internal reflection.
+    static DeltaLobeWeights deltaLobeWeights(const Params& p, float cosIncident) {
+        const float reflected =
+            p.transparency == GlassTransparency::Fresnel ? fresnelDielectric(cosIncident, p.ior) : 1.0f - p.transmission;
+        return {glm::vec3(reflected), glm::vec3(1.0f - reflected), p.ior};
+    }
+    static bool transmits(const Params&) { return true; }
+    static constexpr const char* dispersiveIndex = "ior";  // Cauchy's n(λ) about its value at the sodium D line
     static MtlForm mtlForm(const Params& p) {
         MtlForm form{.illum = 7, .specular = glm::vec3(1.0f), .ior = p.ior};
         if (p.absorption != glm::vec3(0.0f)) form.lost.push_back("absorption σ is not kept");

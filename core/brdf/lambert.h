@@ -2,11 +2,14 @@
 // CPU reference; its GLSL twin is shaders/brdf/lambert.glsl.
 #pragma once
 
+#include <optional>
+
 #include <glm/glm.hpp>
 
 #include "brdf/appearance.h"
 #include "brdf/export_forms.h"
 #include "brdf/model.h"
+#include "brdf/trait_forms.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -41,6 +44,8 @@ struct Lambert {
     static constexpr auto eval = evalLambert;
     static constexpr auto ambientReflectance = ambientReflectanceLambert;
     static constexpr const char* environmentResponse = "ρ·E(n)/π (irradiance map)";
+    static constexpr const char* constantForm = "ρ/π";
+    static std::optional<TextbookForm> textbookForm(const Params& p) { return TextbookForm{p.albedo, std::nullopt}; }
     static MtlForm mtlForm(const Params& p) { return {.diffuse = p.albedo}; }
     static GltfForm gltfForm(const Params& p) { return gltfRoughDielectric(p.albedo); }
     static Appearance appearance(const Params& p) { return {.diffuse = {p.albedo, {"albedo"}}}; }

@@ -10,6 +10,7 @@
 #include "brdf/export_forms.h"
 #include "brdf/fresnel.h"
 #include "brdf/model.h"
+#include "brdf/trait_forms.h"
 #include "math/constants.h"
 #include "math/frame.h"
 
@@ -54,6 +55,10 @@ struct Mirror {
     static constexpr auto ambientReflectance = ambientReflectanceMirror;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π; the mirror lobe is traced into the map";
     static constexpr bool tracesDeltaLobes = true;
+    static constexpr const char* onlyDeltaLobes = "A mirror's reflection";
+    static DeltaLobeWeights deltaLobeWeights(const Params& p, float cosIncident) {
+        return {.reflected = fresnelComplexIndex(cosIncident, p.ior, p.extinction)};
+    }
     static MtlForm mtlForm(const Params& p) {
         return {.illum = 3, .diffuse = p.diffuseAlbedo, .specular = fresnelF0(p.ior, p.extinction),
                 .lost = {"the complex index n + iκ is written as its normal-incidence reflectance Ks"}};

@@ -22,6 +22,17 @@
 //                                whole, textures included (interchange/gltf_openpbr.h)
 //   appearance(Params), takeAppearance(AppearanceWriter&)  what the model holds and takes in
 //                                terms models share, for switching models (appearance.h)
+//   deltaLobeWeights(Params, cos θ_i)  its delta lobes in numbers: reflected and transmitted
+//                                fractions and the refractive index (trait_forms.h), for the probe
+//                                and the plots
+//   onlyDeltaLobes               all its light leaves by delta lobes: what they are, in words
+//   transmits(Params)            light passes through it (the transmission backdrop draws it)
+//   dispersiveIndex              the parameter the spectral renderer varies with wavelength
+//   constantForm                 f_r is one value for all directions, written so ("ρ/π")
+//   textbookForm(Params)         the forms the hand-written floor shader draws (trait_forms.h)
+//   environmentApproximation(Params)  how the environment hook approximates this form, where the
+//                                model's kind of approximation does not say it
+//   coatNormalMap                it has a coat whose normal a map can bend
 // GLSL names follow from the id by convention: "cook_torrance" -> CookTorrance -> evalCookTorrance.
 #pragma once
 
@@ -80,6 +91,17 @@ template <class M>
 concept TakesAppearance = requires(AppearanceWriter& writer) { M::takeAppearance(writer); };
 template <class M>
 concept IsGltfOpenPbr = requires { requires M::gltfOpenPbr; };
+struct DeltaLobeWeights;  // trait_forms.h
+struct TextbookForm;
+template <class M>
+concept HasDeltaLobeWeights = requires(const typename M::Params& p) { { M::deltaLobeWeights(p, 1.0f) } -> std::same_as<DeltaLobeWeights>; };
+template <class M>
+concept MayTransmit = requires(const typename M::Params& p) { { M::transmits(p) } -> std::same_as<bool>; };
+template <class M>
+concept HasTextbookForm = requires(const typename M::Params& p) { M::textbookForm(p); };
+template <class M>
+concept HasEnvironmentApproximation =
+    requires(const typename M::Params& p) { { M::environmentApproximation(p) } -> std::convertible_to<const char*>; };
 template <class M>
 concept HasFormReciprocity = requires(const typename M::Params& p) { { M::isReciprocal(p) } -> std::same_as<bool>; };
 
@@ -184,7 +206,28 @@ struct ModelInfo {
     const char* glslEnvironment;
     const char* environmentResponse;  // how the environment lights the model, in words
     std::string (*glslTables)();      // GLSL put before the model's file (nullptr: none)
+    // Traits (nullptr or false when the model has none; see the list at the top).
+    const char* onlyDeltaLobes;
+    const char* dispersiveIndex;
+    const char* constantForm;
+    bool coatNormalMap;
 };
+
+template <class M>
+constexpr const char* onlyDeltaLobesOf() {
+    if constexpr (requires { M::onlyDeltaLobes; }) return M::onlyDeltaLobes;
+    else return nullptr;
+}
+template <class M>
+constexpr const char* dispersiveIndexOf() {
+    if constexpr (requires { M::dispersiveIndex; }) return M::dispersiveIndex;
+    else return nullptr;
+}
+template <class M>
+constexpr const char* constantFormOf() {
+    if constexpr (requires { M::constantForm; }) return M::constantForm;
+    else return nullptr;
+}
 
 template <class M>
 constexpr auto glslTablesOf() -> std::string (*)() {
@@ -209,7 +252,8 @@ ModelInfo describeModel(BrdfModel position) {
             M::energyConserving, M::citation, HasAmbient<M> ? names.ambient.c_str() : nullptr,
             TracesDeltaLobes<M> ? names.transport.c_str() : nullptr,
             HasEnvironment<M> ? names.environment.c_str() : nullptr, response,
-            glslTablesOf<M>()};
+            glslTablesOf<M>(), onlyDeltaLobesOf<M>(), dispersiveIndexOf<M>(), constantFormOf<M>(),
+            requires { requires M::coatNormalMap; }};
 }
 
 }  // namespace glint

@@ -105,6 +105,7 @@ std::string ModelSwitch::summary() const {
 }
 
 ModelSwitch switchModel(const Material& source, BrdfModel target) {
+    if (const AnalyticMaterial* analytic = source.analytic(); analytic && analytic->model == target) return {source, {}, {}};
     ModelSwitch result;
     result.material = Material::withDefaults(source.name, target);
     AnalyticMaterial& switched = *result.material.analytic();

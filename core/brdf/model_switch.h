@@ -22,7 +22,7 @@ struct ModelSwitch {
 
 // `source` in `target`'s model, keeping its name, its normal map and the textures of parameters
 // copied unchanged. A .brdf (custom) material keeps nothing; a measured one its directional albedo
-// at normal viewing as the diffuse colour.
+// at normal viewing as the diffuse colour; one already in `target` is returned as it is.
 ModelSwitch switchModel(const Material& source, BrdfModel target);
 
 }  // namespace glint

@@ -218,6 +218,8 @@ struct OpenPbr {
         "fuzz and diffuse: E(n)/π × their albedo; coat and specular: prefiltered radiance along the dominant "
         "direction × their compensated albedo; transmission: prefiltered radiance through the surface";
     static constexpr bool tracesDeltaLobes = true;
+    static bool transmits(const Params& p) { return p.transmissionWeight > 0.0f; }
+    static constexpr bool coatNormalMap = true;
     static std::string glslTables() { return openPbrAlbedoGlsl(); }
     // The base only: Kd = weight·colour·(1 − metalness); Ks = the specular F0 mixed with the metal's colour.
     static MtlForm mtlForm(const Params& p) {

@@ -50,7 +50,7 @@ struct OpenPbrParams {
 
 inline constexpr ParamSpec kOpenPbrTable[] = {
     // Base
-    fractionParam("base_weight", "Base weight", 1.0f, "Multiplier on the diffuse and metallic base"),
+    layerWeight(fractionParam("base_weight", "Base weight", 1.0f, "Multiplier on the diffuse and metallic base")),
     colorParam("base_color", "Base colour", {0.8f, 0.8f, 0.8f},
         "Albedo of the diffuse base; a metal's reflectance at normal incidence (F0)"),
     fractionParam("base_metalness", "Base metalness", 0.0f, "Mix from a dielectric base (0) to a metal (1)"),
@@ -59,7 +59,7 @@ inline constexpr ParamSpec kOpenPbrTable[] = {
     // Specular
     {.name = "specular_weight", .label = "Specular weight", .unit = "", .kind = ParamKind::Scalar,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {1.0f, 0, 0},
-     .help = "Multiplies the dielectric's F0 (capped at 1)"},
+     .help = "Multiplies the dielectric's F0 (capped at 1)", .layerWeight = true},
     colorParam("specular_color", "Specular colour", {1.0f, 1.0f, 1.0f},
         "Tint of the dielectric reflection; the metal's edge tint (F82)"),
     fractionParam("specular_roughness", "Specular roughness", 0.3f, "Perceptual roughness r of the specular lobe (GGX α = r²)"),
@@ -69,19 +69,19 @@ inline constexpr ParamSpec kOpenPbrTable[] = {
      .sliderMin = 1, .sliderMax = 3, .validMin = 1, .validMax = kUnbounded, .defaultValue = {1.5f, 0, 0},
      .help = "Index of refraction of the dielectric base (glass 1.5, water 1.33)"},
     // Transmission
-    fractionParam("transmission_weight", "Transmission weight", 0.0f,
-        "Mix from an opaque dielectric base (0) to a transparent one (1)"),
+    layerWeight(fractionParam("transmission_weight", "Transmission weight", 0.0f,
+        "Mix from an opaque dielectric base (0) to a transparent one (1)")),
     colorParam("transmission_color", "Transmission colour", {1.0f, 1.0f, 1.0f},
         "Colour after transmission_depth inside (Beer-Lambert); a plain tint when the depth is 0"),
     {.name = "transmission_depth", .label = "Transmission depth", .unit = "m", .kind = ParamKind::Scalar,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.0f, 0, 0},
      .help = "Distance inside after which the light is exactly transmission_color"},
     // Fuzz
-    fractionParam("fuzz_weight", "Fuzz weight", 0.0f, "Presence of a fuzz (sheen) layer on top: velvet, satin, dust"),
+    layerWeight(fractionParam("fuzz_weight", "Fuzz weight", 0.0f, "Presence of a fuzz (sheen) layer on top: velvet, satin, dust")),
     colorParam("fuzz_color", "Fuzz colour", {1.0f, 1.0f, 1.0f}, "Colour of the fuzz layer"),
     fractionParam("fuzz_roughness", "Fuzz roughness", 0.5f, "Roughness of the fuzz fibres (Charlie sheen α = r²)"),
     // Coat
-    fractionParam("coat_weight", "Coat weight", 0.0f, "Presence of a clear coat on top: car paint, lacquer, an oily film"),
+    layerWeight(fractionParam("coat_weight", "Coat weight", 0.0f, "Presence of a clear coat on top: car paint, lacquer, an oily film")),
     colorParam("coat_color", "Coat colour", {1.0f, 1.0f, 1.0f},
         "Transmittance of the coat at normal incidence (absorption in the coat)"),
     fractionParam("coat_roughness", "Coat roughness", 0.0f, "Perceptual roughness of the coat's reflection (GGX α = r²)"),
@@ -92,8 +92,8 @@ inline constexpr ParamSpec kOpenPbrTable[] = {
     fractionParam("coat_darkening", "Coat darkening", 1.0f,
         "How much light trapped under the coat darkens and saturates the base (1: physical)"),
     // Thin film
-    fractionParam("thin_film_weight", "Thin-film weight", 0.0f,
-        "Coverage of an iridescent thin film on the base: soap bubbles, oil, anodised metal"),
+    layerWeight(fractionParam("thin_film_weight", "Thin-film weight", 0.0f,
+        "Coverage of an iridescent thin film on the base: soap bubbles, oil, anodised metal")),
     {.name = "thin_film_thickness", .label = "Thin-film thickness", .unit = "µm", .kind = ParamKind::Scalar,
      .sliderMin = 0, .sliderMax = 1, .validMin = 0, .validMax = kUnbounded, .defaultValue = {0.5f, 0, 0},
      .help = "Thickness of the film in micrometres"},

@@ -37,6 +37,8 @@ struct ParamSpec {
     ParamScale scale = ParamScale::Linear;
     std::span<const EnumOption> options{};  // Enum only
     const char* help = "";
+    // A Scalar weighting a layer or lobe that adds nothing at 0: programs compile it out there.
+    bool layerWeight = false;
 
     // Whether files and typed values may hold `value` (validMin, validMax and validMinExclusive).
     bool accepts(float value) const {
@@ -53,6 +55,11 @@ constexpr ParamSpec colorParam(const char* name, const char* label, std::array<f
 }
 constexpr ParamSpec fractionParam(const char* name, const char* label, float value, const char* help) {
     return {.name = name, .label = label, .unit = "", .kind = ParamKind::Scalar, .defaultValue = {value, 0, 0}, .help = help};
+}
+// A row marked as a layer's weight.
+constexpr ParamSpec layerWeight(ParamSpec spec) {
+    spec.layerWeight = true;
+    return spec;
 }
 
 // Floats one parameter occupies in the packed value array.

@@ -82,6 +82,10 @@ struct Ward {
     static constexpr auto eval = evalWard;
     static constexpr auto ambientReflectance = ambientReflectanceWard;
     static constexpr const char* environmentResponse = "ρ_d·E(n)/π + ρ_s·a(θ_o)·prefiltered GGX with the lobe's mean cosine, along its mean direction";
+    static const char* environmentApproximation(const Params&) {
+        return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction (narrowed across the "
+               "plane of incidence) × its directional albedo";
+    }
     // Blinn-Phong's exponent for Ward's slopes: n = 2/(α_x α_y) − 2.
     static MtlForm mtlForm(const Params& p) {
         return {.illum = 2, .diffuse = p.diffuseAlbedo, .specular = p.specular,

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "brdf/glass.h"
+#include "brdf/model_traits.h"
 #include "display/display_chain.h"
 #include "light/photometry.h"
 #include "environment/environment_lighting.h"
@@ -107,8 +107,9 @@ ProbeResult probeSurface(const Scene& scene, int x, int y, int width, int height
         result.viewMirror = probeMirror(towardsViewer, normal);
         // Refraction (glass): the viewer is outside unless the ray hit an exact sphere from inside.
         std::optional<std::pair<float, float>> etas;  // η on the viewer's side, η beyond
-        if (analytic && analytic->model == BrdfModel::Glass) {
-            const float ior = unpack<Glass>(breakdown.values.data()).ior;
+        const auto lobes = analytic ? deltaLobeWeights(analytic->model, breakdown.values, 1.0f) : std::nullopt;
+        if (lobes && lobes->refractiveIndex) {
+            const float ior = *lobes->refractiveIndex;
             const auto* sphere = std::get_if<SphereShape>(&object.shape);
             const bool inside = sphere && !hit->triangle && glm::dot(hit->normal, hit->position - sphere->center) < 0.0f;
             etas = inside ? std::pair{ior, 1.0f} : std::pair{1.0f, ior};

@@ -11,6 +11,7 @@
 #include "colour/cie_cmf.h"
 #include "interchange/material_values.h"
 #include "render/reference_renderer.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -129,16 +130,20 @@ Result<RadianceImage> renderSpectralXyz(const Scene& scene, const SpectralSettin
         const WavelengthSample& sample = samples[rendered];
         for (size_t index = 0; index < scene.materials.size(); ++index) {
             const Material& material = scene.materials[index];
-            if (!material.analytic() || material.analytic()->model != BrdfModel::Glass) continue;
-            const float indexAtSodiumD = paramScalar(material, "ior");
+            const char* dispersed = material.analytic() ? modelInfo(material.analytic()->model).dispersiveIndex : nullptr;
+            if (!dispersed) continue;
+            const float indexAtSodiumD = paramScalar(material, dispersed);
             const float coefficientA = indexAtSodiumD - cauchyIndex(0.0f, settings.cauchyB, kSodiumDNanometres);
             const float dispersedIndex = cauchyIndex(coefficientA, settings.cauchyB, sample.wavelengthNanometres);
-            // The glass table accepts indices in [1, 4]; too strong a B must be refused, not clamped.
-            if (!(dispersedIndex >= 1.0f && dispersedIndex <= 4.0f))
+            // Too strong a B must be refused, not clamped into the table's valid range.
+            const auto table = paramTable(material);
+            const ParamSpec& spec = table[findParam(table, dispersed)];
+            if (!spec.accepts(dispersedIndex))
                 return makeError("material '" + material.name + "': Cauchy B " + std::to_string(settings.cauchyB) +
                                  " µm² gives n = " + std::to_string(dispersedIndex) + " at " +
-                                 std::to_string(sample.wavelengthNanometres) + " nm, outside glass's valid [1, 4]");
-            setParam(atWavelength.materials[index], "ior", dispersedIndex);
+                                 std::to_string(sample.wavelengthNanometres) + " nm, outside " + dispersed + "'s valid [" +
+                                 formatNumber(spec.validMin) + ", " + formatNumber(spec.validMax) + "]");
+            setParam(atWavelength.materials[index], dispersed, dispersedIndex);
         }
         const RadianceImage rgb = renderReference(atWavelength, outputWidth, outputHeight);
         const glm::vec3 weightedMatching = sample.weight * normalisation * cieColourMatching(sample.wavelengthNanometres);

@@ -396,16 +396,9 @@ std::string environmentApproximation(BrdfModel model, std::span<const float> val
     static constexpr const char* kSplitSum = "GGX split sum along the dominant direction (narrowed across the plane of incidence)";
     const char* lobe = dispatch(model, [&]<class M>(M) -> const char* {
         if constexpr (!HasEnvironment<M>) return nullptr;
-        else if constexpr (std::is_same_v<M, CookTorrance>) {
-            const CookTorranceParams p = unpack<M>(values.data());
-            if (microfacetPair(p.distribution, p.geometry) != kGgxSmithPair)
-                return "split sum of the lobe's own D and G, prefiltered through its GGX stand-in with the lobe's mean "
-                       "cosine, along its mean direction (narrowed across the plane of incidence)";
-            return kSplitSum;
-        } else if constexpr (SplitSum<M>) return kSplitSum;
-        else if constexpr (std::is_same_v<M, Ward>)
-            return "GGX-prefiltered stand-in with the lobe's mean cosine, along its mean direction (narrowed across the "
-                   "plane of incidence) × its directional albedo";
+        if constexpr (HasEnvironmentApproximation<M>)
+            if (const char* own = M::environmentApproximation(unpack<M>(values.data()))) return own;
+        if constexpr (SplitSum<M>) return kSplitSum;
         else if constexpr (EquivalentLobe<M>) return "GGX-prefiltered lobe of equivalent roughness along R × its directional albedo";
         else return "";
     });

@@ -15,12 +15,6 @@ namespace {
 
 std::string define(const std::string& name, const std::string& value) { return "#define " + name + " " + value + "\n"; }
 
-// A scalar named *_weight scales a layer or lobe that contributes nothing at 0.
-bool isLayerWeight(std::string_view name) {
-    constexpr std::string_view suffix = "_weight";
-    return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
-}
-
 // The kind constants of shaders/common/lights.glsl.
 constexpr std::array<const char*, 3> kLightKinds = {"LIGHT_DIRECTIONAL", "LIGHT_POINT", "LIGHT_ANY"};
 constexpr int kAnyLight = 2;
@@ -115,7 +109,7 @@ std::string materialSpecialisation(const AnalyticMaterial& material) {
         if (spec.kind == ParamKind::Enum) text += define("GLINT_PARAM_" + std::string(spec.name), std::to_string(static_cast<int>(value + 0.5f)));
         if (spec.kind == ParamKind::Bool) text += define("GLINT_PARAM_" + std::string(spec.name), value > 0.5f ? "true" : "false");
         // A layer weighted 0 (OpenPBR's coat, fuzz, thin film, transmission, ...) is compiled out.
-        if (spec.kind == ParamKind::Scalar && value == 0.0f && isLayerWeight(spec.name) && !textured.has(index))
+        if (spec.layerWeight && value == 0.0f && !textured.has(index))
             text += define("GLINT_PARAM_" + std::string(spec.name), "0.0");
         offset += componentCount(spec.kind);
     }

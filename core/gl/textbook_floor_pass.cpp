@@ -2,33 +2,23 @@
 #include "gl/textbook_floor_pass.h"
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "brdf/model_registry.h"
-#include "brdf/param_table.h"
+#include "brdf/model_traits.h"
 #include "display/display_chain.h"
-#include "interchange/material_values.h"
 #include "light/light.h"
 
 namespace glint {
 namespace {
 
-// The option id chosen for an enum parameter.
-std::string_view optionOf(const Material& material, const char* name) {
-    const auto table = paramTable(material);
-    const auto options = table[findParam(table, name)].options;
-    const size_t chosen = static_cast<size_t>(paramScalar(material, name) + 0.5f);
-    return chosen < options.size() ? options[chosen].id : "";
-}
-
-bool textbookMaterial(const Material& material) {
+// What the floor shader draws for the material: its textbook form, if it has one (untextured).
+std::optional<TextbookForm> textbookFormOf(const Material& material) {
     const AnalyticMaterial* analytic = material.analytic();
-    if (!analytic || !analytic->textures.empty()) return false;
-    if (analytic->model == BrdfModel::Lambert) return true;
-    return analytic->model == BrdfModel::CookTorrance && optionOf(material, "distribution") == "ggx" &&
-           optionOf(material, "geometry") == "smith" && optionOf(material, "fresnel") == "schlick";
+    if (!analytic || !analytic->textures.empty()) return std::nullopt;
+    return textbookForm(analytic->model, analytic->values);
 }
 
 }  // namespace
@@ -45,7 +35,7 @@ bool TextbookFloorPass::covers(const Scene& scene) {
     const SceneObject& object = scene.objects[0];
     const auto* sphere = std::get_if<SphereShape>(&object.shape);
     return sphere && glm::length(scene.camera.position - sphere->center) > sphere->radius &&  // seen from outside
-           object.interpolation != SurfaceInterpolation::Gouraud && textbookMaterial(scene.materials.at(object.materialIndex));
+           object.interpolation != SurfaceInterpolation::Gouraud && textbookFormOf(scene.materials.at(object.materialIndex));
 }
 
 Result<std::unique_ptr<TextbookFloorPass>> TextbookFloorPass::create(const ShaderSources& sources, const Scene& scene) {
@@ -55,7 +45,7 @@ Result<std::unique_ptr<TextbookFloorPass>> TextbookFloorPass::create(const Shade
         if (light.enabled && light.type == LightType::Directional) ++directional;
         if (light.enabled && light.type == LightType::Point) ++point;
     }
-    const bool ggx = !scene.objects.empty() && scene.materials.at(scene.objects[0].materialIndex).analytic()->model == BrdfModel::CookTorrance;
+    const bool ggx = !scene.objects.empty() && textbookFormOf(scene.materials.at(scene.objects[0].materialIndex))->specular;
     const std::string prelude = "#define NUM_DIRECTIONAL " + std::to_string(directional) + "\n#define NUM_POINT " +
                                 std::to_string(point) + "\n" + (ggx ? "#define GGX 1\n" : "#define LAMBERT 1\n");
     auto program = ShaderProgram::build(sources, "textbook_floor.vert", "textbook_floor.frag", prelude);
@@ -117,15 +107,11 @@ void TextbookFloorPass::draw(const Scene& scene, int width, int height) {
     }
     const auto& sphere = std::get<SphereShape>(scene.objects[0].shape);
     glUniform4f(uniform("sphere"), sphere.center.x, sphere.center.y, sphere.center.z, sphere.radius);
-    const Material& material = scene.materials.at(scene.objects[0].materialIndex);
-    if (material.analytic()->model == BrdfModel::Lambert) {  // covers() checked that it is Lambert or Cook-Torrance
-        glUniform3fv(uniform("albedo"), 1, glm::value_ptr(paramValue(material, "albedo")));
-    } else {
-        glUniform3fv(uniform("albedo"), 1, glm::value_ptr(paramValue(material, "diffuse_albedo")));
-        const glm::vec3 n = paramValue(material, "ior"), k = paramValue(material, "extinction");
-        const glm::vec3 f0 = ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);
-        glUniform3fv(uniform("f0"), 1, glm::value_ptr(f0));
-        glUniform1f(uniform("alpha"), paramScalar(material, "roughness"));
+    const TextbookForm form = *textbookFormOf(scene.materials.at(scene.objects[0].materialIndex));  // covers() checked it
+    glUniform3fv(uniform("albedo"), 1, glm::value_ptr(form.diffuseAlbedo));
+    if (form.specular) {
+        glUniform3fv(uniform("f0"), 1, glm::value_ptr(form.specular->f0));
+        glUniform1f(uniform("alpha"), form.specular->alpha);
     }
     glBindVertexArray(emptyVertexArray_);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);

@@ -3,7 +3,8 @@
 // full-screen pass, the sphere ray-cast, the same BRDF and lights, an sRGB 8-bit output and
 // nothing else. None of Glint's shading code runs in it, so the ratio of a frame to it is what
 // Glint costs over the cheapest correct program. It covers scenes of one analytic sphere (or none)
-// with a Lambert or Cook-Torrance (GGX, height-correlated Smith, Schlick) material, a perspective
+// with a material that has a textbook form (brdf/trait_forms.h: Lambert, or Cook-Torrance with GGX,
+// height-correlated Smith and Schlick), a perspective
 // camera outside the sphere, a constant background and point (inverse-square, no cone) and directional lights;
 // covers() says whether a scene is one. It does not time itself; the caller times draw() + glFinish.
 #pragma once

@@ -268,14 +268,13 @@ ExportedText writeMaterialX(std::span<const ImportedMaterial> materials, const s
     std::set<std::string> taken;
     for (const ImportedMaterial& source : materials) {
         GLINT_CHECK(source.material.analytic());  // exportMaterials converts the other kinds
-        Material material = source.material;
-        if (const BrdfModel model = material.analytic()->model; model != BrdfModel::OpenPbr) {
-            const ModelSwitch converted = switchModel(material, BrdfModel::OpenPbr);
-            if (!converted.dropped.empty())
-                out.warnings.push_back(makeError("warning: material '" + material.name + "' converted from " +
-                                                 modelInfo(model).label + " to OpenPBR: " + converted.summary()));
-            material = converted.material;
-        }
+        // An open_pbr_surface holds OpenPBR's parameters: another model is switched to it first.
+        const ModelSwitch converted = switchModel(source.material, BrdfModel::OpenPbr);
+        if (!converted.dropped.empty())
+            out.warnings.push_back(makeError("warning: material '" + source.material.name + "' converted from " +
+                                             modelInfo(source.material.analytic()->model).label + " to OpenPBR: " +
+                                             converted.summary()));
+        const Material& material = converted.material;
         const std::string materialName = uniqueName(material.name, taken);
         const std::string shaderName = uniqueName("SR_" + materialName, taken);
         ShaderText shader;

@@ -3,20 +3,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
-#include "brdf/openpbr.h"
+#include "brdf/model_traits.h"
 
 namespace glint {
 
 bool transmitsLight(const Material& kind) {
     const AnalyticMaterial* analytic = kind.analytic();
     if (!analytic) return false;
-    const AnalyticMaterial& material = *analytic;
-    if (material.model == BrdfModel::Glass) return true;
-    if (material.model != BrdfModel::OpenPbr) return false;
-    for (const MaterialTexture& texture : material.textures)
-        if (texture.parameter == "transmission_weight") return true;
-    return unpack<OpenPbr>(material.values.data()).transmissionWeight > 0.0f;
+    // A texture may take a scalar anywhere in its range: the material transmits where any does.
+    const auto table = modelInfo(analytic->model).params;
+    std::vector<float> utmost = analytic->values;
+    for (const MaterialTexture& texture : analytic->textures)
+        if (const int index = findParam(table, texture.parameter); index >= 0 && table[index].kind == ParamKind::Scalar)
+            utmost[packedOffset(table, index)] = std::isfinite(table[index].validMax) ? table[index].validMax : table[index].sliderMax;
+    return transmits(analytic->model, utmost);
 }
 
 bool drawsTransmissionBackdrop(const Scene& scene) {

@@ -20,8 +20,9 @@
 
 namespace glint {
 
-// Whether a material lets light through from behind: the glass model, or openpbr with a
-// transmission weight above 0 (or a texture on it). Frames without one draw no backdrop.
+// Whether a material lets light through from behind: its model transmits (brdf/model_traits.h:
+// glass; openpbr with a transmission weight above 0, or a texture on it). Frames without one draw
+// no backdrop.
 bool transmitsLight(const Material& material);
 // Whether a frame of the scene draws the backdrop: it has a transmissive object and an opaque one
 // (with no opaque object the backdrop would hold nothing; transmissive surfaces then see the
