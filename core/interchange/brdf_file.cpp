@@ -274,6 +274,131 @@ const char* glslTypeOf(ParamKind kind) {
 
 enum class Block { None, Parameters, Shader, Skipped };  // Skipped: a section BRDF Explorer knows, Glint does not use
 
+// Reads the file a line at a time: the header, the blocks and the parameter lines.
+class BrdfFileReader {
+public:
+    explicit BrdfFileReader(const std::string& path) { file_.path = path; }
+
+    // One line (without its end); `content` is it trimmed, `here` where the content starts.
+    Status readLine(std::string_view line, std::string_view content, const SourceLocation& here) {
+        if (content.rfind("::", 0) == 0) {
+            shaderLines_ += "\n";
+            return readMarker(content, here);
+        }
+        if (block_ == Block::Shader) {
+            shaderLines_ += std::string(line) + "\n";
+            return success();
+        }
+        shaderLines_ += "\n";
+        if (block_ == Block::Skipped || content.empty() || content[0] == '#') return success();
+        if (block_ == Block::Parameters) return readParameter(line, here);
+        if (!sawHeader_ && headerWord(content) == "analytic") {
+            sawHeader_ = true;
+            return success();
+        }
+        if (!sawHeader_)
+            return makeError("the file must start with the line 'analytic' (only analytic BRDFs are supported; found '" +
+                                 std::string(content.substr(0, 40)) + "')",
+                             here);
+        return makeError("text outside a block (expected '::begin parameters' or '::begin shader')", here);
+    }
+
+    // The file, once every line is read (`lastLine` the number of the last).
+    Result<BrdfFile> finish(std::string_view text, int lastLine) {
+        const std::string& path = file_.path;
+        if (block_ != Block::None)
+            return makeError("unterminated block: '::begin " +
+                                 (block_ == Block::Shader ? std::string("shader") : block_ == Block::Parameters ? "parameters" : skippedSection_) +
+                                 "' has no matching ::end",
+                             {path, blockLine_, 1});
+        if (!sawHeader_) return makeError("the file must start with the line 'analytic'", {path, 1, 1});
+        if (!sawShader_) return makeError("no '::begin shader' block", {path, lastLine, 1});
+        const std::string code = withoutComments(shaderLines_);
+        const ShaderNames names = scanShader(code);
+        if (!names.hasBrdf)
+            return makeError("the shader block defines no 'vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)'",
+                             {path, file_.shaderLine, 1});
+        for (const ShaderNames::Uniform& uniform : names.uniforms)
+            if (Status matched = matchUniform(uniform, code); !matched) return matched.error();
+        file_.shaderText = std::move(shaderLines_);
+        file_.sourceText = std::string(text);
+        file_.topLevelNames = names.declared;
+        file_.macroNames = names.macros;
+        return std::move(file_);
+    }
+
+private:
+    // '::begin SECTION' or '::end SECTION'.
+    Status readMarker(std::string_view content, const SourceLocation& here) {
+        const std::vector<Token> tokens = splitTokens(content.substr(2));
+        const std::string verb = tokens.empty() ? "" : std::string(tokens[0].text);
+        const std::string section = tokens.size() > 1 ? std::string(tokens[1].text) : "";
+        if (tokens.size() != 2 || (verb != "begin" && verb != "end")) return makeError("expected '::begin SECTION' or '::end SECTION'", here);
+        const Block named = section == "parameters" ? Block::Parameters : section == "shader" ? Block::Shader : Block::Skipped;
+        if (verb == "end") {
+            if (block_ != named || (named == Block::Skipped && section != skippedSection_))
+                return makeError("'::end " + section + "' without '::begin " + section + "'", here);
+            block_ = Block::None;
+            return success();
+        }
+        if (block_ != Block::None)
+            return makeError("'::begin " + section + "' inside the block opened at line " + std::to_string(blockLine_) +
+                                 " (close it with ::end first)",
+                             here);
+        if (!sawHeader_) return makeError("the file must start with the line 'analytic'", here);
+        if (named == Block::Skipped) {  // BRDF Explorer warns and reads on; so does Glint
+            file_.warnings.push_back(makeError(
+                "warning: section '" + section + "' is skipped" +
+                    (section == "isFunc" ? " (BRDF Explorer's importance-sampling function, which Glint does not use)"
+                                         : " (Glint reads 'parameters' and 'shader')"),
+                {here.file, here.line, here.column + 2 + tokens[1].column - 1}));
+            skippedSection_ = section;
+        } else {
+            bool& seen = named == Block::Parameters ? sawParameters_ : sawShader_;
+            if (seen) return makeError("a second '::begin " + section + "' block", here);
+            seen = true;
+        }
+        block_ = named;
+        blockLine_ = here.line;
+        if (named == Block::Shader) file_.shaderLine = here.line;
+        return success();
+    }
+
+    Status readParameter(std::string_view line, const SourceLocation& here) {
+        auto param = parseBrdfParamLine(line, file_.path, here.line);
+        if (!param) return param.error();
+        for (const BrdfFileParam& other : file_.params)
+            if (other.name == param->name)
+                return makeError("parameter '" + param->name + "' is declared twice (first at line " + std::to_string(other.line) + ")",
+                                 {file_.path, here.line, static_cast<int>(line.find(param->name, 4)) + 1});
+        if (static_cast<int>(file_.params.size()) >= kMaxBrdfParameters)
+            return makeError("more than " + std::to_string(kMaxBrdfParameters) + " parameters", here);
+        file_.params.push_back(std::move(*param));
+        return success();
+    }
+
+    // A uniform named as a parameter must have the parameter's type; others are the shader's own (left at zero).
+    Status matchUniform(const ShaderNames::Uniform& uniform, const std::string& code) {
+        const auto param = std::find_if(file_.params.begin(), file_.params.end(),
+                                        [&](const BrdfFileParam& p) { return p.name == uniform.name; });
+        if (param == file_.params.end()) return success();
+        if (uniform.type != glslTypeOf(param->kind))
+            return makeError("'uniform " + uniform.type + " " + uniform.name + "' does not match the parameter declared at line " +
+                                 std::to_string(param->line) + " (a " + glslTypeOf(param->kind) + ")",
+                             {file_.path, 1 + static_cast<int>(std::count(code.begin(), code.begin() + uniform.offset, '\n')),
+                              static_cast<int>(uniform.offset - code.rfind('\n', uniform.offset))});
+        file_.declaredUniforms.push_back(uniform.name);
+        return success();
+    }
+
+    BrdfFile file_;
+    Block block_ = Block::None;
+    int blockLine_ = 0;
+    std::string skippedSection_;  // the open Block::Skipped's name
+    bool sawHeader_ = false, sawParameters_ = false, sawShader_ = false;
+    std::string shaderLines_;  // the shader block's lines; others blank
+};
+
 }  // namespace
 
 Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
@@ -281,16 +406,9 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
         return makeError("the file is " + std::to_string(text.size()) + " bytes; a .brdf file may hold at most 1 MiB",
                          {path, 1, 1});
     if (Status utf8 = checkUtf8(text, path); !utf8) return utf8.error();
-    BrdfFile file;
-    file.path = path;
-    Block block = Block::None;
-    int blockLine = 0;
-    std::string skippedSection;  // the open Block::Skipped's name
-    bool sawHeader = false, sawParameters = false, sawShader = false;
-    std::string shaderLines;  // the shader block's lines; others blank
+    BrdfFileReader reader(path);
     int lineNumber = 0;
-    size_t position = 0;
-    while (position <= text.size()) {
+    for (size_t position = 0; position <= text.size();) {
         const size_t end = std::min(text.find('\n', position), text.size());
         std::string_view line = text.substr(position, end - position);
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
@@ -303,106 +421,9 @@ Result<BrdfFile> parseBrdfFile(std::string_view text, const std::string& path) {
         }
         const std::string_view content = trimmed(line);
         const int column = static_cast<int>(content.data() - line.data()) + 1;
-        const SourceLocation here{path, lineNumber, column};
-        if (content.rfind("::", 0) == 0) {
-            const std::vector<Token> tokens = splitTokens(content.substr(2));
-            const std::string verb = tokens.empty() ? "" : std::string(tokens[0].text);
-            const std::string section = tokens.size() > 1 ? std::string(tokens[1].text) : "";
-            if (tokens.size() != 2 || (verb != "begin" && verb != "end"))
-                return makeError("expected '::begin SECTION' or '::end SECTION'", here);
-            const Block named = section == "parameters" ? Block::Parameters
-                                : section == "shader"   ? Block::Shader
-                                                        : Block::Skipped;
-            if (verb == "begin") {
-                if (block != Block::None)
-                    return makeError("'::begin " + section + "' inside the block opened at line " +
-                                         std::to_string(blockLine) + " (close it with ::end first)",
-                                     here);
-                if (!sawHeader) return makeError("the file must start with the line 'analytic'", here);
-                if (named == Block::Skipped) {  // BRDF Explorer warns and reads on; so does Glint
-                    file.warnings.push_back(makeError(
-                        "warning: section '" + section + "' is skipped" +
-                            (section == "isFunc" ? " (BRDF Explorer's importance-sampling function, which Glint does not use)"
-                                                 : " (Glint reads 'parameters' and 'shader')"),
-                        {path, lineNumber, column + 2 + tokens[1].column - 1}));
-                    skippedSection = section;
-                } else {
-                    bool& seen = named == Block::Parameters ? sawParameters : sawShader;
-                    if (seen) return makeError("a second '::begin " + section + "' block", here);
-                    seen = true;
-                }
-                block = named;
-                blockLine = lineNumber;
-                if (named == Block::Shader) file.shaderLine = lineNumber;
-            } else {
-                if (block != named || (named == Block::Skipped && section != skippedSection))
-                    return makeError("'::end " + section + "' without '::begin " + section + "'", here);
-                block = Block::None;
-            }
-            shaderLines += "\n";
-            continue;
-        }
-        if (block == Block::Shader) {
-            shaderLines += std::string(line) + "\n";
-            continue;
-        }
-        shaderLines += "\n";
-        if (block == Block::Skipped) continue;
-        if (content.empty() || content[0] == '#') continue;
-        if (block == Block::Parameters) {
-            auto param = parseBrdfParamLine(line, path, lineNumber);
-            if (!param) return param.error();
-            for (const BrdfFileParam& other : file.params)
-                if (other.name == param->name)
-                    return makeError("parameter '" + param->name + "' is declared twice (first at line " +
-                                         std::to_string(other.line) + ")",
-                                     {path, lineNumber, static_cast<int>(line.find(param->name, 4)) + 1});
-            if (static_cast<int>(file.params.size()) >= kMaxBrdfParameters)
-                return makeError("more than " + std::to_string(kMaxBrdfParameters) + " parameters", here);
-            file.params.push_back(std::move(*param));
-            continue;
-        }
-        if (!sawHeader) {
-            if (headerWord(content) == "analytic") {
-                sawHeader = true;
-                continue;
-            }
-            return makeError("the file must start with the line 'analytic' (only analytic BRDFs are supported; found '" +
-                                 std::string(content.substr(0, 40)) + "')",
-                             here);
-        }
-        return makeError("text outside a block (expected '::begin parameters' or '::begin shader')", here);
+        if (Status read = reader.readLine(line, content, {path, lineNumber, column}); !read) return read.error();
     }
-    if (block != Block::None)
-        return makeError("unterminated block: '::begin " +
-                             (block == Block::Shader ? std::string("shader") : block == Block::Parameters ? "parameters" : skippedSection) +
-                             "' has no matching ::end",
-                         {path, blockLine, 1});
-    if (!sawHeader) return makeError("the file must start with the line 'analytic'", {path, 1, 1});
-    if (!sawShader) return makeError("no '::begin shader' block", {path, lineNumber, 1});
-
-    const std::string code = withoutComments(shaderLines);
-    const ShaderNames names = scanShader(code);
-    if (!names.hasBrdf)
-        return makeError("the shader block defines no 'vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)'",
-                         {path, file.shaderLine, 1});
-    for (const ShaderNames::Uniform& uniform : names.uniforms) {
-        const auto param = std::find_if(file.params.begin(), file.params.end(),
-                                        [&](const BrdfFileParam& p) { return p.name == uniform.name; });
-        if (param == file.params.end()) continue;  // a uniform of the shader's own: left at zero
-        if (uniform.type != glslTypeOf(param->kind))
-            return makeError("'uniform " + uniform.type + " " + uniform.name +
-                                 "' does not match the parameter declared at line " + std::to_string(param->line) +
-                                 " (a " + glslTypeOf(param->kind) + ")",
-                             {path, 1 + static_cast<int>(std::count(code.begin(), code.begin() + uniform.offset, '\n')),
-                              static_cast<int>(uniform.offset - code.rfind('\n', uniform.offset))});
-        file.declaredUniforms.push_back(uniform.name);
-    }
-    file.shaderText = std::move(shaderLines);
-    file.sourceText = std::string(text);
-    file.topLevelNames = names.declared;
-    file.macroNames = names.macros;
-    return file;
+    return reader.finish(text, lineNumber);
 }
 
 Result<BrdfFile> loadBrdfFile(const std::string& path) { return parseTextFile(path, parseBrdfFile); }
