@@ -80,6 +80,99 @@ void appendInt32(std::string& out, int32_t value, Encoding encoding) {
     out.append(reinterpret_cast<const char*>(bytes), 4);
 }
 
+// The header: its lines up to the first element, the elements, and where the data starts.
+struct PlyHeader {
+    std::vector<Element> elements;
+    Encoding encoding = Encoding::Ascii;
+    std::string start;  // the lines before the first element (ply, format, comments)
+    size_t dataStart = 0;
+    int lines = 0;
+};
+
+// One `property` line's words after the keyword.
+Result<Property> readProperty(std::istringstream& words) {
+    Property property;
+    std::string first;
+    words >> first;
+    if (first != "list") {
+        property.type = first;
+        if (!typeSize(property.type)) return makeError("unknown type '" + first + "'");
+        return property;
+    }
+    property.list = true;
+    words >> property.countType >> property.type;
+    if (!typeSize(property.countType) || !typeSize(property.type)) return makeError("unknown list types");
+    return property;
+}
+
+Result<PlyHeader> readPlyHeader(std::string_view bytes, const std::string& name) {
+    PlyHeader header;
+    size_t& position = header.dataStart;
+    while (position < bytes.size()) {
+        const size_t end = std::min(bytes.find('\n', position), bytes.size());
+        const std::string text(trimmed(bytes.substr(position, end - position)));
+        const std::string raw(bytes.substr(position, end - position + (end < bytes.size() ? 1 : 0)));
+        position = end + 1;
+        ++header.lines;
+        auto fail = [&](const std::string& message) { return makeError("cannot load mesh: PLY header: " + message, {name, header.lines, 1}); };
+        std::istringstream words(text);
+        std::string keyword;
+        words >> keyword;
+        if (keyword == "end_header") return header;
+        if (keyword == "format") {
+            std::string kind;
+            words >> kind;
+            if (kind != "ascii" && kind != "binary_little_endian" && kind != "binary_big_endian") return fail("unknown format '" + kind + "'");
+            header.encoding = kind == "ascii" ? Encoding::Ascii : kind == "binary_big_endian" ? Encoding::BigEndian : Encoding::LittleEndian;
+            header.start += raw;
+        } else if (keyword == "element") {
+            Element element;
+            if (!(words >> element.name >> element.count) || element.count < 0) return fail("'element' needs a name and a count");
+            element.headerLines = raw;
+            header.elements.push_back(element);
+        } else if (keyword == "property") {
+            if (header.elements.empty()) return fail("a property before any element");
+            auto property = readProperty(words);
+            if (!property) return fail(property.error().message);
+            header.elements.back().properties.push_back(*property);
+            header.elements.back().headerLines += raw;
+        } else if (header.elements.empty()) {
+            header.start += raw;  // ply, comment, obj_info
+        }
+    }
+    return makeError("cannot load mesh: the PLY header ends without end_header (the file is cut short)", {name, header.lines, 1});
+}
+
+// The triangles of one record's strips: indices, −1 between strips; every other triangle is
+// wound the other way; degenerate ones are dropped.
+void appendStripTriangles(const std::vector<long long>& values, std::vector<int32_t>& triangles) {
+    size_t begin = 0;  // the strip's first index in `values`
+    for (size_t i = 0; i <= values.size(); ++i) {
+        if (i == values.size() || values[i] < 0) {  // -1 (or the end) ends a strip
+            begin = i + 1;
+            continue;
+        }
+        if (i - begin < 2) continue;
+        long long a = values[i - 2], b = values[i - 1], c = values[i];
+        if ((i - begin) % 2 == 1) std::swap(a, b);
+        if (a != b && b != c && a != c) triangles.insert(triangles.end(), {int32_t(a), int32_t(b), int32_t(c)});
+    }
+}
+
+// The face element's records, in the file's encoding.
+std::string faceRecords(const std::vector<int32_t>& triangles, Encoding encoding) {
+    std::string faces;
+    for (size_t t = 0; t < triangles.size(); t += 3) {
+        if (encoding == Encoding::Ascii) {
+            faces += "3 " + std::to_string(triangles[t]) + " " + std::to_string(triangles[t + 1]) + " " + std::to_string(triangles[t + 2]) + "\n";
+        } else {
+            faces.push_back(3);
+            for (int k = 0; k < 3; ++k) appendInt32(faces, triangles[t + k], encoding);
+        }
+    }
+    return faces;
+}
+
 }  // namespace
 
 bool plyHasTristrips(std::string_view start) {
@@ -92,112 +185,41 @@ bool plyHasTristrips(std::string_view start) {
 }
 
 Result<std::string> plyStripsToFaces(std::string_view bytes, const std::string& name) {
-    // --- header
-    std::vector<Element> elements;
-    Encoding encoding = Encoding::Ascii;
-    std::string headerStart;  // the lines before the first element (ply, format, comments)
-    size_t position = 0;
-    int line = 0;
-    bool ended = false;
-    while (position < bytes.size() && !ended) {
-        const size_t end = std::min(bytes.find('\n', position), bytes.size());
-        const std::string text(trimmed(bytes.substr(position, end - position)));
-        const std::string raw(bytes.substr(position, end - position + (end < bytes.size() ? 1 : 0)));
-        position = end + 1;
-        ++line;
-        auto fail = [&](const std::string& message) { return makeError("cannot load mesh: PLY header: " + message, {name, line, 1}); };
-        std::istringstream words(text);
-        std::string keyword;
-        words >> keyword;
-        if (keyword == "end_header") {
-            ended = true;
-        } else if (keyword == "format") {
-            std::string kind;
-            words >> kind;
-            encoding = kind == "ascii" ? Encoding::Ascii : kind == "binary_big_endian" ? Encoding::BigEndian : Encoding::LittleEndian;
-            if (kind != "ascii" && kind != "binary_little_endian" && kind != "binary_big_endian") return fail("unknown format '" + kind + "'");
-            headerStart += raw;
-        } else if (keyword == "element") {
-            Element element;
-            if (!(words >> element.name >> element.count) || element.count < 0) return fail("'element' needs a name and a count");
-            element.headerLines = raw;
-            elements.push_back(element);
-        } else if (keyword == "property") {
-            if (elements.empty()) return fail("a property before any element");
-            Property property;
-            std::string first;
-            words >> first;
-            if (first == "list") {
-                property.list = true;
-                words >> property.countType >> property.type;
-                if (!typeSize(property.countType) || !typeSize(property.type)) return fail("unknown list types");
-            } else {
-                property.type = first;
-                if (!typeSize(property.type)) return fail("unknown type '" + first + "'");
-            }
-            elements.back().properties.push_back(property);
-            elements.back().headerLines += raw;
-        } else if (elements.empty()) {
-            headerStart += raw;  // ply, comment, obj_info
-        }
-    }
-    if (!ended) return makeError("cannot load mesh: the PLY header ends without end_header (the file is cut short)", {name, line, 1});
-    // --- data: other elements copied, strips turned into triangles
-    Reader reader{bytes, position, encoding};
-    std::string header = headerStart, body;
+    auto parsed = readPlyHeader(bytes, name);
+    if (!parsed) return parsed.error();
+    const PlyHeader& ply = *parsed;
+    // The data: other elements copied, strips turned into triangles.
+    Reader reader{bytes, ply.dataStart, ply.encoding};
+    std::string header = ply.start, body;
     std::vector<int32_t> triangles;
-    for (const Element& element : elements) {
+    for (const Element& element : ply.elements) {
         const bool strips = element.name == "tristrips";
         if (!strips) header += element.headerLines;
         for (long long record = 0; record < element.count; ++record) {
             const size_t recordStart = reader.position;
-            auto cut = [&]() {
-                return makeError("cannot load mesh: element '" + element.name + "' record " + std::to_string(record) +
-                                     " is malformed or cut short",
-                                 {name, line, 1});
-            };
             std::vector<long long> values;
             for (const Property& property : element.properties) {
                 long long count = 1;
-                if (property.list && (!reader.integer(property.countType, count) || count < 0 || count > (1 << 28))) return cut();
-                for (long long i = 0; i < count; ++i) {
+                bool read = !property.list || (reader.integer(property.countType, count) && count >= 0 && count <= (1 << 28));
+                for (long long i = 0; read && i < count; ++i) {
                     long long value = 0;
-                    if (!reader.integer(property.type, value)) return cut();
+                    read = reader.integer(property.type, value);
                     if (strips && property.list) values.push_back(value);
                 }
+                if (!read)
+                    return makeError("cannot load mesh: element '" + element.name + "' record " + std::to_string(record) +
+                                         " is malformed or cut short",
+                                     {name, ply.lines, 1});
             }
-            if (!strips) {
-                if (encoding != Encoding::Ascii) body.append(bytes.substr(recordStart, reader.position - recordStart));
-                else body.append(trimmed(bytes.substr(recordStart, reader.position - recordStart))).push_back('\n');
-                continue;
-            }
-            size_t begin = 0;  // the strip's first index in `values`
-            for (size_t i = 0; i <= values.size(); ++i) {
-                if (i < values.size() && values[i] >= 0) {
-                    if (i - begin >= 2) {
-                        long long a = values[i - 2], b = values[i - 1], c = values[i];
-                        if ((i - begin) % 2 == 1) std::swap(a, b);  // every other triangle is wound the other way
-                        if (a != b && b != c && a != c)
-                            triangles.insert(triangles.end(), {int32_t(a), int32_t(b), int32_t(c)});
-                    }
-                    continue;
-                }
-                begin = i + 1;  // -1 (or the end) ends a strip
-            }
+            const std::string_view recordBytes = bytes.substr(recordStart, reader.position - recordStart);
+            if (strips) appendStripTriangles(values, triangles);
+            else if (ply.encoding != Encoding::Ascii) body.append(recordBytes);
+            else body.append(trimmed(recordBytes)).push_back('\n');
         }
     }
     header += "element face " + std::to_string(triangles.size() / 3) + "\nproperty list uchar int vertex_indices\nend_header\n";
-    std::string faces;
-    for (size_t t = 0; t < triangles.size(); t += 3) {
-        if (encoding == Encoding::Ascii) {
-            faces += "3 " + std::to_string(triangles[t]) + " " + std::to_string(triangles[t + 1]) + " " + std::to_string(triangles[t + 2]) + "\n";
-        } else {
-            faces.push_back(3);
-            for (int k = 0; k < 3; ++k) appendInt32(faces, triangles[t + k], encoding);
-        }
-    }
     // The face element goes last: after every element it replaces or follows.
-    return header + body + faces;
+    return header + body + faceRecords(triangles, ply.encoding);
 }
 
 }  // namespace glint
