@@ -314,6 +314,80 @@ using ReadFunction = std::function<const aiScene*(Assimp::Importer&, unsigned fl
 
 // `format`: the extension, lower case, without the dot; `meshFile`: the file read, "" for bytes in
 // memory; `splitParts`: one part per mesh instance, else one part holding them all.
+// The file as assimp reads it, checked (checkMesh) and triangulated where it has polygons.
+// Triangulate is the only step asked of assimp: welding, normals, tangents and the checks are
+// Glint's own (checkMesh, MeshBuilder), the same for every format.
+Result<const aiScene*> readCheckedScene(const ReadFunction& read, Assimp::Importer& importer, const ProgressRelay& relay,
+                                        const MeshIoSystem& files, const std::string& name) {
+    const aiScene* scene = read(importer, 0);
+    if (relay.cancelled()) return makeError(kCancelledMessage, {name});
+    if (!scene) return importError(name, importer.GetErrorString(), files);
+    if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes) return makeError("cannot load mesh: the file holds no triangles", {name});
+    bool hasPolygons = false;
+    for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+        if (!scene->mMeshes[i]) return makeError("cannot load mesh: mesh " + std::to_string(i) + " is missing", {name});
+        if (auto error = checkMesh(*scene->mMeshes[i], i, name, hasPolygons)) return *error;
+    }
+    if (!hasPolygons) return scene;
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+    if (relay.cancelled()) return makeError(kCancelledMessage, {name});
+    if (!scene) return importError(name, importer.GetErrorString(), files);
+    return scene;
+}
+
+// The whole file's statistics, counted before parts without triangles are left out (what they
+// dropped counts); an error when no triangle is left.
+Result<MeshStatistics> wholeFileStatistics(std::vector<Merger::Part>& parts, const std::string& name) {
+    MeshStatistics whole;
+    size_t trianglesKept = 0;
+    for (Merger::Part& part : parts) {
+        part.statistics.degenerateTrianglesDropped = part.builder.degenerateTrianglesDropped();
+        trianglesKept += part.builder.triangleCount();
+        whole.hadNormals = whole.hadNormals || part.statistics.hadNormals;
+        whole.hadUvs = whole.hadUvs || part.statistics.hadUvs;
+        whole.degenerateTrianglesDropped += part.statistics.degenerateTrianglesDropped;
+        whole.pointsAndLinesDropped += part.statistics.pointsAndLinesDropped;
+        whole.meshesMerged += part.statistics.meshesMerged;
+    }
+    if (trianglesKept > 0) return whole;
+    return makeError(whole.degenerateTrianglesDropped > 0 ? "cannot load mesh: every triangle has zero area (" +
+                                                                std::to_string(whole.degenerateTrianglesDropped) + " dropped)"
+                                                          : "cannot load mesh: the file holds no triangles",
+                     {name});
+}
+
+// Each part's mesh (progress 0.9 to 0.99), turned Y-up; none when the user cancelled.
+std::optional<std::vector<Mesh>> buildParts(std::vector<Merger::Part>& parts, ProgressRelay& relay, MeshUpAxis upAxis) {
+    std::vector<Mesh> meshes;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        const float done = static_cast<float>(i), count = static_cast<float>(parts.size());
+        std::optional<Mesh> mesh = parts[i].builder.build([&](float fraction) { return relay.offer(0.9f + 0.09f * (done + fraction) / count); });
+        if (!mesh) return std::nullopt;
+        if (upAxis == MeshUpAxis::Z) turnZUpToYUp(*mesh);
+        meshes.push_back(std::move(*mesh));
+    }
+    return meshes;
+}
+
+// The parts with their statistics, and the whole file's sums and bounds.
+void addParts(std::vector<Mesh>& meshes, std::vector<MeshStatistics>& statistics, const std::vector<Merger::Part>& parts,
+              double seconds, ImportedParts& imported) {
+    imported.statistics.loadSeconds = seconds;
+    imported.statistics.boundsMin = glm::vec3(std::numeric_limits<float>::max());
+    imported.statistics.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        statistics[i].vertexCount = meshes[i].vertices.size();
+        statistics[i].triangleCount = meshes[i].triangleCount();
+        statistics[i].loadSeconds = seconds;
+        imported.statistics.vertexCount += statistics[i].vertexCount;
+        imported.statistics.triangleCount += statistics[i].triangleCount;
+        imported.statistics.boundsMin = glm::min(imported.statistics.boundsMin, statistics[i].boundsMin);
+        imported.statistics.boundsMax = glm::max(imported.statistics.boundsMax, statistics[i].boundsMax);
+        imported.parts.push_back({parts[i].name, parts[i].materialIndex, parts[i].materialName,
+                                  ImportedMesh{std::make_shared<const Mesh>(std::move(meshes[i])), statistics[i]}});
+    }
+}
+
 Result<ImportedParts> importWith(const ReadFunction& read, const std::string& name, const std::string& meshFile,
                                  const std::string& format, const MeshImportOptions& options, const MeshImportProgress& progress,
                                  bool splitParts) {
@@ -326,82 +400,27 @@ Result<ImportedParts> importWith(const ReadFunction& read, const std::string& na
     auto* files = new MeshIoSystem(meshFile);
     importer.SetIOHandler(files);  // the importer owns and deletes it too
     try {
-        // Triangulate (where there are polygons, after the checks) is the only step asked of
-        // assimp: welding, normals, tangents and the checks are Glint's own (checkMesh,
-        // MeshBuilder), the same for every format.
-        const aiScene* scene = read(importer, 0);
-        if (relay->cancelled()) return makeError(kCancelledMessage, {name});
-        if (!scene) return importError(name, importer.GetErrorString(), *files);
-        if (!scene->mRootNode || scene->mNumMeshes == 0 || !scene->mMeshes)
-            return makeError("cannot load mesh: the file holds no triangles", {name});
-        bool hasPolygons = false;
-        for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-            if (!scene->mMeshes[i]) return makeError("cannot load mesh: mesh " + std::to_string(i) + " is missing", {name});
-            if (auto error = checkMesh(*scene->mMeshes[i], i, name, hasPolygons)) return *error;
-        }
-        if (hasPolygons) {
-            scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
-            if (relay->cancelled()) return makeError(kCancelledMessage, {name});
-            if (!scene) return importError(name, importer.GetErrorString(), *files);
-        }
-        Merger merger{*scene, *relay, name, format == "stl", options.smoothingAngleDegrees, splitParts, {}};
+        auto scene = readCheckedScene(read, importer, *relay, *files, name);
+        if (!scene) return scene.error();
+        Merger merger{**scene, *relay, name, format == "stl", options.smoothingAngleDegrees, splitParts, {}};
         merger.run();
         if (merger.error) return *merger.error;
         importer.FreeScene();  // everything is in the builders now
 #ifdef __GLIBC__
         malloc_trim(0);  // hands the scene's many small blocks back to the system (peak memory)
 #endif
-        size_t trianglesKept = 0, degenerateTriangles = 0;
-        for (Merger::Part& part : merger.parts) {
-            part.statistics.degenerateTrianglesDropped = part.builder.degenerateTrianglesDropped();
-            trianglesKept += part.builder.triangleCount();
-            degenerateTriangles += part.statistics.degenerateTrianglesDropped;
-        }
-        if (trianglesKept == 0)
-            return makeError(degenerateTriangles > 0 ? "cannot load mesh: every triangle has zero area (" +
-                                                           std::to_string(degenerateTriangles) + " dropped)"
-                                                     : "cannot load mesh: the file holds no triangles",
-                             {name});
-        MeshStatistics whole;  // before parts without triangles are left out: what they dropped counts
-        for (const Merger::Part& part : merger.parts) {
-            whole.hadNormals = whole.hadNormals || part.statistics.hadNormals;
-            whole.hadUvs = whole.hadUvs || part.statistics.hadUvs;
-            whole.degenerateTrianglesDropped += part.statistics.degenerateTrianglesDropped;
-            whole.pointsAndLinesDropped += part.statistics.pointsAndLinesDropped;
-            whole.meshesMerged += part.statistics.meshesMerged;
-        }
+        auto whole = wholeFileStatistics(merger.parts, name);
+        if (!whole) return whole.error();
         std::erase_if(merger.parts, [](const Merger::Part& part) { return part.builder.triangleCount() == 0; });
-        std::vector<Mesh> meshes;
+        auto meshes = buildParts(merger.parts, *relay, options.upAxis);
+        if (!meshes) return makeError(kCancelledMessage, {name});
         std::vector<MeshStatistics> statistics;
-        for (size_t i = 0; i < merger.parts.size(); ++i) {
-            const float done = static_cast<float>(i), count = static_cast<float>(merger.parts.size());
-            std::optional<Mesh> mesh = merger.parts[i].builder.build(
-                [&](float fraction) { return relay->offer(0.9f + 0.09f * (done + fraction) / count); });
-            if (!mesh) return makeError(kCancelledMessage, {name});
-            if (options.upAxis == MeshUpAxis::Z) turnZUpToYUp(*mesh);
-            meshes.push_back(std::move(*mesh));
-            statistics.push_back(merger.parts[i].statistics);
-        }
-        auto frame = normalise(meshes, statistics);
+        for (const Merger::Part& part : merger.parts) statistics.push_back(part.statistics);
+        auto frame = normalise(*meshes, statistics);
         if (!frame) return makeError("cannot load mesh: " + frame.error().message, {name});
         relay->report(1.0f);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        ImportedParts imported{{}, whole, frame->first, frame->second};
-        imported.statistics.loadSeconds = seconds;
-        imported.statistics.boundsMin = glm::vec3(std::numeric_limits<float>::max());
-        imported.statistics.boundsMax = glm::vec3(-std::numeric_limits<float>::max());
-        for (size_t i = 0; i < meshes.size(); ++i) {
-            statistics[i].vertexCount = meshes[i].vertices.size();
-            statistics[i].triangleCount = meshes[i].triangleCount();
-            statistics[i].loadSeconds = seconds;
-            imported.statistics.vertexCount += statistics[i].vertexCount;
-            imported.statistics.triangleCount += statistics[i].triangleCount;
-            imported.statistics.boundsMin = glm::min(imported.statistics.boundsMin, statistics[i].boundsMin);
-            imported.statistics.boundsMax = glm::max(imported.statistics.boundsMax, statistics[i].boundsMax);
-            const Merger::Part& part = merger.parts[i];
-            imported.parts.push_back({part.name, part.materialIndex, part.materialName,
-                                      ImportedMesh{std::make_shared<const Mesh>(std::move(meshes[i])), statistics[i]}});
-        }
+        ImportedParts imported{{}, *whole, frame->first, frame->second};
+        addParts(*meshes, statistics, merger.parts, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), imported);
         return imported;
     } catch (const CancelImport&) {
         return makeError(kCancelledMessage, {name});
