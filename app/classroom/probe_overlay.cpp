@@ -153,43 +153,35 @@ std::string probeAngle(const char* name, float degrees) {
     return text;
 }
 
-}  // namespace
+// The probed pixel, crossed: the ray sees the background.
+void drawMissedPixel(ImDrawList* drawList, const ProbeResult& probe, const ProbeOverlayArea& area, const ProbeStroke& stroke) {
+    const float scaleX = area.width / static_cast<float>(probe.width), scaleY = area.height / static_cast<float>(probe.height);
+    const ImVec2 at(area.x + (probe.pixelX + 0.5f) * scaleX, area.y + (probe.pixelY + 0.5f) * scaleY);
+    const float arm = 6.0f * stroke.scale;
+    drawList->AddLine(ImVec2(at.x - arm, at.y - arm), ImVec2(at.x + arm, at.y + arm), kProbeNormalColor, stroke.line());
+    drawList->AddLine(ImVec2(at.x - arm, at.y + arm), ImVec2(at.x + arm, at.y - arm), kProbeNormalColor, stroke.line());
+    probeLabel(drawList, ImVec2(at.x + arm * 1.5f, at.y - arm), kProbeNormalColor, "no surface", stroke);
+}
 
-ProbeOverlayRects drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Camera& camera,
-                                   const ProbeOverlayArea& area, ProbeLegendCorner corner) {
-    const ProbeProjector project{camera.viewProjection(area.width / area.height), area};
-    const ProbeStroke stroke{ImGui::GetFontSize() / 17.0f};
-    ProbeLabels labels;
-    drawList->PushClipRect(ImVec2(area.x, area.y), ImVec2(area.x + area.width, area.y + area.height), true);
-    if (!probe.hitSurface) {
-        // The probed pixel, crossed: the ray sees the background.
-        const float scaleX = area.width / static_cast<float>(probe.width), scaleY = area.height / static_cast<float>(probe.height);
-        const ImVec2 at(area.x + (probe.pixelX + 0.5f) * scaleX, area.y + (probe.pixelY + 0.5f) * scaleY);
-        const float arm = 6.0f * stroke.scale;
-        drawList->AddLine(ImVec2(at.x - arm, at.y - arm), ImVec2(at.x + arm, at.y + arm), kProbeNormalColor, stroke.line());
-        drawList->AddLine(ImVec2(at.x - arm, at.y + arm), ImVec2(at.x + arm, at.y - arm), kProbeNormalColor, stroke.line());
-        probeLabel(drawList, ImVec2(at.x + arm * 1.5f, at.y - arm), kProbeNormalColor, "no surface", stroke);
-        drawList->PopClipRect();
-        return {};
-    }
-    // Arrow length: a fixed fraction of the view's height at the point's depth [m].
-    const float viewHeight = camera.projection == Projection::Orthographic
-                                 ? camera.orthoHeight
-                                 : 2.0f * probe.hitDistance * std::tan(glm::radians(0.5f * camera.verticalFovDegrees));
-    const float length = kProbeArrowFraction * viewHeight;
-    const glm::vec3 point = probe.position;
-    // Arrows carry short names; the angles go into a legend in the corner, one line per light.
+// A light's arrows are numbered when there are several lights; a light that cannot reach the
+// point is drawn dark.
+std::string lightIndex(const ProbeResult& probe, const ProbeLight& light) {
+    return probe.lights.size() > 1 ? std::to_string(light.lightIndex + 1) : "";
+}
+ImU32 lightColor(const ProbeLight& light) { return light.behindSurface || light.shadowed ? kProbeDarkLightColor : kProbeLightColor; }
+
+// The angles, one line per light (the arrows carry only short names).
+std::vector<ProbeLegendLine> probeLegendLines(const ProbeResult& probe) {
     std::vector<ProbeLegendLine> legend;
-    legend.push_back({{{kProbeViewColor, "V" + probeAngle("θr", probe.lights.empty() ? glm::degrees(std::acos(std::clamp(
-                                             glm::dot(probe.normal, probe.towardsViewer), -1.0f, 1.0f)))
-                                                                               : probe.lights[0].reflectedDegrees)}}});
-    const bool severalLights = probe.lights.size() > 1;
+    const float viewDegrees = probe.lights.empty()
+                                  ? glm::degrees(std::acos(std::clamp(glm::dot(probe.normal, probe.towardsViewer), -1.0f, 1.0f)))
+                                  : probe.lights[0].reflectedDegrees;
+    legend.push_back({{{kProbeViewColor, "V" + probeAngle("θr", viewDegrees)}}});
     for (const ProbeLight& light : probe.lights) {
-        const std::string index = severalLights ? std::to_string(light.lightIndex + 1) : "";
-        const ImU32 lightColor = light.behindSurface || light.shadowed ? kProbeDarkLightColor : kProbeLightColor;
+        const std::string index = lightIndex(probe, light);
         ProbeLegendLine line;
-        line.pieces.push_back({lightColor, "L" + index + probeAngle("θi", light.incidentDegrees) +
-                                               (light.shadowed ? " (shadow)" : "") + (light.behindSurface ? " (behind)" : "")});
+        line.pieces.push_back({lightColor(light), "L" + index + probeAngle("θi", light.incidentDegrees) +
+                                                      (light.shadowed ? " (shadow)" : "") + (light.behindSurface ? " (behind)" : "")});
         line.pieces.push_back({kProbeHalfColor, "  H" + index + probeAngle("∠NH", light.halfDegrees)});
         line.pieces.push_back({kProbeMirrorColor, "  R" + index + probeAngle("∠RV", light.mirrorViewDegrees)});
         if (light.transmitted && !light.transmitted->totalInternalReflection)
@@ -202,51 +194,78 @@ ProbeOverlayRects drawProbeOverlay(ImDrawList* drawList, const ProbeResult& prob
                                                      ? "view ray: total internal reflection" + probeAngle("θi", view.incidentDegrees)
                                                      : "T(V)" + probeAngle("θt", view.transmittedDegrees)}}});
     }
-    // The legend first, so no arrow label lands on it.
-    const ImVec2 legendSize = probeLegendSize(legend);
-    const float margin = 6.0f * stroke.scale;
-    const ImVec2 legendAt(area.x + margin, corner == ProbeLegendCorner::TopLeft ? area.y + margin
-                                                                                 : area.y + area.height - margin - legendSize.y);
-    labels.taken.emplace_back(legendAt.x - 3, legendAt.y - 2, legendAt.x + legendSize.x + 3, legendAt.y + legendSize.y + 2);
-    // N and V first: the labels placed first keep the spot beyond their tips.
+    return legend;
+}
+
+// N and V first: the labels placed first keep the spot beyond their tips. `length` [m].
+void drawProbeArrows(ImDrawList* drawList, const ProbeResult& probe, const ProbeProjector& project, float length,
+                     const ProbeStroke& stroke, ProbeLabels& labels) {
+    const glm::vec3 point = probe.position;
     probeArrow(drawList, project, point, probe.normal, length, kProbeNormalColor, "N", stroke, labels);
     probeArrow(drawList, project, point, probe.towardsViewer, length * 0.6f, kProbeViewColor, "V", stroke, labels);
     for (const ProbeLight& light : probe.lights) {
-        const std::string index = severalLights ? std::to_string(light.lightIndex + 1) : "";
-        const ImU32 lightColor = light.behindSurface || light.shadowed ? kProbeDarkLightColor : kProbeLightColor;
-        probeArrow(drawList, project, point, light.towardsLight, length, lightColor, "L" + index, stroke, labels);
+        const std::string index = lightIndex(probe, light);
+        probeArrow(drawList, project, point, light.towardsLight, length, lightColor(light), "L" + index, stroke, labels);
         probeArrow(drawList, project, point, light.halfVector, length * 0.8f, kProbeHalfColor, "H" + index, stroke, labels);
         probeArrow(drawList, project, point, light.mirror, length * 0.9f, kProbeMirrorColor, "R" + index, stroke, labels);
         if (light.transmitted && !light.transmitted->totalInternalReflection)
             probeArrow(drawList, project, point, light.transmitted->direction, length * 0.9f, kProbeTransmitColor, "T" + index,
                        stroke, labels);
     }
-    if (probe.viewTransmitted) {
-        const ProbeRefraction& view = *probe.viewTransmitted;
-        if (view.totalInternalReflection)
-            probeArrow(drawList, project, point, probe.viewMirror, length * 0.9f, kProbeTransmitColor, "TIR", stroke, labels);
-        else probeArrow(drawList, project, point, view.direction, length, kProbeTransmitColor, "T(V)", stroke, labels);
-    }
-    probeLegend(drawList, legendAt, legend);
-    if (const auto at = project(point)) {
-        drawList->AddCircleFilled(*at, 4.5f * stroke.scale, kProbeShadowColor);
-        drawList->AddCircleFilled(*at, 3.0f * stroke.scale, kProbeNormalColor);
-    }
-    drawList->PopClipRect();
-    ProbeOverlayRects rects;
-    rects.legend = {legendAt.x - 3, legendAt.y - 2, legendSize.x + 6, legendSize.y + 4};
-    ImVec4 box(1e9f, 1e9f, -1e9f, -1e9f);  // the labels (the legend is the first "taken" rectangle) and the point
+    if (!probe.viewTransmitted) return;
+    const ProbeRefraction& view = *probe.viewTransmitted;
+    if (view.totalInternalReflection)
+        probeArrow(drawList, project, point, probe.viewMirror, length * 0.9f, kProbeTransmitColor, "TIR", stroke, labels);
+    else probeArrow(drawList, project, point, view.direction, length, kProbeTransmitColor, "T(V)", stroke, labels);
+}
+
+// What the arrows and their labels cover (the legend, the first "taken" rectangle, aside), within the area.
+ProbeOverlayArea arrowsRect(const ProbeLabels& labels, std::optional<ImVec2> point, const ProbeOverlayArea& area) {
+    ImVec4 box(1e9f, 1e9f, -1e9f, -1e9f);
     for (size_t i = 1; i < labels.taken.size(); ++i) {
         const ImVec4& r = labels.taken[i];
         box = ImVec4(std::min(box.x, r.x), std::min(box.y, r.y), std::max(box.z, r.z), std::max(box.w, r.w));
     }
-    if (const auto at = project(point))
-        box = ImVec4(std::min(box.x, at->x), std::min(box.y, at->y), std::max(box.z, at->x), std::max(box.w, at->y));
-    if (box.z > box.x) {
-        box = ImVec4(std::max(box.x, area.x), std::max(box.y, area.y), std::min(box.z, area.x + area.width),
-                     std::min(box.w, area.y + area.height));
-        rects.arrows = {box.x, box.y, std::max(0.0f, box.z - box.x), std::max(0.0f, box.w - box.y)};
+    if (point) box = ImVec4(std::min(box.x, point->x), std::min(box.y, point->y), std::max(box.z, point->x), std::max(box.w, point->y));
+    if (box.z <= box.x) return {};
+    box = ImVec4(std::max(box.x, area.x), std::max(box.y, area.y), std::min(box.z, area.x + area.width), std::min(box.w, area.y + area.height));
+    return {box.x, box.y, std::max(0.0f, box.z - box.x), std::max(0.0f, box.w - box.y)};
+}
+
+}  // namespace
+
+ProbeOverlayRects drawProbeOverlay(ImDrawList* drawList, const ProbeResult& probe, const Camera& camera,
+                                   const ProbeOverlayArea& area, ProbeLegendCorner corner) {
+    const ProbeProjector project{camera.viewProjection(area.width / area.height), area};
+    const ProbeStroke stroke{ImGui::GetFontSize() / 17.0f};
+    drawList->PushClipRect(ImVec2(area.x, area.y), ImVec2(area.x + area.width, area.y + area.height), true);
+    if (!probe.hitSurface) {
+        drawMissedPixel(drawList, probe, area, stroke);
+        drawList->PopClipRect();
+        return {};
     }
+    // The legend first, so no arrow label lands on it.
+    const std::vector<ProbeLegendLine> legend = probeLegendLines(probe);
+    const ImVec2 legendSize = probeLegendSize(legend);
+    const float margin = 6.0f * stroke.scale;
+    const ImVec2 legendAt(area.x + margin, corner == ProbeLegendCorner::TopLeft ? area.y + margin : area.y + area.height - margin - legendSize.y);
+    ProbeLabels labels;
+    labels.taken.emplace_back(legendAt.x - 3, legendAt.y - 2, legendAt.x + legendSize.x + 3, legendAt.y + legendSize.y + 2);
+    // Arrow length: a fixed fraction of the view's height at the point's depth [m].
+    const float viewHeight = camera.projection == Projection::Orthographic
+                                 ? camera.orthoHeight
+                                 : 2.0f * probe.hitDistance * std::tan(glm::radians(0.5f * camera.verticalFovDegrees));
+    drawProbeArrows(drawList, probe, project, kProbeArrowFraction * viewHeight, stroke, labels);
+    probeLegend(drawList, legendAt, legend);
+    const std::optional<ImVec2> point = project(probe.position);
+    if (point) {
+        drawList->AddCircleFilled(*point, 4.5f * stroke.scale, kProbeShadowColor);
+        drawList->AddCircleFilled(*point, 3.0f * stroke.scale, kProbeNormalColor);
+    }
+    drawList->PopClipRect();
+    ProbeOverlayRects rects;
+    rects.legend = {legendAt.x - 3, legendAt.y - 2, legendSize.x + 6, legendSize.y + 4};
+    rects.arrows = arrowsRect(labels, point, area);
     return rects;
 }
 
