@@ -109,6 +109,68 @@ bool dragChannels(const char* label, float* values, float minimum, float maximum
     return changed;
 }
 
+// A Scalar's slider; Ctrl+click typing may go past the slider but never past the valid range.
+bool drawScalar(const ParamSpec& spec, const char* label, float* value, std::string& refusal) {
+    std::string format = "%.4g";
+    if (*spec.unit) format += std::string(" ") + spec.unit;
+    ImGuiSliderFlags flags = ImGuiSliderFlags_NoRoundToFormat;
+    if (spec.scale == ParamScale::Log) flags |= ImGuiSliderFlags_Logarithmic;
+    float edited = *value;
+    if (!editNumbers(spec.label, &edited, 1, [&](float* typed) {
+            return ImGui::SliderFloat(label, typed, spec.sliderMin, spec.sliderMax, format.c_str(), flags);
+        }))
+        return false;
+    if (!spec.accepts(edited)) {
+        refusal = std::string(spec.label) + ": " + formatNumber(edited) + " refused; it must be " + formatRange(spec);
+        return false;
+    }
+    *value = edited;
+    refusal.clear();
+    return true;
+}
+
+// A PerChannel's three linear numbers (an index of refraction, an absorption coefficient: not a
+// colour), or a Color's picker in sRGB.
+bool drawChannels(const ParamSpec& spec, const char* label, float* value, std::string& refusal) {
+    if (spec.kind == ParamKind::PerChannel) {
+        float edited[3] = {value[0], value[1], value[2]};
+        return editNumbers(spec.label, edited, 3, [&](float* typed) { return dragChannels(label, typed, spec.sliderMin, spec.sliderMax); }) &&
+               takeChannels(spec, edited, value, refusal);
+    }
+    float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
+    if (!editNumbers(spec.label, encoded, 3, [&](float* typed) { return ImGui::ColorEdit3(label, typed, ImGuiColorEditFlags_Float); }))
+        return false;
+    const float linear[3] = {decodeSrgb(encoded[0]), decodeSrgb(encoded[1]), decodeSrgb(encoded[2])};
+    return takeChannels(spec, linear, value, refusal);
+}
+
+bool drawEnum(const ParamSpec& spec, const char* label, float* value) {
+    const int selected = static_cast<int>(*value);
+    if (!ImGui::BeginCombo(label, spec.options[selected].label)) return false;
+    bool changed = false;
+    for (size_t i = 0; i < spec.options.size(); ++i) {
+        if (ImGui::Selectable(spec.options[i].label, selected == static_cast<int>(i))) {
+            *value = static_cast<float>(i);
+            changed = true;
+        }
+    }
+    ImGui::EndCombo();
+    return changed;
+}
+
+// The parameter's help, and what a value kept just above 0 means.
+void paramTooltip(const ParamSpec& spec, const float* value) {
+    const bool nearZero = spec.kind == ParamKind::PerChannel && std::any_of(value, value + 3, [](float v) { return v > 0.0f && v < kShownAsZero; });
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(spec.help);
+    if (nearZero)
+        ImGui::Text("≈ 0: below %g, kept just above 0 (%g) as the value must be positive; for a metal's index n, "
+                    "all of that colour is reflected.", kShownAsZero, *std::min_element(value, value + 3));
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 // Typed values beyond the slider are kept when the table's valid range allows them, and refused
 // with a message in `refusal` when it does not (never clamped silently). `buttonsAfter` names the
 // buttons the caller puts on the same line, so that the widget leaves room for them.
@@ -118,76 +180,17 @@ bool drawParam(const ParamSpec& spec, float* value, std::string& refusal, const 
     const std::string shown = placeParamLabel(spec, buttonsAfter);
     const char* label = shown.c_str();
     switch (spec.kind) {
-        case ParamKind::Scalar: {
-            std::string format = "%.4g";
-            if (*spec.unit) format += std::string(" ") + spec.unit;
-            ImGuiSliderFlags flags = ImGuiSliderFlags_NoRoundToFormat;
-            if (spec.scale == ParamScale::Log) flags |= ImGuiSliderFlags_Logarithmic;
-            float edited = *value;
-            if (editNumbers(spec.label, &edited, 1, [&](float* typed) {
-                    return ImGui::SliderFloat(label, typed, spec.sliderMin, spec.sliderMax, format.c_str(), flags);
-                })) {
-                // Ctrl+click typing may go past the slider but never past the valid range.
-                if (spec.accepts(edited)) {
-                    *value = edited, changed = true;
-                    refusal.clear();
-                } else {
-                    refusal = std::string(spec.label) + ": " + formatNumber(edited) + " refused; it must be " + formatRange(spec);
-                }
-            }
-            break;
-        }
-        case ParamKind::PerChannel: {
-            // Not a colour (an index of refraction, an absorption coefficient): three linear numbers.
-            float edited[3] = {value[0], value[1], value[2]};
-            if (editNumbers(spec.label, edited, 3, [&](float* typed) {
-                    return dragChannels(label, typed, spec.sliderMin, spec.sliderMax);
-                }))
-                changed = takeChannels(spec, edited, value, refusal);
-            break;
-        }
-        case ParamKind::Color: {
-            float encoded[3] = {encodeSrgb(value[0]), encodeSrgb(value[1]), encodeSrgb(value[2])};
-            if (editNumbers(spec.label, encoded, 3, [&](float* typed) {
-                    return ImGui::ColorEdit3(label, typed, ImGuiColorEditFlags_Float);
-                })) {
-                const float linear[3] = {decodeSrgb(encoded[0]), decodeSrgb(encoded[1]), decodeSrgb(encoded[2])};
-                changed = takeChannels(spec, linear, value, refusal);
-            }
-            break;
-        }
+        case ParamKind::Scalar: changed = drawScalar(spec, label, value, refusal); break;
+        case ParamKind::PerChannel:
+        case ParamKind::Color: changed = drawChannels(spec, label, value, refusal); break;
         case ParamKind::Bool: {
             bool checked = *value != 0.0f;
             if (ImGui::Checkbox(label, &checked)) *value = checked ? 1.0f : 0.0f, changed = true;
             break;
         }
-        case ParamKind::Enum: {
-            int selected = static_cast<int>(*value);
-            const char* preview = spec.options[selected].label;
-            if (ImGui::BeginCombo(label, preview)) {
-                for (size_t i = 0; i < spec.options.size(); ++i) {
-                    if (ImGui::Selectable(spec.options[i].label, selected == static_cast<int>(i))) {
-                        *value = static_cast<float>(i);
-                        changed = true;
-                    }
-                }
-                ImGui::EndCombo();
-            }
-            break;
-        }
+        case ParamKind::Enum: changed = drawEnum(spec, label, value); break;
     }
-    if (ImGui::IsItemHovered() && *spec.help) {
-        const bool nearZero = spec.kind == ParamKind::PerChannel &&
-                              std::any_of(value, value + 3, [](float v) { return v > 0.0f && v < kShownAsZero; });
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-        ImGui::TextUnformatted(spec.help);
-        if (nearZero)
-            ImGui::Text("≈ 0: below %g, kept just above 0 (%g) as the value must be positive; for a metal's index n, "
-                        "all of that colour is reflected.", kShownAsZero, *std::min_element(value, value + 3));
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
+    if (ImGui::IsItemHovered() && *spec.help) paramTooltip(spec, value);
     ImGui::SameLine();
     if (ImGui::SmallButton("R")) {
         for (int c = 0; c < componentCount(spec.kind); ++c) value[c] = spec.defaultValue[c];
