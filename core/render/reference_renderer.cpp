@@ -105,10 +105,10 @@ struct HitResponse {
     glm::vec3 specular;
 };
 
-// shadeHit's terms at the hit itself; `breakdown`, when given, receives each term (the surface
-// probe's hook), else only the sum is returned.
-glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
-                     uint32_t pixelSeed, ShadingBreakdown* breakdown) {
+// How the hit's material responds there: its values and frame after textures, f_r, and the
+// ambient, environment and traced delta-lobe terms.
+HitResponse responseAt(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
+                       uint32_t pixelSeed) {
     const SceneObject& object = scene.objects.at(hit.objectIndex);
     // Textures (texture/texture_eval.h): the parameter values and the normal at this point.
     const TexturePoint texturePoint = hitTexturePoint(scene, hit);
@@ -118,7 +118,7 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
     const auto* sphereShape = std::get_if<SphereShape>(&object.shape);
     if (sphereShape && !drawnAsTriangles(object.shape, object.interpolation))
         sphere = SphereGeometry{sphereShape->center, sphereShape->radius};
-    const HitResponse response = std::visit(
+    return std::visit(
         Overloaded{
             [&](const AnalyticMaterial& analytic) {
                 const BrdfModel model = analytic.model;
@@ -152,24 +152,35 @@ glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 toward
                 return {};
             }},
         scene.materials.at(object.materialIndex).kind);
-    const ShadingFrame& frame = response.frame;
+}
+
+// The delta lights' sum: L_o = Σ f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: a shadow ray). With a
+// breakdown, every light's term, those that add nothing too.
+glm::vec3 directLight(const Scene& scene, const SurfaceHit& hit, const HitResponse& response, ShadingBreakdown* breakdown) {
     glm::vec3 radiance(0.0f);
     for (size_t lightIndex = 0; lightIndex < scene.lights.size(); ++lightIndex) {
         const Light& light = scene.lights[lightIndex];
-        if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: below
+        if (!light.enabled || light.type == LightType::Ambient) continue;  // ambient: apart
         const LightArrival arrival = lightArrival(light, hit.position);
-        const float cosTheta = frame.cosTheta(arrival.towardsLight);
+        const float cosTheta = response.frame.cosTheta(arrival.towardsLight);
         if (cosTheta <= 0.0f && !breakdown) continue;
-        // Rendering equation for a delta light: L_o = f_r(ω_i, ω_o) · E⊥ · cos θ_i · V (V: shadow ray).
         const float visibility = cosTheta <= 0.0f ? 0.0f : lightVisibility(scene, light, hit, arrival);
         if (visibility == 0.0f && !breakdown) continue;
         const glm::vec3 brdf = response.brdf(arrival.towardsLight);
-        const glm::vec3 reflected =
-            visibility == 0.0f ? glm::vec3(0.0f) : brdf * arrival.normalIrradiance * cosTheta;
+        const glm::vec3 reflected = visibility == 0.0f ? glm::vec3(0.0f) : brdf * arrival.normalIrradiance * cosTheta;
         radiance += reflected;
-        if (breakdown)
-            breakdown->lights.push_back({static_cast<int>(lightIndex), arrival, cosTheta, visibility, brdf, reflected});
+        if (breakdown) breakdown->lights.push_back({static_cast<int>(lightIndex), arrival, cosTheta, visibility, brdf, reflected});
     }
+    return radiance;
+}
+
+// shadeHit's terms at the hit itself; `breakdown`, when given, receives each term (the surface
+// probe's hook), else only the sum is returned.
+glm::vec3 shadeAtHit(const Scene& scene, const SurfaceHit& hit, glm::vec3 towardsViewer, const ReferenceOptions& options,
+                     uint32_t pixelSeed, ShadingBreakdown* breakdown) {
+    const HitResponse response = responseAt(scene, hit, towardsViewer, options, pixelSeed);
+    const ShadingFrame& frame = response.frame;
+    glm::vec3 radiance = directLight(scene, hit, response, breakdown);
     // Ambient: uniform radiance L_a from every direction reflects as k_a·L_a.
     glm::vec3 ambient(0.0f);
     for (const Light& light : scene.lights) ambient += ambientRadiance(light);
