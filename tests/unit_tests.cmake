@@ -66,6 +66,7 @@ glint_add_gtests(gltf_assimp_tests SHARDS 1)
 add_executable(editor_tests editor_compare_test.cpp editor_document_test.cpp editor_objects_test.cpp editor_interchange_test.cpp
   editor_brdf_test.cpp editor_environment_test.cpp)
 target_sources(editor_tests PRIVATE editor_refresh_test.cpp)  # reduced frames while dragging, then the full one
+target_sources(editor_tests PRIVATE viewport_presenter_test.cpp)  # the rectangles redrawn and what each shows
 # Classroom: lessons and presentation mode; the CIE plot drawn headless (its own OSMesa context).
 target_sources(editor_tests PRIVATE editor_classroom_test.cpp cmf_plot_headless_test.cpp)
 target_sources(editor_tests PRIVATE editor_window_placement_test.cpp)  # where floating windows open

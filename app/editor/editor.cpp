@@ -1,8 +1,9 @@
-// The editor's frame loop: window callbacks (close, drop), the layout of menu bar, side columns,
-// status bar and viewport, redraw-on-change, undo steps closed when a gesture ends, autosave,
-// screenshots. Panels live in panels/, shortcuts in shortcuts.cpp, camera input in
-// camera_actions.cpp, file actions in document.cpp.
-// Sections: window events · fonts and scale · screenshot · loop.
+// The editor's frame loop, as Dear ImGui's own example loop plus calls: wait for input, take
+// what background work finished, build the UI, let the renderer do other jobs, then the viewport
+// (editor/viewport_presenter.h renders what changed and puts it on screen), autosave and the title.
+// Panels live in panels/, shortcuts in shortcuts.cpp, camera input in camera_actions.cpp, file
+// actions in document.cpp, the window's callbacks in window_events.cpp.
+// Sections: set-up · screenshot · one iteration · the loop.
 #include "editor/editor.h"
 
 #include <GLFW/glfw3.h>
@@ -19,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "classroom/classroom_editor.h"
 #include "classroom/lesson_document.h"
@@ -37,78 +39,17 @@
 #include "editor/panels/panels.h"
 #include "editor/probe_panel.h"
 #include "editor/shortcuts.h"
-#include "editor/ui_damage.h"
-#include "editor/viewport_refresh.h"
+#include "editor/viewport_presenter.h"
+#include "editor/window_events.h"
 #include "editor/window_placement.h"
 #include "gl/brdf_sampler.h"
 #include "gl/program_compiler.h"
-#include "gl/render_target.h"
 #include "gl/renderer.h"
 #include "image/image_io.h"
 #include "platform/x11_errors.h"
 
 namespace glint {
 namespace {
-
-// --- window events: any input asks for a few more frames; close and drop are queued --------
-
-bool gEventSeen = false;  // since the loop last looked
-std::uint64_t gEventCount = 0;  // since start, for GLINT_LOG_IDLE
-bool gExposed = true;  // the window's pixels must all be drawn again (mapped, exposed, resized)
-bool gCloseRequested = false;
-std::vector<std::string> gDroppedPaths;
-
-void noteEvent() {
-    gEventSeen = true;
-    ++gEventCount;
-}
-void noteKey(GLFWwindow*, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) recordKeyPress(key, mods);
-    noteEvent();
-}
-void noteClose(GLFWwindow* window) {
-    // The editor decides (unsaved-changes prompt); the window stays open until it does.
-    glfwSetWindowShouldClose(window, GLFW_FALSE);
-    gCloseRequested = true;
-    noteEvent();
-}
-void noteDrop(GLFWwindow*, int count, const char** paths) {
-    for (int i = 0; i < count; ++i) gDroppedPaths.emplace_back(paths[i]);
-    noteEvent();
-}
-
-// The renderer's error, shown in the editor and printed once each time it changes (not each frame).
-void noteRenderProblem(EditorState& state, const std::string& problem) {
-    if (!problem.empty() && problem != state.renderProblem) std::fprintf(stderr, "glint: %s\n", problem.c_str());
-    state.renderProblem = problem;
-}
-
-// "glint idle N X Y": the window events handled since start and where the pointer is, printed when
-// the editor sleeps with everything drawn; the GUI tests' sign that what they sent is handled and
-// on screen (tests/gui_test_support.py: wait_idle).
-// The pointer is asked for before the last poll: the query is a round trip to the X server, so
-// every event sent before its answer is queued by then, and the poll finds it.
-void logIdleUnlessEventWaits(GLFWwindow* window) {
-    double x = 0.0, y = 0.0;
-    glfwGetCursorPos(window, &x, &y);
-    glfwPollEvents();
-    if (gEventSeen) return;
-    std::printf("glint idle %llu %.0f %.0f\n", static_cast<unsigned long long>(gEventCount), x, y);
-    std::fflush(stdout);
-}
-
-void installEventTracking(GLFWwindow* window) {
-    // Installed before ImGui's backend, which chains to them.
-    glfwSetCursorPosCallback(window, [](GLFWwindow*, double, double) { noteEvent(); });
-    glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { noteEvent(); });
-    glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { noteEvent(); });
-    glfwSetKeyCallback(window, noteKey);
-    glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { noteEvent(); });
-    glfwSetFramebufferSizeCallback(window, [](GLFWwindow*, int, int) { noteEvent(), gExposed = true; });
-    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { noteEvent(), gExposed = true; });
-    glfwSetWindowCloseCallback(window, noteClose);
-    glfwSetDropCallback(window, noteDrop);
-}
 
 // --- fonts and scale: DejaVu Sans for ρ, θ, π, ², ·, ć; sizes follow the UI scale setting ----
 // (presentation mode's font, style and scale: app/classroom/presentation.cpp)
@@ -161,391 +102,287 @@ double autosaveIntervalSeconds() {
     return 5.0;
 }
 
+// --- set-up ---------------------------------------------------------------------------------
+
+// The renderer as the editor uses it. The radiance pass also writes the displayed image, so that
+// putting it on screen is a scaled copy rather than a display pass over every screen pixel
+// (renderer.h); the float image is not written (the screenshot renders its own when it saves an
+// EXR). A material's slider redraws only the pixels of the objects that wear it. New specialised
+// programs are built on a worker thread, the loop woken when one is ready.
+Result<std::unique_ptr<Renderer>> createEditorRenderer(GlfwPlatform& platform) {
+    auto created = Renderer::create(platform, defaultShaderSources());
+    if (!created) return created.error();
+    Renderer& renderer = **created;
+    renderer.setFusedDisplay(true);
+    renderer.setRadianceKept(false);
+    renderer.setRedrawOnlyChanges(true);
+    if (auto context = platform.createWorkerContext())
+        renderer.compileInBackground(std::make_unique<ProgramCompiler>(std::move(context), platform.procAddressLoader(),
+                                                                       [] { glfwPostEmptyEvent(); }));
+    return created;
+}
+
+// The default scene, then what the command line opens (`glint FILE`: as File ▸ Open; `glint
+// present LIST`: lesson 1), then the recovery prompt for crashed editors' work.
+void startEditorState(EditorState& state, const Renderer& renderer, const std::string& openPath, const std::string& presentLessonList) {
+    state.settings = loadSettings();
+    if (state.settings.allowOutsideReferences) setOutsideReferencesAllowed(true);  // else as --allow-outside-references says
+    state.rendererDescription = renderer.description();
+    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
+    if (!openPath.empty()) openDroppedFile(state, openPath);
+    if (!presentLessonList.empty()) startPresentation(state, presentLessonList);
+    startRecovery(state);
+    state.lastAutosaveSeconds = glfwGetTime();  // the first autosave comes one interval after start, not at the first edit
+}
+
+// The UI's look as last applied: it follows the UI scale setting and presentation mode.
+struct EditorLook {
+    static constexpr float kFontPixels = 17.0f, kPresentationFontPixels = 40.0f;
+    ImGuiStyle baseStyle;
+    ImFont* presentationFont = nullptr;
+    float appliedScale = 0.0f;
+    bool appliedPresentation = false;
+};
+
+// Dear ImGui for the window; floating windows' places are remembered beside settings.json
+// (editor/window_placement.h). The window's callbacks go in before ImGui's backend, which chains to them.
+EditorLook startImGui(GLFWwindow* window, WindowEvents& events) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    static const std::string layoutFile = windowLayoutFilePath();
+    ImGui::GetIO().IniFilename = ensureParentDirectory(layoutFile) ? layoutFile.c_str() : nullptr;
+    ImGui::StyleColorsDark();
+    EditorLook look;
+    look.baseStyle = ImGui::GetStyle();
+    loadFont(EditorLook::kFontPixels);
+    look.presentationFont = loadPresentationFont(EditorLook::kPresentationFontPixels);
+    trackWindowEvents(window, events);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 410 core");
+    return look;
+}
+
+void keepLook(EditorLook& look, const EditorState& state, GLFWwindow* window) {
+    const float displayHeight = ImGui::GetIO().DisplaySize.y;
+    const float scale = effectiveUiScale(state.settings, displayHeight);
+    if (scale == look.appliedScale && state.settings.presentationMode == look.appliedPresentation) return;
+    look.appliedScale = scale;
+    look.appliedPresentation = state.settings.presentationMode;
+    applyEditorLook(state.settings, displayHeight, look.baseStyle, look.presentationFont, EditorLook::kFontPixels,
+                    EditorLook::kPresentationFontPixels);
+    fitWindowToPresentation(window, look.appliedPresentation);  // the whole screen while presenting
+}
+
+// --- one iteration ----------------------------------------------------------------------------
+
+// When the loop must wake up without input, and how many frames it still owes (ImGui settles its
+// layout over a couple of frames; any input asks for a few more).
+struct LoopSchedule {
+    int framesToDraw = 3;
+    double secondsToAutosave = 1e9;
+    double secondsToBrdfPoll = 1e9;
+    void owe(int frames) { framesToDraw = std::max(framesToDraw, frames); }
+};
+
+// Sleeps until input, a timer or background work needs a frame. GLINT_LOG_IDLE=1 (`idleLog`):
+// "glint idle" each time the editor has drawn all it was asked for and finds no input waiting.
+void waitForInput(const EditorState& state, const ViewportPresenter& presenter, const LoopSchedule& schedule, bool hotReload,
+                  bool idleLog, GLFWwindow* window, WindowEvents& events) {
+    events.seen = false;
+    const double secondsToShaderPoll = hotReload ? 0.5 : 1e9;  // a shader edited elsewhere shows
+    const double secondsToWake = std::min({schedule.secondsToAutosave, schedule.secondsToBrdfPoll, secondsToShaderPoll,
+                                           presenter.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
+    const bool drawnAll = schedule.framesToDraw == 0 && !state.meshLoad && !state.environmentLoad && !state.waitingForPrograms &&
+                          presenter.secondsToRefine(glfwGetTime(), false) >= 1e8;
+    if (idleLog && drawnAll) logIdleUnlessEventWaits(window, events);
+    if (events.seen) return;  // input arrived while idleness was checked: draw it
+    if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
+    else if (state.environmentLoad) glfwWaitEventsTimeout(0.25);  // its progress; the precompute keeps the cores
+    else if (schedule.framesToDraw > 0) glfwPollEvents();
+    else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
+    else glfwWaitEvents();
+}
+
+// What finished meanwhile: edited shaders, programs built in the background, .brdf probes, mesh
+// and environment loads, files dropped on the window; and a frame the X server refused.
+void takeFinishedWork(EditorState& state, Renderer& renderer, ViewportPresenter& presenter, LoopSchedule& schedule,
+                      WindowEvents& events) {
+    keepSelectionInScene(state);  // the last frame's undo or redo may have removed the selected object
+    if (renderer.reloadChangedShaders()) presenter.forgetScene();
+    if (renderer.adoptCompiledPrograms()) state.waitingForPrograms = false;
+    schedule.secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());
+    if (takeXErrors() > 0) {  // platform/x11_errors.h: all of the frame again
+        events.exposed = true;
+        schedule.owe(1);
+    }
+    if (pollMeshLoad(state)) schedule.owe(1);
+    if (pollEnvironmentLoad(state)) schedule.owe(1);
+    for (const std::string& path : events.droppedPaths) openDroppedFile(state, path);
+    events.droppedPaths.clear();
+    keepPresentationColumns(state);  // collapsed on entering presentation mode, one open at a time
+}
+
+// The UI of one frame: where the viewport is, and whether a gesture is in progress.
+struct UiFrame {
+    ViewportRect viewport;
+    float statusHeight = 0.0f;
+    bool gesture = false;
+};
+
+// The viewport: between the side columns (or their collapsed strips), below the menu bar.
+ViewportRect viewportBetweenColumns(const EditorState& state, float menuHeight, float columnHeight, float windowWidth) {
+    ViewportRect viewport;
+    viewport.x = state.showLeftPanel ? leftColumnScreenWidth(state) : collapsedColumnStripWidth(state.settings);
+    viewport.y = menuHeight;
+    const float right = state.showRightPanel ? rightColumnScreenWidth(state) : collapsedColumnStripWidth(state.settings);
+    viewport.width = std::max(1.0f, windowWidth - viewport.x - right);
+    viewport.height = std::max(1.0f, columnHeight);
+    return viewport;
+}
+
+// Builds the frame's UI: bars, columns, floating windows, the viewport's input, dialogs, shortcuts.
+UiFrame buildUi(EditorState& state, BrdfSampler& plotSampler, float appliedScale, WindowEvents& events) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImVec2 windowSize = ImGui::GetIO().DisplaySize;
+    UiFrame ui;
+    const float menuHeight = drawMenuBar(state);
+    ui.statusHeight = drawStatusBar(state, windowSize.y, windowSize.x);
+    const float columnHeight = windowSize.y - menuHeight - ui.statusHeight;
+    drawScenePanel(state, menuHeight, columnHeight);
+    drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
+    drawCollapsedColumnStrips(state, menuHeight, columnHeight, windowSize.x);  // presentation mode
+    const ViewportRect viewport = ui.viewport = viewportBetweenColumns(state, menuHeight, columnHeight, windowSize.x);
+    // Floating windows open where they cover nothing reserved (the lesson note, the probe, the plot);
+    // while presenting, over the viewport only, so an open side column never hides one.
+    const ScreenRect viewportRect{viewport.x, viewport.y, viewport.width, viewport.height};
+    beginWindowLayoutFrame(state.settings.presentationMode ? viewportRect : ScreenRect{0.0f, menuHeight, windowSize.x, columnHeight},
+                           viewportRect,
+                           windowLayoutKey(appliedScale, state.settings.presentationMode, state.showLeftPanel, state.showRightPanel,
+                                           windowSize.x, windowSize.y));
+    drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
+    drawCompareWindow(state);  // classroom/compare_view.h
+    drawClassroom(state, viewport.x, viewport.y, viewport.width, viewport.height);  // lessons, presentation key, colour windows
+    const bool handleDrag = handleLightHandles(state, viewport);
+    // Classroom surface probe: Shift+click sets its point (so no camera drag starts), then its arrows and window.
+    const bool probeClick = !handleDrag && handleProbeClick(viewport);
+    const bool cameraDrag = !handleDrag && !probeClick && handleViewportInput(state, viewport);
+    drawProbe(state, viewport);
+    drawDialogs(state);  // the last windows of the frame (panels.h), and first to take their keys
+    handleShortcuts(state);
+    // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
+    ui.gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
+    state.session.settle(ui.gesture);
+    // The window's close button after this frame's keys: a redo typed just before closing must
+    // count as unsaved work, or the close would lose it without asking.
+    if (std::exchange(events.closeRequested, false)) requestQuit(state);
+    endWindowLayoutFrame();  // GLINT_LOG_LAYOUT: the rectangles on screen, for the GUI tests
+    ImGui::Render();
+    return ui;
+}
+
+// The renderer's other jobs this frame (compare panes, a preset swatch, a screenshot): each
+// leaves the viewport to be rendered afresh.
+void lendRenderer(EditorState& state, Renderer& renderer, ViewportPresenter& presenter, glm::ivec2 viewportPixels,
+                  LoopSchedule& schedule) {
+    if (updateCompareView(state, renderer)) presenter.forgetFrame();
+    if (updatePresetSwatches(state.presetSwatches, renderer)) {  // the next swatch on the next frame
+        presenter.forgetFrame();
+        schedule.owe(2);
+    }
+    if (state.screenshotRequested) {
+        state.screenshotRequested = false;
+        saveScreenshot(state, renderer, viewportPixels);
+        presenter.forgetFrame();
+    }
+}
+
+using Clock = std::chrono::steady_clock;
+
+// GLINT_LOG_FRAMES=1: each iteration's size, render time, input-to-presented time and phases.
+void logFrame(const EditorState& state, const ViewportRender& render, const PresentTimes& times, glm::ivec2 viewportPixels,
+              Clock::time_point frameStart, Clock::time_point uiBuilt) {
+    if (render.plan.render) glFinish();
+    const auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
+    const auto now = Clock::now();
+    if (render.waitedForPrograms) {
+        std::fprintf(stderr, "glint programs: the frame waits for programs compiling in the background; input to presented %.1f ms\n",
+                     ms(frameStart, now));
+    } else if (!render.plan.render) {  // the UI alone (a progress bar, a menu)
+        std::fprintf(stderr, "glint ui frame: input to presented %.1f ms\n", ms(frameStart, now));
+    } else {
+        const RefreshPlan& plan = render.plan;
+        std::fprintf(stderr,
+                     "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
+                     "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
+                     "presented %.1f ms at %.3f s, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
+                     viewportPixels.x, viewportPixels.y, plan.pixelScale, render.renderMilliseconds, ms(frameStart, now),
+                     state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
+                     times.displayedMilliseconds, times.uiMilliseconds, ms(times.composed, now), glfwGetTime(), times.pixelsPresented,
+                     plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
+    }
+}
+
+// After the frame is on screen: autosave, stale messages expired, the window's title.
+void finishIteration(EditorState& state, GLFWwindow* window, double autosaveInterval, LoopSchedule& schedule, std::string& shownTitle) {
+    schedule.secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
+    // Refusals and status lines written before the scene's last change no longer hold.
+    for (SceneMessage* message : {&state.statusMessage, &state.materialPanelMessage, &state.lightPanelMessage, &state.displayPanelMessage})
+        message->expire(state.session.revision());
+    if (const std::string title = windowTitle(state); title != shownTitle) {
+        glfwSetWindowTitle(window, title.c_str());
+        shownTitle = title;
+    }
+    clearKeyPresses();
+}
+
 }  // namespace
 
-// --- loop -----------------------------------------------------------------------------------
+// --- the loop ---------------------------------------------------------------------------------
 
 int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPath, const std::string& presentLessonList) {
     setEnvironmentProgressReport(nullptr);  // not on stderr: maps show their progress in the window
-    auto created = Renderer::create(*platform, defaultShaderSources());
+    auto created = createEditorRenderer(*platform);
     if (!created) {
         std::fprintf(stderr, "glint: %s\n", created.error().format().c_str());
         return 2;
     }
     Renderer& renderer = **created;
-    // The radiance pass also writes the displayed image, so that putting it on screen is a scaled
-    // copy rather than a display pass over every screen pixel (renderer.h); the float image is not
-    // written (the screenshot renders its own when it saves an EXR).
-    renderer.setFusedDisplay(true);
-    renderer.setRadianceKept(false);
-    // A material's slider redraws only the pixels of the objects that wear it.
-    renderer.setRedrawOnlyChanges(true);
-    // New specialised programs are built on a worker thread, the loop woken when one is ready.
-    if (auto context = platform->createWorkerContext())
-        renderer.compileInBackground(std::make_unique<ProgramCompiler>(std::move(context), platform->procAddressLoader(),
-                                                                       [] { glfwPostEmptyEvent(); }));
     GLFWwindow* window = platform->window();
-
     BrdfSampler plotSampler(renderer.sources());  // the Plots window's .brdf materials, on the GPU
-
-    EditorState state;  // the default scene
-    state.settings = loadSettings();
-    if (state.settings.allowOutsideReferences) setOutsideReferencesAllowed(true);  // else as --allow-outside-references says
-    state.rendererDescription = renderer.description();
-    state.customBrdfs.wake = [] { glfwPostEmptyEvent(); };
-    if (!openPath.empty()) openDroppedFile(state, openPath);  // `glint FILE`: as File ▸ Open
-    if (!presentLessonList.empty()) startPresentation(state, presentLessonList);  // `glint present LIST`: lesson 1
-    startRecovery(state);
-    // The first autosave comes one interval after start, not at the first edit.
-    state.lastAutosaveSeconds = glfwGetTime();
+    EditorState state;
+    startEditorState(state, renderer, openPath, presentLessonList);
     const double autosaveInterval = autosaveIntervalSeconds();
-    // GLINT_LOG_FRAMES=1 prints each rendered frame's size, render time, input-to-frame time and
-    // when it was presented (glfwGetTime).
-    const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr;
-
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    // Floating windows' places are remembered beside settings.json (editor/window_placement.h).
-    static const std::string layoutFile = windowLayoutFilePath();
-    ImGui::GetIO().IniFilename = ensureParentDirectory(layoutFile) ? layoutFile.c_str() : nullptr;
-    ImGui::StyleColorsDark();
-    const ImGuiStyle baseStyle = ImGui::GetStyle();
-    float appliedScale = 0.0f;
-    bool appliedPresentation = false;
-    constexpr float kFontPixels = 17.0f, kPresentationFontPixels = 40.0f;
-    loadFont(kFontPixels);
-    ImFont* presentationFont = loadPresentationFont(kPresentationFontPixels);
-    installEventTracking(window);
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 410 core");
-
-    glm::ivec2 renderedSize{0, 0};
-    std::uint64_t renderedRevision = ~0ull;
-    int renderedScale = 1;
-    DisplaySettings shownDisplay;  // of the frame last drawn (a change may wait for its programs)
+    const bool logFrames = std::getenv("GLINT_LOG_FRAMES") != nullptr, idleLog = std::getenv("GLINT_LOG_IDLE") != nullptr;
+    WindowEvents events;
+    EditorLook look = startImGui(window, events);
+    ViewportPresenter presenter(renderer, *platform);
+    LoopSchedule schedule;
     std::string shownTitle;
-    ViewportRefresh refresh;  // reduced frames while dragging, the full one after (viewport_refresh.h)
-    // Where the window keeps its pixels between frames (the platform presents regions, and nothing
-    // swaps the buffers), only what changed is drawn and put on screen: the pixels the render drew
-    // and where the ui changed (ui_damage.h); elsewhere every frame whole.
-    const bool presentRegions = platform->presentsRegions();
-    UiDamage uiDamage;
-    glm::ivec4 placed{0, 0, 0, 0};  // where the viewport was put on screen: lower left, size
-    PixelRegion viewportCopied;  // the screen pixels its last (scaled) copy covered
-    // Frames drawn whole and swapped after the window was exposed or resized: llvmpipe gives a
-    // resized window a new back buffer only at a swap, with no pixels of the frame before.
-    int wholeFrames = 0;
-    // On screen while the full frame is refined in bands: the frame before, at its own resolution
-    // (copied as it is, and scaled as it is put on screen, as it was shown).
-    RenderTarget reducedFrame{GL_RGBA8, false};
-    int reducedScale = 1;
-    int refinedRows = 0;  // the full frame's rows drawn so far, from the top
-    // The full-resolution rows of the changed objects' rectangle of the last frame not drawn in
-    // bands that redrew only them (a drag's): the bands of the full frame after it split these rows evenly.
-    std::optional<RowBand> changedRows;
-    double refinedMilliseconds = 0.0;  // the full frame's bands so far
-    const float kWindowClearColor[4] = {0.1f, 0.1f, 0.11f, 1.0f};  // under the panels
-    int framesToDraw = 3;  // ImGui settles its layout over a couple of frames
-    double secondsToAutosave = 1e9;
-    double secondsToBrdfPoll = 1e9;
-    // GLINT_LOG_IDLE=1: "glint idle" each time the editor has drawn all it was asked for (no frame,
-    // band, program or load pending) and finds no input waiting, before it sleeps.
-    const bool idleLog = std::getenv("GLINT_LOG_IDLE") != nullptr;
     while (!state.quitNow) {
-        gEventSeen = false;
-        const double secondsToShaderPoll = renderer.hotReloadsShaders() ? 0.5 : 1e9;  // a shader edited elsewhere shows
-        const double secondsToWake = std::min({secondsToAutosave, secondsToBrdfPoll, secondsToShaderPoll,
-                                               refresh.secondsToRefine(glfwGetTime(), state.waitingForPrograms)});
-        const bool drawnAll = framesToDraw == 0 && !state.meshLoad && !state.environmentLoad &&
-                              !state.waitingForPrograms && refresh.secondsToRefine(glfwGetTime(), false) >= 1e8;
-        if (idleLog && drawnAll) logIdleUnlessEventWaits(window);
-        if (gEventSeen) {}  // input arrived while idleness was checked: draw it
-        else if (state.meshLoad) glfwWaitEventsTimeout(0.05);  // a mesh loads: keep the progress bar moving
-        else if (state.environmentLoad) glfwWaitEventsTimeout(0.25);  // its progress; the precompute keeps the cores
-        else if (framesToDraw > 0) glfwPollEvents();
-        else if (secondsToWake < 1e8) glfwWaitEventsTimeout(std::max(secondsToWake, 0.01));
-        else glfwWaitEvents();
-        const auto frameStart = std::chrono::steady_clock::now();  // input for this frame has arrived
-        keepSelectionInScene(state);  // the last frame's undo or redo may have removed the selected object
-        if (renderer.reloadChangedShaders()) renderedRevision = ~0ull;
-        if (renderer.adoptCompiledPrograms()) state.waitingForPrograms = false;  // programs built in the background
-        secondsToBrdfPoll = pollCustomBrdfs(state, glfwGetTime());  // .brdf probes and hot reload
-        if (takeXErrors() > 0) {  // a frame the X server refused (platform/x11_errors.h): all of it again
-            gExposed = true;
-            framesToDraw = std::max(framesToDraw, 1);
-        }
-        if (pollMeshLoad(state)) framesToDraw = std::max(framesToDraw, 1);
-        if (pollEnvironmentLoad(state)) framesToDraw = std::max(framesToDraw, 1);
-        for (const std::string& path : gDroppedPaths) openDroppedFile(state, path);
-        gDroppedPaths.clear();
-        keepPresentationColumns(state);  // collapsed on entering presentation mode, one open at a time
-        const float displayHeight = ImGui::GetIO().DisplaySize.y;
-        if (effectiveUiScale(state.settings, displayHeight) != appliedScale || state.settings.presentationMode != appliedPresentation) {
-            appliedScale = effectiveUiScale(state.settings, displayHeight);
-            appliedPresentation = state.settings.presentationMode;
-            applyEditorLook(state.settings, displayHeight, baseStyle, presentationFont, kFontPixels, kPresentationFontPixels);
-            fitWindowToPresentation(window, appliedPresentation);  // the whole screen while presenting
-        }
-
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        const glm::ivec2 framebuffer = platform->framebufferSize();
-        const ImVec2 windowSize = ImGui::GetIO().DisplaySize;
-        const float menuHeight = drawMenuBar(state);
-        const float statusHeight = drawStatusBar(state, windowSize.y, windowSize.x);
-        const float columnHeight = windowSize.y - menuHeight - statusHeight;
-        drawScenePanel(state, menuHeight, columnHeight);
-        drawMaterialColumn(state, menuHeight, columnHeight, windowSize.x);
-        drawCollapsedColumnStrips(state, menuHeight, columnHeight, windowSize.x);  // presentation mode
-        ViewportRect viewport;
-        viewport.x = state.showLeftPanel ? leftColumnScreenWidth(state) : collapsedColumnStripWidth(state.settings);
-        viewport.y = menuHeight;
-        viewport.width = std::max(1.0f, windowSize.x - viewport.x -
-                                            (state.showRightPanel ? rightColumnScreenWidth(state)
-                                                                  : collapsedColumnStripWidth(state.settings)));
-        viewport.height = std::max(1.0f, columnHeight);
-        // Floating windows open where they cover nothing reserved (the lesson note, the probe, the plot);
-        // while presenting, over the viewport only, so an open side column never hides one.
-        const ScreenRect viewportRect{viewport.x, viewport.y, viewport.width, viewport.height};
-        beginWindowLayoutFrame(state.settings.presentationMode ? viewportRect : ScreenRect{0.0f, menuHeight, windowSize.x, columnHeight},
-                               viewportRect,
-                               windowLayoutKey(appliedScale, state.settings.presentationMode, state.showLeftPanel,
-                                               state.showRightPanel, windowSize.x, windowSize.y));
-        drawPlotsWindow(state, plotSampler);  // .brdf materials sampled on the GPU
-        drawCompareWindow(state);  // classroom/compare_view.h
-        drawClassroom(state, viewport.x, viewport.y, viewport.width, viewport.height);  // lessons, presentation key, colour windows
-        const bool handleDrag = handleLightHandles(state, viewport);
-        // Classroom surface probe: Shift+click sets its point (so no camera drag starts), then its arrows and window.
-        const bool probeClick = !handleDrag && handleProbeClick(viewport);
-        const bool cameraDrag = !handleDrag && !probeClick && handleViewportInput(state, viewport);
-        drawProbe(state, viewport);
-        drawDialogs(state);  // the last windows of the frame (panels.h), and first to take their keys
-        handleShortcuts(state);
-        // A slider, colour picker, light handle or camera drag is one undo step, closed when it ends.
-        const bool gesture = ImGui::IsAnyItemActive() || cameraDrag || handleDrag;
-        state.session.settle(gesture);
-        // The window's close button after this frame's keys: a redo typed just before closing
-        // must count as unsaved work, or the close would lose it without asking.
-        if (gCloseRequested) {
-            gCloseRequested = false;
-            requestQuit(state);
-        }
-        endWindowLayoutFrame();  // GLINT_LOG_LAYOUT: the rectangles on screen, for the GUI tests
-        ImGui::Render();
-        const auto uiBuilt = std::chrono::steady_clock::now();
-
+        waitForInput(state, presenter, schedule, renderer.hotReloadsShaders(), idleLog, window, events);
+        const auto frameStart = Clock::now();  // input for this frame has arrived
+        takeFinishedWork(state, renderer, presenter, schedule, events);
+        keepLook(look, state, window);
+        const UiFrame ui = buildUi(state, plotSampler, look.appliedScale, events);
+        const auto uiBuilt = Clock::now();
         // Window (ImGui) pixels to framebuffer pixels (HiDPI).
-        const float pixelScale = windowSize.x > 0 ? framebuffer.x / windowSize.x : 1.0f;
-        const glm::ivec2 viewportPixels{std::max(1, static_cast<int>(viewport.width * pixelScale)),
-                                        std::max(1, static_cast<int>(viewport.height * pixelScale))};
-        const glm::ivec2 viewportLowerLeft{static_cast<int>(viewport.x * pixelScale),
-                                           static_cast<int>(statusHeight * pixelScale)};
-        if (updateCompareView(state, renderer)) renderedSize = {0, 0};  // the compare panes used the renderer
-        if (updatePresetSwatches(state.presetSwatches, renderer)) {  // so did a swatch; the next one on the next frame
-            renderedSize = {0, 0};
-            framesToDraw = std::max(framesToDraw, 2);
-        }
-        if (state.screenshotRequested) {  // uses the renderer: the viewport is drawn afresh below
-            state.screenshotRequested = false;
-            saveScreenshot(state, renderer, viewportPixels);
-            renderedSize = {0, 0};
-        }
-        const bool changed = state.session.revision() != renderedRevision;
-        RefreshPlan plan = refresh.plan({glfwGetTime(), changed, viewportPixels != renderedSize, gesture,
-                                         state.settings.simplifyMeshesWhileDragging, state.waitingForPrograms});
-        // A reduced-resolution preview (while dragging) skips MSAA, about 1.8x the frame on
-        // llvmpipe; the full frame after the drag smooths the edges again.
-        const Scene* drawn = &state.session.scene();
-        Scene preview;
-        const auto drawnAt = [&](int scale) {
-            drawn = &state.session.scene();
-            if (scale > 1 && drawn->msaaSamples > 1) {
-                preview = *drawn;
-                preview.msaaSamples = 1;
-                drawn = &preview;
-            }
-            return (viewportPixels + scale - 1) / scale;
-        };
-        glm::ivec2 renderPixels = drawnAt(plan.pixelScale);
-        bool waitedForPrograms = false;
-        double renderMilliseconds = 0.0;  // this iteration's render (one band of a banded frame)
-        if (plan.render) {
-            // Programs still compiling in the background: a frame with their generic stand-ins is
-            // drawn at reduced resolution (they are slower), or, where there is none or the frame
-            // would refine a reduced one, the frame on screen stays until they arrive.
-            using Ready = Renderer::ProgramsReady;
-            Ready ready = renderer.programsReady(*drawn, renderPixels.x, renderPixels.y);
-            if (ready == Ready::WithStandIns && plan.bands == 1 && plan.pixelScale < ViewportRefresh::kStandInPixelScale) {
-                plan.pixelScale = ViewportRefresh::kStandInPixelScale;
-                renderPixels = drawnAt(plan.pixelScale);
-                ready = renderer.programsReady(*drawn, renderPixels.x, renderPixels.y);  // without MSAA, say
-            }
-            // Only where the targets still hold the frame on screen (nothing else drew with the renderer).
-            const bool frameKept = renderedSize == viewportPixels;
-            if (frameKept && (ready == Ready::No || (ready == Ready::WithStandIns && plan.bands > 1))) {
-                plan.render = false;
-                state.waitingForPrograms = waitedForPrograms = true;
-            }
-        }
-        // What the viewport on screen shows: the targets' frame at this scale, but for a full frame's
-        // missing bands (a new frame in place of one being refined is put on screen whole).
-        const int scaleOnScreen = renderedScale;
-        const bool bandsMissing = refresh.refining();
-        RowBand rows;  // of a full frame drawn in bands
-        if (plan.render) {
-            const long long shadowMapRenders = renderer.shadowMapRenders();
-            const auto start = std::chrono::steady_clock::now();
-            // A full frame drawn in bands, top first: the reduced frame on screen is kept to show under it.
-            if (plan.bands > 1) {
-                if (plan.band == 0) {
-                    reducedScale = renderedScale;
-                    const glm::ivec2 reducedPixels = (viewportPixels + reducedScale - 1) / reducedScale;
-                    reducedFrame.ensure(reducedPixels.x, reducedPixels.y, 1);
-                    renderer.displayToScreen(drawn->display, {0, 0}, 1, reducedFrame.framebuffer());
-                }
-                rows = refineBandRows(plan.band, plan.bands, renderPixels.y, changedRows);
-                refinedRows = renderPixels.y - rows.first;
-            }
-            const Status status = renderer.renderRadiance(*drawn, renderPixels.x, renderPixels.y, plan.detail, rows);
-            noteRenderProblem(state, !status ? status.error().format() : renderer.shaderError());
-            glFinish();
-            renderMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            // A frame drawn in bands shows its bands' time so far, the whole frame's at the last.
-            refinedMilliseconds = plan.band == 0 ? renderMilliseconds : refinedMilliseconds + renderMilliseconds;
-            state.lastRenderMilliseconds = refinedMilliseconds;
-            state.standInProgramsShown = renderer.standInProgramsDrawn();
-            state.waitingForPrograms = state.standInProgramsShown > 0;
-            // Only a material's objects redrawn: its time says nothing of a whole frame's.
-            refresh.rendered(plan, renderMilliseconds, renderer.simplifiedMeshesDrawn() > 0 || state.standInProgramsShown > 0,
-                             renderer.drewOnlyChanges());
-            if (plan.bands == 1) {  // (a band's drawn pixels are only its own part of the rectangle)
-                const std::optional<PixelRegion>& drawnPixels = renderer.drawnPixels();
-                changedRows.reset();
-                if (renderer.drewOnlyChanges() && drawnPixels)
-                    changedRows = RowBand{drawnPixels->y * plan.pixelScale, drawnPixels->height * plan.pixelScale};
-            }
-            // Slow full frames: have the large meshes' stand-ins made now, ready for the first drag.
-            if (refresh.fullFramesAreSlow() && state.settings.simplifyMeshesWhileDragging)
-                renderer.prepareSimplifiedMeshes(state.session.scene());
-            state.previewScale = plan.pixelScale;
-            state.simplifiedMeshesShown = renderer.simplifiedMeshesDrawn();
-            state.shadowMapsRedrawn = renderer.shadowMapRenders() != shadowMapRenders;
-            state.triangleCount = renderer.trianglesDrawn();
-            state.samplesNote = renderer.samplesNote(state.session.scene().msaaSamples);
-            renderedSize = viewportPixels;
-            renderedRevision = state.session.revision();
-            renderedScale = plan.pixelScale;
-            shownDisplay = drawn->display;
-            framesToDraw = std::max(framesToDraw, 2);
-        }
-        // What changed on screen: the viewport's pixels the render drew (all of them at a new
-        // scale), where the ui changed; all of it where the window does not keep its pixels, or
-        // after it was exposed or resized or the viewport moved.
-        const int shownScale = renderedScale;
-        const glm::ivec2 shownSize = (renderedSize + shownScale - 1) / shownScale * shownScale;  // the copy's, whole radiance pixels
-        const PixelRegion shownViewport{viewportLowerLeft.x, viewportLowerLeft.y, shownSize.x, shownSize.y};
-        std::vector<PixelRegion> damage;
-        uiDamage.collect(*ImGui::GetDrawData(), damage);
-        if (plan.render) {
-            // A band: its rows, which showed the reduced frame (all of it for a new frame in place of
-            // one being refined, as the reduced frame kept under it is the targets' mix of both).
-            const std::optional<PixelRegion>& drawnPixels = renderer.drawnPixels();
-            if (plan.bands > 1 && (plan.band > 0 || !bandsMissing))
-                damage.push_back({viewportLowerLeft.x, viewportLowerLeft.y + rows.first * shownScale, shownSize.x, rows.count * shownScale});
-            else if (plan.bands == 1 && drawnPixels && shownScale == scaleOnScreen && !bandsMissing)
-                damage.push_back({viewportLowerLeft.x + drawnPixels->x * shownScale, viewportLowerLeft.y + drawnPixels->y * shownScale,
-                                  drawnPixels->width * shownScale, drawnPixels->height * shownScale});
-            else
-                damage.push_back(shownViewport);
-            if (viewportCopied.width != shownViewport.width || viewportCopied.height != shownViewport.height)
-                damage.push_back(viewportCopied);  // a copy at a coarser scale reached further
-        }
-        viewportCopied = shownViewport;
-        const glm::ivec4 placing{viewportLowerLeft, viewportPixels};
-        if (gExposed || placing != placed) wholeFrames = 2;
-        const bool whole = !presentRegions || wholeFrames > 0;
-        if (whole) damage = {PixelRegion{0, 0, framebuffer.x, framebuffer.y}};
-        wholeFrames = std::max(0, wholeFrames - 1);
-        gExposed = false;
-        placed = placing;
-        mergeOverlapping(damage);
-        // Each changed rectangle drawn as the whole frame would be there: the window's colour under
-        // the panels, the viewport (over the reduced frame while the full one is refined in bands:
-        // the bands so far), the ui.
-        const auto composeStart = std::chrono::steady_clock::now();
-        for (const PixelRegion& rect : damage) {
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, framebuffer.x, framebuffer.y);
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(rect.x, rect.y, rect.width, rect.height);
-            glClearColor(kWindowClearColor[0], kWindowClearColor[1], kWindowClearColor[2], kWindowClearColor[3]);
-            glClear(GL_COLOR_BUFFER_BIT);
-            PixelRegion viewportPart = intersectionOf(rect, shownViewport);
-            if (!viewportPart.empty() && refresh.refining()) {
-                // The reduced frame where no band is drawn yet, the bands above it. Scaled, the
-                // reduced frame's last column and row may reach past the viewport (up to scale − 1
-                // pixels): the scissor keeps it inside.
-                const int unrefinedRows = renderedSize.y - refinedRows;
-                const PixelRegion unrefined =
-                    intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y, renderedSize.x, unrefinedRows});
-                if (!unrefined.empty()) {
-                    glScissor(unrefined.x, unrefined.y, unrefined.width, unrefined.height);
-                    glBindFramebuffer(GL_READ_FRAMEBUFFER, reducedFrame.framebuffer());
-                    glBlitFramebuffer(0, 0, reducedFrame.width(), reducedFrame.height(), viewportLowerLeft.x, viewportLowerLeft.y,
-                                      viewportLowerLeft.x + reducedFrame.width() * reducedScale,
-                                      viewportLowerLeft.y + reducedFrame.height() * reducedScale, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-                    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                }
-                viewportPart = intersectionOf(viewportPart, {viewportLowerLeft.x, viewportLowerLeft.y + unrefinedRows,
-                                                             renderedSize.x, refinedRows});
-                glScissor(viewportPart.x, viewportPart.y, viewportPart.width, viewportPart.height);
-            }
-            if (viewportPart.width > 0 && viewportPart.height > 0) renderer.displayToScreen(shownDisplay, viewportLowerLeft, shownScale);
-            glDisable(GL_SCISSOR_TEST);
-        }
-        if (logFrames) glFinish();  // so that the log can tell the phases apart
-        const auto displayed = std::chrono::steady_clock::now();
-        glViewport(0, 0, framebuffer.x, framebuffer.y);
-        for (const PixelRegion& rect : damage) UiDamage::drawWithin(*ImGui::GetDrawData(), rect);
-        if (logFrames) glFinish();
-        const auto composed = std::chrono::steady_clock::now();
-        long long pixelsPresented = 0;
-        for (const PixelRegion& rect : damage) pixelsPresented += static_cast<long long>(rect.width) * rect.height;
-        if (whole) platform->present();
-        else for (const PixelRegion& rect : damage) platform->presentRegion(rect.x, rect.y, rect.width, rect.height);
-        if (logFrames && plan.render) {
-            glFinish();
-            const auto now = std::chrono::steady_clock::now();
-            const auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
-            std::fprintf(stderr,
-                         "glint frame: viewport %dx%d scale 1/%d render %.1f ms, input to presented frame %.1f ms, "
-                         "%d simplified meshes, shadow maps %s, ui built %.1f ms, displayed %.1f ms, ui drawn %.1f ms, "
-                         "presented %.1f ms at %.3f s, %lld pixels presented, band %d/%d, %d stand-in programs, %lld triangles\n",
-                         viewportPixels.x, viewportPixels.y, renderedScale, renderMilliseconds, ms(frameStart, now),
-                         state.simplifiedMeshesShown, state.shadowMapsRedrawn ? "redrawn" : "kept", ms(frameStart, uiBuilt),
-                         ms(composeStart, displayed), ms(displayed, composed), ms(composed, now), glfwGetTime(), pixelsPresented,
-                         plan.band + 1, plan.bands, state.standInProgramsShown, state.triangleCount);
-        }
-        if (logFrames && !plan.render && !waitedForPrograms)  // the UI alone (a progress bar, a menu)
-            std::fprintf(stderr, "glint ui frame: input to presented %.1f ms\n",
-                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
-        if (logFrames && waitedForPrograms)
-            std::fprintf(stderr, "glint programs: the frame waits for programs compiling in the background; input to presented %.1f ms\n",
-                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
-        secondsToAutosave = autosave(state, glfwGetTime(), autosaveInterval);
-        // Refusals and status lines written before the scene's last change no longer hold.
-        for (SceneMessage* message : {&state.statusMessage, &state.materialPanelMessage, &state.lightPanelMessage,
-                                      &state.displayPanelMessage})
-            message->expire(state.session.revision());
-        if (const std::string title = windowTitle(state); title != shownTitle) {
-            glfwSetWindowTitle(window, title.c_str());
-            shownTitle = title;
-        }
-        clearKeyPresses();
-        framesToDraw = gEventSeen ? 3 : framesToDraw - 1;
+        const glm::ivec2 framebuffer = platform->framebufferSize();
+        const float windowWidth = ImGui::GetIO().DisplaySize.x;
+        const float pixelScale = windowWidth > 0 ? framebuffer.x / windowWidth : 1.0f;
+        const glm::ivec2 viewportPixels{std::max(1, static_cast<int>(ui.viewport.width * pixelScale)),
+                                        std::max(1, static_cast<int>(ui.viewport.height * pixelScale))};
+        const glm::ivec2 lowerLeft{static_cast<int>(ui.viewport.x * pixelScale), static_cast<int>(ui.statusHeight * pixelScale)};
+        lendRenderer(state, renderer, presenter, viewportPixels, schedule);
+        const ViewportRender render = presenter.render(state, viewportPixels, ui.gesture);
+        if (render.plan.render) schedule.owe(2);
+        const PresentTimes times = presenter.present(render, framebuffer, lowerLeft, viewportPixels, events.exposed, logFrames);
+        events.exposed = false;
+        if (logFrames) logFrame(state, render, times, viewportPixels, frameStart, uiBuilt);
+        finishIteration(state, window, autosaveInterval, schedule, shownTitle);
+        schedule.framesToDraw = events.seen ? 3 : schedule.framesToDraw - 1;
     }
-
     finishRecovery(state);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
