@@ -3,12 +3,8 @@
 # that references one renders too; the reference renderer, parse errors, GLSL errors and an
 # endless loop each end with exit code 2 and a located message (the loop within its timeout).
 # usage: brdf_cli_test.sh GLINT OUTPUT_DIR EXAMPLES_DIR
-set -u
-glint=$1
-out=$2
 examples=$3
-here=$(cd "$(dirname "$0")" && pwd)
-source "$here/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 # A loaded CI machine may need more than the default 8 s to prove a good shader; the endless-loop
 # case sets its own 2 s.
 export GLINT_BRDF_TIMEOUT_S=60

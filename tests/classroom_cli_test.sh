@@ -2,11 +2,8 @@
 # `glint lessons` and `glint spectral` from outside: the shipped lessons all load (--check) and
 # all render headless (--render, 64 px wide, one PNG each); a broken list or bad spectral
 # settings exit 2 with a message. usage: classroom_cli_test.sh GLINT OUTPUT_DIR SOURCE_DIR
-set -u
-glint=$1
-out=$2
 source=$3
-source "$(dirname "$0")/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 
 "$glint" lessons --check >"$out/check.stdout" 2>"$out/check.stderr" || fail "lessons --check exited $? ($(cat "$out/check.stderr"))"
 grep -q "18 lessons, 18 load, 0 failed" "$out/check.stdout" || fail "lessons --check summary: $(tail -n 1 "$out/check.stdout")"

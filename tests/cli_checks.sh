@@ -1,6 +1,11 @@
-# What the command-line test scripts share; each sources it after setting $glint and $out:
-# a fresh output folder, counting passes and failures, the exit-code-2 check and the summary.
-# Sourced, never run; the scripts keep their own checks beside these.
+# What the command-line test scripts share; each sources it with its own arguments (GLINT
+# OUTPUT_DIR [more]): $glint and $out from them, $here (the tests folder), a fresh output folder,
+# counting passes and failures, the exit-code-2 check and the summary. Sourced, never run; the
+# scripts keep their own checks beside these.
+set -u
+glint=$1
+out=$2
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 rm -rf "$out" && mkdir -p "$out"
 failures=0
 passes=0

@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # `glint render` on good and bad input: bad input must exit with code 2 and a message naming
 # the file and the line or key; nothing may crash. usage: cli_test.sh GLINT OUTPUT_DIR
-set -u
-glint=$1
-out=$2
-here=$(cd "$(dirname "$0")" && pwd)
-source "$here/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 
 # light_error NAME LIGHT_JSON PATTERN: rendering NAME.json, a scene whose light (line 4) is LIGHT_JSON,
 # fails with an error at that line matching PATTERN.

@@ -7,11 +7,7 @@
 # EFBIG instead: no root needed, but it tests the same error path less faithfully (the writes fail
 # at once, not part-way). Where neither works the test is skipped (exit 77) and says why.
 # usage: full_disk_test.sh GLINT OUTPUT_DIR
-set -u
-glint=$1
-out=$2
-here=$(cd "$(dirname "$0")" && pwd)
-source "$here/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 
 disk="$out/disk"
 mkdir -p "$disk"

@@ -6,10 +6,7 @@
 # through ../ and through a symlink; the targets hold a marker line. Refused by default (by name,
 # located), read with --allow-outside-references, and no message ever holds the marker.
 # usage: hostile_references_test.sh GLINT OUTPUT_DIR
-set -u
-glint=$1
-out=$2
-source "$(dirname "$0")/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 fixtures="$(dirname "$0")/files/hostile"
 marker=GLINT_HOSTILE_MARKER_5e1f
 

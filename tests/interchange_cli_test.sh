@@ -4,10 +4,7 @@
 # naming file:line; a MERL .binary and a .glb render too, and `glint FILE` with no display renders
 # them headless as the editor would open them; images inside glTF files render and `glint info`
 # lists them, and a required extension Glint lacks is refused. usage: interchange_cli_test.sh GLINT OUTPUT_DIR
-set -u
-glint=$1
-out=$2
-source "$(dirname "$0")/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 export GLINT_BRDF_TIMEOUT_S=60  # the .brdf safety probe, on a loaded machine or under the sanitizers
 check() {  # check NAME COMMAND...: the command must succeed
   local name=$1

@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # `glint render --path-trace`: what it refuses (exit code 2 and a message), its progress off a
 # terminal, and that a seed gives the same picture again. usage: path_trace_cli_test.sh GLINT OUTPUT_DIR
-set -u
-glint=$1
-out=$2
-here=$(cd "$(dirname "$0")" && pwd)
-source "$here/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 box="$here/scenes/cornell_box.json"
 
 expect_error both_renderers "give --reference or --path-trace, not both" -- render "$box" -o "$out/x.png" --path-trace --reference

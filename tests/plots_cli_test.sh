@@ -2,11 +2,8 @@
 # `glint render --overlay polar|lobe|albedo|fresnel`: each plot is written as a PNG, also of a
 # .brdf material (sampled on the GPU) and a MERL table, and beside the probe overlay on one
 # canvas; bad plot options exit with code 2 and a message. usage: plots_cli_test.sh GLINT OUTPUT_DIR TESTS_DIR
-set -u
-glint=$1
-out=$2
 tests=$3
-source "$(dirname "$0")/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 
 expect_png() {  # expect_png NAME ARGS...: exit code 0 and a non-empty PNG at $out/NAME.png
   local name=$1

@@ -2,11 +2,7 @@
 # `glint render --probe X,Y --overlay probe`: the printed chain at the lambert_sun centre (E = π,
 # f_r = 0.5/π, L = 0.5, 8-bit 188), the overlay drawn over the PNG, and bad probe arguments
 # refused with exit code 2. usage: probe_cli_test.sh GLINT OUTPUT_DIR
-set -u
-glint=$1
-out=$2
-here=$(cd "$(dirname "$0")" && pwd)
-source "$here/cli_checks.sh"
+source "$(dirname "$0")/cli_checks.sh" "$@"
 sun="$here/scenes/lambert_sun.json"
 
 # The worked example: the centre of a 255x255 image is the sphere's apex.
