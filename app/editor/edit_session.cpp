@@ -41,20 +41,15 @@ std::string EditSession::redoLabel() const { return canRedo() ? redo_.back().lab
 
 bool EditSession::undo() {
     settle(false);
-    if (undo_.empty()) return false;
-    redo_.push_back(std::move(undo_.back()));
-    undo_.pop_back();
-    scene_ = redo_.back().before;
-    ++revision_;
-    ++settledRevision_;
-    return true;
+    return !undo_.empty() && moveLastStep(undo_, redo_, &Step::before);
 }
 
-bool EditSession::redo() {
-    if (!canRedo()) return false;
-    undo_.push_back(std::move(redo_.back()));
-    redo_.pop_back();
-    scene_ = undo_.back().after;
+bool EditSession::redo() { return canRedo() && moveLastStep(redo_, undo_, &Step::after); }
+
+bool EditSession::moveLastStep(std::deque<Step>& from, std::deque<Step>& to, Scene Step::*shown) {
+    to.push_back(std::move(from.back()));
+    from.pop_back();
+    scene_ = to.back().*shown;
     ++revision_;
     ++settledRevision_;
     return true;

@@ -71,6 +71,8 @@ private:
         std::uint64_t id;    // unique; identifies the state reached by the step
     };
     std::uint64_t currentStep() const { return undo_.empty() ? baseStep_ : undo_.back().id; }
+    // Undo and redo: the last step of `from` moves to `to`, and the scene becomes its `shown` side.
+    bool moveLastStep(std::deque<Step>& from, std::deque<Step>& to, Scene Step::*shown);
 
     Scene scene_;
     std::string path_;

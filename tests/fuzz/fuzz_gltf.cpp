@@ -8,15 +8,13 @@
 
 #include "interchange/glb.h"
 #include "interchange/gltf.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
+    const std::string text = glint::fuzz::text(data, size);
     const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
     auto file = binary ? glint::parseGlb(text, "fuzz.glb") : glint::parseGltf(text, "fuzz.gltf");
-    if (!file) {
-        if (file.error().message.empty()) __builtin_trap();  // every error says why
-        return 0;
-    }
+    if (!glint::fuzz::readOrExplained(file)) return 0;
     const glint::ImportedMaterial material =
         file->materials.empty() ? glint::ImportedMaterial{glint::Material::withDefaults("m", glint::BrdfModel::CookTorrance), {}}
                                 : file->materials.front();

@@ -5,10 +5,9 @@
 #include <string>
 
 #include "classroom/lessons.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
-    auto lessons = glint::parseLessonList(text, "fuzz/lessons.json");
-    if (!lessons && lessons.error().message.empty()) __builtin_trap();  // every error says why
+    glint::fuzz::readOrExplained(glint::parseLessonList(glint::fuzz::text(data, size), "fuzz/lessons.json"));
     return 0;
 }

@@ -5,11 +5,10 @@
 #include <string>
 
 #include "scene/scene_json.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
-    auto material = glint::parseMaterial(text, "fuzz.json");
-    if (!material && material.error().message.empty()) __builtin_trap();  // every error says why
-    if (material) (void)glint::materialToJson(*material).dump();
+    auto material = glint::parseMaterial(glint::fuzz::text(data, size), "fuzz.json");
+    if (glint::fuzz::readOrExplained(material)) (void)glint::materialToJson(*material).dump();
     return 0;
 }

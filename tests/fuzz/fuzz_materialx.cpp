@@ -5,14 +5,11 @@
 #include <string>
 
 #include "interchange/materialx.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
-    auto file = glint::parseMaterialX(text, "fuzz.mtlx");
-    if (!file) {
-        if (file.error().message.empty()) __builtin_trap();  // every error says why
-        return 0;
-    }
+    auto file = glint::parseMaterialX(glint::fuzz::text(data, size), "fuzz.mtlx");
+    if (!glint::fuzz::readOrExplained(file)) return 0;
     // What Glint writes it must read back.
     if (!glint::parseMaterialX(glint::writeMaterialX(file->materials, "").text, "fuzz-out.mtlx")) __builtin_trap();
     return 0;

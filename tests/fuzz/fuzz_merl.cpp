@@ -8,11 +8,10 @@
 #include <string>
 
 #include "interchange/merl.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string bytes(reinterpret_cast<const char*>(data), size);
-    auto parsed = glint::parseMerl(bytes, "fuzz.binary");
-    if (!parsed && parsed.error().message.empty()) __builtin_trap();
+    glint::fuzz::readOrExplained(glint::parseMerl(glint::fuzz::text(data, size), "fuzz.binary"));
     static const glint::MerlTable table = glint::parseMerl(glint::makeConstantMerl(glm::vec3(0.1f, 0.2f, 0.3f)), "t").value();
     if (size >= 6 * sizeof(float)) {
         float raw[6];

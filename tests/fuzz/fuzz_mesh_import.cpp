@@ -7,16 +7,14 @@
 #include <string>
 
 #include "geometry/mesh_import.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size < 2) return 0;
     static const char* const hints[] = {"obj", "ply", "stl", "gltf", "glb", "fbx"};
     const std::string hint = hints[data[0] % 6];
     auto imported = glint::importMeshFromMemory(data + 1, size - 1, hint, "fuzz." + hint);
-    if (!imported) {
-        if (imported.error().message.empty()) __builtin_trap();  // every error says why
-        return 0;
-    }
+    if (!glint::fuzz::readOrExplained(imported)) return 0;
     const glint::Mesh& mesh = *imported->mesh;
     for (uint32_t index : mesh.indices)
         if (index >= mesh.vertices.size()) __builtin_trap();

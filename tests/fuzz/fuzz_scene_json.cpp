@@ -5,11 +5,10 @@
 #include <string>
 
 #include "scene/scene_json.h"
+#include "fuzz_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
-    auto scene = glint::parseScene(text, "fuzz.json");
-    if (!scene && scene.error().message.empty()) __builtin_trap();  // every error says why
-    if (scene) (void)glint::sceneToJson(*scene).dump();
+    auto scene = glint::parseScene(glint::fuzz::text(data, size), "fuzz.json");
+    if (glint::fuzz::readOrExplained(scene)) (void)glint::sceneToJson(*scene).dump();
     return 0;
 }
