@@ -149,7 +149,9 @@ TEST(CustomBrdfProbe, EndlessLoopTimesOutWithoutHanging) {
     ASSERT_FALSE(probed);
     EXPECT_NE(probed.error().format().find("endless.brdf:2:1: the shader did not finish in 3 s"), std::string::npos)
         << probed.error().format();
-    EXPECT_LT(seconds, 10.0);
+    // Killed at its deadline, not left to loop: a busy machine may take seconds more to start and
+    // end the child (14 s was seen beside two busy loops), never a minute.
+    EXPECT_LT(seconds, 60.0) << "the probe of an endless loop returned only after " << seconds << " s";
 }
 
 }  // namespace
