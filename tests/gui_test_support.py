@@ -278,18 +278,27 @@ class LoggedEditor:
 
 
 def parse_xwd(data):
-    """Decodes a 24/32-bit TrueColor XWD image (X11 Window Dump, big-endian header)."""
+    """Decodes a depth-24 TrueColor XWD image (X11 Window Dump, big-endian header), its pixels
+    stored in 32 bits, or packed in 24 as xwd writes some windows of a large screen."""
     header = struct.unpack(">25I", data[:100])
     header_size, width, height = header[0], header[4], header[5]
     byte_order, bits_per_pixel, bytes_per_line = header[7], header[11], header[12]
     red_mask, green_mask, blue_mask = header[14], header[15], header[16]
     colors_in_file = header[19]  # XWDColor entries (12 bytes each) between header and pixels
     offset = header_size + colors_in_file * 12
-    if bits_per_pixel != 32:
-        raise ValueError(f"unsupported XWD depth {bits_per_pixel}")
     pixels = bytearray(width * height * 3)
+    standard = byte_order == 0 and (red_mask, green_mask, blue_mask) == (0xFF0000, 0xFF00, 0xFF)
+    if bits_per_pixel == 24 and standard:  # little-endian BGR, row by row (rows may be padded)
+        for y in range(height):
+            row = data[offset + y * bytes_per_line:offset + y * bytes_per_line + width * 3]
+            start = y * width * 3
+            pixels[start:start + width * 3:3], pixels[start + 1:start + width * 3:3], pixels[start + 2:start + width * 3:3] = \
+                row[2::3], row[1::3], row[0::3]
+        return width, height, bytes(pixels)
+    if bits_per_pixel != 32:
+        raise ValueError(f"unsupported XWD pixel size: {bits_per_pixel} bits")
     order = "<" if byte_order == 0 else ">"
-    if byte_order == 0 and (red_mask, green_mask, blue_mask) == (0xFF0000, 0xFF00, 0xFF) and bytes_per_line == width * 4:
+    if standard and bytes_per_line == width * 4:
         # The common case (little-endian BGRX): slice whole channels at once.
         body = data[offset:offset + height * bytes_per_line]
         pixels[0::3], pixels[1::3], pixels[2::3] = body[2::4], body[1::4], body[0::4]
