@@ -10,14 +10,15 @@
 #include "cli/command_line.h"
 #include "cli/render_input.h"
 #include "geometry/mesh_import.h"
+#include "interchange/asset.h"
 #include "interchange/bparam_file.h"
 #include "interchange/custom_brdf.h"
 #include "interchange/import_formats.h"
 #include "interchange/measured_brdf.h"
-#include "interchange/obj_material.h"
 #include "light/light_type_name.h"
 #include "scene/scene_json.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace glint {
 namespace {
@@ -61,6 +62,31 @@ void printWarnings(const std::vector<Diagnostic>& warnings) {
     for (const Diagnostic& warning : warnings) std::printf("  %s\n", warning.format().c_str());
 }
 
+// The parts an asset opens as (interchange/asset.h): each a scene object with its material.
+void printParts(const Asset& asset) {
+    std::printf("parts (%zu):\n", asset.objects.size());
+    for (size_t i = 0; i < asset.objects.size(); ++i) {
+        const SceneObject& part = asset.objects[i];
+        const auto* mesh = std::get_if<MeshShape>(&part.shape);
+        std::printf("  %zu '%s': material '%s', %zu triangles\n", i, part.name.c_str(), asset.materials.at(part.materialIndex).name.c_str(),
+                    mesh ? mesh->statistics.triangleCount : size_t{0});
+    }
+}
+
+// An OBJ as the editor opens it: its parts, each with its own material of the .mtl.
+int describeObjAsset(const std::string& path) {
+    auto asset = loadAsset(path);
+    if (!asset) return commandFailed("info", asset.error().format());
+    std::printf("%s: Wavefront OBJ asset: %s; %s\n", path.c_str(), meshStatisticsText(asset->statistics).c_str(),
+                assetSummary(*asset).c_str());
+    printParts(*asset);
+    std::vector<const Material*> materials;
+    for (const Material& material : asset->materials) materials.push_back(&material);
+    printMaterials(materials);
+    printWarnings(asset->warnings);
+    return 0;
+}
+
 // Lists what `path` holds; the exit code.
 int describeFile(const std::string& path) {
     if (isBrdfFilePath(path)) {
@@ -101,22 +127,21 @@ int describeFile(const std::string& path) {
                     std::printf("  %zu names texture %s: %s (not rendered)\n", i, texture.slot.c_str(), texture.path.c_str());
             }
             printLights(file->lights);
-            if (!file->meshNames.empty()) {
-                std::printf("meshes (%zu):\n", file->meshNames.size());
-                for (size_t i = 0; i < file->meshNames.size(); ++i) std::printf("  %zu '%s'\n", i, file->meshNames[i].c_str());
+            if (isAssetFile(path)) {
+                auto asset = loadAsset(path);
+                if (asset) printParts(*asset);
+                else std::printf("parts: not read: %s\n", asset.error().format().c_str());
             }
             printWarnings(allWarnings(*file));
             return 0;
         }
     }
+    if (lowerExtension(path) == "obj") return describeObjAsset(path);
     if (isMeshFile(path)) {
         auto mesh = importMesh(path);
         if (!mesh) return commandFailed("info", (materialsError ? *materialsError : mesh.error()).format());
         std::printf("%s: mesh: %s\n", path.c_str(), meshStatisticsText(mesh->statistics).c_str());
         if (materialsError) std::printf("materials not read: %s\n", materialsError->format().c_str());
-        const ObjMaterial material = readObjMaterial(path);
-        if (material.material) std::printf("material (its first usemtl): '%s'\n", material.material->material.name.c_str());
-        printWarnings(material.warnings);
         return 0;
     }
     auto text = readTextFile(path);
