@@ -129,7 +129,10 @@ check export_chosen bash -c "'$glint' export '$files/gltf/DirectionalLight.gltf'
 expect_output info_gltf "1 'mat_1.001' \\(openpbr\\)" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_gltf_lights "0 'Sun' \\(directional\\)" info "$files/gltf/DirectionalLight.gltf"
 expect_output info_gltf_meshes "2 'Sphere.100'" info "$files/gltf/DirectionalLight.gltf"
-expect_output info_mesh "mesh: 24 vertices, 12 triangles" info "$files/obj/cube.obj"
+expect_output info_mesh "asset: 24 vertices, 12 triangles" info "$files/obj/cube.obj"
+# An asset's parts as the editor opens them: an OBJ's usemtl groups, a glTF's primitives.
+expect_output info_obj_parts "1 'Base': material 'Base', 12 triangles" info "$files/assets/blender_two_materials.obj"
+expect_output info_gltf_parts "2 'Cube-1': material 'Gold', 4 triangles" info "$files/assets/parts.gltf"
 expect_output info_bparam "values for d_ggx.brdf \\(found: " info "$files/brdf/explorer_isfunc.bparam"
 expect_output info_mtl "0 'Matériau_01'" info "$files/mtl/max_latin1_km.mtl"
 # Images inside a .glb and a .gltf are rendered textures (the same picture from both), and info

@@ -127,10 +127,11 @@ int describeFile(const std::string& path) {
                     std::printf("  %zu names texture %s: %s (not rendered)\n", i, texture.slot.c_str(), texture.path.c_str());
             }
             printLights(file->lights);
-            if (isAssetFile(path)) {
-                auto asset = loadAsset(path);
-                if (asset) printParts(*asset);
-                else std::printf("parts: not read: %s\n", asset.error().format().c_str());
+            if (auto asset = isAssetFile(path) ? loadAsset(path) : Result<Asset>(makeError("no meshes"))) {
+                printParts(*asset);
+            } else if (!file->meshNames.empty()) {  // the names, and why their geometry does not open
+                std::printf("meshes (%zu), not opened: %s\n", file->meshNames.size(), asset.error().format().c_str());
+                for (size_t i = 0; i < file->meshNames.size(); ++i) std::printf("  %zu '%s'\n", i, file->meshNames[i].c_str());
             }
             printWarnings(allWarnings(*file));
             return 0;
