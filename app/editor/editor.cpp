@@ -131,9 +131,9 @@ void loadFont(float pixelSize) {
 void saveScreenshot(EditorState& state, Renderer& renderer, glm::ivec2 size) {
     const Scene& scene = state.session.scene();
     const bool floatImage = isFloatImagePath(state.screenshotPath);
-    renderer.setRadianceKept(floatImage);
+    renderer.options().keepRadiance = floatImage;
     const Status rendered = renderer.renderRadiance(scene, size.x, size.y);
-    renderer.setRadianceKept(false);
+    renderer.options().keepRadiance = false;
     if (!rendered) {
         state.errorMessage = "Could not render the screenshot.\n\n" + rendered.error().format();
         return;
@@ -176,10 +176,11 @@ int runEditor(std::unique_ptr<GlfwPlatform> platform, const std::string& openPat
     // The radiance pass also writes the displayed image, so that putting it on screen is a scaled
     // copy rather than a display pass over every screen pixel (renderer.h); the float image is not
     // written (the screenshot renders its own when it saves an EXR).
-    renderer.setFusedDisplay(true);
-    renderer.setRadianceKept(false);
+    RendererOptions& options = renderer.options();
+    options.fuseDisplay = true;
+    options.keepRadiance = false;
     // A material's slider redraws only the pixels of the objects that wear it.
-    renderer.setRedrawOnlyChanges(true);
+    options.redrawOnlyChanges = true;
     // New specialised programs are built on a worker thread, the loop woken when one is ready.
     if (auto context = platform->createWorkerContext())
         renderer.compileInBackground(std::make_unique<ProgramCompiler>(std::move(context), platform->procAddressLoader(),

@@ -204,8 +204,11 @@ void Renderer::requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_
         pendingPrograms_.insert(batch.back());
     }
     if (batch.empty()) return;
+    // The same programs and targets as here; each warm-up scene is drawn once, with nothing to redraw.
+    RendererOptions warmUpOptions = options_;
+    warmUpOptions.redrawOnlyChanges = false;
     compiler_->submit(
-        [this, batch, warmUpScene, options = options_](GlPlatform& worker) {
+        [this, batch, warmUpScene, warmUpOptions](GlPlatform& worker) {
             for (const auto& [key, pending] : batch) {
                 const auto& [model, variant, textured] = key;
                 pending->result = buildSurfaceProgram(model, variant, {textured});
@@ -216,7 +219,7 @@ void Renderer::requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_
             if (warmUpScene && !warmUp_)
                 if (auto created = Renderer::create(worker, sources_)) warmUp_ = std::move(*created);
             if (warmUpScene && warmUp_) {
-                warmUp_->options_ = options;
+                warmUp_->options() = warmUpOptions;
                 (void)warmUp_->renderRadiance(*warmUpScene, kWarmUpSize, kWarmUpSize);
                 glFinish();
             }
@@ -783,7 +786,7 @@ void readFlipped(GLuint framebuffer, int width, int height, GLenum type, std::ve
 
 RadianceImage Renderer::readRadiance() const {
     platform_.makeCurrent();
-    GLINT_CHECK(radianceWritten_);  // setRadianceKept(false) renders have no float image
+    GLINT_CHECK(radianceWritten_);  // a fused render with options().keepRadiance off has none
     RadianceImage image(targets().radiance.width(), targets().radiance.height());
     readFlipped(targets().radiance.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
     return image;

@@ -74,41 +74,15 @@ public:
     // the overlays display.overlays asks for, over the meshes of the last radiance render. The
     // display pass itself is skipped when the last radiance render fused the same display settings.
     void displayOffscreen(const DisplaySettings& display);
-    // Fused display (off by default; headless renders turn it on): renders without MSAA also
-    // write the display-encoded image into the 8-bit target in the radiance pass itself
-    // (shaders/common/display_output.glsl), so that displayOffscreen() with the scene's display
-    // settings has nothing left to do but the overlays, and displayToScreen() copies it. The float
-    // image is written all the same.
-    void setFusedDisplay(bool enabled) { options_.fuseDisplay = enabled; }
-    // Whether fused renders also write the float radiance image (on by default). Off for a render
-    // whose float image nobody reads (a PNG render, `glint bench`): a fused render then writes only
-    // the 8-bit image, 4 bytes a pixel instead of 20, and readRadiance() and a display pass with
-    // other settings are refused until a render that kept it. Unfused renders (MSAA, the levels
-    // ramp) always write it.
-    void setRadianceKept(bool kept) { options_.keepRadiance = kept; }
-    bool radianceKept() const { return options_.keepRadiance; }
-    // Specialised programs (on by default; gl/shader_specialisation.h): what a frame and a material
-    // keep fixed is compiled in as constants, one program per combination, built when first drawn.
-    // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
-    void setSpecialisedPrograms(bool enabled) { options_.specialisePrograms = enabled; }
-    // Redraws only what a material change reaches (off by default; the editor turns it on): when the
-    // targets hold a frame of the same scene but for material values, at the same size and samples,
-    // drawn with no stand-in (simplified mesh, shadow map drawn for a drag), renderRadiance draws
-    // only the pixels of the changed materials' objects (render/material_change.h), a band of rows
-    // only those within it, and the rest stays as held. The picture is the whole frame's. Where
-    // none of those pixels was drawn since from another scene (a band of the full frame after a
-    // drag, a drag frame), only the changed objects are drawn again, over the held frame: each
-    // sample passes the depth test (GL_LEQUAL) where the object was drawn before, as its depth is
-    // the same, and the other objects and the background in its rectangle are not drawn at all.
-    void setRedrawOnlyChanges(bool enabled) { options_.redrawOnlyChanges = enabled; }
-    // Whether the last renderRadiance drew only such pixels (the editor does not take its time for
-    // a whole frame's), and the pixels it drew: its band, the changed objects' rectangle within it;
-    // none: all (the editor puts only those on screen again).
+    // How frames are drawn (gl/renderer_options.h: fused display, float image kept, specialised
+    // programs, transmission backdrop, redrawing only changes); each frame reads them as it begins.
+    RendererOptions& options() { return options_; }
+    const RendererOptions& options() const { return options_; }
+    // Whether the last renderRadiance drew only a material change's pixels (the editor does not
+    // take its time for a whole frame's), and the pixels it drew: its band, the changed objects'
+    // rectangle within it; none: all (the editor puts only those on screen again).
     bool drewOnlyChanges() const { return drewOnlyChanges_; }
     const std::optional<PixelRegion>& drawnPixels() const { return drawnPixels_; }
-    // The transmission backdrop (on by default; gl/transmission_pass.h). Off: transmissive
-    // surfaces see only the environment or background, as a frame with no opaque object does.
-    void setTransmissionBackdrop(bool enabled) { options_.transmissionBackdrop = enabled; }
     // Specialised programs built in the background (the editor; gl/program_compiler.h): a
     // built-in model's program that programsReady() finds missing is built on the compiler's
     // worker, which then draws the objects that need it with a renderer of its own, so that

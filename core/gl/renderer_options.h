@@ -1,11 +1,11 @@
 // RendererOptions: how the renderer draws frames, set by its front (headless renders, the editor,
-// `glint bench`). No GL: the frame plan (gl/frame_plan.h) reads it too.
+// `glint bench`) through Renderer::options(). No GL: the frame plan (gl/frame_plan.h) reads it too.
 #pragma once
 
 namespace glint {
 
 struct RendererOptions {
-    // Fused display (headless renders turn it on): renders without MSAA also write the
+    // Fused display (off by default; headless renders turn it on): renders without MSAA also write the
     // display-encoded image into the 8-bit target in the radiance pass itself
     // (shaders/common/display_output.glsl), so that Renderer::displayOffscreen() with the scene's
     // display settings has nothing left to do but the overlays, and displayToScreen() copies it.
@@ -24,7 +24,7 @@ struct RendererOptions {
     // The transmission backdrop (gl/transmission_pass.h). Off: transmissive surfaces see only the
     // environment or background, as a frame with no opaque object does.
     bool transmissionBackdrop = true;
-    // Redraws only what a material change reaches (the editor): when the targets hold a frame of
+    // Redraws only what a material change reaches (off by default; the editor turns it on): when the targets hold a frame of
     // the same scene but for material values, at the same size and samples, drawn with no stand-in
     // (simplified mesh, shadow map drawn for a drag), a frame draws only the pixels of the changed
     // materials' objects (render/material_change.h), a band of rows only those within it, and the
