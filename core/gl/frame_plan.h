@@ -45,6 +45,7 @@ struct FrameRequest {
     RowBand rows;  // count 0: every row
 };
 
+// What a frame draws, pass by pass (planFrame).
 struct FramePlan {
     FrameTargets targets;
     std::optional<DisplaySettings> fusedDisplay;  // the settings the radiance pass encodes with, when fused
@@ -61,7 +62,8 @@ struct FramePlan {
 
     // The changed materials' objects, when only they are redrawn over a held frame.
     std::optional<MaterialChange> change;
-    // The pixels drawn, cleared and resolved (a band, the changed rectangle); none: all.
+    // The pixels drawn, cleared and resolved (a band, the changed rectangle), after the backdrop's
+    // opaque pass, which covers the frame; none: all.
     std::optional<PixelRegion> region;
     // Only the changed objects are drawn, no clear and no background: the region holds the
     // held frame's pixels.
