@@ -45,9 +45,9 @@ TEST(ClassroomGpu, DisplayLessonsEqualTheCpuChainPixelByPixel) {
         auto fused = test::sharedHeadless().render(scene, 96, 64);  // fused unless the ramp is on
         ASSERT_TRUE(fused.ok()) << fused.error().format();
         EXPECT_EQ(classroomMismatches(*fused, scene.display), 0);
-        renderer.setFusedDisplay(false);
+        renderer.options().fuseDisplay = false;
         auto separate = test::sharedHeadless().render(scene, 96, 64);
-        renderer.setFusedDisplay(true);
+        renderer.options().fuseDisplay = true;
         ASSERT_TRUE(separate.ok()) << separate.error().format();
         EXPECT_EQ(classroomMismatches(*separate, scene.display), 0);
     }

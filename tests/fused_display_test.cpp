@@ -1,4 +1,4 @@
-// The fused display (renderer.h setFusedDisplay, shaders/common/display_output.glsl): the 8-bit
+// The fused display (RendererOptions::fuseDisplay, shaders/common/display_output.glsl): the 8-bit
 // image written in the radiance pass is byte for byte the one the separate display pass makes from
 // the float image, for every tone map and encoding, sky and objects; a display with other
 // settings than the fused ones still runs the pass. Not the CPU twin (gpu_reference_test.cpp).
@@ -20,11 +20,11 @@ Scene skyScene() {
 // The display image through the separate display pass, fusing switched off for the call.
 DisplayImage throughDisplayPass(const Scene& scene, int width, int height) {
     Renderer& renderer = test::sharedHeadless().renderer();
-    renderer.setFusedDisplay(false);
+    renderer.options().fuseDisplay = false;
     EXPECT_TRUE(renderer.renderRadiance(scene, width, height).ok());
     renderer.displayOffscreen(scene.display);
     DisplayImage image = renderer.readDisplay();
-    renderer.setFusedDisplay(true);
+    renderer.options().fuseDisplay = true;
     return image;
 }
 
@@ -62,7 +62,7 @@ TEST(FusedDisplay, MsaaRendersKeepTheDisplayPass) {
     EXPECT_EQ(fused->display.pixels, throughDisplayPass(scene, 64, 64).pixels);
 }
 
-// Renderer::setRadianceKept(false) (PNG renders, `glint bench`): the fused render writes the 8-bit
+// RendererOptions::keepRadiance off (PNG renders, `glint bench`): the fused render writes the 8-bit
 // image alone, the same bytes, with objects, a sky, or nothing but the background (whose frame then
 // clears no depth either: the frame after it, with objects, is whole again).
 TEST(FusedDisplay, WithoutTheFloatImageTheDisplayIsTheSame) {
@@ -81,7 +81,7 @@ TEST(FusedDisplay, WithoutTheFloatImageTheDisplayIsTheSame) {
     auto alone = test::sharedHeadless().render(msaa, 64, 64, false);
     ASSERT_TRUE(alone.ok());
     EXPECT_EQ(alone->display.pixels, throughDisplayPass(msaa, 64, 64).pixels);
-    test::sharedHeadless().renderer().setRadianceKept(true);  // as the other tests expect
+    test::sharedHeadless().renderer().options().keepRadiance = true;  // as the other tests expect
 }
 
 // The editor refines a slow full frame in bands of rows (Renderer::renderRadiance's RowBand): the
@@ -115,7 +115,7 @@ TEST(FusedDisplay, AFrameDrawnInBandsIsTheWholeFrame) {
     }
 }
 
-// The editor redraws only the objects of a changed material (Renderer::setRedrawOnlyChanges): the
+// The editor redraws only the objects of a changed material (RendererOptions::redrawOnlyChanges): the
 // frame is the whole frame, float and 8-bit, fused or through MSAA and the display pass, also after
 // a frame without MSAA (a drag's, at its reduced size, or at the same size into the resolve target),
 // and when drawn in bands.
@@ -131,7 +131,7 @@ TEST(FusedDisplay, AFrameRedrawnWhereAMaterialChangedIsTheWholeFrame) {
         const RadianceImage wholeRadiance = renderer.readRadiance();
         const DisplayImage wholeDisplay = renderer.readDisplay();
         const long long wholeTriangles = renderer.trianglesDrawn();
-        renderer.setRedrawOnlyChanges(true);
+        renderer.options().redrawOnlyChanges = true;
         Scene small = before;
         small.msaaSamples = 1;
         // A drag's frame at half size between them keeps its own targets: the sphere alone is drawn.
@@ -167,7 +167,7 @@ TEST(FusedDisplay, AFrameRedrawnWhereAMaterialChangedIsTheWholeFrame) {
         renderer.displayOffscreen(after.display);
         EXPECT_EQ(renderer.readRadiance().pixels, wholeRadiance.pixels) << samples << " samples, in bands";
         EXPECT_EQ(renderer.readDisplay().pixels, wholeDisplay.pixels) << samples << " samples, in bands";
-        renderer.setRedrawOnlyChanges(false);
+        renderer.options().redrawOnlyChanges = false;
     }
 }
 

@@ -247,8 +247,8 @@ int run(int edits, bool checkMemory, bool genericPrograms) {
     // programs that read it (LLVM took 16 % of a 1,500-edit profile, memory +35 %), while the
     // capture itself, run every frame with programs that do not read it, kept memory flat (+0.03 %).
     if (genericPrograms) {
-        (*headless)->renderer().setSpecialisedPrograms(false);
-        (*headless)->renderer().setTransmissionBackdrop(false);
+        (*headless)->renderer().options().specialisePrograms = false;
+        (*headless)->renderer().options().transmissionBackdrop = false;
     }
     GlErrorLog glErrors;
     if (!installDebugCallback(glErrors)) {

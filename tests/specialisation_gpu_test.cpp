@@ -57,9 +57,9 @@ struct Rendered {
 
 Rendered renderWith(const Scene& scene, bool specialised) {
     Renderer& renderer = test::sharedHeadless().renderer();
-    renderer.setSpecialisedPrograms(specialised);
+    renderer.options().specialisePrograms = specialised;
     auto images = test::sharedHeadless().render(scene, 96, 72);
-    renderer.setSpecialisedPrograms(true);
+    renderer.options().specialisePrograms = true;
     EXPECT_TRUE(images.ok()) << images.error().format();
     if (!images.ok()) return {RadianceImage(96, 72), DisplayImage(96, 72)};
     return {std::move(images->radiance), std::move(images->display)};

@@ -43,6 +43,7 @@ target_sources(core_tests PRIVATE disk_cache_test.cpp)  # the disk cache of comp
 target_sources(core_tests PRIVATE reference_confinement_test.cpp)  # files that files name: confined to their folder
 target_sources(core_tests PRIVATE interchange_materialx_test.cpp model_switch_test.cpp)  # MaterialX; switching models
 target_sources(core_tests PRIVATE material_change_test.cpp)  # the pixels a material change reaches
+target_sources(core_tests PRIVATE frame_plan_test.cpp)  # what a renderer frame draws, decided without GL
 target_compile_definitions(core_tests PRIVATE ${GLINT_TEST_DEFINITIONS})
 target_link_libraries(core_tests PRIVATE glint_gl GTest::gtest_main)
 glint_add_gtests(core_tests SHARDS 6 ENVIRONMENT GLINT_CACHE_DIR=${CMAKE_CURRENT_BINARY_DIR}/output/cache)

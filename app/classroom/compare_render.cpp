@@ -30,8 +30,9 @@ void compareFillRect(DisplayImage& image, const PixelRect& rect, glm::u8vec3 col
 Result<std::vector<RenderedImages>> renderComparePanes(Renderer& renderer, const std::vector<ComparePaneScene>& panes,
                                                        const CompareGeometry& geometry) {
     std::vector<RenderedImages> rendered;
-    const bool kept = renderer.radianceKept();
-    renderer.setRadianceKept(true);  // the composite holds the panes' radiance too
+    bool& keepRadiance = renderer.options().keepRadiance;
+    const bool kept = keepRadiance;
+    keepRadiance = true;  // the composite holds the panes' radiance too
     for (size_t i = 0; i < geometry.panes.size(); ++i) {
         const ComparePane& pane = geometry.panes[i];
         if (pane.target.width == 0 || pane.target.height == 0) {  // the divider sits at an edge
@@ -40,13 +41,13 @@ Result<std::vector<RenderedImages>> renderComparePanes(Renderer& renderer, const
         }
         const Status status = renderer.renderRadiance(panes[i].scene, pane.renderWidth, pane.renderHeight);
         if (!status) {
-            renderer.setRadianceKept(kept);
+            keepRadiance = kept;
             return status.error();
         }
         renderer.displayOffscreen(panes[i].scene.display);
         rendered.push_back({renderer.readRadiance(), renderer.readDisplay()});
     }
-    renderer.setRadianceKept(kept);
+    keepRadiance = kept;
     return rendered;
 }
 

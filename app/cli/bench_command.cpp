@@ -44,8 +44,8 @@ using nlohmann::json;
 struct BenchOptions {
     int frames = 0;  // 0: the default for the mode
     bool quick = false;
-    bool generic = false;  // Renderer::setSpecialisedPrograms(false)
-    bool radiance = false;  // Renderer::setRadianceKept(true)
+    bool generic = false;  // RendererOptions::specialisePrograms off
+    bool radiance = false;  // RendererOptions::keepRadiance
     int width = 1280, height = 720;
     std::string jsonPath;
     std::vector<std::string> sceneNames;  // empty: every standard scene
@@ -362,8 +362,8 @@ int runBench(const BenchOptions& options) {
 
     auto headless = HeadlessRenderer::create();
     if (!headless) return commandFailed("bench", headless.error().format());
-    (*headless)->renderer().setSpecialisedPrograms(!options.generic);
-    (*headless)->renderer().setRadianceKept(options.radiance);
+    (*headless)->renderer().options().specialisePrograms = !options.generic;
+    (*headless)->renderer().options().keepRadiance = options.radiance;
     std::vector<const BenchScene*> timed;
     for (const BenchScene& benchScene : benchScenes()) {
         const auto& only = options.sceneNames;

@@ -72,9 +72,9 @@ void loadFont(float pixelSize) {
 void saveScreenshot(EditorState& state, Renderer& renderer, glm::ivec2 size) {
     const Scene& scene = state.session.scene();
     const bool floatImage = isFloatImagePath(state.screenshotPath);
-    renderer.setRadianceKept(floatImage);
+    renderer.options().keepRadiance = floatImage;
     const Status rendered = renderer.renderRadiance(scene, size.x, size.y);
-    renderer.setRadianceKept(false);
+    renderer.options().keepRadiance = false;
     if (!rendered) {
         state.errorMessage = "Could not render the screenshot.\n\n" + rendered.error().format();
         return;
@@ -113,9 +113,10 @@ Result<std::unique_ptr<Renderer>> createEditorRenderer(GlfwPlatform& platform) {
     auto created = Renderer::create(platform, defaultShaderSources());
     if (!created) return created.error();
     Renderer& renderer = **created;
-    renderer.setFusedDisplay(true);
-    renderer.setRadianceKept(false);
-    renderer.setRedrawOnlyChanges(true);
+    RendererOptions& options = renderer.options();
+    options.fuseDisplay = true;
+    options.keepRadiance = false;
+    options.redrawOnlyChanges = true;
     if (auto context = platform.createWorkerContext())
         renderer.compileInBackground(std::make_unique<ProgramCompiler>(std::move(context), platform.procAddressLoader(),
                                                                        [] { glfwPostEmptyEvent(); }));

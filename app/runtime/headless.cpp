@@ -13,12 +13,12 @@ Result<std::unique_ptr<HeadlessRenderer>> HeadlessRenderer::create() {
     auto headless = std::make_unique<HeadlessRenderer>();
     headless->platform_ = std::move(*platform);
     headless->renderer_ = std::move(*renderer);
-    headless->renderer_->setFusedDisplay(true);  // render() needs the display image of the scene's settings
+    headless->renderer_->options().fuseDisplay = true;  // render() needs the display image of the scene's settings
     return headless;
 }
 
 Result<RenderedImages> HeadlessRenderer::render(const Scene& scene, int width, int height, bool withRadiance) {
-    renderer_->setRadianceKept(withRadiance);
+    renderer_->options().keepRadiance = withRadiance;
     if (Status status = renderer_->renderRadiance(scene, width, height); !status) return status.error();
     renderer_->displayOffscreen(scene.display);
     return RenderedImages{withRadiance ? renderer_->readRadiance() : RadianceImage(), renderer_->readDisplay()};

@@ -19,7 +19,7 @@ class HeadlessRenderer {
 public:
     static Result<std::unique_ptr<HeadlessRenderer>> create();
     // withRadiance = false: only the display image (a PNG render), its radiance left empty; the
-    // float image is then not even drawn (Renderer::setRadianceKept).
+    // float image is then not even drawn (RendererOptions::keepRadiance).
     Result<RenderedImages> render(const Scene& scene, int width, int height, bool withRadiance = true);
     Renderer& renderer() { return *renderer_; }
 

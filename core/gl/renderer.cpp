@@ -1,5 +1,6 @@
 // The OpenGL renderer (see renderer.h).
-// Sections: creation · programs · meshes · per-frame uniforms · drawing · display · readback.
+// Sections: creation · programs · meshes · per-frame uniforms · drawing (the frame plan, then one
+// function per pass) · display · readback.
 #include "gl/renderer.h"
 
 #include <algorithm>
@@ -9,13 +10,13 @@
 #include "display/display_chain.h"
 #include "geometry/mesh.h"
 #include "geometry/shape_mesh.h"
+#include "gl/frame_plan.h"
 #include "gl/frame_uniforms.h"
 #include "gl/gl_loader.h"
 #include "gl/material_glsl.h"
 #include "gl/material_textures.h"
 #include "gl/shader_specialisation.h"
 #include "render/sphere_occlusion.h"
-#include "render/transmission_backdrop.h"
 #include "scene/plane_edge_fade.h"
 #include "gl/uniform_blocks.h"
 #include "math/constants.h"
@@ -176,7 +177,7 @@ SurfaceVariant Renderer::surfaceVariant(const SceneObject& object, const Materia
     const AnalyticMaterial* analytic = material.analytic();
     const auto* plane = std::get_if<PlaneShape>(&object.shape);
     return {samples, object.interpolation == SurfaceInterpolation::Gouraud, sphere, plane && planeEdgeFadeRadii(*plane).y > 0.0f,
-            (specialise_ && analytic ? frameDefines + materialSpecialisation(*analytic) : frameDefines) +
+            (options_.specialisePrograms && analytic ? frameDefines + materialSpecialisation(*analytic) : frameDefines) +
                 (seesBackdrop ? TransmissionPass::kProgramDefine : "")};
 }
 
@@ -203,9 +204,11 @@ void Renderer::requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_
         pendingPrograms_.insert(batch.back());
     }
     if (batch.empty()) return;
-    const bool fuse = fuseDisplay_, keep = keepRadiance_, specialise = specialise_;
+    // The same programs and targets as here; each warm-up scene is drawn once, with nothing to redraw.
+    RendererOptions warmUpOptions = options_;
+    warmUpOptions.redrawOnlyChanges = false;
     compiler_->submit(
-        [this, batch, warmUpScene, fuse, keep, specialise](GlPlatform& worker) {
+        [this, batch, warmUpScene, warmUpOptions](GlPlatform& worker) {
             for (const auto& [key, pending] : batch) {
                 const auto& [model, variant, textured] = key;
                 pending->result = buildSurfaceProgram(model, variant, {textured});
@@ -216,9 +219,7 @@ void Renderer::requestPrograms(const std::vector<SurfaceKey>& keys, std::shared_
             if (warmUpScene && !warmUp_)
                 if (auto created = Renderer::create(worker, sources_)) warmUp_ = std::move(*created);
             if (warmUpScene && warmUp_) {
-                warmUp_->setFusedDisplay(fuse);
-                warmUp_->setRadianceKept(keep);
-                warmUp_->setSpecialisedPrograms(specialise);
+                warmUp_->options() = warmUpOptions;
                 (void)warmUp_->renderRadiance(*warmUpScene, kWarmUpSize, kWarmUpSize);
                 glFinish();
             }
@@ -248,7 +249,7 @@ bool Renderer::adoptCompiledPrograms() {
 }
 
 const ShaderProgram& Renderer::displayProgram(const DisplaySettings& display) {
-    const std::string prelude = specialise_ ? displaySpecialisation(display) : "";
+    const std::string prelude = options_.specialisePrograms ? displaySpecialisation(display) : "";
     if (auto found = displayPrograms_.find(prelude); found != displayPrograms_.end()) return found->second;
     auto built = ShaderProgram::build(sources_, "fullscreen.vert", "display.frag", prelude);
     if (!built) {
@@ -331,25 +332,26 @@ FrameUniforms Renderer::uploadFrame(const Scene& scene, int width, int height) {
     return packed;
 }
 
+std::string Renderer::frameDefines(const FrameUniforms& packed, const Scene& scene, const std::optional<DisplaySettings>& fused) const {
+    return options_.specialisePrograms ? frameSpecialisation(packed, shadowMaps_->block(), scene.environment, fused) : "";
+}
+
 Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, int height) {
     if (!compiler_) return ProgramsReady::All;
-    // As renderRadiance finds them (with the shadow maps of the frame before).
-    const int samples = samplesFor(scene.msaaSamples);
-    std::optional<DisplaySettings> fused;
-    if (fusesDisplay(scene, samples)) fused = scene.display;
-    const std::string frameDefines =
-        specialise_ ? frameSpecialisation(packFrameUniforms(scene, width, height), shadowMaps_->block(), scene.environment, fused) : "";
+    // As renderRadiance plans a whole frame (with the shadow maps of the frame before).
+    const FramePlan plan = planFrame(scene, {width, height, samplesFor(scene.msaaSamples)}, options_, {});
+    const std::string defines = frameDefines(packFrameUniforms(scene, width, height), scene, plan.fusedDisplay);
     ProgramsReady ready = ProgramsReady::All;
     std::vector<SurfaceKey> missing;
     auto warmUpScene = std::make_shared<Scene>(scene);  // with the objects that need them
     warmUpScene->objects.clear();
-    const bool backdropShown = transmissionBackdrop_ && drawsTransmissionBackdrop(scene);  // as renderRadiance decides
-    for (const SceneObject& object : scene.objects) {
+    for (size_t position = 0; position < plan.drawOrder.size(); ++position) {
+        const SceneObject& object = scene.objects[plan.drawOrder[position]];
         const Material& material = scene.materials.at(object.materialIndex);
         const AnalyticMaterial* analytic = material.analytic();
         if (!analytic) continue;
-        const SurfaceKey key{analytic->model, surfaceVariant(object, material, samples, frameDefines, backdropShown && transmitsLight(material)),
-                             TexturedParams::of(*analytic).mask};
+        const SurfaceVariant variant = surfaceVariant(object, material, plan.targets.samples, defines, plan.seesBackdrop(position));
+        const SurfaceKey key{analytic->model, variant, TexturedParams::of(*analytic).mask};
         if (surfacePrograms_.contains(key) || failedInBackground_.count(key)) continue;
         missing.push_back(key);
         warmUpScene->objects.push_back(object);
@@ -361,13 +363,54 @@ Renderer::ProgramsReady Renderer::programsReady(const Scene& scene, int width, i
 
 // --- drawing --------------------------------------------------------------------------------
 
-std::optional<MaterialChange> Renderer::changeFromHeld(const HeldFrame& frame) const {
-    const std::optional<HeldFrame>& held = frame.samples > 1 ? multisampleHeld_ : targets().held;
-    if (!redrawOnlyChanges_ || !held || held->standIns || !held->sameTargets(frame)) return std::nullopt;
-    std::optional<MaterialChange> change = materialChange(held->scene, frame.scene, frame.width, frame.height);
-    if (change && held->newer) change->rect = boundsOf(change->rect, *held->newer);
-    return change;
+// One frame being drawn: its plan and what its passes share.
+struct Renderer::FrameDraw {
+    const Scene& scene;
+    const FramePlan& plan;
+    MeshDetail detail;
+    RenderTarget& target;  // the multisample target, or the single-sample radiance target
+    FrameUniforms packed;
+    std::string frameDefines;  // the frame's specialisation (none when switched off)
+    glm::mat4 viewProjection;
+    std::vector<glm::vec4> occluders;  // render/sphere_occlusion.h
+    std::vector<float> sampleOffsets;  // the MSAA sample positions the shaders use
+    // Depth is cleared before the first draw that tests it, not when nothing is drawn (an empty
+    // frame is then one clear of the 8-bit image); only what was drawn reads it (the overlays).
+    // An objects-only frame draws over the held depth.
+    bool depthCleared = plan.objectsOnly;
+    Status result = success();
+
+    void clearDepthOnce() {
+        if (!depthCleared) glClear(GL_DEPTH_BUFFER_BIT);
+        depthCleared = true;
+    }
+    void fail(const Diagnostic& error) { result = error; }
+};
+
+namespace {
+
+// Clears, draws and the MSAA resolve keep to the band or the changed pixels; none: all.
+void scissorTo(const std::optional<PixelRegion>& rect) {
+    if (rect) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(rect->x, rect->y, rect->width, rect->height);
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
 }
+
+// The analytic sphere an object's program ray-casts inside its proxy; null for triangles.
+const SphereShape* rayCastSphere(const SceneObject& object) {
+    return drawnAsTriangles(object.shape, object.interpolation) ? nullptr : std::get_if<SphereShape>(&object.shape);
+}
+
+// What is drawn: the sphere's proxy (which circumscribes it) or the shape's triangles.
+BoundingSphere drawnBounds(const SceneObject& object) {
+    const SphereShape* sphere = rayCastSphere(object);
+    return sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
+}
+
+}  // namespace
 
 void Renderer::useTargetsOfSize(int width, int height) {
     const auto ofSize = [&](const SingleSampleTargets& kept) { return kept.radiance.width() == width && kept.radiance.height() == height; };
@@ -389,268 +432,280 @@ Status Renderer::renderRadiance(const Scene& scene, int width, int height, MeshD
     platform_.makeCurrent();
     ++framesRendered_;  // programs looked up from here on belong to this frame (the program caches spare them)
     GLINT_CHECK(width > 0 && height > 0);
-    // Drag frames draw the shadow maps (when they must be drawn at all) from the finest stand-ins,
-    // with about two texels a side per pixel of the frame's larger side.
+    updateShadowMaps(scene, width, height, detail);
+    useTargetsOfSize(width, height);
+    const int samples = allocateSamples(scene, width, height);
+    std::optional<HeldFrame>& held = heldFrame(samples);
+    const HeldState holds{held ? &*held : nullptr, targets().resolveHeld, transmission_->holds(width, height)};
+    const FramePlan plan = planFrame(scene, {width, height, samples, rows}, options_, holds);
+    adoptPlan(plan);
+    RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : targets().radiance;
+    bindTargets(plan, drawTarget);
+    FrameDraw draw{scene, plan, detail, drawTarget, uploadFrame(scene, width, height)};
+    beginFrame(draw);
+    for (size_t position = 0; position < plan.drawOrder.size(); ++position) {
+        if (position == plan.firstTransmissive && plan.capturesBackdrop) captureBackdrop(draw);
+        drawObject(draw, position);
+    }
+    glDisable(GL_CULL_FACE);
+    if (plan.drawsBackgroundPass && !plan.capturesBackdrop) drawBackground(draw);
+    if (samples > 1) resolveMultisample(plan);
+    glDisable(GL_SCISSOR_TEST);
+    targets().resolveHeld = samples > 1 && (!plan.region || plan.changesOnly());
+    if (samples > 1) targets().held.reset();  // the resolve overwrote the single-sample frame's float image
+    holdFrame(scene, plan, rows, draw.result, held);
+    if (draw.result) frameShaderError_.clear();
+    // An object was left out: the display pass runs again, from the float image where there is one.
+    else if (radianceWritten_) fusedDisplay_.reset();
+    if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
+    return draw.result;
+}
+
+// --- drawing: the passes --------------------------------------------------------------------
+
+// Drag frames draw the shadow maps (when they must be drawn at all) from the finest stand-ins,
+// with about two texels a side per pixel of the frame's larger side.
+void Renderer::updateShadowMaps(const Scene& scene, int width, int height, MeshDetail detail) {
     const size_t shadowBudget = detail == MeshDetail::Full ? kEveryTriangle : kSimplifiedTriangles[0];
     const auto meshOf = [&](size_t i) -> const GpuMesh& { return meshes_->forObject(i, scene.objects[i], shadowBudget); };
     int dragResolution = 256;
     while (dragResolution < 2 * std::max(width, height)) dragResolution *= 2;
     shadowMaps_->update(scene, meshOf, detail, dragResolution);
-    useTargetsOfSize(width, height);
+}
+
+// The implementation may allocate more samples than asked (a count it has): the shaders and
+// sample positions follow what it allocated.
+int Renderer::allocateSamples(const Scene& scene, int width, int height) {
     const int requested = samplesFor(scene.msaaSamples);
-    if (requested > 1) multisampleTarget_.ensure(width, height, requested);
-    // The implementation may allocate more samples than asked (a count it has): the shaders and
-    // sample positions follow what it allocated.
-    const int samples = requested > 1 ? multisampleTarget_.allocatedSamples() : 1;
-    RenderTarget& drawTarget = samples > 1 ? multisampleTarget_ : targets().radiance;
-    // Transmissive objects are drawn last, after the backdrop of the opaque ones is captured:
-    // by this frame (a whole frame, or the band with the top row, whose opaque pass then covers the
-    // whole frame) or by the band above.
-    std::vector<size_t> drawOrder(scene.objects.size());
-    for (size_t i = 0; i < drawOrder.size(); ++i) drawOrder[i] = i;
-    const auto transmissive = [&](size_t i) { return transmitsLight(scene.materials.at(scene.objects[i].materialIndex)); };
-    const auto firstTransmissive = std::stable_partition(drawOrder.begin(), drawOrder.end(), [&](size_t i) { return !transmissive(i); });
-    const bool backdropNeeded = transmissionBackdrop_ && drawsTransmissionBackdrop(scene);
-    const bool capturesBackdrop = backdropNeeded && (rows.count == 0 || rows.first + rows.count >= height);
-    if (!backdropNeeded || (!capturesBackdrop && !transmission_->holds(width, height))) transmission_->forget();
-    // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment.
-    fusedDisplay_.reset();
-    if (fusesDisplay(scene, samples)) {
-        targets().display.ensure(width, height, 1);
-        fusedDisplay_ = scene.display;
-    }
-    // The float image is written unless the render is fused and nobody reads it (setRadianceKept).
-    radianceWritten_ = keepRadiance_ || !fusedDisplay_ || capturesBackdrop;  // the backdrop is copied from it
-    // Only the pixels a material change reaches, when the target holds the frame before it.
-    std::optional<HeldFrame> frame;
-    if (redrawOnlyChanges_) frame = HeldFrame{scene, width, height, samples, radianceWritten_, fusedDisplay_.has_value()};
-    std::optional<HeldFrame>& held = samples > 1 ? multisampleHeld_ : targets().held;
-    const std::optional<MaterialChange> change = frame ? changeFromHeld(*frame) : std::nullopt;
-    std::optional<PixelRegion> region;
-    if (change) region = change->rect;
-    const bool changesOnly = change.has_value();
-    if (rows.count > 0) region = intersectionOf(region.value_or(PixelRegion{0, 0, width, height}), {0, rows.first, width, rows.count});
-    // Only the changed objects, where the region holds the held frame's pixels (setRedrawOnlyChanges).
-    const bool objectsOnly = changesOnly && (!held->newer || intersectionOf(*region, *held->newer).empty());
-    drewOnlyChanges_ = changesOnly;
-    drawnPixels_ = capturesBackdrop ? std::nullopt : region;  // the backdrop's opaque pass draws every pixel
-    // Attached or detached on every render, so that an MSAA resolve into it never reaches it.
+    if (requested == 1) return 1;
+    multisampleTarget_.ensure(width, height, requested);
+    return multisampleTarget_.allocatedSamples();
+}
+
+// What the renderer keeps of the plan for the display pass, the readback and the editor.
+void Renderer::adoptPlan(const FramePlan& plan) {
+    if (!plan.showsBackdrop) transmission_->forget();
+    fusedDisplay_ = plan.fusedDisplay;
+    if (fusedDisplay_) targets().display.ensure(plan.targets.width, plan.targets.height, 1);
+    radianceWritten_ = plan.targets.radianceWritten;
+    drewOnlyChanges_ = plan.changesOnly();
+    drawnPixels_ = plan.drawnPixels;
+}
+
+void Renderer::bindTargets(const FramePlan& plan, const RenderTarget& drawTarget) {
+    // Fused display: the 8-bit target becomes the radiance framebuffer's second attachment,
+    // attached or detached on every render, so that an MSAA resolve into it never reaches it.
     glBindFramebuffer(GL_FRAMEBUFFER, targets().radiance.framebuffer());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, fusedDisplay_ ? targets().display.colorTexture() : 0, 0);
     const GLenum drawBuffers[2] = {radianceWritten_ ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE}, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(fusedDisplay_ ? 2 : 1, drawBuffers);
-
     glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
-    glViewport(0, 0, width, height);
+    glViewport(0, 0, plan.targets.width, plan.targets.height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    // Clears, draws and the MSAA resolve keep to the band or the changed pixels (after the
-    // backdrop's opaque pass, if any).
-    const auto scissorTo = [](const std::optional<PixelRegion>& rect) {
-        if (rect) {
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(rect->x, rect->y, rect->width, rect->height);
-        } else {
-            glDisable(GL_SCISSOR_TEST);
-        }
-    };
-    scissorTo(capturesBackdrop ? std::nullopt : region);
+    scissorTo(plan.capturesBackdrop ? std::nullopt : plan.region);  // the backdrop's opaque pass covers the frame
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     // GL_LEQUAL: an object drawn again over the held frame (objectsOnly) passes where it was drawn
     // before, its depth being the same. One depth function for every frame, as llvmpipe compiles a
     // program again for another (a stall of about 300 ms on the first such frame).
     glDepthFunc(GL_LEQUAL);
-    if (samples > 1) glEnable(GL_MULTISAMPLE);
-    // Depth is cleared before the first draw that tests it, not when nothing is drawn (an empty
-    // frame is then one clear of the 8-bit image); only what was drawn reads it (the overlays).
-    bool depthCleared = objectsOnly;
-    const auto clearDepthOnce = [&depthCleared] {
-        if (!depthCleared) glClear(GL_DEPTH_BUFFER_BIT);
-        depthCleared = true;
-    };
-    const FrameUniforms packed = uploadFrame(scene, width, height);
-    environment_->prepare(scene.environment);  // uploads only when the map changed
-    const std::string frameDefines =
-        specialise_ ? frameSpecialisation(packed, shadowMaps_->block(), scene.environment, fusedDisplay_) : "";
-    // A background that is the same at every pixel is a clear (as cheap as a frame can be), not a
-    // pass: constant, no environment shown, and a display value without a dither pattern. Not in a
-    // frame that captures the backdrop: its opaque objects are drawn over a clear of zero coverage.
-    const GLfloat noCoverage[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    if (capturesBackdrop) glClearBufferfv(GL_COLOR, 0, noCoverage);
-    const bool uniformBackground = !capturesBackdrop && scene.background.kind == BackgroundKind::Constant &&
-                                   !(scene.environment.enabled() && scene.environment.showAsBackground) &&
-                                   (!fusedDisplay_ || fusedDisplay_->dither == Dither::None);
-    if (uniformBackground && !objectsOnly) {
-        const GLfloat radiance[4] = {scene.background.color.r, scene.background.color.g, scene.background.color.b, 1.0f};
-        if (radianceWritten_) glClearBufferfv(GL_COLOR, 0, radiance);
-        if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
-            const glm::vec3 encoded = encodeForDisplay(scene.background.color, *fusedDisplay_);
-            GLfloat stored[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-            for (int c = 0; c < 3; ++c) stored[c] = displayValue8(encoded[c], *fusedDisplay_, 0, 0) / 255.0f;
-            glClearBufferfv(GL_COLOR, 1, stored);
-        }
-    }
+    if (plan.targets.samples > 1) glEnable(GL_MULTISAMPLE);
+}
 
-    std::vector<float> sampleOffsets;
-    for (int i = 0; i < samples && samples > 1; ++i) {
+// The frame's uniforms and clears, and what every object's draw reads.
+void Renderer::beginFrame(FrameDraw& draw) {
+    const Scene& scene = draw.scene;
+    environment_->prepare(scene.environment);  // uploads only when the map changed
+    draw.frameDefines = frameDefines(draw.packed, scene, fusedDisplay_);
+    clearColour(draw);
+    for (int i = 0; i < draw.plan.targets.samples && draw.plan.targets.samples > 1; ++i) {
         float position[2];
         glGetMultisamplefv(GL_SAMPLE_POSITION, i, position);
-        sampleOffsets.insert(sampleOffsets.end(), position, position + 2);
+        draw.sampleOffsets.insert(draw.sampleOffsets.end(), position, position + 2);
     }
-
-    Status result = success();
-    const glm::mat4 viewProjection = scene.camera.viewProjection(static_cast<float>(width) / height);
-    const std::vector<glm::vec4> occluders = occludingSpheres(scene);  // render/sphere_occlusion.h
+    draw.viewProjection = scene.camera.viewProjection(static_cast<float>(draw.plan.targets.width) / draw.plan.targets.height);
+    draw.occluders = occludingSpheres(scene);
     trianglesDrawn_ = 0;
     simplifiedMeshesDrawn_ = 0;
     standInProgramsDrawn_ = 0;
     meshes_->releaseUnused();
     drawnMeshes_.clear();
-    // Any other background (sky, environment, dithered) after the opaque objects (and the backdrop),
-    // only where no object wrote depth: drawn at depth 1 with GL_LEQUAL against the cleared 1, so
-    // that pixels (and MSAA samples) an object covers are rejected before the background shader runs.
-    bool backgroundDrawn = false;
-    const auto drawBackground = [&] {
-        backgroundDrawn = true;
-        Result<const ShaderProgram*> background = static_cast<const ShaderProgram*>(nullptr);
-        if (!uniformBackground)
-            background = backgroundProgram(specialise_ ? backgroundSpecialisation(packed, scene.environment, fusedDisplay_) : "");
-        if (!background) {
-            frameShaderError_ = background.error().format();
-            result = background.error();
-        } else if (*background) {
-            glDepthMask(GL_FALSE);
-            glDepthRange(1.0, 1.0);
-            clearDepthOnce();
-            glUseProgram((*background)->id());
-            setFusedDisplayUniforms(**background, fusedDisplay_);
-            glBindVertexArray(emptyVertexArray_);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glDepthRange(0.0, 1.0);
-            glDepthMask(GL_TRUE);
-            glBindVertexArray(0);
-        }
-    };
-    // Each object in the frame, drawn or held, for the overlays.
-    const auto remember = [this](const GpuMesh& mesh, const SceneObject& object) {
-        const MeshPlacement placement = placementOf(object.shape);
-        drawnMeshes_.push_back({mesh.vertexArray, mesh.indexCount, !std::holds_alternative<PlaneShape>(object.shape),
-                                glm::vec4(placement.offset, placement.scale)});
-    };
-    for (auto next = drawOrder.begin(); next != drawOrder.end(); ++next) {
-        if (next == firstTransmissive && capturesBackdrop) {
-            transmission_->capture(drawTarget.framebuffer(), width, height, emptyVertexArray_);
-            glBindFramebuffer(GL_FRAMEBUFFER, drawTarget.framebuffer());
-            glViewport(0, 0, width, height);
-            scissorTo(region);
-            glDisable(GL_CULL_FACE);
-            clearDepthOnce();  // with the depth mask on: the background pass turns it off
-            drawBackground();
-        }
-        const size_t i = *next;
-        const SceneObject& object = scene.objects[i];
-        const bool triangles = drawnAsTriangles(object.shape, object.interpolation);
-        const auto* sphere = triangles ? nullptr : std::get_if<SphereShape>(&object.shape);
-        // What is drawn: the sphere's proxy (which circumscribes it) or the shape's triangles.
-        const BoundingSphere bounds =
-            sphere ? BoundingSphere{sphere->center, sphere->radius * kProxyScale} : boundingSphere(object.shape);
-        if (outsideFrustum(viewProjection, bounds)) continue;  // render/visibility.h
-        if (objectsOnly && !change->materials[object.materialIndex]) {  // its pixels are held
-            remember(meshes_->forObject(i, object, kEveryTriangle), object);
-            continue;
-        }
-        const Material& material = scene.materials.at(object.materialIndex);
-        const bool seesBackdrop = next >= firstTransmissive && transmission_->shows();
-        const SurfaceVariant variant = surfaceVariant(object, material, samples, frameDefines, seesBackdrop);
-        auto program = std::visit(
-            Overloaded{[&](const AnalyticMaterial& analytic) { return surfaceProgram(analytic.model, variant, TexturedParams::of(analytic)); },
-                       [&](const CustomMaterial& custom) { return customPrograms_.program(sources_, *custom.brdf, variant, framesRendered_); },
-                       [&](const MeasuredMaterial&) { return measured_.program(sources_, variant, framesRendered_); }},
-            material.kind);
-        if (!program) {
-            frameShaderError_ = program.error().format();
-            result = program.error();
-            continue;
-        }
-        const ShaderProgram& shader = **program;
-        glUseProgram(shader.id());
-        setFusedDisplayUniforms(shader, fusedDisplay_);
-        shadowMaps_->bind(shader);
-        MaterialBlockStd140 materialBlock{};
-        const auto values = paramValues(material);
-        std::copy_n(values.begin(), std::min<size_t>(values.size(), kMaterialBlockFloats), materialBlock.values);
-        glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kMaterialBinding]);
-        glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
-        glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
-        setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
-        Status textured = success();
-        std::visit(Overloaded{[&](const AnalyticMaterial& analytic) {
-                                  if (!analytic.textures.empty())
-                                      textured = bindMaterialTextures(shader, analytic, object.shape, textureCache_);
-                              },
-                              [&](const CustomMaterial& custom) { setCustomBrdfUniforms(shader, *custom.brdf, custom.values); },
-                              [&](const MeasuredMaterial& measured) { measured_.bind(shader, measured.brdf); }},
-                   material.kind);
-        if (!textured) {  // a texture larger than the GPU takes: the object is not drawn
-            result = textured.error();
-            continue;
-        }
-        if (next >= firstTransmissive) transmission_->bind(shader);
-        if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
-        glUniform1i(shader.uniform("occludingSphereCount"), static_cast<GLint>(occluders.size()));
-        if (!occluders.empty()) glUniform4fv(shader.uniform("occludingSpheres"), static_cast<GLsizei>(occluders.size()), &occluders[0].x);
-        if (variant.fadesEdge) {
-            const auto& plane = std::get<PlaneShape>(object.shape);
-            const glm::vec2 fadeRadii = planeEdgeFadeRadii(plane);
-            glUniform2f(shader.uniform("fadeRadii"), fadeRadii.x, fadeRadii.y);
-            glUniform3f(shader.uniform("fadeCenter"), plane.center.x, plane.center.y, plane.center.z);
-        }
-        // A drag frame draws a large mesh by the stand-in with about as many triangles as the
-        // pixels it may cover: more would be smaller than a pixel.
-        const size_t budget = detail == MeshDetail::Full ? kEveryTriangle
-                                                          : static_cast<size_t>(coveredPixels(scene.camera, bounds, width, height));
-        const GpuMesh& mesh = meshes_->forObject(i, object, budget);
-        // Back faces of a closed surface seen from outside are hidden behind its front faces
-        // (render/visibility.h): culled, halving the triangles rasterised. That includes the
-        // proxy sphere, whose back faces would shade the same front hit a second time
-        // (gl_FragDepth disables early depth rejection). Not when the camera may be inside or the
-        // near plane cuts the surface open; open surfaces (planes) keep both faces.
-        setFaceCulling(culledFaces(mesh.closure, beyondNearPlane(scene.camera, bounds)));
-        if (samples > 1) glUniform2fv(shader.uniform("sampleOffsets"), samples, sampleOffsets.data());
-        glBindVertexArray(mesh.vertexArray);
-        clearDepthOnce();
-        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
-        trianglesDrawn_ += mesh.indexCount / 3;
-        if (mesh.simplified) ++simplifiedMeshesDrawn_;
-        remember(mesh, object);
+}
+
+// A frame that captures the backdrop draws its opaque objects over a clear of zero coverage; a
+// uniform background is a clear (as cheap as a frame can be), not a pass.
+void Renderer::clearColour(const FrameDraw& draw) {
+    const GLfloat noCoverage[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (draw.plan.capturesBackdrop) glClearBufferfv(GL_COLOR, 0, noCoverage);
+    if (!draw.plan.clearsBackground) return;
+    const glm::vec3 color = draw.scene.background.color;
+    const GLfloat radiance[4] = {color.r, color.g, color.b, 1.0f};
+    if (radianceWritten_) glClearBufferfv(GL_COLOR, 0, radiance);
+    if (fusedDisplay_) {  // the display chain's twin (display/display_chain.h) gives the stored 8-bit value
+        const glm::vec3 encoded = encodeForDisplay(color, *fusedDisplay_);
+        GLfloat stored[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        for (int c = 0; c < 3; ++c) stored[c] = displayValue8(encoded[c], *fusedDisplay_, 0, 0) / 255.0f;
+        glClearBufferfv(GL_COLOR, 1, stored);
     }
+}
+
+// Copies the opaque pass into the backdrop, then draws the background before the transmissive
+// objects (which look it up), within the frame's region again.
+void Renderer::captureBackdrop(FrameDraw& draw) {
+    const int width = draw.plan.targets.width, height = draw.plan.targets.height;
+    transmission_->capture(draw.target.framebuffer(), width, height, emptyVertexArray_);
+    glBindFramebuffer(GL_FRAMEBUFFER, draw.target.framebuffer());
+    glViewport(0, 0, width, height);
+    scissorTo(draw.plan.region);
     glDisable(GL_CULL_FACE);
-    if (!backgroundDrawn && !objectsOnly) drawBackground();
-    if (samples > 1) {
-        // The whole frame when the resolve target does not hold the last resolve (a frame without
-        // MSAA drew into it since).
-        if (changesOnly && !targets().resolveHeld) {
-            glDisable(GL_SCISSOR_TEST);
-            drawnPixels_.reset();
-        }
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets().radiance.framebuffer());
-        // Depth too: the overlay pass hides lines behind the surface with it.
-        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    draw.clearDepthOnce();  // with the depth mask on: the background pass turns it off
+    drawBackground(draw);
+}
+
+// Any background other than a uniform one (sky, environment, dithered), only where no object
+// wrote depth: drawn at depth 1 with GL_LEQUAL against the cleared 1, so that pixels (and MSAA
+// samples) an object covers are rejected before the background shader runs.
+void Renderer::drawBackground(FrameDraw& draw) {
+    const std::string prelude =
+        options_.specialisePrograms ? backgroundSpecialisation(draw.packed, draw.scene.environment, fusedDisplay_) : "";
+    Result<const ShaderProgram*> background = backgroundProgram(prelude);
+    if (!background) {
+        frameShaderError_ = background.error().format();
+        draw.fail(background.error());
+        return;
     }
-    glDisable(GL_SCISSOR_TEST);
-    targets().resolveHeld = samples > 1 && (!region || changesOnly);
-    if (samples > 1) targets().held.reset();  // the resolve overwrote the single-sample frame's float image
-    if (frame) frame->standIns = simplifiedMeshesDrawn_ > 0 || shadowMaps_->provisional();
-    if (!result || !frame || frame->standIns || (rows.count > 0 && !changesOnly)) held.reset();
-    else if (rows.count > 0) held->newer = held->newer ? boundsOf(*held->newer, *region) : *region;  // a band: the rest holds `held`
-    else held = std::move(frame);
-    if (result) frameShaderError_.clear();
-    // An object was left out: the display pass runs again, from the float image where there is one.
-    else if (radianceWritten_) fusedDisplay_.reset();
-    if (Status errors = takeGlErrors("renderRadiance"); !errors) return errors;
-    return result;
+    glDepthMask(GL_FALSE);
+    glDepthRange(1.0, 1.0);
+    draw.clearDepthOnce();
+    glUseProgram((*background)->id());
+    setFusedDisplayUniforms(**background, fusedDisplay_);
+    glBindVertexArray(emptyVertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthRange(0.0, 1.0);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(0);
+}
+
+// The object at `position` in the plan's drawing order, unless outside the view; an object whose
+// pixels the target holds (objectsOnly) is only remembered for the overlays.
+void Renderer::drawObject(FrameDraw& draw, size_t position) {
+    const size_t i = draw.plan.drawOrder[position];
+    const SceneObject& object = draw.scene.objects[i];
+    const BoundingSphere bounds = drawnBounds(object);
+    if (outsideFrustum(draw.viewProjection, bounds)) return;  // render/visibility.h
+    if (draw.plan.objectsOnly && !draw.plan.change->materials[object.materialIndex]) {
+        rememberDrawn(meshes_->forObject(i, object, kEveryTriangle), object);
+        return;
+    }
+    const Material& material = draw.scene.materials.at(object.materialIndex);
+    const SurfaceVariant variant =
+        surfaceVariant(object, material, draw.plan.targets.samples, draw.frameDefines, draw.plan.seesBackdrop(position));
+    auto program = programFor(material, variant);
+    if (!program) {
+        frameShaderError_ = program.error().format();
+        return draw.fail(program.error());
+    }
+    const ShaderProgram& shader = **program;
+    glUseProgram(shader.id());
+    // A texture larger than the GPU takes: the object is not drawn.
+    if (Status bound = bindObject(draw, shader, object, material); !bound) return draw.fail(bound.error());
+    if (position >= draw.plan.firstTransmissive) transmission_->bind(shader);
+    if (variant.fadesEdge) {
+        const auto& plane = std::get<PlaneShape>(object.shape);
+        const glm::vec2 fadeRadii = planeEdgeFadeRadii(plane);
+        glUniform2f(shader.uniform("fadeRadii"), fadeRadii.x, fadeRadii.y);
+        glUniform3f(shader.uniform("fadeCenter"), plane.center.x, plane.center.y, plane.center.z);
+    }
+    if (draw.plan.targets.samples > 1)
+        glUniform2fv(shader.uniform("sampleOffsets"), draw.plan.targets.samples, draw.sampleOffsets.data());
+    drawMesh(draw, i, bounds);
+}
+
+Result<const ShaderProgram*> Renderer::programFor(const Material& material, const SurfaceVariant& variant) {
+    return std::visit(
+        Overloaded{[&](const AnalyticMaterial& analytic) { return surfaceProgram(analytic.model, variant, TexturedParams::of(analytic)); },
+                   [&](const CustomMaterial& custom) { return customPrograms_.program(sources_, *custom.brdf, variant, framesRendered_); },
+                   [&](const MeasuredMaterial&) { return measured_.program(sources_, variant, framesRendered_); }},
+        material.kind);
+}
+
+// The object's uniforms: fused display, shadow maps, material values and textures, shape.
+Status Renderer::bindObject(const FrameDraw& draw, const ShaderProgram& shader, const SceneObject& object, const Material& material) {
+    setFusedDisplayUniforms(shader, fusedDisplay_);
+    shadowMaps_->bind(shader);
+    MaterialBlockStd140 materialBlock{};
+    const auto values = paramValues(material);
+    std::copy_n(values.begin(), std::min<size_t>(values.size(), kMaterialBlockFloats), materialBlock.values);
+    glBindBuffer(GL_UNIFORM_BUFFER, uniformBuffers_[kMaterialBinding]);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof materialBlock, &materialBlock);
+    const SphereShape* sphere = rayCastSphere(object);
+    glUniform1i(shader.uniform("shapeKind"), sphere ? 1 : 0);
+    setTriangleUniforms(shader, object);  // gl/gpu_mesh_cache.h
+    Status textured = success();
+    std::visit(Overloaded{[&](const AnalyticMaterial& analytic) {
+                              if (!analytic.textures.empty()) textured = bindMaterialTextures(shader, analytic, object.shape, textureCache_);
+                          },
+                          [&](const CustomMaterial& custom) { setCustomBrdfUniforms(shader, *custom.brdf, custom.values); },
+                          [&](const MeasuredMaterial& measured) { measured_.bind(shader, measured.brdf); }},
+               material.kind);
+    if (!textured) return textured;
+    if (sphere) glUniform4f(shader.uniform("sphere"), sphere->center.x, sphere->center.y, sphere->center.z, sphere->radius);
+    const std::vector<glm::vec4>& occluders = draw.occluders;
+    glUniform1i(shader.uniform("occludingSphereCount"), static_cast<GLint>(occluders.size()));
+    if (!occluders.empty()) glUniform4fv(shader.uniform("occludingSpheres"), static_cast<GLsizei>(occluders.size()), &occluders[0].x);
+    return success();
+}
+
+void Renderer::drawMesh(FrameDraw& draw, size_t objectIndex, const BoundingSphere& bounds) {
+    const Scene& scene = draw.scene;
+    const SceneObject& object = scene.objects[objectIndex];
+    // A drag frame draws a large mesh by the stand-in with about as many triangles as the
+    // pixels it may cover: more would be smaller than a pixel.
+    const size_t budget =
+        draw.detail == MeshDetail::Full
+            ? kEveryTriangle
+            : static_cast<size_t>(coveredPixels(scene.camera, bounds, draw.plan.targets.width, draw.plan.targets.height));
+    const GpuMesh& mesh = meshes_->forObject(objectIndex, object, budget);
+    // Back faces of a closed surface seen from outside are hidden behind its front faces
+    // (render/visibility.h): culled, halving the triangles rasterised. That includes the
+    // proxy sphere, whose back faces would shade the same front hit a second time
+    // (gl_FragDepth disables early depth rejection). Not when the camera may be inside or the
+    // near plane cuts the surface open; open surfaces (planes) keep both faces.
+    setFaceCulling(culledFaces(mesh.closure, beyondNearPlane(scene.camera, bounds)));
+    glBindVertexArray(mesh.vertexArray);
+    draw.clearDepthOnce();
+    glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    trianglesDrawn_ += mesh.indexCount / 3;
+    if (mesh.simplified) ++simplifiedMeshesDrawn_;
+    rememberDrawn(mesh, object);
+}
+
+// Each object in the frame, drawn or held, for the overlays.
+void Renderer::rememberDrawn(const GpuMesh& mesh, const SceneObject& object) {
+    const MeshPlacement placement = placementOf(object.shape);
+    drawnMeshes_.push_back({mesh.vertexArray, mesh.indexCount, !std::holds_alternative<PlaneShape>(object.shape),
+                            glm::vec4(placement.offset, placement.scale)});
+}
+
+// Into the single-sample target, within the frame's region unless the plan says the whole frame.
+void Renderer::resolveMultisample(const FramePlan& plan) {
+    if (plan.resolvesWholeFrame) glDisable(GL_SCISSOR_TEST);
+    const int width = plan.targets.width, height = plan.targets.height;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleTarget_.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets().radiance.framebuffer());
+    // Depth too: the overlay pass hides lines behind the surface with it.
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+}
+
+// What the draw target holds after the frame, for the next one to redraw only changes: the
+// frame itself; a band's pixels drawn from a newer scene than the held one; or nothing.
+void Renderer::holdFrame(const Scene& scene, const FramePlan& plan, RowBand rows, const Status& result,
+                         std::optional<HeldFrame>& held) {
+    const bool standIns = simplifiedMeshesDrawn_ > 0 || shadowMaps_->provisional();
+    if (!options_.redrawOnlyChanges || !result || standIns || (rows.count > 0 && !plan.changesOnly())) held.reset();
+    else if (rows.count > 0) held->newer = held->newer ? boundsOf(*held->newer, *plan.region) : *plan.region;
+    else held = HeldFrame{scene, plan.targets, standIns};
 }
 
 // --- display --------------------------------------------------------------------------------
@@ -731,7 +786,7 @@ void readFlipped(GLuint framebuffer, int width, int height, GLenum type, std::ve
 
 RadianceImage Renderer::readRadiance() const {
     platform_.makeCurrent();
-    GLINT_CHECK(radianceWritten_);  // setRadianceKept(false) renders have no float image
+    GLINT_CHECK(radianceWritten_);  // a fused render with options().keepRadiance off has none
     RadianceImage image(targets().radiance.width(), targets().radiance.height());
     readFlipped(targets().radiance.framebuffer(), image.width, image.height, GL_FLOAT, image.pixels);
     return image;

@@ -19,11 +19,13 @@
 #include "gl/custom_brdf_program.h"
 #include "gl/measured_brdf_gpu.h"
 #include "gl/environment_textures.h"
+#include "gl/frame_plan.h"
 #include "gl/frame_uniforms.h"
 #include "gl/gpu_mesh_cache.h"
 #include "gl/overlay_pass.h"
 #include "gl/platform.h"
 #include "gl/program_compiler.h"
+#include "gl/renderer_options.h"
 #include "gl/render_target.h"
 #include "gl/shader_program.h"
 #include "gl/surface_variant.h"
@@ -31,7 +33,6 @@
 #include "gl/shadow_maps.h"
 #include "gl/transmission_pass.h"
 #include "image/image.h"
-#include "render/material_change.h"
 #include "render/visibility.h"
 #include "scene/scene.h"
 
@@ -73,41 +74,15 @@ public:
     // the overlays display.overlays asks for, over the meshes of the last radiance render. The
     // display pass itself is skipped when the last radiance render fused the same display settings.
     void displayOffscreen(const DisplaySettings& display);
-    // Fused display (off by default; headless renders turn it on): renders without MSAA also
-    // write the display-encoded image into the 8-bit target in the radiance pass itself
-    // (shaders/common/display_output.glsl), so that displayOffscreen() with the scene's display
-    // settings has nothing left to do but the overlays, and displayToScreen() copies it. The float
-    // image is written all the same.
-    void setFusedDisplay(bool enabled) { fuseDisplay_ = enabled; }
-    // Whether fused renders also write the float radiance image (on by default). Off for a render
-    // whose float image nobody reads (a PNG render, `glint bench`): a fused render then writes only
-    // the 8-bit image, 4 bytes a pixel instead of 20, and readRadiance() and a display pass with
-    // other settings are refused until a render that kept it. Unfused renders (MSAA, the levels
-    // ramp) always write it.
-    void setRadianceKept(bool kept) { keepRadiance_ = kept; }
-    bool radianceKept() const { return keepRadiance_; }
-    // Specialised programs (on by default; gl/shader_specialisation.h): what a frame and a material
-    // keep fixed is compiled in as constants, one program per combination, built when first drawn.
-    // Off: the generic programs, every choice read from uniforms (`glint bench --generic`).
-    void setSpecialisedPrograms(bool enabled) { specialise_ = enabled; }
-    // Redraws only what a material change reaches (off by default; the editor turns it on): when the
-    // targets hold a frame of the same scene but for material values, at the same size and samples,
-    // drawn with no stand-in (simplified mesh, shadow map drawn for a drag), renderRadiance draws
-    // only the pixels of the changed materials' objects (render/material_change.h), a band of rows
-    // only those within it, and the rest stays as held. The picture is the whole frame's. Where
-    // none of those pixels was drawn since from another scene (a band of the full frame after a
-    // drag, a drag frame), only the changed objects are drawn again, over the held frame: each
-    // sample passes the depth test (GL_LEQUAL) where the object was drawn before, as its depth is
-    // the same, and the other objects and the background in its rectangle are not drawn at all.
-    void setRedrawOnlyChanges(bool enabled) { redrawOnlyChanges_ = enabled; }
-    // Whether the last renderRadiance drew only such pixels (the editor does not take its time for
-    // a whole frame's), and the pixels it drew: its band, the changed objects' rectangle within it;
-    // none: all (the editor puts only those on screen again).
+    // How frames are drawn (gl/renderer_options.h: fused display, float image kept, specialised
+    // programs, transmission backdrop, redrawing only changes); each frame reads them as it begins.
+    RendererOptions& options() { return options_; }
+    const RendererOptions& options() const { return options_; }
+    // Whether the last renderRadiance drew only a material change's pixels (the editor does not
+    // take its time for a whole frame's), and the pixels it drew: its band, the changed objects'
+    // rectangle within it; none: all (the editor puts only those on screen again).
     bool drewOnlyChanges() const { return drewOnlyChanges_; }
     const std::optional<PixelRegion>& drawnPixels() const { return drawnPixels_; }
-    // The transmission backdrop (on by default; gl/transmission_pass.h). Off: transmissive
-    // surfaces see only the environment or background, as a frame with no opaque object does.
-    void setTransmissionBackdrop(bool enabled) { transmissionBackdrop_ = enabled; }
     // Specialised programs built in the background (the editor; gl/program_compiler.h): a
     // built-in model's program that programsReady() finds missing is built on the compiler's
     // worker, which then draws the objects that need it with a renderer of its own, so that
@@ -187,27 +162,7 @@ private:
     static constexpr size_t kSurfaceProgramCapacity = 64;
     static constexpr size_t kBackgroundProgramCapacity = 16;
 
-    // A frame a draw target holds (for setRedrawOnlyChanges).
-    struct HeldFrame {
-        Scene scene;
-        int width = 0, height = 0, samples = 1;
-        bool radianceWritten = false, fused = false;
-        bool standIns = false;  // simplified meshes or provisional shadow maps (set once drawn)
-        // Pixels drawn since from a newer scene (bands of a frame that redrew only changes).
-        std::optional<PixelRegion> newer;
-        bool sameTargets(const HeldFrame& o) const {
-            return width == o.width && height == o.height && samples == o.samples && radianceWritten == o.radianceWritten &&
-                   fused == o.fused;
-        }
-    };
-
     Renderer(GlPlatform& platform, ShaderSources sources);
-    // What a frame must draw when its target holds `frame` but for material values (the changed
-    // objects' rectangle, with the pixels drawn since from a newer scene); none: all of it.
-    std::optional<MaterialChange> changeFromHeld(const HeldFrame& frame) const;
-    // Whether a frame with these samples writes the display image in the radiance pass (the levels
-    // ramp is drawn by the display pass).
-    bool fusesDisplay(const Scene& scene, int samples) const { return fuseDisplay_ && samples == 1 && !scene.display.levelsRamp; }
     Result<ShaderProgram> buildBackgroundProgram(const std::string& prelude) const;
     Result<const ShaderProgram*> backgroundProgram(const std::string& prelude);
     // The display pass's program for these settings (specialised unless switched off); the
@@ -234,6 +189,26 @@ private:
     // The generic program of a specialised key's model and variant, when it was drawn before; or null.
     SurfaceProgram* standInFor(const SurfaceKey& key);
     FrameUniforms uploadFrame(const Scene& scene, int width, int height);
+    // The frame's specialisation defines (none when specialisation is off).
+    std::string frameDefines(const FrameUniforms& packed, const Scene& scene, const std::optional<DisplaySettings>& fused) const;
+
+    // The passes of renderRadiance, in order (gl/frame_plan.h decides which run and where).
+    struct FrameDraw;
+    void updateShadowMaps(const Scene& scene, int width, int height, MeshDetail detail);
+    int allocateSamples(const Scene& scene, int width, int height);
+    void adoptPlan(const FramePlan& plan);
+    void bindTargets(const FramePlan& plan, const RenderTarget& drawTarget);
+    void beginFrame(FrameDraw& draw);
+    void clearColour(const FrameDraw& draw);
+    void captureBackdrop(FrameDraw& draw);
+    void drawBackground(FrameDraw& draw);
+    void drawObject(FrameDraw& draw, size_t position);
+    Result<const ShaderProgram*> programFor(const Material& material, const SurfaceVariant& variant);
+    Status bindObject(const FrameDraw& draw, const ShaderProgram& shader, const SceneObject& object, const Material& material);
+    void drawMesh(FrameDraw& draw, size_t objectIndex, const BoundingSphere& bounds);
+    void rememberDrawn(const GpuMesh& mesh, const SceneObject& object);
+    void resolveMultisample(const FramePlan& plan);
+    void holdFrame(const Scene& scene, const FramePlan& plan, RowBand rows, const Status& result, std::optional<HeldFrame>& held);
     long long newestModification(const std::vector<std::string>& files) const;
 
     GlPlatform& platform_;
@@ -266,11 +241,7 @@ private:
     int simplifiedMeshesDrawn_ = 0;
     std::unique_ptr<EnvironmentTextures> environment_;  // environment map textures and block
     int maxSamples_ = 1;
-    bool fuseDisplay_ = false;
-    bool specialise_ = true;
-    bool transmissionBackdrop_ = true;
-    bool keepRadiance_ = true;
-    bool redrawOnlyChanges_ = false;
+    RendererOptions options_;
     bool drewOnlyChanges_ = false;
     std::optional<PixelRegion> drawnPixels_;
     // A single-sample frame: the float radiance (with depth) and the 8-bit display image, and what
@@ -290,6 +261,8 @@ private:
     SingleSampleTargets singleSample_[3];
     int current_ = 0;  // the targets the last renderRadiance drew into
     std::optional<HeldFrame> multisampleHeld_;
+    // The frame the targets of a frame with these samples hold.
+    std::optional<HeldFrame>& heldFrame(int samples) { return samples > 1 ? multisampleHeld_ : targets().held; }
     bool radianceWritten_ = true;  // by the last renderRadiance
     std::optional<DisplaySettings> fusedDisplay_;  // what the display target holds, when fused
     RenderTarget multisampleTarget_{kRadianceFormat, true};
