@@ -127,11 +127,13 @@ int describeFile(const std::string& path) {
                     std::printf("  %zu names texture %s: %s (not rendered)\n", i, texture.slot.c_str(), texture.path.c_str());
             }
             printLights(file->lights);
-            if (auto asset = isAssetFile(path) ? loadAsset(path) : Result<Asset>(makeError("no meshes"))) {
-                printParts(*asset);
-            } else if (!file->meshNames.empty()) {  // the names, and why their geometry does not open
-                std::printf("meshes (%zu), not opened: %s\n", file->meshNames.size(), asset.error().format().c_str());
-                for (size_t i = 0; i < file->meshNames.size(); ++i) std::printf("  %zu '%s'\n", i, file->meshNames[i].c_str());
+            if (!file->meshNames.empty()) {  // an asset: its parts, or the mesh names and why they do not open
+                if (auto asset = loadAsset(path)) {
+                    printParts(*asset);
+                } else {
+                    std::printf("meshes (%zu), not opened: %s\n", file->meshNames.size(), asset.error().format().c_str());
+                    for (size_t i = 0; i < file->meshNames.size(); ++i) std::printf("  %zu '%s'\n", i, file->meshNames[i].c_str());
+                }
             }
             printWarnings(allWarnings(*file));
             return 0;
