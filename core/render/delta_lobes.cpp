@@ -21,7 +21,7 @@ DeltaLobeSample sampleLobe(const MirrorParams& mirror, const DeltaLobeSite& site
 // as traceGlass. The (η_t/η_i)² radiance factors of entering and leaving cancel on every path
 // that starts and ends in air, so neither is applied.
 DeltaLobeSample sampleLobe(const GlassParams& glass, const DeltaLobeSite& site, float u) {
-    const GlassInterface interface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
+    const GlassInterface interface = glassInterface(glass);
     const glm::vec3 incoming = -site.towardsViewer;
     const float cosIncident = glm::dot(site.normal, site.towardsViewer);
     const glm::vec3 reflected = reflectDirection(incoming, site.normal);

@@ -22,8 +22,7 @@ glm::vec3 traceDeltaLobes(const MirrorParams& mirror, const TracedRay& ray) {
 }
 
 glm::vec3 traceDeltaLobes(const GlassParams& glass, const TracedRay& ray) {
-    const GlassInterface glassInterface{glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
-    return traceGlass(glassInterface, glass.absorption, ray.miss, ray.sphere, ray.position, ray.normal,
+    return traceGlass(glassInterface(glass), glass.absorption, ray.miss, ray.sphere, ray.position, ray.normal,
                       ray.towardsViewer, ray.viewerDistance);
 }
 

@@ -69,6 +69,11 @@ struct GlassInterface {
     float transmission;   // k_t, classic only
 };
 
+// The glass model's interface (brdf/glass.h).
+inline GlassInterface glassInterface(const GlassParams& glass) {
+    return {glass.ior, glass.transparency == GlassTransparency::Classic, glass.transmission};
+}
+
 // Fraction reflected at cos θ_i with relative index η = η_t/η_i; 1 under total reflection.
 inline float glassReflectance(const GlassInterface& glass, float cosIncident, float eta) {
     const float fresnel = fresnelDielectric(cosIncident, eta);
